@@ -1,0 +1,155 @@
+// sphtroch/gear_train.hpp — the validated parameters of one spherical planetary gear train.
+//
+//   using namespace sphtroch;
+//   GearTrain fig3(kPi / 2, kPi / 2, Ratio(1));               // report Fig. 3
+//   GearTrain nephroid = GearTrain::on_cone(kPi / 2, A3Reference::pitch_cone, 0.0, Ratio(2));
+//   nephroid.planet_cone();  // a_p = atan2(sin a2, cos a2 + n)
+//   nephroid.period();       // 2*pi*q
+//
+// Model (Lin & Tsai 1990, Sec. 2): carrier twist a2 (sun axis Z1 to planet axis Z2) and tracer
+// twist a3 (planet axis to tracer), both in (0, pi) radians; gear ratio n = sin a_s / sin a_p
+// with a2 = a_s + a_p (Eq. 2), hence a_p = atan2(sin a2, cos a2 + n), a_s = a2 - a_p; planet
+// angle theta3 = n*theta2 + theta_p (Eq. 3).
+//
+// a3 may be given relative to a reference angle that depends on a2 (the pitch cone a_p, its
+// mirror pi - a_p, a2 or pi - a2) plus an offset. The reference is kept symbolically, so every
+// Scalar type evaluates sin a3 and cos a3 of *that* angle in its own precision: a tracer "on the
+// pitch cone" is exactly on it in float, double, long double and MPFR alike.
+#pragma once
+
+#include "sphtroch/errors.hpp"
+#include "sphtroch/ratio.hpp"
+#include "sphtroch/types.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace sphtroch {
+
+/// What a3 is measured from. `given` means a3 is the plain number supplied.
+enum class A3Reference { given, a2, pi_minus_a2, pitch_cone, mirror_pitch_cone };
+
+inline const char* to_string(A3Reference r) {
+  switch (r) {
+    case A3Reference::given: return "given";
+    case A3Reference::a2: return "a2";
+    case A3Reference::pi_minus_a2: return "pi-a2";
+    case A3Reference::pitch_cone: return "ap";
+    case A3Reference::mirror_pitch_cone: return "pi-ap";
+  }
+  return "?";
+}
+
+/// sin and cos of both twist angles in one Scalar type; the only way the curve sees a2 and a3.
+template <typename Scalar>
+struct TwistTrig {
+  Scalar sin_a2, cos_a2, sin_a3, cos_a3;
+};
+
+class GearTrain {
+ public:
+  /// REQUIRES: a2, a3 in (0, pi); phase finite. Throws InvalidInput naming "a2", "a3" or "phase".
+  GearTrain(double a2, double a3, Ratio n, double phase = 0.0)
+      : GearTrain(a2, A3Reference::given, a3, n, phase) {}
+
+  /// a3 = reference(a2, n) + offset (radians). REQUIRES: the resulting a3 in (0, pi).
+  static GearTrain on_cone(double a2, A3Reference reference, double offset, Ratio n, double phase = 0.0) {
+    return GearTrain(a2, reference, offset, n, phase);
+  }
+
+  double a2() const noexcept { return a2_; }
+  /// The tracer twist as a double (reference + offset, rounded once).
+  double a3() const noexcept { return a3_; }
+  A3Reference a3_reference() const noexcept { return reference_; }
+  /// a3 minus its reference (equals a3 when the reference is `given`).
+  double a3_offset() const noexcept { return offset_; }
+  const Ratio& ratio() const noexcept { return ratio_; }
+  double n() const noexcept { return ratio_.value(); }
+  double phase() const noexcept { return phase_; }
+
+  /// Planet pitch-cone angle a_p = atan2(sin a2, cos a2 + n), in (0, pi) (report Sec. 5).
+  double planet_cone() const { return planet_cone_of(a2_, ratio_); }
+  /// Sun pitch-cone angle a_s = a2 - a_p; may be negative for internal gearing (n < 0).
+  double sun_cone() const { return a2_ - planet_cone(); }
+  /// theta2 span after which the curve closes: 2*pi*q for n = p/q in lowest terms.
+  double period() const { return Constants<double>::two_pi() * static_cast<double>(ratio_.q()); }
+
+  static double planet_cone_of(double a2, const Ratio& n) { return std::atan2(std::sin(a2), std::cos(a2) + n.value()); }
+
+  /// sin/cos of a2 and a3 evaluated in Scalar; a3 follows its symbolic reference (see header).
+  template <typename Scalar>
+  TwistTrig<Scalar> trig() const {
+    using std::atan2;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const Scalar a2(a2_);
+    TwistTrig<Scalar> t{sin(a2), cos(a2), Scalar(0), Scalar(0)};
+    // sin/cos of the reference angle, exact identities of sin/cos a2 where they exist.
+    Scalar s_ref(0), c_ref(0);
+    switch (reference_) {
+      case A3Reference::given: s_ref = Scalar(0); c_ref = Scalar(1); break;  // reference angle 0
+      case A3Reference::a2: s_ref = t.sin_a2; c_ref = t.cos_a2; break;
+      case A3Reference::pi_minus_a2: s_ref = t.sin_a2; c_ref = -t.cos_a2; break;
+      case A3Reference::pitch_cone:
+      case A3Reference::mirror_pitch_cone: {
+        // The screw axis in the carrier frame is (0, sin a2, cos a2 + n) (Eq. 47b); a_p is its
+        // angle from Z2, so sin a_p and cos a_p are its normalised components.
+        const Scalar wy = t.sin_a2;
+        const Scalar wz = t.cos_a2 + Scalar(ratio_.p()) / Scalar(ratio_.q());
+        const Scalar w = sqrt(wy * wy + wz * wz);
+        s_ref = wy / w;
+        c_ref = reference_ == A3Reference::pitch_cone ? Scalar(wz / w) : Scalar(-wz / w);
+        break;
+      }
+    }
+    if (offset_ == 0.0) {
+      t.sin_a3 = s_ref;
+      t.cos_a3 = c_ref;
+    } else {
+      const Scalar d(offset_);
+      const Scalar sd = sin(d), cd = cos(d);
+      t.sin_a3 = s_ref * cd + c_ref * sd;  // sin(ref + d)
+      t.cos_a3 = c_ref * cd - s_ref * sd;  // cos(ref + d)
+    }
+    return t;
+  }
+
+ private:
+  GearTrain(double a2, A3Reference reference, double offset, Ratio n, double phase)
+      : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(phase) {
+    const double pi = Constants<double>::pi();
+    if (!(a2 > 0.0 && a2 < pi)) throw InvalidInput("a2", detail::to_text(a2), "outside the valid range", "(0, pi) radians");
+    if (!std::isfinite(offset)) throw InvalidInput("a3", detail::to_text(offset), "not a finite number", "(0, pi) radians");
+    if (!std::isfinite(phase)) throw InvalidInput("phase", detail::to_text(phase), "not a finite number", "any finite angle in radians");
+    a3_ = reference_angle() + offset;
+    if (!(a3_ > 0.0 && a3_ < pi)) {
+      const std::string shown = reference == A3Reference::given
+                                    ? detail::to_text(a3_)
+                                    : std::string(to_string(reference)) + (offset < 0 ? "" : "+") + detail::to_text(offset) +
+                                          " = " + detail::to_text(a3_);
+      throw InvalidInput("a3", shown, "outside the valid range", "(0, pi) radians");
+    }
+  }
+
+  double reference_angle() const {
+    const double pi = Constants<double>::pi();
+    switch (reference_) {
+      case A3Reference::given: return 0.0;
+      case A3Reference::a2: return a2_;
+      case A3Reference::pi_minus_a2: return pi - a2_;
+      case A3Reference::pitch_cone: return planet_cone_of(a2_, ratio_);
+      case A3Reference::mirror_pitch_cone: return pi - planet_cone_of(a2_, ratio_);
+    }
+    return 0.0;
+  }
+
+  double a2_;
+  double a3_;
+  A3Reference reference_;
+  double offset_;
+  Ratio ratio_;
+  double phase_;
+};
+
+}  // namespace sphtroch

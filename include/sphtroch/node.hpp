@@ -1,0 +1,36 @@
+// sphtroch/node.hpp — the result types of the node and cusp census, shared by every method.
+//
+// Words (DESIGN.md): a *branch* is a parameter value theta2 at which the curve passes through a
+// point; a *node* is a point through which two or more branches pass; its kind is `crossing`
+// when at least one pair of its branches crosses, `tangency` when every pair only touches.
+// A *cusp* is a parameter where the velocity is exactly zero.
+#pragma once
+
+#include "sphtroch/types.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace sphtroch {
+
+enum class NodeKind { crossing, tangency };
+
+inline const char* to_string(NodeKind k) { return k == NodeKind::crossing ? "crossing" : "tangency"; }
+
+struct Node {
+  Vector3d position = Vector3d::Zero();  // unit vector, base frame
+  std::vector<double> params;            // theta2 of every branch through it, in [0, period), ascending
+  std::size_t branches = 0;              // params.size()
+  NodeKind kind = NodeKind::crossing;
+  double angle = 0.0;  // largest angle between two branch tangent lines at the node, radians in [0, pi/2]
+  std::size_t crossing_pairs = 0;   // branch pairs that cross here
+  std::size_t tangency_pairs = 0;   // branch pairs that only touch here
+};
+
+struct Cusp {
+  Vector3d position = Vector3d::Zero();  // unit vector, base frame
+  double param = 0.0;                    // theta2 in [0, period)
+  double speed = 0.0;                    // |dP/dtheta2| evaluated there (0 up to rounding)
+};
+
+}  // namespace sphtroch

@@ -1,0 +1,57 @@
+// src/cli/cli_common.hpp — plumbing shared by the sphtroch commands: reading gear-train
+// options, the one-line error contract (stderr, exit 2), and output files that are never
+// left partial (written to a temporary file in the same directory, then renamed).
+#pragma once
+
+#include "sphtroch/gear_train.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace sphtroch::cli {
+
+/// Exit status for every kind of bad input.
+constexpr int kBadInput = 2;
+
+/// Raised by commands for bad input not covered by InvalidInput (e.g. an unwritable path).
+struct UsageError {
+  std::string message;  // one line, already naming the option, the value and the valid range
+};
+
+/// The gear-train options every analysis command shares (values kept as text, parsed later
+/// so that errors name the option exactly as typed).
+struct TrainOptions {
+  std::string a2, a3, n, phase = "0";
+  void add_to(CLI::App& command);
+  /// Parses and validates; throws InvalidInput whose field is the option name without "--".
+  GearTrain train() const;
+};
+
+/// Adds "-o,--output FILE" to a command.
+void add_output_option(CLI::App& command, std::string& path, const std::string& what);
+
+/// Writes text produced by `write` to stdout (path empty or "-") or atomically to `path`.
+/// The callback runs before the file appears; on any failure no file is left behind.
+void write_output(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+/// A non-negative integer option value, or InvalidInput naming the option.
+std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
+
+/// printf("%.17g") — every printed number round-trips to the same double.
+std::string number(double v);
+
+/// Registers a subcommand's action; main() runs the selected one and maps errors to exit codes.
+using Action = std::function<void()>;
+void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+#ifdef SPHTROCH_HAVE_ANALYSIS
+void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+#endif
+
+}  // namespace sphtroch::cli
