@@ -74,6 +74,28 @@ class GearTrain {
   /// theta2 span after which the curve closes: 2*pi*q for n = p/q in lowest terms.
   double period() const { return Constants<double>::two_pi() * static_cast<double>(ratio_.q()); }
 
+  /// True when a2 is taken as exactly pi/2 (see with_right_angle_a2()).
+  bool a2_is_right_angle() const noexcept { return a2_right_angle_; }
+
+  /// The same train with a2 taken as exactly pi/2 in every Scalar (sin a2 = 1, cos a2 = 0).
+  /// Used by the boundary snapping of the node census; the caller decides the tolerance.
+  GearTrain with_right_angle_a2() const {
+    GearTrain g = *this;
+    g.a2_right_angle_ = true;
+    g.a2_ = Constants<double>::pi() / 2;
+    g.a3_ = g.reference_angle() + g.offset_;
+    return g;
+  }
+
+  /// The same train with a3 re-expressed as reference + offset (offset 0: exactly on it).
+  GearTrain with_a3_reference(A3Reference reference, double offset = 0.0) const {
+    GearTrain g = *this;
+    g.reference_ = reference;
+    g.offset_ = offset;
+    g.a3_ = g.reference_angle() + offset;
+    return g;
+  }
+
   static double planet_cone_of(double a2, const Ratio& n) { return std::atan2(std::sin(a2), std::cos(a2) + n.value()); }
 
   /// sin/cos of a2 and a3 evaluated in Scalar; a3 follows its symbolic reference (see header).
@@ -85,6 +107,10 @@ class GearTrain {
     using std::sqrt;
     const Scalar a2(a2_);
     TwistTrig<Scalar> t{sin(a2), cos(a2), Scalar(0), Scalar(0)};
+    if (a2_right_angle_) {
+      t.sin_a2 = Scalar(1);
+      t.cos_a2 = Scalar(0);
+    }
     // sin/cos of the reference angle, exact identities of sin/cos a2 where they exist.
     Scalar s_ref(0), c_ref(0);
     switch (reference_) {
@@ -150,6 +176,7 @@ class GearTrain {
   double offset_;
   Ratio ratio_;
   double phase_;
+  bool a2_right_angle_ = false;
 };
 
 }  // namespace sphtroch
