@@ -16,7 +16,7 @@ void TrainOptions::add_to(CLI::App& command) {
   command.add_option("--a3", a3, "tracer twist a3 in (0, pi); also ap, pi-ap, a2, pi-a2 with an offset (ap+1e-6)")
       ->required();
   command.add_option("--n", n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5")->required();
-  command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle", true);
+  command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
 }
 
 GearTrain TrainOptions::train() const {

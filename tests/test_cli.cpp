@@ -1,0 +1,358 @@
+// The sphtroch executable (SPHTROCH_EXE), run for real: output format and values of `trace`
+// against Eq. 5 / Eq. 47a computed here, -o FILE, and the error contract for bad input — exit
+// status 2, exactly one line on stderr naming the option (and value and range), nothing on
+// stdout, and no output or temporary file left behind.
+#include "catch2/catch.hpp"
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A fresh directory per test case, removed at the end.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "sphtroch-cli-XXXXXX").string();
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    REQUIRE(mkdtemp(buf.data()) != nullptr);
+    path = buf.data();
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  /// Every entry except the capture files.
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(path)) {
+      const std::string name = e.path().filename().string();
+      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(fs::relative(e.path(), path).string());
+    }
+    return names;
+  }
+};
+
+/// Runs `sphtroch <args>` through the shell (args are already shell-quoted where needed),
+/// capturing stdout, stderr and the exit status in files of `dir`.
+Result run(const std::string& args, const TempDir& dir) {
+  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+  const std::string cmd = std::string("'") + SPHTROCH_EXE + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) parts.push_back(cur);
+  return parts;
+}
+
+std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+/// A number printed with 17 significant digits round-trips and re-prints identically.
+bool is_17_digits(const std::string& field) {
+  char* end = nullptr;
+  const double v = std::strtod(field.c_str(), &end);
+  if (end != field.c_str() + field.size()) return false;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return field == buf;
+}
+
+/// Eq. 5, expanded, theta_p = 0.
+void eq5(double a2, double a3, double n, double t, double out[3]) {
+  const double c2 = std::cos(t), s2 = std::sin(t), cn = std::cos(n * t), sn = std::sin(n * t);
+  const double ca2 = std::cos(a2), sa2 = std::sin(a2), ca3 = std::cos(a3), sa3 = std::sin(a3);
+  out[0] = c2 * sn * sa3 + s2 * cn * ca2 * sa3 + s2 * sa2 * ca3;
+  out[1] = s2 * sn * sa3 - c2 * cn * ca2 * sa3 - c2 * sa2 * ca3;
+  out[2] = -cn * sa2 * sa3 + ca2 * ca3;
+}
+
+/// Parses CSV output into rows of doubles after checking the header and the 17-digit format.
+std::vector<std::vector<double>> parse_csv(const std::string& text, const std::string& header, std::size_t columns) {
+  const auto lines = split(text, '\n');
+  REQUIRE(!lines.empty());
+  CHECK(lines.front() == header);
+  CHECK(text.back() == '\n');
+  std::vector<std::vector<double>> rows;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto fields = split(lines[i], ',');
+    REQUIRE(fields.size() == columns);
+    std::vector<double> row;
+    for (const auto& f : fields) {
+      INFO("field '" << f << "' in line " << i);
+      CHECK(is_17_digits(f));
+      row.push_back(std::strtod(f.c_str(), nullptr));
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+const std::string kFig3 = "trace --a2 pi/2 --a3 pi/2 --n 1";
+}  // namespace
+
+TEST_CASE("cli: trace of Fig. 3 prints header t,x,y,z and 8 rows matching Eq. 5 with 17 digits", "[cli][trace][eq5]") {
+  TempDir dir;
+  const Result r = run(kFig3 + " --samples 8", dir);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  const auto rows = parse_csv(r.out, "t,x,y,z", 4);
+  REQUIRE(rows.size() == 8);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    // t_i = 2 pi i / 8 (one closing period, q = 1).
+    CHECK(std::abs(rows[i][0] - 2 * kPi * static_cast<double>(i) / 8) <= 2 * kEps * 2 * kPi);
+    double p[3];
+    eq5(kPi / 2, kPi / 2, 1.0, rows[i][0], p);
+    for (int k = 0; k < 3; ++k) CHECK(std::abs(rows[i][1 + k] - p[k]) <= 1e-15);
+  }
+  // With a2 = a3 = pi/2, Eq. 9 reads (cos t sin t, sin^2 t, -cos t): e.g. row 2 (t = pi/2) is the
+  // node (0, 1, 0) of Eq. 25, row 4 (t = pi) is P_zmax = (0, 0, 1) of Eq. 14.
+  CHECK(std::abs(rows[2][2] - 1) <= 1e-15);
+  CHECK(std::abs(rows[4][3] - 1) <= 1e-15);
+}
+
+TEST_CASE("cli: trace --velocity adds vx,vy,vz = omega x P (Eq. 47a)", "[cli][trace][velocity]") {
+  TempDir dir;
+  const double a2 = kPi / 3, a3 = 2.0, n = 2.5;
+  const Result r = run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 12 --velocity", dir);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  const auto rows = parse_csv(r.out, "t,x,y,z,vx,vy,vz", 7);
+  REQUIRE(rows.size() == 12);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double t = rows[i][0];
+    CHECK(std::abs(t - 4 * kPi * static_cast<double>(i) / 12) <= 2 * kEps * 4 * kPi);  // period 2 pi q = 4 pi
+    double p[3];
+    eq5(a2, a3, n, t, p);
+    const double w[3] = {n * std::sin(t) * std::sin(a2), -n * std::cos(t) * std::sin(a2), 1 + n * std::cos(a2)};
+    const double v[3] = {w[1] * p[2] - w[2] * p[1], w[2] * p[0] - w[0] * p[2], w[0] * p[1] - w[1] * p[0]};
+    // theta3 = n t formed as 2.5 t here and as 5 t / 2 in the tool: identical in binary.
+    for (int k = 0; k < 3; ++k) {
+      CHECK(std::abs(rows[i][1 + k] - p[k]) <= 1e-15);
+      CHECK(std::abs(rows[i][4 + k] - v[k]) <= 8 * kEps * (1 + n));
+    }
+  }
+}
+
+TEST_CASE("cli: trace --turns K samples [0, 2 pi K] with both ends", "[cli][trace][turns]") {
+  TempDir dir;
+  const Result r = run(kFig3 + " --turns 2 --samples 5", dir);
+  CHECK(r.status == 0);
+  const auto rows = parse_csv(r.out, "t,x,y,z", 4);
+  REQUIRE(rows.size() == 5);
+  CHECK(rows.front()[0] == 0.0);
+  CHECK(std::abs(rows.back()[0] - 4 * kPi) <= 2 * kEps * 4 * kPi);
+}
+
+TEST_CASE("cli: trace -o FILE writes the same CSV to the file and nothing to stdout", "[cli][trace][output]") {
+  TempDir dir;
+  const Result to_stdout = run(kFig3 + " --samples 16", dir);
+  REQUIRE(to_stdout.status == 0);
+  const fs::path file = dir.path / "fig3.csv";
+  const Result to_file = run(kFig3 + " --samples 16 -o '" + file.string() + "'", dir);
+  CHECK(to_file.status == 0);
+  CHECK(to_file.out.empty());
+  CHECK(to_file.err.empty());
+  REQUIRE(fs::exists(file));
+  CHECK(slurp(file) == to_stdout.out);
+  CHECK(count_lines(slurp(file)) == 17);
+  // Overwrites an existing file; --output is the long form; no temporary left behind.
+  const Result again = run(kFig3 + " --samples 4 --output '" + file.string() + "'", dir);
+  CHECK(again.status == 0);
+  CHECK(count_lines(slurp(file)) == 5);
+  CHECK(dir.entries() == std::vector<std::string>{"fig3.csv"});
+}
+
+TEST_CASE("cli: defaults: phase 0 and 360 (q + |p|) samples per closed curve", "[cli][trace]") {
+  TempDir dir;
+  const Result r = run(kFig3, dir);
+  CHECK(r.status == 0);
+  CHECK(count_lines(r.out) == 1 + 720);
+  const Result half = run("trace --a2 1 --a3 1 --n 5/2", dir);
+  CHECK(count_lines(half.out) == 1 + 360 * 7);
+}
+
+TEST_CASE("cli: a negative phase is accepted as a separate argument", "[cli][trace][phase]") {
+  TempDir dir;
+  const Result r = run(kFig3 + " --phase -pi/4 --samples 4", dir);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  const Result eq = run(kFig3 + " --phase=-pi/4 --samples 4", dir);
+  CHECK(eq.status == 0);
+  CHECK(r.out == eq.out);
+}
+
+namespace {
+struct BadCase {
+  std::string args;                   // after "trace" (or the whole command line if it starts with '!')
+  std::vector<std::string> mentions;  // substrings the one stderr line must contain
+};
+
+const std::vector<BadCase>& bad_cases() {
+  static const std::vector<BadCase> cases = {
+      {"--a2 4 --a3 1 --n 1", {"--a2", "4", "(0, pi)"}},
+      {"--a2 0 --a3 1 --n 1", {"--a2", "(0, pi)"}},
+      {"--a2 pi --a3 1 --n 1", {"--a2", "(0, pi)"}},
+      {"--a2 -1 --a3 1 --n 1", {"--a2", "(0, pi)"}},
+      {"--a2 200deg --a3 1 --n 1", {"--a2", "(0, pi)"}},
+      {"--a2 nan --a3 1 --n 1", {"--a2", "nan"}},
+      {"--a2 inf --a3 1 --n 1", {"--a2", "inf"}},
+      {"--a2 -inf --a3 1 --n 1", {"--a2", "inf"}},
+      {"--a2 1e999 --a3 1 --n 1", {"--a2", "1e999"}},
+      {"--a2 abc --a3 1 --n 1", {"--a2", "abc"}},
+      {"--a2 pi/0 --a3 1 --n 1", {"--a2", "pi/0"}},
+      {"--a2 '' --a3 1 --n 1", {"--a2"}},
+      {"--a2 1 --a3 0 --n 1", {"--a3", "(0, pi)"}},
+      {"--a2 1 --a3 3.5 --n 1", {"--a3", "3.5", "(0, pi)"}},
+      {"--a2 1 --a3 nan --n 1", {"--a3", "nan"}},
+      {"--a2 1 --a3 inf --n 1", {"--a3", "inf"}},
+      {"--a2 1 --a3 ap-2 --n 1", {"--a3", "(0, pi)"}},
+      {"--a2 1 --a3 ap+ --n 1", {"--a3"}},
+      {"--a2 1 --a3 1 --n 0", {"--n", "0"}},
+      {"--a2 1 --a3 1 --n 0/3", {"--n"}},
+      {"--a2 1 --a3 1 --n 1/0", {"--n", "1/0"}},
+      {"--a2 1 --a3 1 --n abc", {"--n", "abc"}},
+      {"--a2 1 --a3 1 --n 2.5.1", {"--n", "2.5.1"}},
+      {"--a2 1 --a3 1 --n nan", {"--n", "nan"}},
+      {"--a2 1 --a3 1 --n inf", {"--n", "inf"}},
+      {"--a2 1 --a3 1 --n 1e999", {"--n"}},
+      {"--a2 1 --a3 1 --n 99999999/1", {"--n"}},
+      {"--a2 1 --a3 1 --n 1 --phase nan", {"--phase", "nan"}},
+      {"--a2 1 --a3 1 --n 1 --phase inf", {"--phase", "inf"}},
+      {"--a2 1 --a3 1 --n 1 --samples 2", {"--samples", "2", "10000000"}},
+      {"--a2 1 --a3 1 --n 1 --samples 0", {"--samples", "10000000"}},
+      {"--a2 1 --a3 1 --n 1 --samples 10000001", {"--samples", "10000001", "10000000"}},
+      {"--a2 1 --a3 1 --n 1 --samples 99999999999999999999999", {"--samples"}},
+      {"--a2 1 --a3 1 --n 1 --samples abc", {"--samples", "abc"}},
+      {"--a2 1 --a3 1 --n 1 --samples 1.5", {"--samples", "1.5"}},
+      {"--a2 1 --a3 1 --n 1 --samples -5", {"--samples"}},
+      {"--a2 1 --a3 1 --n 1 --samples 10 --turns 2", {"--samples", "--turns"}},
+      {"--a2 1 --a3 1 --n 1 --turns 0", {"--turns", "0"}},
+      {"--a2 1 --a3 1 --n 1 --turns -1", {"--turns"}},
+      {"--a2 1 --a3 1 --n 1 --turns nan", {"--turns", "nan"}},
+      {"--a2 1 --a3 1 --n 1 --turns abc", {"--turns", "abc"}},
+      {"--a2 1 --a3 1 --n 1 --turns 1 --samples 2", {"--samples"}},
+      {"--a3 1 --n 1", {"--a2"}},
+      {"--a2 1 --n 1", {"--a3"}},
+      {"--a2 1 --a3 1", {"--n"}},
+      {"--a2 1 --a3 1 --n 1 --bogus 3", {"--bogus"}},
+      {"--a2 1 --a3 1 --n 1 -o /nonexistent/dir/x.csv", {"--output", "/nonexistent/dir/x.csv"}},
+      {"!", {"subcommand"}},
+      {"!nonsense", {"nonsense"}},
+  };
+  return cases;
+}
+
+void check_one_line_error(const Result& r, const BadCase& c) {
+  INFO("sphtroch trace " << c.args << "\nstderr: " << r.err << "stdout: " << r.out);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(count_lines(r.err) == 1);
+  CHECK(!r.err.empty());
+  CHECK(r.err.back() == '\n');
+  for (const auto& m : c.mentions) {
+    INFO("must mention: " << m);
+    CHECK(contains(r.err, m));
+  }
+}
+
+std::string command_line(const BadCase& c) { return c.args.front() == '!' ? c.args.substr(1) : "trace " + c.args; }
+}  // namespace
+
+TEST_CASE("cli: every bad input exits 2 with one stderr line naming the option and nothing on stdout",
+          "[cli][errors]") {
+  TempDir dir;
+  for (const BadCase& c : bad_cases()) {
+    check_one_line_error(run(command_line(c), dir), c);
+    CHECK(dir.entries().empty());
+  }
+}
+
+TEST_CASE("cli: a bad option combined with a valid -o path leaves no file and no temporary behind",
+          "[cli][errors][output]") {
+  TempDir dir;
+  const fs::path file = dir.path / "out.csv";
+  for (const BadCase& c : bad_cases()) {
+    if (c.args.front() == '!' || contains(c.args, "-o ")) continue;
+    check_one_line_error(run(command_line(c) + " -o '" + file.string() + "'", dir), c);
+    CHECK_FALSE(fs::exists(file));
+    CHECK(dir.entries().empty());
+  }
+  // An existing file is not touched by a failing run.
+  { std::ofstream(file) << "keep\n"; }
+  const Result r = run("trace --a2 4 --a3 1 --n 1 -o '" + file.string() + "'", dir);
+  CHECK(r.status == 2);
+  CHECK(slurp(file) == "keep\n");
+  CHECK(dir.entries() == std::vector<std::string>{"out.csv"});
+}
+
+TEST_CASE("cli: an -o path that cannot be replaced (a directory) exits 2 and removes its temporary",
+          "[cli][errors][output]") {
+  TempDir dir;
+  fs::create_directory(dir.path / "sub");
+  const Result r = run(kFig3 + " --samples 8 -o '" + (dir.path / "sub").string() + "'", dir);
+  INFO("stderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "--output"));
+  CHECK(dir.entries() == std::vector<std::string>{"sub"});
+}
+
+TEST_CASE("cli: --help, trace --help and --version exit 0", "[cli][help]") {
+  TempDir dir;
+  const Result help = run("--help", dir);
+  CHECK(help.status == 0);
+  CHECK(contains(help.out, "trace"));
+  const Result trace_help = run("trace --help", dir);
+  CHECK(trace_help.status == 0);
+  for (const char* opt : {"--a2", "--a3", "--n", "--phase", "--samples", "--turns", "--velocity", "--output"})
+    CHECK(contains(trace_help.out, opt));
+  const Result version = run("--version", dir);
+  CHECK(version.status == 0);
+  CHECK(contains(version.out, "0.1.0"));
+  CHECK(help.err.empty());
+  CHECK(version.err.empty());
+}

@@ -1,0 +1,191 @@
+// Every Scalar type through the same templates: float, double, long double and mpfr::mpreal at
+// 256 bits. The MPFR chain is first checked against Eq. 4 expanded in MPFR (agreement to ~1e-70
+// shows it computes in full precision), then serves as the reference for the other three, each
+// of which must agree to its own precision.
+//
+// Inputs (a2, a3, theta2, phase) are chosen exactly representable in float, so every type
+// evaluates the same curve at the same parameters and the differences are each type's own
+// rounding. Error model (per component of P, V, A): a few ulp for the products plus the rounding
+// of theta3 = p theta2 / q + theta_p (<= 1.5 eps |theta3|, and P moves by <= 1 per radian of
+// theta3), amplified by |omega| <= 1 + |n| per derivative:
+//   tol(T) = eps_T (8 + 2 |theta2| + 2 |theta3|) (1 + |n|)^order.
+#include "catch2/catch.hpp"
+
+#include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/curve.hpp"
+#include "sphtroch/sampling.hpp"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace sphtroch;
+using mpfr::mpreal;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+long double to_ld(float v) { return v; }
+long double to_ld(double v) { return v; }
+long double to_ld(long double v) { return v; }
+long double to_ld(const mpreal& v) { return v.toLDouble(); }
+
+struct Sample {
+  long double p[3], v[3], a[3];
+};
+
+template <typename Scalar>
+Sample evaluate(const GearTrain& train, double t2) {
+  const TracerCurve<Scalar> curve(train);
+  const Scalar t(t2);
+  const Vector3<Scalar> p = curve.point(t);
+  const Vector3<Scalar> v = curve.velocity(t);
+  const Vector3<Scalar> a = curve.acceleration(t);
+  Sample s{};
+  for (int i = 0; i < 3; ++i) {
+    s.p[i] = to_ld(p[i]);
+    s.v[i] = to_ld(v[i]);
+    s.a[i] = to_ld(a[i]);
+  }
+  return s;
+}
+
+/// Float-representable inputs.
+double f(double x) { return static_cast<double>(static_cast<float>(x)); }
+
+struct Case {
+  double a2, a3;
+  Ratio n;
+  double phase;
+};
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  for (double a2 : {0.25, f(kPi / 3), f(kPi / 2), 2.0, 3.0})
+    for (double a3 : {0.125, f(kPi / 2), 2.5})
+      for (Ratio n : {Ratio(1), Ratio(2), Ratio(-3, 2), Ratio(5, 2), Ratio(1, 3)})
+        for (double phase : {0.0, 0.75}) out.push_back({a2, a3, n, phase});
+  return out;
+}
+
+const double kThetas[] = {-6.5, -3.0, -1.25, 0.0, 0.375, 1.0, 2.75, 4.0, 6.25};
+
+void set_mpfr_precision() { mpreal::set_default_prec(256); }
+
+template <typename Scalar>
+void check_against_mpfr(long double eps) {
+  set_mpfr_precision();
+  double worst_rel = 0;  // worst error relative to the bound, for the record
+  for (const Case& c : cases()) {
+    const GearTrain train(c.a2, c.a3, c.n, c.phase);
+    const long double nabs = std::fabs(static_cast<long double>(c.n.value()));
+    for (double t2 : kThetas) {
+      const Sample ref = evaluate<mpreal>(train, t2);
+      const Sample got = evaluate<Scalar>(train, t2);
+      const long double t3 = std::fabs(nabs * t2) + std::fabs(static_cast<long double>(c.phase));
+      const long double base = eps * (8 + 2 * std::fabs(static_cast<long double>(t2)) + 2 * t3);
+      INFO("a2 = " << c.a2 << " a3 = " << c.a3 << " n = " << c.n.str() << " phase = " << c.phase << " theta2 = " << t2);
+      for (int i = 0; i < 3; ++i) {
+        const long double ep = std::fabs(got.p[i] - ref.p[i]);
+        const long double ev = std::fabs(got.v[i] - ref.v[i]);
+        const long double ea = std::fabs(got.a[i] - ref.a[i]);
+        CHECK(ep <= base);
+        CHECK(ev <= base * (1 + nabs));
+        CHECK(ea <= base * (1 + nabs) * (1 + nabs));
+        worst_rel = std::max(worst_rel, static_cast<double>(ep / base));
+      }
+    }
+  }
+  INFO("worst |P error| / bound = " << worst_rel);
+  CHECK(worst_rel <= 1.0);
+}
+}  // namespace
+
+TEST_CASE("MPFR 256-bit chain equals Eq. 4 expanded in MPFR to 1e-70", "[scalar][mpfr][eq4]") {
+  set_mpfr_precision();
+  const mpreal tol("1e-70");
+  for (const Case& c : cases()) {
+    const GearTrain train(c.a2, c.a3, c.n, c.phase);
+    const TracerCurve<mpreal> curve(train);
+    const mpreal a2(c.a2), a3(c.a3);
+    const mpreal ca2 = cos(a2), sa2 = sin(a2), ca3 = cos(a3), sa3 = sin(a3);
+    for (double t2d : kThetas) {
+      const mpreal t2(t2d);
+      const mpreal t3 = mpreal(static_cast<long>(c.n.p())) * t2 / mpreal(static_cast<long>(c.n.q())) + mpreal(c.phase);
+      const mpreal c2 = cos(t2), s2 = sin(t2), c3 = cos(t3), s3 = sin(t3);
+      const mpreal ex = c2 * s3 * sa3 + s2 * c3 * ca2 * sa3 + s2 * sa2 * ca3;
+      const mpreal ey = s2 * s3 * sa3 - c2 * c3 * ca2 * sa3 - c2 * sa2 * ca3;
+      const mpreal ez = -c3 * sa2 * sa3 + ca2 * ca3;
+      const Vector3<mpreal> p = curve.point(t2);
+      INFO("a2 = " << c.a2 << " a3 = " << c.a3 << " n = " << c.n.str() << " theta2 = " << t2d);
+      CHECK(abs(p.x() - ex) <= tol);
+      CHECK(abs(p.y() - ey) <= tol);
+      CHECK(abs(p.z() - ez) <= tol);
+      CHECK(abs(p.norm() - 1) <= tol);
+    }
+  }
+}
+
+TEST_CASE("double agrees with the MPFR reference to ~1e-15 (its own precision)", "[scalar][double]") {
+  check_against_mpfr<double>(std::numeric_limits<double>::epsilon());
+}
+
+TEST_CASE("long double agrees with the MPFR reference to ~1e-18 (its own precision)", "[scalar][long_double]") {
+  check_against_mpfr<long double>(std::numeric_limits<long double>::epsilon());
+}
+
+TEST_CASE("float agrees with the MPFR reference to ~1e-6 (its own precision)", "[scalar][float]") {
+  check_against_mpfr<float>(std::numeric_limits<float>::epsilon());
+}
+
+namespace {
+/// The tracer on the pitch cone (a3 = a_p, kept symbolic) has zero speed at theta3 = pi in every
+/// Scalar, to that Scalar's rounding: the symbolic reference gives sin a_p and cos a_p as the
+/// normalised screw axis components, so P and omega are parallel to the last bit.
+template <typename Scalar>
+void check_pitch_cone_cusp(const Scalar& tol_per_unit) {
+  set_mpfr_precision();
+  for (double a2 : {0.25, f(kPi / 2), 2.0})
+    for (Ratio n : {Ratio(1), Ratio(2), Ratio(5, 2), Ratio(-3, 2)}) {
+      const GearTrain train = GearTrain::on_cone(a2, A3Reference::pitch_cone, 0.0, n);
+      const TracerCurve<Scalar> curve(train);
+      // theta3 = n theta2 = pi  =>  theta2 = pi q / p.
+      const Scalar t = Constants<Scalar>::pi() * Scalar(static_cast<double>(n.q())) / Scalar(static_cast<double>(n.p()));
+      const Scalar speed = curve.velocity(t).norm();
+      const double nabs = std::abs(n.value());
+      INFO("a2 = " << a2 << " n = " << n.str() << " speed = " << to_ld(speed));
+      CHECK(speed <= tol_per_unit * Scalar((1 + nabs) * (1 + nabs) * 8));
+      // ... and half a planet turn later it is far from zero.
+      const Scalar t_far = Scalar(2) * t;
+      CHECK(curve.velocity(t_far).norm() > Scalar(1e-3));
+    }
+}
+}  // namespace
+
+TEST_CASE("tracer_on_pitch_cone: zero speed at theta3 = pi in float, double, long double and MPFR",
+          "[scalar][cusp]") {
+  check_pitch_cone_cusp<float>(std::numeric_limits<float>::epsilon());
+  check_pitch_cone_cusp<double>(std::numeric_limits<double>::epsilon());
+  check_pitch_cone_cusp<long double>(std::numeric_limits<long double>::epsilon());
+  set_mpfr_precision();
+  check_pitch_cone_cusp<mpreal>(mpreal("1e-75"));
+}
+
+TEST_CASE("sampling instantiates for every Scalar type", "[scalar][sampling]") {
+  set_mpfr_precision();
+  const GearTrain train(f(kPi / 2), f(kPi / 2), Ratio(1));
+  const auto tf = sample_period(TracerCurve<float>(train), 8, true);
+  const auto td = sample_period(TracerCurve<double>(train), 8, true);
+  const auto tl = sample_turns(TracerCurve<long double>(train), 1.0, 9, true);
+  const auto tm = sample_period(TracerCurve<mpreal>(train), 8, true);
+  REQUIRE(tf.size() == 8);
+  REQUIRE(tl.size() == 9);
+  REQUIRE(tm.size() == 8);
+  for (std::size_t i = 0; i < 8; ++i) {
+    CHECK(std::fabs(to_ld(tm.t[i]) - to_ld(td.t[i])) <= 1e-15L * 8);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(std::fabs(to_ld(tf.points[i][k]) - to_ld(tm.points[i][k])) <= 1e-6L);
+      CHECK(std::fabs(to_ld(td.points[i][k]) - to_ld(tm.points[i][k])) <= 1e-15L);
+    }
+  }
+}
