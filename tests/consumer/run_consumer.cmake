@@ -1,0 +1,54 @@
+# Builds and runs tests/consumer against sphtroch; called by ctest:
+#   cmake -DSOURCE_DIR=<sphtroch source> -DWORK_DIR=<scratch> -DMODE=find_package|add_subdirectory -P run_consumer.cmake
+# find_package:     configure + install sphtroch (tests, CLI, benchmarks off) into WORK_DIR/<mode>/prefix,
+#                   then configure, build and run the consumer with CMAKE_PREFIX_PATH = that prefix.
+# add_subdirectory: the consumer adds SOURCE_DIR as a subdirectory.
+# Any failing step is a FATAL_ERROR (the ctest test fails, with the step's output).
+foreach(var SOURCE_DIR WORK_DIR MODE)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_consumer.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+if(NOT MODE STREQUAL "find_package" AND NOT MODE STREQUAL "add_subdirectory")
+  message(FATAL_ERROR "run_consumer.cmake: MODE must be find_package or add_subdirectory, not '${MODE}'")
+endif()
+
+set(work "${WORK_DIR}/${MODE}")
+set(prefix "${work}/prefix")
+set(consumer_build "${work}/consumer-build")
+# Fresh every run: an install left from an earlier run must not hide a broken one.
+file(REMOVE_RECURSE "${work}")
+file(MAKE_DIRECTORY "${work}")
+
+function(step name)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "consumer (${MODE}): ${name} failed (${rc})\n${out}\n${err}")
+  endif()
+  message(STATUS "consumer (${MODE}): ${name} ok")
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+
+set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF)
+if(MODE STREQUAL "find_package")
+  step("configure sphtroch" ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${work}/sphtroch-build"
+       -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=${prefix} ${off})
+  step("install sphtroch" ${CMAKE_COMMAND} --build "${work}/sphtroch-build" --target install)
+  if(NOT EXISTS "${prefix}/include/sphtroch/sphtroch.hpp")
+    message(FATAL_ERROR "consumer (${MODE}): headers not installed under ${prefix}/include")
+  endif()
+  step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
+       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DSPHTROCH_CONSUMER_MODE=find_package)
+else()
+  step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
+       -DCMAKE_BUILD_TYPE=Release -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR})
+  # As a subproject sphtroch must not build its tests, CLI or benchmarks by default.
+  foreach(dir tests src/cli bench)
+    if(EXISTS "${consumer_build}/sphtroch/${dir}/Makefile" OR EXISTS "${consumer_build}/sphtroch/${dir}/build.ninja")
+      message(FATAL_ERROR "consumer (${MODE}): sphtroch built ${dir} as a subproject")
+    endif()
+  endforeach()
+endif()
+step("build consumer" ${CMAKE_COMMAND} --build "${consumer_build}")
+step("run consumer" "${consumer_build}/consumer")
+message(STATUS "consumer (${MODE}): ${step_output}")
