@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# sphtroch developer set-up, for a fresh Debian 12 machine (as root, or with sudo).
+#
+#   bash scripts/dev.sh run    # install missing packages, build (Release, build/), trace report Fig. 3
+#   bash scripts/dev.sh test   # the same set-up, then the whole test suite through ctest
+#
+# Both are re-runnable and incremental: only missing Debian packages are installed (apt-get
+# update runs only when something is missing), the build directory is reused and rebuilt
+# incrementally. Environment: BUILD_DIR (default build), JOBS (default: all cores).
+set -euo pipefail
+
+usage() {
+  echo "usage: bash scripts/dev.sh run|test" >&2
+  exit 2
+}
+[[ $# -eq 1 ]] || usage
+mode=$1
+[[ $mode == run || $mode == test ]] || usage
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+build_dir=${BUILD_DIR:-build}
+jobs=${JOBS:-$(nproc)}
+
+packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
+          libcli11-dev nlohmann-json3-dev libbenchmark-dev)
+
+install_missing_packages() {
+  local missing=() pkg
+  for pkg in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$pkg")
+    fi
+  done
+  if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "dev.sh: all ${#packages[@]} Debian packages present"
+    return
+  fi
+  echo "dev.sh: installing missing Debian packages: ${missing[*]}"
+  local sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    if ! command -v sudo >/dev/null; then
+      echo "dev.sh: not root and sudo not found; install as root: apt-get install -y ${missing[*]}" >&2
+      exit 1
+    fi
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+configure_and_build() {
+  # Configuring an existing build directory again is cheap and picks up new files.
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$build_dir" -j "$jobs"
+}
+
+install_missing_packages
+configure_and_build
+
+case $mode in
+  run)
+    # Report Fig. 3: a2 = a3 = pi/2, n = 1 (a spherical limacon with its node at (0, 1, 0), Eq. 25).
+    "$build_dir/bin/sphtroch" trace --a2 pi/2 --a3 pi/2 --n 1 --samples 16
+    ;;
+  test)
+    ctest --test-dir "$build_dir" --output-on-failure -j2
+    ;;
+esac
