@@ -1,0 +1,534 @@
+// Tests for sphtroch/arc_predicates.hpp and sphtroch/polyline_crossings.hpp.
+//
+// Expected values come from construction (exact coordinates), from an independent integer
+// oracle, or from the O(N^2) brute force; never from the fast search itself.
+#include "catch2/catch.hpp"
+
+#include "sphtroch/arc_predicates.hpp"
+#include "sphtroch/polyline_crossings.hpp"
+#include "sphtroch/sampling.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using sphtroch::ArcContact;
+using sphtroch::CandidateSearch;
+using sphtroch::EdgePair;
+using sphtroch::SelfCrossings;
+using V = Eigen::Vector3d;
+using Polyline = std::vector<V>;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string describe(const std::vector<EdgePair>& pairs, std::size_t limit = 20) {
+  std::ostringstream os;
+  os << pairs.size() << " pairs:";
+  for (std::size_t k = 0; k < pairs.size() && k < limit; ++k)
+    os << " (" << pairs[k].i << "," << pairs[k].j << "," << sphtroch::to_string(pairs[k].kind) << ")";
+  return os.str();
+}
+
+// The fast search equals the brute force pair for pair, for both candidate searches, several
+// run lengths and a margin (which may only change the work).
+void check_against_brute_force(const Polyline& vs, bool closed, const SelfCrossings& brute) {
+  struct Variant {
+    CandidateSearch search;
+    std::size_t run;
+    double margin;
+  };
+  const Variant variants[] = {{CandidateSearch::runs, sphtroch::kDefaultMaxRunEdges, 0.0},
+                              {CandidateSearch::runs, 1, 0.0},
+                              {CandidateSearch::runs, 3, 0.0},
+                              {CandidateSearch::runs, 1000, 0.0},
+                              {CandidateSearch::runs, 8, 1e-3},
+                              {CandidateSearch::edges, 0, 0.0},
+                              {CandidateSearch::edges, 0, 1e-2}};
+  for (const Variant& v : variants) {
+    sphtroch::CrossingSearchOptions opt;
+    opt.search = v.search;
+    opt.max_run_edges = v.run;
+    opt.margin = v.margin;
+    const SelfCrossings fast = sphtroch::find_self_crossings(vs, closed, opt);
+    INFO("search " << (v.search == CandidateSearch::runs ? "runs" : "edges") << " run " << v.run << " margin "
+                   << v.margin << " closed " << closed << " n " << vs.size());
+    INFO("fast crossings " << describe(fast.crossings) << "\nbrute crossings " << describe(brute.crossings));
+    INFO("fast touchings " << describe(fast.touchings) << "\nbrute touchings " << describe(brute.touchings));
+    CHECK(fast.crossings == brute.crossings);
+    CHECK(fast.touchings == brute.touchings);
+    CHECK(fast.edges == brute.edges);
+    CHECK(fast.candidate_pairs <= brute.candidate_pairs);
+  }
+}
+
+SelfCrossings check_fast_equals_brute(const Polyline& vs, bool closed) {
+  const SelfCrossings brute = sphtroch::exact_brute_force_crossings(vs, closed);
+  check_against_brute_force(vs, closed, brute);
+  return brute;
+}
+
+Polyline random_polyline(std::uint32_t seed, std::size_t n, double step) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Polyline vs;
+  V p(g(rng), g(rng), g(rng));
+  p.normalize();
+  for (std::size_t i = 0; i < n; ++i) {
+    vs.push_back(p * (0.5 + 0.001 * static_cast<double>(i % 7)));  // not normalised on purpose
+    V q = p + step * V(g(rng), g(rng), g(rng));
+    p = q.normalized();
+  }
+  return vs;
+}
+
+Polyline trochoid(double a2, double a3, std::int64_t p, std::int64_t q, std::size_t n) {
+  sphtroch::GearTrain train(a2, a3, sphtroch::Ratio(p, q));
+  sphtroch::TracerCurve<double> curve(train);
+  return sphtroch::sample_period(curve, n).points;
+}
+
+// ---- An independent oracle for arcs with small integer coordinates (exact in int64) ----
+using I3 = std::array<std::int64_t, 3>;
+I3 cross(const I3& a, const I3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+std::int64_t dot(const I3& a, const I3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+int sgn(std::int64_t x) { return (x > 0) - (x < 0); }
+I3 neg(const I3& a) { return {-a[0], -a[1], -a[2]}; }
+
+// Where P (in the plane of AB, normal n = A x B) is: -1 outside, 0 at an endpoint, 1 interior.
+// P = alpha A + beta B; alpha n.n = (P x B).n, beta n.n = (A x P).n.
+int where_on_arc(const I3& p, const I3& a, const I3& b) {
+  const I3 n = cross(a, b);
+  const int alpha = sgn(dot(cross(p, b), n));
+  const int beta = sgn(dot(cross(a, p), n));
+  if (alpha < 0 || beta < 0) return -1;
+  return (alpha > 0 && beta > 0) ? 1 : 0;
+}
+
+ArcContact oracle(const I3& a, const I3& b, const I3& c, const I3& d) {
+  const I3 n1 = cross(a, b), n2 = cross(c, d);
+  const I3 x = cross(n1, n2);
+  if (x[0] != 0 || x[1] != 0 || x[2] != 0) {
+    // Distinct great circles: the only candidates are +-X.
+    for (const I3& pnt : {x, neg(x)}) {
+      const int on_ab = where_on_arc(pnt, a, b), on_cd = where_on_arc(pnt, c, d);
+      if (on_ab >= 0 && on_cd >= 0) return (on_ab == 1 && on_cd == 1) ? ArcContact::crossing : ArcContact::touching;
+    }
+    return ArcContact::none;
+  }
+  // One great circle: walk a fine set of directions? No: use the midpoints, which are exact
+  // in integers as sums of (scaled) endpoints. The intersection has positive length iff it
+  // contains the midpoint of a sub-arc; test the midpoints of every arc between consecutive
+  // candidate endpoints lying on both arcs.
+  const I3 ends[4] = {a, b, c, d};
+  std::vector<I3> on_both;
+  for (const I3& e : ends)
+    if (where_on_arc(e, a, b) >= 0 && where_on_arc(e, c, d) >= 0) on_both.push_back(e);
+  if (on_both.empty()) return ArcContact::none;
+  // Normalising is not exact; compare the sub-arc between two common points by the
+  // direction sum e/|e| + f/|f| scaled: use |f| e + |e| f with integer norms when they are
+  // perfect squares... simpler: two distinct common directions means positive-length overlap
+  // (the intersection is connected and contains both).
+  for (std::size_t i = 0; i < on_both.size(); ++i)
+    for (std::size_t j = i + 1; j < on_both.size(); ++j) {
+      const I3 cr = cross(on_both[i], on_both[j]);
+      const bool parallel = cr[0] == 0 && cr[1] == 0 && cr[2] == 0;
+      if (!parallel || dot(on_both[i], on_both[j]) < 0) return ArcContact::overlap;
+    }
+  return ArcContact::touching;
+}
+
+V to_v(const I3& a) { return V(double(a[0]), double(a[1]), double(a[2])); }
+
+bool valid_arc(const I3& a, const I3& b) {
+  const I3 c = cross(a, b);
+  return (a[0] || a[1] || a[2]) && (b[0] || b[1] || b[2]) && (c[0] || c[1] || c[2]);
+}
+
+}  // namespace
+
+// ============================== arc_predicates.hpp ==============================
+
+TEST_CASE("orientation_sign follows det[a, b, c]", "[arc_predicates]") {
+  CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)) == 1);
+  CHECK(sphtroch::orientation_sign(V(0, 1, 0), V(1, 0, 0), V(0, 0, 1)) == -1);
+  CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, 0)) == 0);
+  // A determinant far below rounding: exact sign all the same.
+  const double t = std::ldexp(1.0, -60);
+  CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, t)) == 1);
+  CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, -t)) == -1);
+}
+
+TEST_CASE("relate_vertices: same direction, antipodal, distinct", "[arc_predicates]") {
+  CHECK(sphtroch::relate_vertices(V(1, 2, 3), V(2, 4, 6)) == sphtroch::VertexRelation::same_direction);
+  CHECK(sphtroch::relate_vertices(V(1, 2, 3), V(-0.5, -1, -1.5)) == sphtroch::VertexRelation::antipodal);
+  CHECK(sphtroch::relate_vertices(V(1, 2, 3), V(1, 2, 3 + 4.5e-16)) == sphtroch::VertexRelation::distinct);
+  CHECK(sphtroch::relate_vertices(V(0, 0, 1), V(0, 0, 1e-300)) == sphtroch::VertexRelation::same_direction);
+}
+
+TEST_CASE("classify_arcs: a transversal crossing and a miss", "[arc_predicates]") {
+  const V a(1, 0, 0), b(0, 1, 0), c(1, 1, -1), d(1, 1, 1);
+  CHECK(sphtroch::classify_arcs(a, b, c, d) == ArcContact::crossing);
+  CHECK(sphtroch::classify_arcs(c, d, a, b) == ArcContact::crossing);
+  CHECK(sphtroch::classify_arcs(b, a, d, c) == ArcContact::crossing);
+  CHECK(sphtroch::classify_arcs(a, b, V(1, 1, 0.5), V(1, 1, 1)) == ArcContact::none);
+  std::size_t count = 0;
+  sphtroch::classify_arcs(a, b, c, d, &count);
+  CHECK(count == 4);
+}
+
+TEST_CASE("vertex_exactly_on_arc is a touching, not a crossing", "[arc_predicates][degenerate]") {
+  // (1, 1, 0) is exactly on the arc (1,0,0)-(0,1,0); vertices need not be normalised.
+  const V a(1, 0, 0), b(0, 1, 0), on(1, 1, 0);
+  CHECK(sphtroch::point_on_arc(on, a, b));
+  CHECK(sphtroch::point_on_arc(V(3, 3, 0), a, b));
+  CHECK_FALSE(sphtroch::point_on_arc(V(-1, -1, 0), a, b));  // the antipode, on the circle only
+  CHECK_FALSE(sphtroch::point_on_arc(V(1, -1, 0), a, b));
+  CHECK(sphtroch::point_on_arc(V(2, 0, 0), a, b));           // an endpoint
+  // An arc starting on AB and leaving it (T-junction), both orders and directions.
+  CHECK(sphtroch::classify_arcs(a, b, on, V(0, 0, 1)) == ArcContact::touching);
+  CHECK(sphtroch::classify_arcs(a, b, V(1, 1, 1), on) == ArcContact::touching);
+  CHECK(sphtroch::classify_arcs(on, V(1, 1, -1), b, a) == ArcContact::touching);
+  // A polyline through the point: edges (1,1,1)-(1,1,0) and (1,1,0)-(1,1,-1) both touch AB.
+  Polyline vs = {a, b, V(0, 0, 1), V(1, 1, 1), on, V(1, 1, -1), V(0, -1, -1)};
+  const SelfCrossings brute = check_fast_equals_brute(vs, false);
+  CHECK(brute.crossings.empty());
+  const std::vector<EdgePair> expected = {{0, 3, ArcContact::touching}, {0, 4, ArcContact::touching}};
+  CHECK(brute.touchings == expected);
+}
+
+TEST_CASE("shared_vertex of non-adjacent edges is a touching", "[arc_predicates][degenerate]") {
+  CHECK(sphtroch::classify_arcs(V(1, 0, 0), V(0, 1, 0), V(0, 2, 0), V(0, 0, 1)) == ArcContact::touching);
+  CHECK(sphtroch::classify_arcs(V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(0.5, 0, 0)) == ArcContact::touching);
+  // A figure eight through (0,0,1) visited twice: edges 1, 2 meet edges 4, 5 there.
+  const Polyline vs = {V(1, 0, 0.2), V(1, 1, 1), V(0, 0, 1), V(-1, -1, 1), V(-1, 0.2, 0.2),
+                       V(-1, 1, 1), V(0, 0, 2), V(1, -1, 1)};
+  const SelfCrossings brute = check_fast_equals_brute(vs, true);
+  std::set<std::pair<std::size_t, std::size_t>> touching;
+  for (const EdgePair& e : brute.touchings) touching.insert({e.i, e.j});
+  for (std::size_t i : {1, 2})
+    for (std::size_t j : {5, 6}) CHECK(touching.count({i, j}) == 1);
+}
+
+TEST_CASE("overlap_on_one_great_circle", "[arc_predicates][degenerate]") {
+  const V a(1, 0, 0), b(0, 1, 0);
+  CHECK(sphtroch::classify_arcs(a, b, V(1, 1, 0), V(-1, 2, 0)) == ArcContact::overlap);   // partial
+  CHECK(sphtroch::classify_arcs(a, b, V(2, 0, 0), V(0, 3, 0)) == ArcContact::overlap);    // same arc
+  CHECK(sphtroch::classify_arcs(a, b, b, a) == ArcContact::overlap);                      // reversed
+  CHECK(sphtroch::classify_arcs(a, b, V(2, 1, 0), V(1, 2, 0)) == ArcContact::overlap);    // inside
+  CHECK(sphtroch::classify_arcs(a, V(1, 1, 0), V(2, 2, 0), b) == ArcContact::touching);   // end to end
+  CHECK(sphtroch::classify_arcs(a, V(1, 1, 0), b, V(-1, 1, 0)) == ArcContact::none);      // same circle, apart
+  CHECK(sphtroch::classify_arcs(a, b, V(-1, 0, 0), V(0, -1, 0)) == ArcContact::none);     // antipodal arc
+  // A polyline running twice along the equator: edge 3 lies inside edge 0, and edges 2 and 4
+  // (its neighbours) each touch edge 0 at an endpoint of edge 3.
+  const Polyline vs = {V(1, 0, 0), V(0, 1, 0), V(0, 1, 1), V(2, 1, 0), V(1, 2, 0), V(0, 0, -1)};
+  const SelfCrossings brute = check_fast_equals_brute(vs, false);
+  INFO(describe(brute.touchings));
+  const std::vector<EdgePair> expected = {
+      {0, 2, ArcContact::touching}, {0, 3, ArcContact::overlap}, {0, 4, ArcContact::touching}};
+  CHECK(brute.touchings == expected);
+  CHECK(brute.crossings.empty());
+}
+
+TEST_CASE("antipodal_meeting of great circles does not count", "[arc_predicates][degenerate]") {
+  // Equator and the meridian plane y = 0 meet at +-(1,0,0). AB contains (1,0,0), CD contains (-1,0,0):
+  // every single plane test says "opposite sides", yet the arcs are disjoint.
+  const V a(1, -1, 0), b(1, 1, 0);
+  CHECK(sphtroch::classify_arcs(a, b, V(-1, 0, -1), V(-1, 0, 1)) == ArcContact::none);
+  CHECK(sphtroch::classify_arcs(a, b, V(1, 0, -1), V(1, 0, 1)) == ArcContact::crossing);
+  // An endpoint exactly at the antipode of a point of the other arc.
+  CHECK(sphtroch::classify_arcs(a, b, V(-1, 0, 0), V(-1, 0, 1)) == ArcContact::none);
+  CHECK(sphtroch::classify_arcs(a, b, V(1, 0, 0), V(1, 0, 1)) == ArcContact::touching);
+  const Polyline vs = {a, b, V(0, 0, 1), V(-1, 0, -1), V(-1, 0, 1)};
+  const SelfCrossings brute = check_fast_equals_brute(vs, false);
+  CHECK(brute.crossings.empty());
+  CHECK(brute.touchings.empty());
+}
+
+TEST_CASE("classify_arcs agrees with an integer oracle on cocircular and degenerate arcs", "[arc_predicates][degenerate]") {
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<int> coord(-2, 2);
+  const auto draw = [&] { return I3{coord(rng), coord(rng), coord(rng)}; };
+  std::size_t counts[4] = {0, 0, 0, 0};
+  for (int trial = 0; trial < 200000; ++trial) {
+    I3 a = draw(), b = draw(), c = draw(), d = draw();
+    if (trial % 3 == 0) {
+      // force coplanarity: c, d in the plane of a, b
+      const int r = coord(rng);
+      c = I3{a[0] + r * b[0], a[1] + r * b[1], a[2] + r * b[2]};
+      const int s = coord(rng), t = coord(rng);
+      d = I3{s * a[0] + t * b[0], s * a[1] + t * b[1], s * a[2] + t * b[2]};
+    }
+    if (!valid_arc(a, b) || !valid_arc(c, d)) continue;
+    const ArcContact expected = oracle(a, b, c, d);
+    const ArcContact got = sphtroch::classify_arcs(to_v(a), to_v(b), to_v(c), to_v(d));
+    ++counts[static_cast<int>(expected)];
+    if (got != expected) {
+      INFO("a " << a[0] << "," << a[1] << "," << a[2] << " b " << b[0] << "," << b[1] << "," << b[2] << " c " << c[0]
+                << "," << c[1] << "," << c[2] << " d " << d[0] << "," << d[1] << "," << d[2]);
+      CHECK(sphtroch::to_string(got) == std::string(sphtroch::to_string(expected)));
+    }
+    CHECK(sphtroch::classify_arcs(to_v(c), to_v(d), to_v(a), to_v(b)) == got);
+    CHECK(sphtroch::classify_arcs(to_v(b), to_v(a), to_v(d), to_v(c)) == got);
+  }
+  // every kind is exercised many times
+  for (std::size_t k : counts) CHECK(k > 1000);
+}
+
+// ============================== polyline_crossings.hpp ==============================
+
+TEST_CASE("arc_bounding_box contains the arc (the sagitta bound)", "[polyline_crossings]") {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    V a(g(rng), g(rng), g(rng)), b;
+    const int mode = trial % 4;
+    if (mode == 0) b = V(g(rng), g(rng), g(rng));
+    else if (mode == 1) b = -a + 1e-6 * V(g(rng), g(rng), g(rng));  // nearly antipodal: arc close to pi
+    else if (mode == 2) b = a + 1e-3 * V(g(rng), g(rng), g(rng));   // short
+    else b = a + 0.3 * V(g(rng), g(rng), g(rng));
+    a *= std::ldexp(1.0, static_cast<int>(trial % 41) - 20);           // scales need not be 1
+    const sphtroch::ArcBox box = sphtroch::arc_bounding_box(a, b);
+    // Sample the arc by slerp in long double.
+    using L = long double;
+    Eigen::Matrix<L, 3, 1> u = a.cast<L>(), v = b.cast<L>();
+    u /= u.norm();
+    v /= v.norm();
+    const L theta = std::atan2(u.cross(v).norm(), u.dot(v));
+    for (int s = 0; s <= 64; ++s) {
+      const L t = L(s) / 64;
+      const Eigen::Matrix<L, 3, 1> p = (std::sin((1 - t) * theta) * u + std::sin(t * theta) * v) / std::sin(theta);
+      const V pd = p.cast<double>();
+      INFO("trial " << trial << " s " << s);
+      REQUIRE(box.contains(pd));
+    }
+  }
+}
+
+TEST_CASE("random spherical polylines: fast search equals brute force", "[polyline_crossings]") {
+  const std::size_t sizes[] = {3, 4, 10, 60, 300, 1200};
+  const double steps[] = {0.05, 0.4, 3.0};  // random walks with short steps, and jumps across the sphere
+  std::uint32_t seed = 1;
+  std::size_t total_crossings = 0;
+  for (std::size_t n : sizes)
+    for (double step : steps)
+      for (bool closed : {true, false}) {
+        const Polyline vs = random_polyline(seed++, n, step);
+        const SelfCrossings brute = check_fast_equals_brute(vs, closed);
+        total_crossings += brute.crossings.size();
+      }
+  CHECK(total_crossings > 1000);
+}
+
+TEST_CASE("integer-coordinate polylines: many exact degeneracies", "[polyline_crossings][degenerate]") {
+  // Vertices from {-2..2}^3: shared vertices, vertices on arcs, overlapping arcs abound.
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> coord(-2, 2);
+  std::size_t touch = 0, overlap = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Polyline vs;
+    const std::size_t n = 20 + 10 * static_cast<std::size_t>(trial);
+    while (vs.size() < n) {
+      V v(coord(rng), coord(rng), coord(rng));
+      if (v.isZero()) continue;
+      if (!vs.empty() && sphtroch::relate_vertices(vs.back(), v) != sphtroch::VertexRelation::distinct) continue;
+      vs.push_back(v);
+    }
+    const bool closed = trial % 2 == 0;
+    if (closed && sphtroch::relate_vertices(vs.back(), vs.front()) != sphtroch::VertexRelation::distinct) vs.pop_back();
+    const SelfCrossings brute = check_fast_equals_brute(vs, closed);
+    for (const EdgePair& e : brute.touchings) (e.kind == ArcContact::overlap ? overlap : touch)++;
+  }
+  CHECK(touch > 100);
+  CHECK(overlap > 10);
+}
+
+TEST_CASE("trochoid polylines: fast search equals brute force", "[polyline_crossings]") {
+  struct Case {
+    double a2, a3;
+    std::int64_t p, q;
+    std::size_t n;
+  };
+  const Case cases[] = {
+      {kPi / 2, kPi / 2, 1, 1, 1500},    {1.0, 2.0, 1, 1, 1000},      {kPi / 2, kPi / 2, 2, 1, 1500},
+      {kPi / 3, 2 * kPi / 3, 2, 1, 1500}, {1.0, 2.0, 5, 2, 2500},     {1.0, 2.0, 7, 3, 3000},
+      {0.7, 1.3, 13, 5, 3000},           {kPi / 3, kPi / 3, 3, 1, 1200}, {1.0, 2.0, 7, 3, 97},
+  };
+  for (const Case& c : cases) {
+    const Polyline vs = trochoid(c.a2, c.a3, c.p, c.q, c.n);
+    INFO("a2 " << c.a2 << " a3 " << c.a3 << " n " << c.p << "/" << c.q << " samples " << c.n);
+    const SelfCrossings brute = check_fast_equals_brute(vs, true);
+    // Open pieces of the same curve too.
+    const Polyline half(vs.begin(), vs.begin() + static_cast<std::ptrdiff_t>(vs.size() / 2));
+    check_fast_equals_brute(half, false);
+    if (c.p == 7 && c.n > 100) CHECK(brute.crossings.size() > 0);
+  }
+}
+
+TEST_CASE("samples_on_node: vertices landing on the node (0, 1, 0)", "[polyline_crossings][degenerate]") {
+  // n = 1, a2 = a3 = pi/2 (report Fig. 3): the node (0, 1, 0) at theta2 = pi/2 and 3 pi/2,
+  // which 8 uniform samples from 0 hit (up to the rounding of the double samples).
+  const Polyline vs = trochoid(kPi / 2, kPi / 2, 1, 1, 8);
+  REQUIRE(vs.size() == 8);
+  CHECK((vs[2] - V(0, 1, 0)).norm() < 1e-15);
+  CHECK((vs[6] - V(0, 1, 0)).norm() < 1e-15);
+  const SelfCrossings brute = check_fast_equals_brute(vs, true);
+  // Whatever the 1e-17 rounding decides, the node is met by the edges around vertices 2 and 6
+  // (edges 1, 2 and 5, 6) and by nothing else.
+  std::size_t near_node = 0;
+  for (const auto* list : {&brute.crossings, &brute.touchings})
+    for (const EdgePair& e : *list) {
+      const bool a = e.i == 1 || e.i == 2, b = e.j == 5 || e.j == 6;
+      CHECK((a && b));
+      near_node += (a && b) ? 1 : 0;
+    }
+  INFO(describe(brute.crossings) << " / " << describe(brute.touchings));
+  CHECK(near_node >= 1);
+  // With the two vertices set exactly to the node, the four edge pairs touch at a shared vertex.
+  Polyline exact = vs;
+  exact[2] = V(0, 1, 0);
+  exact[6] = V(0, 2, 0);  // the same direction, not normalised
+  const SelfCrossings ex = check_fast_equals_brute(exact, true);
+  const std::vector<EdgePair> expected = {{1, 5, ArcContact::touching},
+                                          {1, 6, ArcContact::touching},
+                                          {2, 5, ArcContact::touching},
+                                          {2, 6, ArcContact::touching}};
+  CHECK(ex.crossings.empty());
+  CHECK(ex.touchings == expected);
+}
+
+TEST_CASE("visit_close_edge_pairs visits every pair closer than the margin", "[polyline_crossings]") {
+  const Polyline vs = trochoid(1.0, 2.0, 7, 3, 600);
+  const double margin = 0.05;
+  const std::size_t n = vs.size();
+  std::set<std::pair<std::size_t, std::size_t>> visited;
+  bool duplicate = false;
+  const bool completed = sphtroch::visit_close_edge_pairs(vs, true, margin, [&](std::size_t i, std::size_t j) {
+    CHECK(i < j);
+    duplicate = duplicate || !visited.insert({i, j}).second;
+    return true;
+  });
+  CHECK(completed);
+  CHECK_FALSE(duplicate);
+  // Brute force on sampled arc points: a sampled distance below the margin proves the arcs are closer.
+  std::vector<std::vector<V>> samples(n);
+  for (std::size_t e = 0; e < n; ++e)
+    for (int s = 0; s <= 8; ++s) {
+      const double t = s / 8.0;
+      samples[e].push_back(((1 - t) * vs[e] + t * vs[(e + 1) % n]).normalized());
+    }
+  std::size_t required = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      double best = 10;
+      for (const V& p : samples[i])
+        for (const V& q : samples[j]) best = std::min(best, (p - q).norm());
+      if (best < margin) {
+        ++required;
+        INFO("edges " << i << " " << j << " at distance " << best);
+        CHECK(visited.count({i, j}) == 1);
+      }
+    }
+  CHECK(required > 100);
+  // Same with per-edge boxes.
+  std::set<std::pair<std::size_t, std::size_t>> visited_edges;
+  sphtroch::visit_close_edge_pairs(
+      vs, true, margin, [&](std::size_t i, std::size_t j) { visited_edges.insert({i, j}); }, CandidateSearch::edges);
+  CHECK(visited_edges.size() >= required);
+}
+
+TEST_CASE("visit_close_edge_pairs stops when the visitor returns false", "[polyline_crossings]") {
+  const Polyline vs = trochoid(1.0, 2.0, 7, 3, 2000);
+  for (CandidateSearch search : {CandidateSearch::runs, CandidateSearch::edges}) {
+    int calls = 0;
+    const bool completed = sphtroch::visit_close_edge_pairs(
+        vs, true, 0.01, [&](std::size_t, std::size_t) { return ++calls < 3; }, search);
+    CHECK_FALSE(completed);
+    CHECK(calls == 3);
+  }
+}
+
+TEST_CASE("invalid polylines throw InvalidInput naming the vertices", "[polyline_crossings]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto throws_vertices = [](const Polyline& vs, bool closed, const std::string& needle) {
+    try {
+      sphtroch::find_self_crossings(vs, closed);
+    } catch (const sphtroch::InvalidInput& e) {
+      INFO(e.what());
+      CHECK(e.field() == "vertices");
+      CHECK(std::string(e.what()).find(needle) != std::string::npos);
+      return;
+    }
+    FAIL("no exception for " << needle);
+  };
+  throws_vertices({V(1, 0, 0), V(0, 1, 0)}, true, "too few");
+  throws_vertices({V(1, 0, 0)}, false, "too few");
+  throws_vertices({}, false, "too few");
+  throws_vertices({V(1, 0, 0), V(0, 1, 0), V(nan, 0, 1)}, true, "index 2");
+  throws_vertices({V(1, 0, 0), V(0, inf, 0), V(0, 0, 1)}, true, "index 1");
+  throws_vertices({V(1, 0, 0), V(0, 0, 0), V(0, 0, 1)}, true, "index 1");
+  throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, 2, 0), V(0, 0, 1)}, true, "index 1");  // same direction
+  throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, -3, 0), V(0, 0, 1)}, false, "antipodal");
+  throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 0, 0)}, true, "index 3");  // closing edge
+  CHECK_NOTHROW(sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 0, 0)}, false));
+  CHECK_NOTHROW(sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0)}, false));
+  CHECK_THROWS_AS(sphtroch::exact_brute_force_crossings({V(1, 0, 0), V(-1, 0, 0)}, false), sphtroch::InvalidInput);
+  sphtroch::CrossingSearchOptions bad;
+  bad.margin = -1;
+  CHECK_THROWS_AS(sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)}, true, bad),
+                  sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::visit_close_edge_pairs({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)}, true, nan,
+                                                   [](std::size_t, std::size_t) { return true; }),
+                  sphtroch::InvalidInput);
+}
+
+TEST_CASE("triangles and tiny polylines have no non-adjacent pairs", "[polyline_crossings]") {
+  const SelfCrossings tri = sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)}, true);
+  CHECK(tri.crossings.empty());
+  CHECK(tri.touchings.empty());
+  CHECK(tri.candidate_pairs == 0);
+  // An open polyline of 3 edges folding onto itself at non-adjacent edges 0 and 2.
+  const SelfCrossings z = check_fast_equals_brute({V(1, 0, -1), V(1, 0, 1), V(1, 1, -1), V(1, 1, 1)}, false);
+  CHECK(z.crossings.empty());
+  const Polyline cross = {V(1, -1, 0), V(1, 1, 0), V(1, 0, 1), V(1, 0, -1)};
+  const SelfCrossings x = check_fast_equals_brute(cross, false);
+  const std::vector<EdgePair> expected = {{0, 2, ArcContact::crossing}};
+  CHECK(x.crossings == expected);
+}
+
+// ---- Timing (hidden: not run by ctest). ./test_exact "[.timing]" ----
+TEST_CASE("timing: closed trochoid a2 = 1, a3 = 2, n = 7/3", "[.timing]") {
+  for (std::size_t n : {std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
+    const Polyline vs = trochoid(1.0, 2.0, 7, 3, n);
+    for (CandidateSearch search : {CandidateSearch::runs, CandidateSearch::edges}) {
+      std::vector<double> times;
+      SelfCrossings r;
+      for (int rep = 0; rep < 7; ++rep) {
+        sphtroch::CrossingSearchOptions opt;
+        opt.search = search;
+        const auto t0 = std::chrono::steady_clock::now();
+        r = sphtroch::find_self_crossings(vs, true, opt);
+        times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
+      std::sort(times.begin(), times.end());
+      std::printf("n %8zu search %-5s median %.4f s min %.4f s crossings %zu touchings %zu boxes %zu candidates %zu "
+                  "predicates %zu\n",
+                  n, search == CandidateSearch::runs ? "runs" : "edges", times[times.size() / 2], times[0],
+                  r.crossings.size(), r.touchings.size(), r.boxes, r.candidate_pairs, r.predicates);
+    }
+  }
+}
