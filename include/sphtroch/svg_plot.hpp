@@ -46,6 +46,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sphtroch {
@@ -78,6 +79,10 @@ struct PlotOptions {
   int decimals = 2;
   /// Longest great-circle arc drawn as one straight segment, radians. Valid: (0, 0.5].
   double max_arc_step = 0.5 * Constants<double>::pi() / 180.0;
+  /// Projected polylines are simplified (Douglas-Peucker) so that the drawn line stays within
+  /// this many px of every projected sample: dense samples cost no file size. 0 keeps every
+  /// vertex that differs at the printed precision. Valid: [0, 5].
+  double simplify_px = 0.15;
 };
 
 /// A projected point: picture coordinates in px and the depth P.view (>= 0: front half).
@@ -172,6 +177,8 @@ inline PlotLayout plot_layout(const PlotOptions& o) {
     throw InvalidInput("size", detail::to_text(o.size_px), "outside the valid range", "[64, 8192] px");
   if (!(o.decimals >= 0 && o.decimals <= 6))
     throw InvalidInput("decimals", std::to_string(o.decimals), "outside the valid range", "integer 0 .. 6");
+  if (!(o.simplify_px >= 0 && o.simplify_px <= 5))
+    throw InvalidInput("simplify_px", detail::to_text(o.simplify_px), "outside the valid range", "[0, 5] px");
   if (!(o.max_arc_step > 0 && o.max_arc_step <= 0.5))
     throw InvalidInput("max_arc_step", detail::to_text(o.max_arc_step), "outside the valid range", "(0, 0.5] radians");
 
@@ -319,14 +326,55 @@ inline HemisphereSplit split_by_silhouette(const std::vector<Vector3d>& points, 
 
 namespace detail {
 
-inline void append_runs(SvgPath& d, const std::vector<std::vector<Vector3d>>& runs, const SphereView& cam) {
-  for (const auto& run : runs) {
-    const ScreenPoint s0 = cam.project(run.front());
-    d.move_to(s0.x, s0.y);
-    for (std::size_t i = 1; i < run.size(); ++i) {
-      const ScreenPoint s = cam.project(run[i]);
-      d.line_to(s.x, s.y);
+/// Distance from p to the segment a-b (to a when a = b).
+inline double segment_distance(const ScreenPoint& p, const ScreenPoint& a, const ScreenPoint& b) {
+  const double ux = b.x - a.x, uy = b.y - a.y;
+  const double len2 = ux * ux + uy * uy;
+  double t = len2 > 0 ? ((p.x - a.x) * ux + (p.y - a.y) * uy) / len2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  return std::hypot(p.x - (a.x + t * ux), p.y - (a.y + t * uy));
+}
+
+/// Douglas-Peucker: which vertices to keep so that the kept polyline stays within `tol` of
+/// every vertex. Iterative (no recursion depth limit); ends always kept.
+inline std::vector<bool> simplify_keep(const std::vector<ScreenPoint>& pts, double tol) {
+  std::vector<bool> keep(pts.size(), tol <= 0);
+  if (pts.empty()) return keep;
+  keep.front() = keep.back() = true;
+  if (tol <= 0) return keep;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, pts.size() - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j <= i + 1) continue;
+    double worst = -1.0;
+    std::size_t at = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const double d = segment_distance(pts[k], pts[i], pts[j]);
+      if (d > worst) {
+        worst = d;
+        at = k;
+      }
     }
+    if (worst > tol) {
+      keep[at] = true;
+      todo.emplace_back(i, at);
+      todo.emplace_back(at, j);
+    }
+  }
+  return keep;
+}
+
+inline void append_runs(SvgPath& d, const std::vector<std::vector<Vector3d>>& runs, const SphereView& cam,
+                        double simplify_px) {
+  std::vector<ScreenPoint> screen;
+  for (const auto& run : runs) {
+    screen.clear();
+    for (const auto& p : run) screen.push_back(cam.project(p));
+    const std::vector<bool> keep = simplify_keep(screen, simplify_px);
+    d.move_to(screen.front().x, screen.front().y);
+    for (std::size_t i = 1; i < screen.size(); ++i)
+      if (keep[i]) d.line_to(screen[i].x, screen[i].y);
   }
 }
 
@@ -380,8 +428,8 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
     grid_mer = split_by_silhouette(detail::great_circle(Vector3d::UnitX(), Vector3d::UnitZ(), 360), true, cam.view,
                                    options.max_arc_step);
     SvgPath back(dec);
-    detail::append_runs(back, grid_eq.back, cam);
-    detail::append_runs(back, grid_mer.back, cam);
+    detail::append_runs(back, grid_eq.back, cam, options.simplify_px);
+    detail::append_runs(back, grid_mer.back, cam, options.simplify_px);
     svg.path(back, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.6 * lw) +
                        ";stroke-dasharray:" + num(lw) + " " + num(3 * lw));
   }
@@ -391,7 +439,7 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   const HemisphereSplit curve = split_by_silhouette(pts, trajectory.closed, cam.view, options.max_arc_step);
   {
     SvgPath back(dec);
-    detail::append_runs(back, curve.back, cam);
+    detail::append_runs(back, curve.back, cam, options.simplify_px);
     svg.path(back, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-opacity:0.45;stroke-width:" +
                        num(1.1 * lw) + ";stroke-dasharray:" + num(4 * lw) + " " + num(2.5 * lw) +
                        ";stroke-linejoin:round");
@@ -401,8 +449,8 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   svg.circle(cam.cx, cam.cy, cam.radius, "fill:none;stroke:#333333;stroke-width:" + num(1.1 * lw));
   if (options.draw_grid) {
     SvgPath front(dec);
-    detail::append_runs(front, grid_eq.front, cam);
-    detail::append_runs(front, grid_mer.front, cam);
+    detail::append_runs(front, grid_eq.front, cam, options.simplify_px);
+    detail::append_runs(front, grid_mer.front, cam, options.simplify_px);
     svg.path(front, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.7 * lw));
   }
 
@@ -452,7 +500,7 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   // The curve's front half.
   {
     SvgPath front(dec);
-    detail::append_runs(front, curve.front, cam);
+    detail::append_runs(front, curve.front, cam, options.simplify_px);
     svg.path(front, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-width:" + num(1.7 * lw) +
                         ";stroke-linejoin:round;stroke-linecap:round");
   }
