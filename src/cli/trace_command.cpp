@@ -64,7 +64,8 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   CLI::App* cmd = app.add_subcommand("trace", "print the trajectory P(theta2) (Eq. 4) as CSV: t,x,y,z");
   cmd->footer(
       "Closed curve: N samples t_i = 2*pi*q*i/N over one period (default 360*(q+|p|)).\n"
-      "Open curve (--turns K): N samples over [0, 2*pi*K], both ends included.\n"
+      "Open curve (--turns K): 360*(1+|n|)*K + 1 samples over [0, 2*pi*K], both ends included\n"
+      "(--samples and --turns exclude each other; default counts are capped at 1000000).\n"
       "Sample counts: 3 .. 10000000. Numbers are printed with 17 significant digits.\n"
       "Example: sphtroch trace --a2 pi/2 --a3 pi/2 --n 1 --samples 8");
   options->train.add_to(*cmd);
