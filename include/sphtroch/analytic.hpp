@@ -111,6 +111,8 @@ inline const char* to_string(CriterionStatus status);
 struct Criterion {
   std::string equation;   // "Eq. 24", "Eq. 43", "Eq. 46", "pitch cone (Eq. 20b, 47b)"
   std::string statement;  // e.g. "a2/2 <= a3 <= pi - a2/2"
+  // For the pitch-cone criterion only the ends carry meaning (cusps there); inside or outside
+  // the interval both mean "no cusps".
   CriterionStatus status = CriterionStatus::fails;
   double lower = 0.0;         // interval ends, radians
   double upper = 0.0;
@@ -329,8 +331,8 @@ inline Criterion make_criterion(std::string equation, std::string statement, dou
   c.statement = std::move(statement);
   c.lower = lower;
   c.upper = upper;
-  c.lower_margin = lower_margin;
-  c.upper_margin = upper_margin;
+  c.lower_margin = lower_margin + 0.0;  // + 0.0: print an exact zero margin as 0, not -0
+  c.upper_margin = upper_margin + 0.0;
   c.tolerance = tol;
   c.status = decide(lower_margin, upper_margin, tol);
   return c;
@@ -501,7 +503,7 @@ inline Criterion pitch_cone_criterion(const GearTrain& train, double tol) {
   // Written as the interval a_p <= a3 <= pi - a_p (Eq. 20b generalised); only its ends matter:
   // the ends are where P can be parallel to omega. (For a_p > pi/2 the interval is empty and
   // "fails" / "holds strictly" both mean: no cusps.)
-  Criterion c = make_criterion("pitch cone (Eq. 20b, 47b)", "a3 = a_p or a3 = pi - a_p gives cusps",
+  Criterion c = make_criterion("pitch cone (Eq. 20b, 47b)", "a_p <= a3 <= pi - a_p (cusps at either end)",
                                boundary_value(train, BoundaryKind::pitch_cone),
                                boundary_value(train, BoundaryKind::mirror_pitch_cone),
                                boundary_margin(train, BoundaryKind::pitch_cone),
