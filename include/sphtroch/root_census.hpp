@@ -53,6 +53,7 @@
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
+#include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/types.hpp"
 
 #include <algorithm>
@@ -263,6 +264,8 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
   out.error_bound = static_cast<double>(kRootCensusErrorFactor * LDBL_EPSILON * (abs_p + q));
   const Real err = out.error_bound;
   const Real tangency_tol = std::max<Real>(settings.tangency_tolerance, err);
+  // Within kCuspResolution of a pitch cone a near-cusp loop is not resolved (pitch_cone.hpp).
+  const ConeMargins cones = cone_margins(train);
 
   // Breakpoints: 0, stationary points, pi; decide each stationary point first.
   const std::vector<Real> stationary = f.stationary_points();
@@ -277,7 +280,8 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
     const Real gap = std::abs(gb - m);
     const bool near0 = b < kCuspNeighbourhood && !pole0 && m == f.g_at_0();
     const bool near_pi = pi - b < kCuspNeighbourhood && !pole_pi && m == f.g_at_pi();
-    if ((near0 || near_pi) && gap <= err) {
+    const bool unresolved = gap <= err || (near0 && cones.on_mirror_cone()) || (near_pi && cones.on_pitch_cone());
+    if ((near0 || near_pi) && unresolved) {
       // A near-cusp loop whose size is below what g can resolve: merge into the end (cusp).
       out.cusp_within_resolution = true;
       out.notes.push_back("near-cusp loop at b = " + std::string(near0 ? "0" : "pi") +
