@@ -1,0 +1,268 @@
+// sphtroch classify | nodes | plot — the node census and its reports. The one CLI translation
+// unit that includes CGAL (through classification.hpp).
+#include "cli_common.hpp"
+
+#include "sphtroch/classification.hpp"
+#include "sphtroch/sampling.hpp"
+#include "sphtroch/svg_plot.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sphtroch::cli {
+
+namespace {
+
+struct AnalysisOptions {
+  TrainOptions train;
+  std::string samples, output;
+  bool literal = false;
+  bool json = false;
+};
+
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
+  o.train.add_to(cmd);
+  cmd.add_flag("--literal", o.literal,
+               "analyse the given doubles exactly as given (no snapping onto boundaries within 1e-10 rad)");
+  cmd.add_option("--samples", o.samples, "uniform samples of the polyline census (1024 .. 10000000; default 256*(q+|p|))");
+  add_output_option(cmd, o.output, "the result");
+}
+
+Classification run_classification(const AnalysisOptions& o) {
+  const GearTrain train = o.train.train();
+  ClassifySettings s;
+  s.literal = o.literal;
+  if (!o.samples.empty()) s.samples = parse_count(o.samples, "samples", 1024, kMaxSamples);
+  return classify(train, s);
+}
+
+std::string vec_text(const Vector3d& v) { return "(" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + ")"; }
+
+double degrees(double r) { return r * 180.0 / Constants<double>::pi(); }
+
+nlohmann::json vec_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+nlohmann::json classification_json(const AnalysisOptions& o, const Classification& c) {
+  using nlohmann::json;
+  const GearTrain& in = c.input;
+  const GearTrain& tr = c.snapped.train;
+  json j;
+  j["inputs"] = {{"a2", in.a2()}, {"a3", in.a3()}, {"a2_text", o.train.a2}, {"a3_text", o.train.a3},
+                 {"n", in.ratio().str()}, {"n_value", in.n()}, {"phase", in.phase()}, {"literal", c.literal}};
+  j["cone_angles"] = {{"a_p", tr.planet_cone()}, {"a_s", tr.sun_cone()}};
+  j["period"] = tr.period();
+  j["class"] = c.curve_class;
+  j["counts"] = {{"nodes", c.nodes.size()}, {"cusps", c.cusps.size()}, {"crossings", c.crossings},
+                 {"tangencies", c.tangencies}};
+  json nodes = json::array();
+  for (const Node& n : c.nodes) {
+    nodes.push_back({{"position", vec_json(n.position)},
+                     {"longitude", std::atan2(n.position.y(), n.position.x())},
+                     {"latitude", std::asin(std::clamp(n.position.z(), -1.0, 1.0))},
+                     {"params", n.params},
+                     {"branches", n.branches},
+                     {"kind", to_string(n.kind)},
+                     {"angle", n.angle},
+                     {"crossing_pairs", n.crossing_pairs},
+                     {"tangency_pairs", n.tangency_pairs}});
+  }
+  j["nodes"] = nodes;
+  json cusps = json::array();
+  for (const Cusp& k : c.cusps) cusps.push_back({{"position", vec_json(k.position)}, {"param", k.param}, {"speed", k.speed}});
+  j["cusps"] = cusps;
+  j["cusp_within_resolution"] = c.cusp_within_resolution;
+  json hits = json::array();
+  for (const Boundary& b : c.snapped.hits) hits.push_back({{"boundary", b.name}, {"value", b.value}, {"margin", b.margin}});
+  j["boundaries"] = {{"on", hits},
+                     {"a2_right_angle", c.snapped.a2_snapped},
+                     {"tolerance", c.snapped.tolerance},
+                     {"pitch_cone_margin", c.cone.pitch},
+                     {"mirror_pitch_cone_margin", c.cone.mirror}};
+  json zmax = json::array(), zmin = json::array();
+  for (const auto& p : c.z.maxima) zmax.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
+  for (const auto& p : c.z.minima) zmin.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
+  j["z_extremes"] = {{"z_max", c.z.z_max}, {"z_min", c.z.z_min}, {"maxima", zmax}, {"minima", zmin}};
+  json planes = json::array();
+  for (const auto& p : c.symmetry_planes.planes)
+    planes.push_back({{"normal", vec_json(p.normal)}, {"azimuth", p.azimuth}, {"param_offset", p.param_offset}});
+  j["symmetry"] = {{"rotation_order", c.symmetry_planes.rotation_order}, {"mirror_planes", planes}};
+  json criteria = json::array();
+  for (const Criterion& k : c.analytic.criteria)
+    criteria.push_back({{"equation", k.equation},
+                        {"statement", k.statement},
+                        {"status", to_string(k.status)},
+                        {"lower", k.lower},
+                        {"upper", k.upper},
+                        {"lower_margin", k.lower_margin},
+                        {"upper_margin", k.upper_margin},
+                        {"prediction", k.prediction}});
+  j["analytic"] = {{"applicable", c.analytic.applicable},
+                   {"predicted_nodes", c.analytic.predicted_nodes ? json(*c.analytic.predicted_nodes) : json(nullptr)},
+                   {"predicted_cusps", c.analytic.predicted_cusps},
+                   {"class", c.analytic.curve_class},
+                   {"criteria", criteria}};
+  j["censuses"] = {
+      {"polyline",
+       {{"nodes", c.polyline.nodes.size()},
+        {"samples", c.polyline.samples},
+        {"polyline_crossings", c.polyline.polyline_crossings},
+        {"polyline_touchings", c.polyline.polyline_touchings},
+        {"near_misses", c.polyline.near_misses},
+        {"newton_rejected", c.polyline.newton_failures}}},
+      {"root_count",
+       {{"nodes", c.root.nodes.size()},
+        {"roots", c.root.roots.size()},
+        {"north_pole_node", c.root.north_pole_node},
+        {"south_pole_node", c.root.south_pole_node},
+        {"error_bound", c.root.error_bound}}}};
+  j["agreement"] = {{"ok", c.agreement.ok()},
+                    {"censuses_agree", c.agreement.censuses_agree},
+                    {"analytic_agrees", c.agreement.analytic_agrees ? json(*c.agreement.analytic_agrees) : json(nullptr)},
+                    {"notes", c.agreement.notes}};
+  j["tolerances"] = {{"boundary", c.snapped.tolerance},      {"cusp_resolution", kCuspResolution},
+                     {"tangency", c.tangency_tolerance},     {"node_residual", kNodeResidual},
+                     {"node_merge_distance", kNodeMergeDistance}, {"agreement_distance", kAgreementDistance}};
+  j["work"] = {{"points_evaluated", c.work.points_evaluated},
+               {"predicates", c.work.predicates},
+               {"newton_steps", c.work.newton_steps},
+               {"root_function_evaluations", c.work.root_evaluations},
+               {"seconds", c.work.seconds}};
+  return j;
+}
+
+void print_text(std::ostream& out, const AnalysisOptions& o, const Classification& c) {
+  const GearTrain& in = c.input;
+  const GearTrain& tr = c.snapped.train;
+  out << "sphtroch classify — spherical planetary gear train (Lin & Tsai 1990)\n\n";
+  out << "inputs\n";
+  out << "  a2 = " << o.train.a2 << " = " << number(in.a2()) << " rad (" << number(degrees(in.a2())) << " deg)\n";
+  out << "  a3 = " << o.train.a3 << " = " << number(in.a3()) << " rad (" << number(degrees(in.a3())) << " deg)\n";
+  out << "  n = " << in.ratio().str() << ", phase = " << number(in.phase()) << " rad\n";
+  out << "  reading: " << (c.literal ? "literal (the given doubles)" : "default (boundaries within tolerance are snapped)") << "\n";
+  out << "cone angles\n  a_p = " << number(tr.planet_cone()) << " rad, a_s = " << number(tr.sun_cone())
+      << " rad; period 2*pi*q = " << number(tr.period()) << " rad\n";
+  out << "boundaries (tolerance " << number(c.snapped.tolerance) << " rad)\n";
+  if (c.snapped.a2_snapped) out << "  a2 = pi/2 (margin " << number(c.snapped.a2_margin) << ")\n";
+  for (const Boundary& b : c.snapped.hits) out << "  on " << b.name << " (margin " << number(b.margin) << ")\n";
+  if (!c.snapped.a2_snapped && c.snapped.hits.empty()) out << "  none within tolerance\n";
+  out << "  margin to pitch cone a3 - a_p = " << number(c.cone.pitch) << ", to mirror a3 - (pi - a_p) = "
+      << number(c.cone.mirror) << "\n\n";
+
+  out << "class: " << c.curve_class << " — " << c.nodes.size() << " node(s) (" << c.crossings << " crossing, "
+      << c.tangencies << " tangency), " << c.cusps.size() << " cusp(s)"
+      << (c.cusp_within_resolution ? " [cusp within resolution " + number(kCuspResolution) + " rad]" : "") << "\n";
+  std::size_t i = 0;
+  for (const Node& n : c.nodes) {
+    out << "  node " << ++i << ": " << to_string(n.kind) << ", " << n.branches << " branches, at " << vec_text(n.position)
+        << "\n          lon " << number(degrees(std::atan2(n.position.y(), n.position.x()))) << " deg, lat "
+        << number(degrees(std::asin(std::clamp(n.position.z(), -1.0, 1.0)))) << " deg; theta2 =";
+    for (double t : n.params) out << ' ' << number(t);
+    out << "; angle " << number(n.angle) << " rad\n";
+  }
+  i = 0;
+  for (const Cusp& k : c.cusps)
+    out << "  cusp " << ++i << ": at " << vec_text(k.position) << ", theta2 = " << number(k.param) << ", speed "
+        << number(k.speed) << "\n";
+  out << "\nz extremes (Eqs. 14/15, 32-35 generalised)\n  z_max = " << number(c.z.z_max) << " at theta2 =";
+  for (const auto& p : c.z.maxima) out << ' ' << number(p.param);
+  out << "\n  z_min = " << number(c.z.z_min) << " at theta2 =";
+  for (const auto& p : c.z.minima) out << ' ' << number(p.param);
+  out << "\nsymmetry: " << c.symmetry_planes.rotation_order << "-fold about Z1; mirror planes with normals at azimuth";
+  for (const auto& p : c.symmetry_planes.planes) out << ' ' << number(p.azimuth);
+  out << " rad\n\nthe report's criteria\n";
+  for (const Criterion& k : c.analytic.criteria)
+    out << "  " << k.equation << ": " << k.statement << " — " << to_string(k.status) << " (margins "
+        << number(k.lower_margin) << ", " << number(k.upper_margin) << "): " << k.prediction << "\n";
+  out << "  predicted: "
+      << (c.analytic.predicted_nodes ? std::to_string(*c.analytic.predicted_nodes) + " node(s)" : std::string("nodes not given by the report for this n"))
+      << ", " << c.analytic.predicted_cusps << " cusp(s)\n";
+  out << "\ncensuses side by side\n";
+  out << "  polyline (exact CGAL predicates + Newton): " << c.polyline.nodes.size() << " node(s) from "
+      << c.polyline.samples << " samples, " << c.polyline.polyline_crossings << " polyline crossings, "
+      << c.polyline.polyline_touchings << " touchings, " << c.polyline.near_misses << " near misses\n";
+  out << "  root count (1D, interval of b in (0, pi)): " << c.root.nodes.size() << " node(s) from "
+      << c.root.roots.size() << " root(s)" << (c.root.north_pole_node ? " + north pole" : "")
+      << (c.root.south_pole_node ? " + south pole" : "") << "\n";
+  out << "  agreement: " << (c.agreement.ok() ? "yes" : "NO") << "\n";
+  for (const auto& note : c.agreement.notes) out << "    DISAGREEMENT: " << note << "\n";
+  out << "\ntolerances: boundary " << number(c.snapped.tolerance) << " rad, cusp resolution " << number(kCuspResolution)
+      << " rad, tangency " << number(c.tangency_tolerance) << ", node residual " << number(kNodeResidual)
+      << ", node merge " << number(kNodeMergeDistance) << "\n";
+  out << "work: " << c.work.points_evaluated << " points evaluated, " << c.work.predicates << " exact predicates, "
+      << c.work.newton_steps << " Newton steps, " << c.work.root_evaluations << " root-function evaluations, "
+      << number(c.work.seconds) << " s\n";
+}
+
+void run_classify(const AnalysisOptions& o) {
+  const Classification c = run_classification(o);
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << classification_json(o, c).dump(2) << "\n";
+    else print_text(out, o, c);
+  });
+}
+
+void run_nodes(const AnalysisOptions& o) {
+  const Classification c = run_classification(o);
+  write_output(o.output, [&](std::ostream& out) {
+    out << "kind,x,y,z,t1,t2,branches\n";
+    for (const Node& n : c.nodes) {
+      out << to_string(n.kind) << ',' << number(n.position.x()) << ',' << number(n.position.y()) << ','
+          << number(n.position.z()) << ',' << number(n.params.front()) << ',' << number(n.params.size() > 1 ? n.params[1] : n.params.front())
+          << ',' << n.branches << '\n';
+    }
+    for (const Cusp& k : c.cusps)
+      out << "cusp," << number(k.position.x()) << ',' << number(k.position.y()) << ',' << number(k.position.z()) << ','
+          << number(k.param) << ',' << number(k.param) << ",1\n";
+  });
+}
+
+void run_plot(const AnalysisOptions& o) {
+  const Classification c = run_classification(o);
+  const GearTrain& tr = c.snapped.train;
+  const TracerCurve<double> curve(tr);
+  const auto& r = tr.ratio();
+  const std::size_t n = std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
+  const Trajectory<double> trajectory = sample_period(curve, n);
+  PlotOptions po;
+  std::ostringstream caption;
+  caption << "a2 = " << o.train.a2 << ", a3 = " << o.train.a3 << ", n = " << r.str();
+  if (tr.phase() != 0.0) caption << ", phase = " << o.train.phase;
+  caption << " — " << c.nodes.size() << " node(s)";
+  if (!c.nodes.empty()) caption << " (" << c.crossings << " crossing, " << c.tangencies << " tangency)";
+  caption << ", " << c.cusps.size() << " cusp(s)";
+  po.caption = caption.str();
+  const std::string svg = render_sphere_svg(trajectory, c.nodes, c.cusps, po);
+  write_output(o.output, [&](std::ostream& out) { out << svg; });
+}
+
+}  // namespace
+
+void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  {
+    auto o = std::make_shared<AnalysisOptions>();
+    CLI::App* cmd = app.add_subcommand("classify", "nodes, cusps and the report's criteria for one gear train (text or --json)");
+    add_analysis_options(*cmd, *o);
+    cmd->add_flag("--json", o->json, "print one JSON object instead of text");
+    cmd->footer("Example: sphtroch classify --a2 pi/2 --a3 pi/2 --n 2 --json");
+    actions.emplace_back(cmd, [o] { run_classify(*o); });
+  }
+  {
+    auto o = std::make_shared<AnalysisOptions>();
+    CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches");
+    add_analysis_options(*cmd, *o);
+    cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians).");
+    actions.emplace_back(cmd, [o] { run_nodes(*o); });
+  }
+  {
+    auto o = std::make_shared<AnalysisOptions>();
+    CLI::App* cmd = app.add_subcommand("plot", "the curve on the sphere as SVG, nodes and cusps marked");
+    add_analysis_options(*cmd, *o);
+    cmd->footer("Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
+    actions.emplace_back(cmd, [o] { run_plot(*o); });
+  }
+}
+
+}  // namespace sphtroch::cli
