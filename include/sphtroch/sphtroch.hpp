@@ -1,12 +1,23 @@
 // sphtroch/sphtroch.hpp — umbrella header: everything that needs Eigen only.
-// The crossing search and node census (CGAL) have their own headers; see README.
+// The exact crossing search, the polyline census and the classification need CGAL
+// (target sphtroch::exact): include sphtroch/polyline_crossings.hpp, polyline_census.hpp or
+// classification.hpp yourself. The MPFR Scalar: sphtroch/mpreal_support.hpp (sphtroch::mpfr).
 #pragma once
 
+#include "sphtroch/analytic.hpp"
+#include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/errors.hpp"
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/node.hpp"
+#include "sphtroch/node_assembly.hpp"
 #include "sphtroch/parse.hpp"
+#include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/ratio.hpp"
+#include "sphtroch/refinement.hpp"
+#include "sphtroch/root_census.hpp"
 #include "sphtroch/sampling.hpp"
+#include "sphtroch/svg.hpp"
+#include "sphtroch/svg_plot.hpp"
 #include "sphtroch/types.hpp"
 #include "sphtroch/version.hpp"
