@@ -46,22 +46,28 @@ void check_against_brute_force(const Polyline& vs, bool closed, const SelfCrossi
   struct Variant {
     CandidateSearch search;
     std::size_t run;
+    double extent;
     double margin;
   };
-  const Variant variants[] = {{CandidateSearch::runs, sphtroch::kDefaultMaxRunEdges, 0.0},
-                              {CandidateSearch::runs, 1, 0.0},
-                              {CandidateSearch::runs, 3, 0.0},
-                              {CandidateSearch::runs, 1000, 0.0},
-                              {CandidateSearch::runs, 8, 1e-3},
-                              {CandidateSearch::edges, 0, 0.0},
-                              {CandidateSearch::edges, 0, 1e-2}};
+  const double x0 = sphtroch::kDefaultMaxRunExtent;
+  const Variant variants[] = {{CandidateSearch::runs, sphtroch::kDefaultMaxRunEdges, x0, 0.0},
+                              {CandidateSearch::runs, 1, x0, 0.0},
+                              {CandidateSearch::runs, 3, x0, 0.0},
+                              {CandidateSearch::runs, 32, 10.0, 0.0},
+                              {CandidateSearch::runs, 100000, 10.0, 0.0},
+                              {CandidateSearch::runs, 100000, 1e-3, 0.0},
+                              {CandidateSearch::runs, 8, x0, 1e-3},
+                              {CandidateSearch::edges, 0, x0, 0.0},
+                              {CandidateSearch::edges, 0, x0, 1e-2}};
   for (const Variant& v : variants) {
     sphtroch::CrossingSearchOptions opt;
     opt.search = v.search;
     opt.max_run_edges = v.run;
+    opt.max_run_extent = v.extent;
     opt.margin = v.margin;
     const SelfCrossings fast = sphtroch::find_self_crossings(vs, closed, opt);
-    INFO("search " << (v.search == CandidateSearch::runs ? "runs" : "edges") << " run " << v.run << " margin "
+    INFO("search " << (v.search == CandidateSearch::runs ? "runs" : "edges") << " run " << v.run << " extent "
+                   << v.extent << " margin "
                    << v.margin << " closed " << closed << " n " << vs.size());
     INFO("fast crossings " << describe(fast.crossings) << "\nbrute crossings " << describe(brute.crossings));
     INFO("fast touchings " << describe(fast.touchings) << "\nbrute touchings " << describe(brute.touchings));
@@ -407,6 +413,25 @@ TEST_CASE("samples_on_node: vertices landing on the node (0, 1, 0)", "[polyline_
                                           {2, 6, ArcContact::touching}};
   CHECK(ex.crossings.empty());
   CHECK(ex.touchings == expected);
+}
+
+TEST_CASE("two_runs_closed_loop: two runs sharing both ends", "[polyline_crossings][degenerate]") {
+  // Up along one monotone path, back down along another that crosses it near t = 1/2: with
+  // unlimited runs the closed polyline is exactly two runs, adjacent at both ends.
+  const V c(0.2, 0.3, 0.9), d(0.3, 0.25, 0.2), w(0.15, -0.15, 0.0);
+  Polyline vs;
+  for (int i = 0; i <= 20; ++i) vs.push_back(c + (i / 20.0) * d + 0.05 * std::sin(2 * kPi * i / 20.0) * w);
+  for (int i = 19; i >= 1; --i) vs.push_back(c + ((i + 0.5) / 20.0) * d - 0.05 * std::sin(2 * kPi * (i + 0.5) / 20.0) * w);
+  sphtroch::CrossingSearchOptions opt;
+  opt.max_run_edges = 100000;
+  opt.max_run_extent = 10.0;
+  CHECK(sphtroch::find_self_crossings(vs, true, opt).boxes == 2);
+  const SelfCrossings brute = check_fast_equals_brute(vs, true);
+  // The up path meets the down edge 30 (t from 0.525 to 0.475) at its vertex 10 (t = 1/2), up to rounding.
+  REQUIRE(brute.crossings.size() + brute.touchings.size() == 1);
+  const EdgePair e = brute.crossings.empty() ? brute.touchings[0] : brute.crossings[0];
+  CHECK((e.i == 9 || e.i == 10));
+  CHECK(e.j == 30);
 }
 
 TEST_CASE("visit_close_edge_pairs visits every pair closer than the margin", "[polyline_crossings]") {

@@ -92,6 +92,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <Eigen/Core>
 
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 
@@ -173,6 +174,20 @@ inline bool finite_nonzero(const Eigen::Vector3d& v) {
          (v.x() != 0.0 || v.y() != 0.0 || v.z() != 0.0);
 }
 
+/// A fast filter for relate_vertices: true only if a x b != 0 for certain. Each component
+/// c = a_i b_j - a_j b_i is computed with error <= 1.01 eps (|a_i b_j| + |a_j b_i|) plus
+/// underflow terms below 1e-322; |c| > 4 eps s with s > 1e-290 therefore proves c != 0. An
+/// overflow gives inf or NaN, which fails the test (the exact predicate decides then).
+inline bool surely_distinct(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const double p = a[i] * b[j], q = a[j] * b[i];
+    const double s = std::fabs(p) + std::fabs(q);
+    if (std::fabs(p - q) > 4.0 * DBL_EPSILON * s && s > 1e-290) return true;
+  }
+  return false;
+}
+
 /// Case 3 of the derivation: all four points on one great circle.
 inline ArcContact classify_cocircular(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                                       const Eigen::Vector3d& d, std::size_t* predicates) {
@@ -231,6 +246,7 @@ inline int orientation_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, 
 /// Exact relation of two directions. REQUIRES a, b nonzero (checked).
 inline VertexRelation relate_vertices(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   SPHTROCH_ASSERT(detail::finite_nonzero(a) && detail::finite_nonzero(b), "vertices must be finite and nonzero");
+  if (detail::surely_distinct(a, b)) return VertexRelation::distinct;
   static const detail::EpickKernel::Point_3 origin(0, 0, 0);
   if (!CGAL::collinear(origin, detail::epick_point(a), detail::epick_point(b))) return VertexRelation::distinct;
   // b = lambda a exactly with lambda != 0: its sign is sign(a_k) sign(b_k) for any k with a_k != 0.

@@ -25,9 +25,10 @@
 //
 //   void validate_spherical_polyline(vertices, closed)
 //     Throws sphtroch::InvalidInput with field "vertices" (the value names the index) when: fewer
-//     than 3 vertices (closed) or 2 (open); a vertex has a NaN or infinite coordinate, or is the
-//     zero vector; two consecutive vertices (including v_{n-1}, v_0 when closed) are the same
-//     direction or antipodal, decided exactly. After it passes, every edge is an arc shorter than pi.
+//     than 3 vertices (closed) or 2 (open), or 2^32 - 1 or more; a vertex has a NaN or infinite
+//     coordinate, or is the zero vector; two consecutive vertices (including v_{n-1}, v_0 when
+//     closed) are the same direction or antipodal, decided exactly. After it passes, every edge is
+//     an arc shorter than pi. Cost: O(N), an exact predicate only where a float filter is unsure.
 //
 //   SelfCrossings find_self_crossings(vertices, closed, CrossingSearchOptions options = {})
 //     crossings: every pair {i < j} of non-adjacent edges whose arcs cross (ArcContact::crossing);
@@ -39,7 +40,7 @@
 //
 //   bool visit_close_edge_pairs(vertices, closed, margin, visitor, search = CandidateSearch::runs)
 //     Calls visitor(i, j), i < j, once for every pair of non-adjacent edges whose axis-aligned
-//     boxes, each inflated by `margin`, overlap. Guarantee: every pair of edges whose arcs (on the
+//     boxes (which contain the arcs, see below), each inflated by `margin`, overlap. Guarantee: every pair of edges whose arcs (on the
 //     unit sphere) come within chordal distance `margin` of each other is visited, in particular
 //     every pair that meets; pairs farther apart may be visited too. Order unspecified.
 //     The visitor returns bool (false stops the visit) or void. Returns false iff it was stopped.
@@ -64,24 +65,34 @@
 // A run of consecutive arcs is contained in the box of all its vertices padded by the largest
 // sagitta of its arcs, as the union of the per-arc boxes is.
 //
-// Rounding (kArcBoxRoundingMargin): boxes are computed in double from the normalised vertices.
-// With eps = DBL_EPSILON: each normalised coordinate (scale by the largest |component|, divide by
-// the norm) is within 4 eps of the exact unit vector's; so the endpoint box moves by <= 4 eps; the
-// exact chord exceeds the computed one by <= 2 * sqrt(3) * 4 eps < 14 eps, which raises c^2/4
-// (c <= 2) by <= 14 eps, and computing c^2/4 itself errs by <= 4 eps; forming the pad S + margin
-// and lo = min - pad, hi = max + pad adds <= 3 eps. Total < 25 eps; we pad by 64 eps (1.4e-14).
+// Rounding (kArcBoxRoundingMargin): boxes are computed in double from unit vectors: the vertices
+// themselves when |fl(|v|^2) - 1| <= kUnitNormTolerance = 8 eps (then ||v| - 1| <= 5 eps), else
+// normalised copies (scale by the largest |component|, divide by the norm: within 4 eps). With
+// eps = DBL_EPSILON: each coordinate is within 5 eps of the exact unit vector's, so the endpoint
+// box moves by <= 5 eps; the exact chord exceeds the computed one by <= 2 sqrt(3) 5 eps < 18 eps,
+// which raises c^2/4 (c <= 2) by <= 18 eps; computing c^2/4 itself errs by <= 4 eps; forming the
+// pad S + margin and lo = min - pad, hi = max + pad adds <= 3 eps. Total < 30 eps; we pad by
+// 64 eps (1.4e-14).
 //
 // The candidate search (CandidateSearch::runs, the default). Split the polyline into runs of
-// consecutive edges along which every coordinate of the (normalised) vertices is monotone, at
-// most options.max_run_edges edges each. Box each run (its vertices' box padded by its largest
-// sagitta), and find overlapping runs with CGAL::box_self_intersection_d (CLOSED boxes). Within
-// one run and within each overlapping pair of runs, the edges' intervals along one axis are
-// already sorted (monotone coordinates: the lower ends are sorted in index order, or reversed),
-// so the overlapping edge pairs are found by merging the two sorted interval lists in
-// O(L_a + L_b + overlaps), then checked on the other two axes; exact predicates only on the
-// survivors. An edge's box uses its run's largest sagitta, so edge boxes lie inside run boxes and
-// no pair is lost. CandidateSearch::edges boxes every edge separately (the simple first version,
-// kept for comparison and tests).
+// consecutive edges along which every coordinate of the (unit) vertices is monotone, with at most
+// options.max_run_edges edges and an unpadded box at most options.max_run_extent wide. Box each
+// run (its vertices' box padded by its largest sagitta), and find overlapping runs with
+// CGAL::box_self_intersection_d (CLOSED boxes). An edge's box uses its run's pad, so edge boxes
+// lie inside run boxes and no pair is lost. Then, with exact predicates only on the survivors:
+//   - within a run: nothing to do when every edge steps by more than 2.25 pad along some axis
+//     (the edge between two non-adjacent edges of a monotone run separates their boxes); else a
+//     sweep over the edges' intervals along one axis, sorted by construction (monotone
+//     coordinates: lower ends in index order, or reversed);
+//   - consecutive runs (sharing one vertex v): if both are monotone the same way along some axis
+//     k, one run ends at v_k and the other starts there, so only the few edges within
+//     pad_a + pad_b of v_k along k can overlap: a walk outwards from v. Otherwise as below;
+//   - other overlapping run pairs: merge the two sorted interval lists along one axis in
+//     O(L_a + L_b + overlaps), then check the other two axes.
+// The visited set is exactly the set of non-adjacent pairs whose (run-padded) edge boxes overlap;
+// the work is O(N) plus O(R log R + K_runs) for the box search over R runs, plus the merges.
+// CandidateSearch::edges boxes every edge separately (the simple first version, kept for
+// comparison and tests).
 // CAVEAT: adjacent edges are skipped even if one folds back along the other (an exact 180-degree
 // turn at a vertex, which makes the two edges overlap); such a polyline is not rejected either.
 //
@@ -99,6 +110,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -109,8 +121,16 @@ namespace sphtroch {
 /// Absolute padding added to every box for the rounding of its computation (derivation above).
 constexpr double kArcBoxRoundingMargin = 64 * DBL_EPSILON;
 
-/// Default number of edges in one run of the candidate search.
-constexpr std::size_t kDefaultMaxRunEdges = 32;
+/// A vertex v with |fl(|v|^2) - 1| <= kUnitNormTolerance is boxed as it is, without normalising:
+/// then ||v| - 1| <= 5 eps, so each coordinate is within 5 eps of v/|v|'s (see the derivation).
+constexpr double kUnitNormTolerance = 8 * DBL_EPSILON;
+
+/// Default limits of one run of the candidate search: at most this many edges, and a box at most
+/// this wide along every axis (before padding). Tuned on trochoid polylines of 1e4..1e6 vertices
+/// with 4 to 14000 crossings (n = 2, 7/3, 13/5, 101/40): the extent limit keeps run boxes small
+/// where branches cross densely, the count limit keeps the number of boxes low where they do not.
+constexpr std::size_t kDefaultMaxRunEdges = 256;
+constexpr double kDefaultMaxRunExtent = 1.0 / 64;
 
 /// Two edges of a polyline, i < j, and how their arcs meet.
 struct EdgePair {
@@ -132,7 +152,8 @@ enum class CandidateSearch {
 struct CrossingSearchOptions {
   double margin = 0.0;  // every box inflated by this distance; changes only the work, not the result
   CandidateSearch search = CandidateSearch::runs;
-  std::size_t max_run_edges = kDefaultMaxRunEdges;  // >= 1
+  std::size_t max_run_edges = kDefaultMaxRunEdges;  // >= 1 (runs search only)
+  double max_run_extent = kDefaultMaxRunExtent;     // > 0; a run may exceed it by its first edge
 };
 
 struct SelfCrossings {
@@ -181,68 +202,132 @@ inline void validate_margin(double margin) {
     throw InvalidInput("margin", to_text(margin), "not a finite non-negative distance", "[0, inf)");
 }
 
-/// The polyline prepared for the box search: unit vectors and the edge count.
-struct PreparedPolyline {
-  std::vector<Eigen::Vector3d> unit;
-  std::size_t n = 0;
-  std::size_t edges = 0;
-  bool closed = true;
+/// Validates (see validate_spherical_polyline) and returns whether every vertex is already a
+/// unit vector within kUnitNormTolerance, so that the boxes may use it without normalising.
+inline bool validate_polyline(const std::vector<Eigen::Vector3d>& vertices, bool closed) {
+  const std::size_t min_n = closed ? 3 : 2;
+  if (vertices.size() < min_n)
+    throw InvalidInput("vertices", std::to_string(vertices.size()) + " vertices", "too few vertices",
+                       std::string("at least ") + (closed ? "3 for a closed" : "2 for an open") + " polyline");
+  if (vertices.size() >= std::numeric_limits<std::uint32_t>::max())
+    throw InvalidInput("vertices", std::to_string(vertices.size()) + " vertices", "too many vertices",
+                       "fewer than 2^32 - 1");
+  bool all_unit = true;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Eigen::Vector3d& v = vertices[i];
+    if (!finite_nonzero(v))
+      throw InvalidInput("vertices", vertex_text(vertices, i), "not a finite nonzero vector",
+                         "finite coordinates, not all zero (a direction from the sphere centre)");
+    all_unit = all_unit && std::fabs(v.squaredNorm() - 1.0) <= kUnitNormTolerance;
+  }
+  const std::size_t n = vertices.size();
+  const std::size_t edges = closed ? n : n - 1;
+  for (std::size_t e = 0; e < edges; ++e) {
+    const std::size_t h = e + 1 == n ? 0 : e + 1;
+    if (surely_distinct(vertices[e], vertices[h])) continue;
+    const VertexRelation rel = relate_vertices(vertices[e], vertices[h]);
+    if (rel == VertexRelation::distinct) continue;
+    throw InvalidInput("vertices", vertex_text(vertices, e),
+                       std::string(rel == VertexRelation::same_direction ? "the same point as" : "antipodal to") +
+                           " the next vertex (index " + std::to_string(h) + ")" +
+                           (rel == VertexRelation::same_direction && h == 0 && closed
+                                ? "; a closed polyline lists each vertex once"
+                                : ""),
+                       "consecutive vertices distinct and not antipodal (each edge a great-circle arc shorter than pi)");
+  }
+  return all_unit;
+}
+
+/// The polyline prepared for the box search: (nearly) unit vectors and the edge count. Points
+/// at the caller's vertices when they are unit within kUnitNormTolerance, else at normalised copies.
+class PreparedPolyline {
+ public:
+  PreparedPolyline(const std::vector<Eigen::Vector3d>& vertices, bool closed, bool all_unit)
+      : n(vertices.size()), edges(closed ? vertices.size() : vertices.size() - 1), closed(closed) {
+    if (all_unit) {
+      pts_ = vertices.data();
+    } else {
+      storage_.reserve(n);
+      for (const Eigen::Vector3d& v : vertices) storage_.push_back(normalised_direction(v));
+      pts_ = storage_.data();
+    }
+  }
+  PreparedPolyline(const PreparedPolyline&) = delete;
+  PreparedPolyline& operator=(const PreparedPolyline&) = delete;
+
+  const Eigen::Vector3d& u(std::size_t i) const { return pts_[i]; }
   std::size_t head(std::size_t e) const { return e + 1 == n ? 0 : e + 1; }
   bool adjacent(std::size_t i, std::size_t j) const {  // REQUIRES i < j
     return j == i + 1 || (closed && i == 0 && j + 1 == n);
   }
-};
 
-inline PreparedPolyline prepare(const std::vector<Eigen::Vector3d>& vertices, bool closed) {
-  PreparedPolyline p;
-  p.n = vertices.size();
-  p.closed = closed;
-  p.edges = closed ? p.n : p.n - 1;
-  p.unit.resize(p.n);
-  for (std::size_t i = 0; i < p.n; ++i) p.unit[i] = normalised_direction(vertices[i]);
-  return p;
-}
+  const std::size_t n;
+  const std::size_t edges;
+  const bool closed;
+
+ private:
+  const Eigen::Vector3d* pts_ = nullptr;
+  std::vector<Eigen::Vector3d> storage_;
+};
 
 /// A run of consecutive edges [first, first + count) with monotone vertex coordinates.
 struct Run {
   std::uint32_t first = 0;
   std::uint32_t count = 0;
   std::int8_t dir[3] = {0, 0, 0};  // +1 nondecreasing, -1 nonincreasing, 0 constant
+  bool self_free = false;          // no two non-adjacent edges of the run have overlapping boxes
   double pad = 0.0;                // largest sagitta + rounding margin + user margin
   double lo[3] = {0, 0, 0};        // the run box, padded
   double hi[3] = {0, 0, 0};
 };
 
-inline std::vector<Run> build_runs(const PreparedPolyline& p, double margin, std::size_t max_edges) {
+/// Splits the edges into monotone runs of at most max_edges edges and boxes them.
+/// self_free: if every edge g of a run moves by more than 2.25 pad along some axis (its largest
+/// |step|), then for non-adjacent edges e < f of the run the edge e+1 between them separates
+/// their boxes along that axis of e+1 (all coordinates are monotone along the run): the gap is
+/// at least that step, more than 2 pad plus the rounding of lo/hi (pad >= 64 eps).
+inline std::vector<Run> build_runs(const PreparedPolyline& p, double margin, std::size_t max_edges,
+                                   double max_extent) {
   std::vector<Run> runs;
-  runs.reserve(p.edges / std::max<std::size_t>(1, max_edges / 4) + 1);
+  runs.reserve(p.edges / std::max<std::size_t>(1, max_edges / 2) + 1);
   std::size_t e = 0;
   while (e < p.edges) {
     Run r;
     r.first = static_cast<std::uint32_t>(e);
     double vlo[3], vhi[3];
-    const Eigen::Vector3d& u0 = p.unit[e];
+    const Eigen::Vector3d& u0 = p.u(e);
     for (int k = 0; k < 3; ++k) vlo[k] = vhi[k] = u0[k];
     double sag = 0.0;
+    double min_step = std::numeric_limits<double>::infinity();
     for (; e < p.edges && r.count < max_edges; ++e) {
-      const Eigen::Vector3d& a = p.unit[e];
-      const Eigen::Vector3d& b = p.unit[p.head(e)];
-      std::int8_t d[3];
+      const Eigen::Vector3d& a = p.u(e);
+      const Eigen::Vector3d& b = p.u(p.head(e));
+      const Eigen::Vector3d d = b - a;
+      std::int8_t s[3];
       bool fits = true;
       for (int k = 0; k < 3; ++k) {
-        d[k] = static_cast<std::int8_t>((b[k] > a[k]) - (b[k] < a[k]));
-        if (d[k] != 0 && r.dir[k] != 0 && d[k] != r.dir[k]) fits = false;
+        s[k] = static_cast<std::int8_t>((d[k] > 0.0) - (d[k] < 0.0));
+        fits = fits && (s[k] == 0 || r.dir[k] == 0 || s[k] == r.dir[k]);
+      }
+      if (!fits) break;
+      double nlo[3], nhi[3];
+      for (int k = 0; k < 3; ++k) {
+        nlo[k] = std::min(vlo[k], b[k]);
+        nhi[k] = std::max(vhi[k], b[k]);
+        fits = fits && (nhi[k] - nlo[k] <= max_extent || r.count == 0);
       }
       if (!fits) break;
       for (int k = 0; k < 3; ++k) {
-        if (d[k] != 0) r.dir[k] = d[k];
-        vlo[k] = std::min(vlo[k], b[k]);
-        vhi[k] = std::max(vhi[k], b[k]);
+        if (s[k] != 0) r.dir[k] = s[k];
+        vlo[k] = nlo[k];
+        vhi[k] = nhi[k];
       }
-      sag = std::max(sag, sagitta_bound(a, b));
+      sag = std::max(sag, 0.25 * d.squaredNorm());
+      min_step = std::min(min_step, d.cwiseAbs().maxCoeff());
       ++r.count;
     }
     r.pad = sag + kArcBoxRoundingMargin + margin;
+    r.self_free = min_step > 2.25 * r.pad;
     for (int k = 0; k < 3; ++k) {
       r.lo[k] = vlo[k] - r.pad;
       r.hi[k] = vhi[k] + r.pad;
@@ -264,8 +349,8 @@ struct EdgeInterval {
 inline void sorted_intervals(const PreparedPolyline& p, const Run& r, int k, std::vector<EdgeInterval>& out) {
   out.clear();
   const auto push = [&](std::uint32_t e) {
-    const double a = p.unit[e][k];
-    const double b = p.unit[p.head(e)][k];
+    const double a = p.u(e)[k];
+    const double b = p.u(p.head(e))[k];
     out.push_back({std::min(a, b) - r.pad, std::max(a, b) + r.pad, e});
   };
   if (r.dir[k] >= 0) {
@@ -275,10 +360,10 @@ inline void sorted_intervals(const PreparedPolyline& p, const Run& r, int k, std
   }
 }
 
-/// Whether edges e (pad pe) and f (pad pf) overlap on axis k.
+/// Whether the boxes of edges e (pad pe) and f (pad pf) overlap on axis k.
 inline bool overlap_on_axis(const PreparedPolyline& p, std::uint32_t e, double pe, std::uint32_t f, double pf, int k) {
-  const double e0 = p.unit[e][k], e1 = p.unit[p.head(e)][k];
-  const double f0 = p.unit[f][k], f1 = p.unit[p.head(f)][k];
+  const double e0 = p.u(e)[k], e1 = p.u(p.head(e))[k];
+  const double f0 = p.u(f)[k], f1 = p.u(p.head(f))[k];
   return std::min(e0, e1) - pe <= std::max(f0, f1) + pf && std::min(f0, f1) - pf <= std::max(e0, e1) + pe;
 }
 
@@ -293,12 +378,13 @@ bool call_visitor(Visitor& visitor, std::size_t i, std::size_t j) {
   }
 }
 
-/// Reports a candidate (after the other two axes and adjacency). Returns false to stop.
+/// Reports a candidate if the boxes overlap on every axis but `known_axis` (-1: check all three)
+/// and the edges are not adjacent. Returns false to stop.
 template <typename Visitor>
-bool offer_pair(const PreparedPolyline& p, std::uint32_t e, double pe, std::uint32_t f, double pf, int sweep_axis,
+bool offer_pair(const PreparedPolyline& p, std::uint32_t e, double pe, std::uint32_t f, double pf, int known_axis,
                 Visitor& visitor) {
   for (int k = 0; k < 3; ++k)
-    if (k != sweep_axis && !overlap_on_axis(p, e, pe, f, pf, k)) return true;
+    if (k != known_axis && !overlap_on_axis(p, e, pe, f, pf, k)) return true;
   const std::size_t i = std::min(e, f), j = std::max(e, f);
   if (i == j || p.adjacent(i, j)) return true;
   return call_visitor(visitor, i, j);
@@ -320,7 +406,7 @@ inline int longest_axis(const Run& a, const Run& b) {
 /// Edge pairs inside one run. Returns false if the visitor stopped.
 template <typename Visitor>
 bool visit_within_run(const PreparedPolyline& p, const Run& r, std::vector<EdgeInterval>& buf, Visitor& visitor) {
-  if (r.count < 3) return true;  // fewer than 3 consecutive edges: every pair adjacent
+  if (r.count < 3 || r.self_free) return true;  // < 3 edges: every pair adjacent
   const int k = longest_axis(r, r);
   sorted_intervals(p, r, k, buf);
   for (std::size_t x = 0; x < buf.size(); ++x)
@@ -351,7 +437,49 @@ bool visit_between_runs(const PreparedPolyline& p, const Run& ra, const Run& rb,
   return true;
 }
 
+/// Edge pairs between consecutive runs sharing exactly one polyline vertex v (the head of the
+/// last edge of `before`, the tail of the first edge of `after`). If along some axis k both runs
+/// are monotone in the same direction, `before` approaches v_k from one side and `after` leaves
+/// it to the other, so boxes can overlap only for edges of `before` whose head, and edges of
+/// `after` whose tail, is within pad_before + pad_after (+ rounding) of v_k: a short suffix and
+/// prefix, found by walking outwards from v and stopping at the first edge beyond 2 (pad + pad).
+/// Without such an axis (all coordinates turn at v), the general merge.
+template <typename Visitor>
+bool visit_adjacent_runs(const PreparedPolyline& p, const Run& before, const Run& after,
+                         std::vector<EdgeInterval>& la, std::vector<EdgeInterval>& lb, Visitor& visitor) {
+  const std::uint32_t before_end = before.first + before.count;  // one past its last edge
+  const std::size_t v = p.head(before_end - 1);
+  SPHTROCH_ASSERT(v == after.first, "runs are not consecutive");
+  int k = -1;
+  double best_step = -1.0;
+  for (int a = 0; a < 3; ++a) {
+    if (before.dir[a] == 0 || before.dir[a] != after.dir[a]) continue;
+    const double step = std::fabs(p.u(p.head(after.first))[a] - p.u(before_end - 1)[a]);
+    if (step > best_step) {
+      best_step = step;
+      k = a;
+    }
+  }
+  if (k < 0) return visit_between_runs(p, before, after, la, lb, visitor);
+  const double vk = p.u(v)[k];
+  const double reach = 2.0 * (before.pad + after.pad);
+  std::uint32_t b_start = before_end;
+  while (b_start > before.first && std::fabs(p.u(p.head(b_start - 1))[k] - vk) <= reach) --b_start;
+  const std::uint32_t after_end = after.first + after.count;
+  std::uint32_t a_stop = after.first;
+  while (a_stop < after_end && std::fabs(p.u(a_stop)[k] - vk) <= reach) ++a_stop;
+  for (std::uint32_t e = b_start; e < before_end; ++e)
+    for (std::uint32_t f = after.first; f < a_stop; ++f)
+      if (!offer_pair(p, e, before.pad, f, after.pad, -1, visitor)) return false;
+  return true;
+}
+
 using SearchBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+
+/// The cutoff of box_self_intersection_d (below it, the streamed segment tree scans boxes
+/// directly). CGAL's default is 10; on run boxes of trochoid polylines (4e3..4e4 boxes, up to
+/// 6e4 overlapping pairs) 300..1000 was 2..4 times faster than 10 and than 3000.
+constexpr std::ptrdiff_t kBoxSearchCutoff = 512;
 
 struct VisitStats {
   bool completed = true;
@@ -359,9 +487,10 @@ struct VisitStats {
 };
 
 template <typename Visitor>
-VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_run_edges, Visitor& visitor) {
+VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_run_edges, double max_run_extent,
+                      Visitor& visitor) {
   VisitStats stats;
-  const std::vector<Run> runs = build_runs(p, margin, max_run_edges);
+  const std::vector<Run> runs = build_runs(p, margin, max_run_edges, max_run_extent);
   std::vector<SearchBox> boxes;
   boxes.reserve(runs.size());
   for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -377,17 +506,27 @@ VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_
       [&run_pairs](const SearchBox& a, const SearchBox& b) {
         run_pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
       },
-      std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
+      kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
   std::sort(run_pairs.begin(), run_pairs.end());  // locality and a deterministic visiting order
   std::vector<EdgeInterval> la, lb;
-  la.reserve(max_run_edges);
-  lb.reserve(max_run_edges);
+  la.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  lb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  const std::size_t last = runs.size() - 1;
+  // Closed with exactly 2 runs: they share two vertices; use the general merge for them.
+  const bool wrap_adjacent = p.closed && runs.size() >= 3;
   std::size_t next_pair = 0;
   for (std::uint32_t r = 0; r < runs.size(); ++r) {
     if (!visit_within_run(p, runs[r], la, visitor)) return {false, stats.boxes};
     for (; next_pair < run_pairs.size() && run_pairs[next_pair].first == r; ++next_pair) {
-      if (!visit_between_runs(p, runs[r], runs[run_pairs[next_pair].second], la, lb, visitor))
-        return {false, stats.boxes};
+      const std::uint32_t s = run_pairs[next_pair].second;
+      bool go = true;
+      if (s == r + 1 && !(p.closed && runs.size() == 2))
+        go = visit_adjacent_runs(p, runs[r], runs[s], la, lb, visitor);
+      else if (wrap_adjacent && r == 0 && s == last)
+        go = visit_adjacent_runs(p, runs[last], runs[0], la, lb, visitor);
+      else
+        go = visit_between_runs(p, runs[r], runs[s], la, lb, visitor);
+      if (!go) return {false, stats.boxes};
     }
   }
   return stats;
@@ -399,8 +538,8 @@ VisitStats visit_edges(const PreparedPolyline& p, double margin, Visitor& visito
   std::vector<SearchBox> boxes;
   boxes.reserve(p.edges);
   for (std::size_t e = 0; e < p.edges; ++e) {
-    const Eigen::Vector3d& a = p.unit[e];
-    const Eigen::Vector3d& b = p.unit[p.head(e)];
+    const Eigen::Vector3d& a = p.u(e);
+    const Eigen::Vector3d& b = p.u(p.head(e));
     const double pad = sagitta_bound(a, b) + kArcBoxRoundingMargin + margin;
     double lo[3], hi[3];
     for (int k = 0; k < 3; ++k) {
@@ -417,7 +556,7 @@ VisitStats visit_edges(const PreparedPolyline& p, double margin, Visitor& visito
         const std::uint32_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
         if (!p.adjacent(i, j)) pairs.emplace_back(i, j);
       },
-      std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
+      kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
   std::sort(pairs.begin(), pairs.end());
   for (const auto& ij : pairs)
     if (!call_visitor(visitor, ij.first, ij.second)) return {false, stats.boxes};
@@ -426,9 +565,9 @@ VisitStats visit_edges(const PreparedPolyline& p, double margin, Visitor& visito
 
 template <typename Visitor>
 VisitStats visit_prepared(const PreparedPolyline& p, double margin, CandidateSearch search, std::size_t max_run_edges,
-                          Visitor& visitor) {
+                          double max_run_extent, Visitor& visitor) {
   if (search == CandidateSearch::edges) return visit_edges(p, margin, visitor);
-  return visit_runs(p, margin, std::max<std::size_t>(1, max_run_edges), visitor);
+  return visit_runs(p, margin, std::max<std::size_t>(1, max_run_edges), max_run_extent, visitor);
 }
 
 inline void record_contact(SelfCrossings& out, std::size_t i, std::size_t j, ArcContact kind) {
@@ -440,29 +579,7 @@ inline void record_contact(SelfCrossings& out, std::size_t i, std::size_t j, Arc
 
 /// Throws InvalidInput (field "vertices") unless the polyline is a valid spherical polyline.
 inline void validate_spherical_polyline(const std::vector<Eigen::Vector3d>& vertices, bool closed) {
-  const std::size_t min_n = closed ? 3 : 2;
-  if (vertices.size() < min_n)
-    throw InvalidInput("vertices", std::to_string(vertices.size()) + " vertices", "too few vertices",
-                       std::string("at least ") + (closed ? "3 for a closed" : "2 for an open") + " polyline");
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    if (!detail::finite_nonzero(vertices[i]))
-      throw InvalidInput("vertices", detail::vertex_text(vertices, i), "not a finite nonzero vector",
-                         "finite coordinates, not all zero (a direction from the sphere centre)");
-  }
-  const std::size_t n = vertices.size();
-  const std::size_t edges = closed ? n : n - 1;
-  for (std::size_t e = 0; e < edges; ++e) {
-    const std::size_t h = e + 1 == n ? 0 : e + 1;
-    const VertexRelation rel = relate_vertices(vertices[e], vertices[h]);
-    if (rel == VertexRelation::distinct) continue;
-    throw InvalidInput("vertices", detail::vertex_text(vertices, e),
-                       std::string(rel == VertexRelation::same_direction ? "the same point as" : "antipodal to") +
-                           " the next vertex (index " + std::to_string(h) + ")" +
-                           (rel == VertexRelation::same_direction && h == 0 && closed
-                                ? "; a closed polyline lists each vertex once"
-                                : ""),
-                       "consecutive vertices distinct and not antipodal (each edge a great-circle arc shorter than pi)");
-  }
+  detail::validate_polyline(vertices, closed);
 }
 
 /// Visits every pair of non-adjacent edges whose boxes, inflated by margin, overlap (see top).
@@ -470,17 +587,15 @@ template <typename Visitor>
 bool visit_close_edge_pairs(const std::vector<Eigen::Vector3d>& vertices, bool closed, double margin,
                             Visitor&& visitor, CandidateSearch search = CandidateSearch::runs) {
   detail::validate_margin(margin);
-  validate_spherical_polyline(vertices, closed);
-  const detail::PreparedPolyline p = detail::prepare(vertices, closed);
-  return detail::visit_prepared(p, margin, search, kDefaultMaxRunEdges, visitor).completed;
+  const detail::PreparedPolyline p(vertices, closed, detail::validate_polyline(vertices, closed));
+  return detail::visit_prepared(p, margin, search, kDefaultMaxRunEdges, kDefaultMaxRunExtent, visitor).completed;
 }
 
 /// Every crossing and touching pair of non-adjacent edges, exactly (see top).
 inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& vertices, bool closed,
                                          const CrossingSearchOptions& options = {}) {
   detail::validate_margin(options.margin);
-  validate_spherical_polyline(vertices, closed);
-  const detail::PreparedPolyline p = detail::prepare(vertices, closed);
+  const detail::PreparedPolyline p(vertices, closed, detail::validate_polyline(vertices, closed));
   SelfCrossings out;
   out.vertices = p.n;
   out.edges = p.edges;
@@ -491,7 +606,9 @@ inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& ver
     detail::record_contact(out, i, j, kind);
     return true;
   };
-  out.boxes = detail::visit_prepared(p, options.margin, options.search, options.max_run_edges, visitor).boxes;
+  out.boxes = detail::visit_prepared(p, options.margin, options.search, options.max_run_edges, options.max_run_extent,
+                                     visitor)
+                  .boxes;
   std::sort(out.crossings.begin(), out.crossings.end());
   std::sort(out.touchings.begin(), out.touchings.end());
   return out;
