@@ -82,7 +82,8 @@
 //   k is a bijection of the plane of AB, because e_k . (A x B) != 0).
 //
 // Cost: the common answer `none` needs 2 predicates (4 at most); a crossing needs 4; degenerate
-// configurations need up to about 16 (3D and 2D orientations together).
+// configurations need at most 24 (3D and 2D orientations together; each is CGAL's filtered
+// predicate, exact arithmetic only when the floating-point filter cannot decide).
 //
 // Implementation details follow.
 #pragma once
