@@ -359,3 +359,183 @@ TEST_CASE("cli: --help, trace --help and --version exit 0", "[cli][help]") {
   CHECK(help.err.empty());
   CHECK(version.err.empty());
 }
+
+// ---------------------------------------------------------------------------------------------
+// classify / nodes / plot (issue 3). Expected values from the report: Table 1 counts and kinds,
+// the poles for row (d), Eq. 28 with Eq. 39b / 44b for the Fig. 5(f) nodes.
+// ---------------------------------------------------------------------------------------------
+
+#include <nlohmann/json.hpp>
+
+namespace {
+nlohmann::json run_json(const std::string& args, const TempDir& dir) {
+  const Result r = run(args, dir);
+  INFO("sphtroch " << args << "\nstderr: " << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  return nlohmann::json::parse(r.out);
+}
+
+double dist(const nlohmann::json& position, double x, double y, double z) {
+  const double dx = position.at(0).get<double>() - x, dy = position.at(1).get<double>() - y,
+               dz = position.at(2).get<double>() - z;
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+std::size_t count_kind(const nlohmann::json& nodes, const std::string& kind) {
+  std::size_t k = 0;
+  for (const auto& n : nodes) k += n.at("kind").get<std::string>() == kind;
+  return k;
+}
+}  // namespace
+
+TEST_CASE("cli: classify --json of Table 1 row (d): 2 nodes, both tangencies, at the poles", "[cli][classify][json]") {
+  TempDir dir;
+  const auto j = run_json("classify --a2 pi/2 --a3 pi/2 --n 2 --json", dir);
+  REQUIRE(j.contains("counts"));
+  for (const char* key : {"nodes", "cusps", "crossings", "tangencies"}) CHECK(j["counts"].contains(key));
+  CHECK(j["counts"]["nodes"] == 2);
+  CHECK(j["counts"]["cusps"] == 0);
+  CHECK(j["counts"]["crossings"] == 0);
+  CHECK(j["counts"]["tangencies"] == 2);
+  CHECK(j["class"] == "nodes");
+  REQUIRE(j["nodes"].size() == 2);
+  CHECK(count_kind(j["nodes"], "tangency") == 2);
+  bool north = false, south = false;
+  for (const auto& n : j["nodes"]) {
+    north = north || dist(n["position"], 0, 0, 1) <= 1e-12;
+    south = south || dist(n["position"], 0, 0, -1) <= 1e-12;
+    CHECK(n["branches"] == 2);
+    CHECK(n["params"].size() == 2);
+  }
+  CHECK(north);
+  CHECK(south);
+  CHECK(j["cusps"].is_array());
+  CHECK(j["cusps"].empty());
+}
+
+TEST_CASE("cli: classify row (g): 2 crossings + 1 tangency by default, 4 crossings with --literal",
+          "[cli][classify][json][literal]") {
+  TempDir dir;
+  const auto j = run_json("classify --a2 pi/3 --a3 2pi/3 --n 2 --json", dir);
+  CHECK(j["counts"]["nodes"] == 3);
+  CHECK(j["counts"]["crossings"] == 2);
+  CHECK(j["counts"]["tangencies"] == 1);
+  REQUIRE(j["nodes"].size() == 3);
+  for (const auto& n : j["nodes"])
+    if (n["kind"] == "tangency") CHECK(dist(n["position"], 0, 0, -1) <= 1e-12);
+  const auto lit = run_json("classify --a2 pi/3 --a3 2pi/3 --n 2 --json --literal", dir);
+  CHECK(lit["counts"]["nodes"] == 4);
+  CHECK(lit["counts"]["crossings"] == 4);
+  CHECK(lit["counts"]["tangencies"] == 0);
+  CHECK(count_kind(lit["nodes"], "crossing") == 4);
+  // Text output names the reading and the class.
+  const Result text = run("classify --a2 pi/3 --a3 2pi/3 --n 2", dir);
+  CHECK(text.status == 0);
+  CHECK(contains(text.out, "class: nodes"));
+  CHECK(contains(text.out, "tangency"));
+}
+
+TEST_CASE("cli: classify accepts --a3 ap and pi-ap-1e-9 (the pitch cone and an offset from its mirror)",
+          "[cli][classify][pitch_cone]") {
+  TempDir dir;
+  // On the pitch cone: |p| = 2 cusps, no nodes (Table 1 row (b) with a2 = pi/2).
+  const auto on = run_json("classify --a2 pi/2 --a3 ap --n 2 --json", dir);
+  CHECK(on["counts"]["cusps"] == 2);
+  CHECK(on["counts"]["nodes"] == 0);
+  for (const auto& k : on["cusps"]) {
+    CHECK(k.contains("param"));
+    CHECK(k["position"].size() == 3);
+  }
+  // 1e-9 inside the mirror cone: Eq. 46 holds strictly (a2 = 1 < a3 < pi - a_p), Eq. 43 fails
+  // (a3 > pi - a2): two Eq. 44b loops, no cusp (1e-9 is above the 1e-10 resolution).
+  const auto off = run_json("classify --a2 1 --a3 pi-ap-1e-9 --n 2 --json", dir);
+  CHECK(off["counts"]["nodes"] == 2);
+  CHECK(off["counts"]["cusps"] == 0);
+}
+
+TEST_CASE("cli: nodes prints kind,x,y,z,t1,t2,branches; Fig. 5(f) rows are the Eq. 39b / 44b nodes",
+          "[cli][nodes][csv]") {
+  TempDir dir;
+  const Result r = run("nodes --a2 pi/3 --a3 pi/2 --n 2", dir);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  const auto lines = split(r.out, '\n');
+  REQUIRE(lines.size() == 5);
+  CHECK(lines[0] == "kind,x,y,z,t1,t2,branches");
+  // Eq. 39b: sin^2 t = s(a2 + a3) / (2 s a3 (1 + c a2)) = 1/6; Eq. 28: x = +-2/sqrt(6), y = 0,
+  // z = -(2/3) sin(pi/3). Eq. 44b: cos^2 t = s(a3 - a2) / 3 = 1/6: x = 0, y = +-2/sqrt(6), z = +(2/3) sin(pi/3).
+  const double xy = 2 / std::sqrt(6.0), z = (2.0 / 3.0) * std::sin(kPi / 3);
+  std::size_t on_xz = 0, on_yz = 0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto f = split(lines[i], ',');
+    REQUIRE(f.size() == 7);
+    CHECK(f[0] == "crossing");
+    CHECK(f[6] == "2");
+    const double x = std::stod(f[1]), y = std::stod(f[2]), zz = std::stod(f[3]);
+    if (std::abs(y) <= 1e-13 && std::abs(std::abs(x) - xy) <= 1e-13 && std::abs(zz + z) <= 1e-13) ++on_xz;
+    if (std::abs(x) <= 1e-13 && std::abs(std::abs(y) - xy) <= 1e-13 && std::abs(zz - z) <= 1e-13) ++on_yz;
+    // t1, t2: the curve is at the node at both (Eq. 5).
+    for (int k : {4, 5}) {
+      double p[3];
+      eq5(kPi / 3, kPi / 2, 2.0, std::stod(f[k]), p);
+      CHECK(std::abs(p[0] - x) + std::abs(p[1] - y) + std::abs(p[2] - zz) <= 1e-13);
+    }
+  }
+  CHECK(on_xz == 2);
+  CHECK(on_yz == 2);
+  // Cusps are rows of kind "cusp".
+  const Result cusps = run("nodes --a2 pi/2 --a3 ap --n 2", dir);
+  CHECK(cusps.status == 0);
+  const auto cl = split(cusps.out, '\n');
+  REQUIRE(cl.size() == 3);
+  CHECK(cl[1].rfind("cusp,", 0) == 0);
+  CHECK(cl[2].rfind("cusp,", 0) == 0);
+}
+
+TEST_CASE("cli: plot -o FILE.svg draws Fig. 5(f) with 4 node markers", "[cli][plot][svg]") {
+  TempDir dir;
+  const fs::path file = dir.path / "fig5f.svg";
+  const Result r = run("plot --a2 pi/3 --a3 pi/2 --n 2 -o '" + file.string() + "'", dir);
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  CHECK(r.err.empty());
+  REQUIRE(fs::exists(file));
+  const std::string svg = slurp(file);
+  CHECK(svg.rfind("<?xml", 0) == 0);
+  CHECK(contains(svg, "<svg"));
+  CHECK(contains(svg, "</svg>"));
+  const auto nodes_at = svg.find("id=\"nodes\""), cusps_at = svg.find("id=\"cusps\"");
+  REQUIRE(nodes_at != std::string::npos);
+  REQUIRE(cusps_at != std::string::npos);
+  const std::string group = svg.substr(nodes_at, cusps_at - nodes_at);
+  std::size_t circles = 0;
+  for (auto at = group.find("<circle"); at != std::string::npos; at = group.find("<circle", at + 1)) ++circles;
+  CHECK(circles == 4);
+  CHECK(contains(svg, "4 node(s)"));
+  CHECK(dir.entries() == std::vector<std::string>{"fig5f.svg"});
+}
+
+TEST_CASE("cli: bad input to classify, nodes and plot exits 2 with one stderr line and leaves no file",
+          "[cli][errors][classify][nodes][plot]") {
+  TempDir dir;
+  const std::vector<BadCase> cases{
+      {"--a2 4 --a3 1 --n 1", {"--a2", "4", "(0, pi)"}},
+      {"--a2 1 --a3 nan --n 1", {"--a3", "nan"}},
+      {"--a2 1 --a3 ap-2 --n 2", {"--a3", "(0, pi)"}},
+      {"--a2 1 --a3 1 --n 0", {"--n", "0"}},
+      {"--a2 1 --a3 1 --n 1 --phase inf", {"--phase", "inf"}},
+      {"--a2 1 --a3 1 --n 1 --samples 5", {"--samples", "5", "1024"}},
+      {"--a2 1 --a3 1 --n 1 --samples abc", {"--samples", "abc"}},
+      {"--a2 1 --a3 1", {"--n"}},
+  };
+  const fs::path file = dir.path / "out.file";
+  for (const char* sub : {"classify", "nodes", "plot"})
+    for (const BadCase& c : cases) {
+      const std::string args = std::string(sub) + " " + c.args + " -o '" + file.string() + "'";
+      INFO(args);
+      check_one_line_error(run(args, dir), c);
+      CHECK_FALSE(fs::exists(file));
+      CHECK(dir.entries().empty());
+    }
+}
