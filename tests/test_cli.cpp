@@ -454,7 +454,7 @@ TEST_CASE("cli: classify accepts --a3 ap and pi-ap-1e-9 (the pitch cone and an o
   CHECK(off["counts"]["cusps"] == 0);
 }
 
-TEST_CASE("cli: nodes prints kind,x,y,z,t1,t2,branches; Fig. 5(f) rows are the Eq. 39b / 44b nodes",
+TEST_CASE("cli: nodes prints the CSV kind,x,y,z,t1,t2,branches with the Eq. 39b / 44b nodes of Fig. 5(f)",
           "[cli][nodes][csv]") {
   TempDir dir;
   const Result r = run("nodes --a2 pi/3 --a3 pi/2 --n 2", dir);
