@@ -270,6 +270,11 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     NodeKind kind;
   };
   std::vector<Meeting> meetings;
+  // Every meeting must join two different branches (not t1 = t2 modulo the period).
+  auto distinct_branches = [&](LD a, LD b) {
+    LD d = std::fmod(std::abs(a - b), static_cast<LD>(period));
+    return std::min(d, static_cast<LD>(period) - d) >= kMinBranchSeparation;
+  };
   RefineSettings rs;
   rs.max_travel = 4 * h + 0.05;
   auto refine = [&](LD a, LD b) { 
@@ -314,17 +319,19 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     if (std::abs(gap_min) <= gap_tol) {
       LD t1s;
       detail::branch_gap(curve_ld, r.t1, r.t2, s_star, &t1s);
-      meetings.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
+      if (distinct_branches(t1s, r.t2 + s_star)) meetings.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
       continue;
     }
     const LD disc = c1 * c1 - 4 * c0 * c2;
     if (disc < 0) continue;  // a near miss, not a node
     for (LD sgn : {-1.0L, 1.0L}) {
       const LD s = (-c1 + sgn * std::sqrt(disc)) / (2 * c2);
+      // The quadratic model holds near s = 0 only; a crossing farther away has its own seed.
+      if (!(std::abs(s) <= 4 * static_cast<LD>(h))) continue;
       LD t1s;
       detail::branch_gap(curve_ld, r.t1, r.t2, s, &t1s);
       const auto rr = refine(t1s, r.t2 + s);
-      if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual)
+      if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
         meetings.push_back({rr.t1, rr.t2, NodeKind::crossing});
     }
   }
