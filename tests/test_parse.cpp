@@ -140,3 +140,14 @@ TEST_CASE("make_gear_train turns parsed a3 references into the a3 of Eq. 4", "[p
   const InvalidInput e = expect_invalid([&] { make_gear_train(a2, parse_a3("pi-a2+pi"), n); });
   CHECK(e.field() == "a3");
 }
+
+TEST_CASE("parse_angle accepts a pi term plus or minus radians (pi-1e-6, pi/2+0.1)", "[parse][angle]") {
+  CHECK(parse_angle("pi-1e-6", "a2") == kPi - 1e-6);
+  CHECK(parse_angle("pi/2+0.1", "a2") == kPi / 2 + 0.1);
+  CHECK(parse_angle("2pi/3-1e-9", "a3") == 2 * kPi / 3 - 1e-9);
+  CHECK(parse_angle("pi+1e-3", "phase") == kPi + 1e-3);
+  for (const char* bad : {"pi-", "pi/2+", "pi-x", "pi--1", "pi/2+1e"}) {
+    INFO(bad);
+    CHECK_THROWS_AS(parse_angle(bad, "a2"), InvalidInput);
+  }
+}

@@ -7,7 +7,7 @@
 //   parse_a3("pi-ap-1e-9") -> {A3Reference::mirror_pitch_cone, -1e-9}
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
-//   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number]
+//   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
 //   ratio  := [sign] integer ["/" integer] | [sign] digits "." digits     (decimal, <= 9 places)
 //   a3     := angle | ref [("+" | "-") angle]     ref := "ap" | "pi-ap" | "a2" | "pi-a2"
 // Every failure throws InvalidInput naming the field, the text and the accepted forms.
@@ -90,15 +90,31 @@ inline std::optional<double> angle_value(std::string_view s) {
   else if (coef == "+" || coef.empty()) c = 1.0;
   else if (const auto v = strict_double(coef)) c = *v;
   else return std::nullopt;
+  // An optional offset in radians after the pi term: "pi-1e-6", "pi/2+0.1".
+  double offset = 0.0;
+  for (std::size_t i = 1; i < rest.size(); ++i) {
+    if ((rest[i] == '+' || rest[i] == '-') && rest[i - 1] != 'e' && rest[i - 1] != 'E') {
+      const auto v = strict_double(rest.substr(i));
+      if (!v) return std::nullopt;
+      offset = *v;
+      rest = rest.substr(0, i);
+      break;
+    }
+  }
   double d = 1.0;
   if (!rest.empty()) {
+    if (rest.front() == '+' || rest.front() == '-') {  // "pi-1e-6": the offset starts right after pi
+      const auto v = strict_double(rest);
+      if (!v) return std::nullopt;
+      return c * Constants<double>::pi() + *v;
+    }
     if (rest.front() != '/') return std::nullopt;
     const auto v = strict_double(rest.substr(1));
     if (!v || *v == 0.0) return std::nullopt;
     d = *v;
   }
-  // c*pi/d: one rounding of pi, then of the product and the quotient.
-  return c * Constants<double>::pi() / d;
+  // c*pi/d (+ offset): one rounding of pi, then of the product, the quotient and the sum.
+  return c * Constants<double>::pi() / d + offset;
 }
 
 }  // namespace detail
