@@ -539,3 +539,40 @@ TEST_CASE("cli: bad input to classify, nodes and plot exits 2 with one stderr li
       CHECK(dir.entries().empty());
     }
 }
+
+// Vertices in the plane z = 1: great-circle arcs between them are the straight segments of the
+// gnomonic projection, so the crossings below are those of the planar polygons, by construction.
+TEST_CASE("cli: crossings of a hand-made bowtie and of a vertex lying exactly on an edge", "[cli][crossings]") {
+  TempDir dir;
+  const fs::path bowtie = dir.path / "bowtie.csv", touch = dir.path / "touch.csv", pairs = dir.path / "pairs.csv";
+  std::ofstream(bowtie) << "x,y,z\n0,0,1\n1,1,1\n1,0,1\n0,1,1\n";
+  std::ofstream(touch) << "0,0,1\n2,0,1\n2,1,1\n1,0,1\n1,-1,1\n";
+  const auto j = nlohmann::json::parse(run("crossings --input '" + bowtie.string() + "' --json --pairs '" + pairs.string() + "'", dir).out);
+  for (const char* key : {"vertices", "crossings", "touchings", "seconds_search"}) CHECK(j.contains(key));
+  CHECK(j["vertices"] == 4);
+  CHECK(j["crossings"] == 1);  // edges 0 (v0-v1) and 2 (v2-v3) cross at (0.5, 0.5, 1)
+  CHECK(j["touchings"] == 0);
+  CHECK(slurp(pairs) == "i,j,kind\n0,2,crossing\n");
+  const auto open = nlohmann::json::parse(run("crossings --open --json --input '" + bowtie.string() + "'", dir).out);
+  CHECK(open["crossings"] == 1);
+  // v3 = (1, 0) lies inside edge 0 (v0-v1): edges 2 and 3 touch edge 0 there; nothing crosses.
+  const auto t = nlohmann::json::parse(run("crossings --json --input '" + touch.string() + "'", dir).out);
+  CHECK(t["crossings"] == 0);
+  CHECK(t["touchings"] == 2);
+}
+
+TEST_CASE("cli: crossings rejects unreadable, malformed and degenerate polylines with exit 2", "[cli][crossings][errors]") {
+  TempDir dir;
+  const fs::path nan = dir.path / "nan.csv", two = dir.path / "two.csv", rep = dir.path / "repeat.csv";
+  std::ofstream(nan) << "0,0,1\n1,nan,1\n1,0,1\n";
+  std::ofstream(two) << "0,0,1\n1,0,1\n";
+  std::ofstream(rep) << "0,0,1\n1,0,1\n2,0,2\n0,1,1\n";  // (2,0,2) is the direction of (1,0,1)
+  for (const fs::path& p : {dir.path / "missing.csv", nan, two, rep}) {
+    INFO(p);
+    const Result r = run("crossings --input '" + p.string() + "'", dir);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(split(r.err, '\n').size() <= 2);  // one line (+ the empty string after the newline)
+    CHECK(r.err.find("--input") != std::string::npos);
+  }
+}

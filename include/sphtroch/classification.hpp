@@ -28,6 +28,7 @@
 #include "sphtroch/root_census.hpp"
 
 #include <chrono>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,7 @@ struct ClassificationWork {
 };
 
 struct Classification {
+  Classification(GearTrain given, SnappedTrain analysed) : input(std::move(given)), snapped(std::move(analysed)) {}
   GearTrain input;                 // as given
   SnappedTrain snapped;            // the train analysed, and the boundaries it was put on
   bool literal = false;
@@ -101,7 +103,7 @@ inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& 
 /// Classifies one gear train (see header). Never throws for a valid GearTrain.
 inline Classification classify(const GearTrain& input, const ClassifySettings& settings = {}) {
   const auto start = std::chrono::steady_clock::now();
-  Classification c{input, snap_to_boundaries(input, settings.literal ? 0.0 : settings.boundary_tolerance)};
+  Classification c(input, snap_to_boundaries(input, settings.literal ? 0.0 : settings.boundary_tolerance));
   c.literal = settings.literal;
   const GearTrain& train = c.snapped.train;
   c.tangency_tolerance = settings.literal ? 0.0 : kTangencyTolerance;

@@ -581,8 +581,10 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   }
 
   if (!options.caption.empty()) {
+    // Shrink a long caption to fit the width: a sans-serif glyph averages about 0.55 em.
+    const double fit = 0.95 * L.width / (0.55 * static_cast<double>(std::max<std::size_t>(1, options.caption.size())));
     svg.text(0.5 * L.width, L.caption_y, options.caption,
-             "font-family:sans-serif;font-size:" + num(1.1 * L.font_px) + "px;fill:#111111", "middle");
+             "font-family:sans-serif;font-size:" + num(std::min(1.1 * L.font_px, fit)) + "px;fill:#111111", "middle");
   }
   return svg.finish();
 }

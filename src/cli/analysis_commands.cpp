@@ -3,10 +3,14 @@
 #include "cli_common.hpp"
 
 #include "sphtroch/classification.hpp"
+#include "sphtroch/parse.hpp"
 #include "sphtroch/sampling.hpp"
 #include "sphtroch/svg_plot.hpp"
 
 #include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
 
 #include <algorithm>
 #include <cmath>
@@ -238,6 +242,80 @@ void run_plot(const AnalysisOptions& o) {
   write_output(o.output, [&](std::ostream& out) { out << svg; });
 }
 
+struct CrossingsOptions {
+  std::string input, pairs, output;
+  bool open = false;
+  bool json = false;
+};
+
+/// Reads rows "x,y,z" (a non-numeric first line is a header; blank lines are skipped).
+std::vector<Vector3d> read_polyline_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError{"--input = " + path + ": cannot be read; valid: a readable CSV file of rows x,y,z"};
+  std::vector<Vector3d> v;
+  std::string line;
+  std::size_t line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::stringstream row(line);
+    std::string cell;
+    double xyz[3];
+    int k = 0;
+    bool ok = true;
+    while (std::getline(row, cell, ',')) {
+      const auto value = detail::strict_double(detail::trim(cell));
+      if (k >= 3 || !value) {
+        ok = false;
+        break;
+      }
+      xyz[k++] = *value;
+    }
+    if (!ok || k != 3) {
+      if (line_no == 1 && v.empty()) continue;  // header
+      throw UsageError{"--input = " + path + ": line " + std::to_string(line_no) + " is not x,y,z with 3 finite numbers; valid: CSV rows x,y,z"};
+    }
+    v.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+  return v;
+}
+
+void run_crossings(const CrossingsOptions& o) {
+  const std::vector<Vector3d> vertices = read_polyline_csv(o.input);
+  SelfCrossings sc;
+  double seconds = 0;
+  try {
+    validate_spherical_polyline(vertices, !o.open);
+    const auto start = std::chrono::steady_clock::now();  // reading the file is not timed
+    sc = find_self_crossings(vertices, !o.open);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } catch (const InvalidInput& e) {
+    throw UsageError{"--input = " + o.input + ": " + e.value() + ": " + e.problem() + "; valid: " + e.valid_range()};
+  }
+  if (!o.pairs.empty()) {
+    write_output(o.pairs, [&](std::ostream& out) {
+      out << "i,j,kind\n";
+      std::vector<EdgePair> all = sc.crossings;
+      all.insert(all.end(), sc.touchings.begin(), sc.touchings.end());
+      std::sort(all.begin(), all.end());
+      for (const EdgePair& e : all) out << e.i << ',' << e.j << ',' << to_string(e.kind) << '\n';
+    });
+  }
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) {
+      nlohmann::json j = {{"vertices", vertices.size()},           {"closed", !o.open},
+                          {"crossings", sc.crossings.size()},      {"touchings", sc.touchings.size()},
+                          {"candidate_pairs", sc.candidate_pairs}, {"predicates", sc.predicates},
+                          {"seconds_search", seconds}};
+      out << j.dump(2) << "\n";
+    } else {
+      out << "vertices " << vertices.size() << (o.open ? " (open)" : " (closed)") << "\ncrossings "
+          << sc.crossings.size() << "\ntouchings " << sc.touchings.size() << "\ncandidate pairs " << sc.candidate_pairs
+          << ", exact predicates " << sc.predicates << "\nseconds_search " << number(seconds) << "\n";
+    }
+  });
+}
+
 }  // namespace
 
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
@@ -262,6 +340,17 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     add_analysis_options(*cmd, *o);
     cmd->footer("Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
     actions.emplace_back(cmd, [o] { run_plot(*o); });
+  }
+  {
+    auto o = std::make_shared<CrossingsOptions>();
+    CLI::App* cmd = app.add_subcommand("crossings", "exact self-crossings of any spherical polyline given as CSV x,y,z");
+    cmd->add_option("--input", o->input, "CSV rows x,y,z (a header line is allowed; need not be normalised)")->required();
+    cmd->add_flag("--open", o->open, "the polyline is open (default: closed, the last vertex joins the first)");
+    cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE");
+    cmd->add_flag("--json", o->json, "one JSON object: vertices, crossings, touchings, seconds_search, ...");
+    add_output_option(*cmd, o->output, "the summary");
+    cmd->footer("Edge e joins vertex e to e+1; adjacent edges are never counted. Reading the file is not timed.");
+    actions.emplace_back(cmd, [o] { run_crossings(*o); });
   }
 }
 
