@@ -3,6 +3,7 @@
 // checked against its definition in the report (n = sin a_s / sin a_p, a2 = a_s + a_p, Eq. 2;
 // a_p = atan(sin a2 / (cos a2 + 2)) for n = 2, Sec. 5; a_p = a_s = a2/2 for n = 1, Sec. 4.2).
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/ratio.hpp"
@@ -22,17 +23,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
-/// Runs f, expects InvalidInput, and returns it for inspection.
-template <typename F>
-InvalidInput expect_invalid(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e;
-  }
-  FAIL("no InvalidInput thrown");
-  return InvalidInput("", "", "", "");
-}
+using sphtroch::test::expect_invalid;
 }  // namespace
 
 TEST_CASE("Ratio is stored in lowest terms with a positive denominator", "[ratio]") {

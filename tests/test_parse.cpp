@@ -1,6 +1,7 @@
 // Tests for sphtroch/parse.hpp: every accepted form of angles, ratios and tracer twists, and
 // every rejection, each with an InvalidInput that names the field it was asked to parse.
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/parse.hpp"
 
@@ -17,16 +18,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 /// |a - b| within k ulp of the larger magnitude (parsing does at most a few roundings).
 bool near(double a, double b, double k = 2) { return std::abs(a - b) <= k * kEps * std::max(std::abs(a), std::abs(b)); }
 
-template <typename F>
-InvalidInput expect_invalid(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e;
-  }
-  FAIL("no InvalidInput thrown");
-  return InvalidInput("", "", "", "");
-}
+using sphtroch::test::expect_invalid;
 }  // namespace
 
 TEST_CASE("parse_angle accepts radians, multiples of pi and degrees", "[parse][angle]") {

@@ -2,6 +2,7 @@
 // (2 pi q, no duplicate endpoint), the open trajectory over K carrier turns (both ends), the
 // velocity columns, and the bounds on sample counts and turns.
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/sampling.hpp"
 
@@ -14,16 +15,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-template <typename F>
-InvalidInput expect_invalid(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e;
-  }
-  FAIL("no InvalidInput thrown");
-  return InvalidInput("", "", "", "");
-}
+using sphtroch::test::expect_invalid;
 }  // namespace
 
 TEST_CASE("sample_period: N samples t_i = 2 pi q i / N over [0, 2 pi q), closed, no duplicate endpoint",

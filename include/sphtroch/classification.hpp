@@ -129,8 +129,7 @@ inline Classification classify(const GearTrain& input, const ClassifySettings& s
     c.cusps.push_back(k);
   }
   c.cusp_within_resolution = !c.cusps.empty() && c.cone.pitch != 0.0 && c.cone.mirror != 0.0;
-  ++c.work.points_evaluated;
-  c.work.points_evaluated += 2 * c.cusps.size();
+  c.work.points_evaluated += 2 * c.cusps.size();  // point and velocity of each cusp
 
   c.analytic = classify_analytic(train, settings.literal ? 0.0 : settings.boundary_tolerance);
   c.z = z_extremes(train);
