@@ -50,6 +50,7 @@ std::string number(double v);
 /// Registers a subcommand's action; main() runs the selected one and maps errors to exit codes.
 using Action = std::function<void()>;
 void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // atlas, atlas-merge
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #endif

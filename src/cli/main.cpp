@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<std::pair<CLI::App*, Action>> actions;
   register_trace(app, actions);
+  register_atlas(app, actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS
   register_analysis(app, actions);
 #endif

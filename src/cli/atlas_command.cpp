@@ -1,0 +1,250 @@
+// sphtroch atlas | atlas-merge — the classification map over (a2, a3) (atlas.hpp), its CSV
+// (atlas_csv.hpp), shard slices joined back together, and the SVG map (atlas_svg.hpp).
+// Eigen only: this translation unit must not include CGAL.
+#include "cli_common.hpp"
+
+#include "sphtroch/atlas.hpp"
+#include "sphtroch/atlas_csv.hpp"
+#include "sphtroch/atlas_svg.hpp"
+#include "sphtroch/parse.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace sphtroch::cli {
+
+namespace {
+
+/// Disagreeing cells listed one per line in the summary; the rest are counted (the CSV has all).
+constexpr std::size_t kMaxListedDisagreements = 200;
+
+struct AtlasOptions {
+  std::string n, grid, a2 = "0:pi", a3 = "0:pi", threads, shard, output, svg;
+  bool literal = false;
+};
+
+struct MergeOptions {
+  std::vector<std::string> slices;
+  std::string output, svg;
+};
+
+const char* const kRangeForms = "LO:HI with 0 <= LO < HI <= pi (angles: 1.2, pi/6, 5pi/6, 90deg)";
+
+AngleRange parse_range(const std::string& text, const std::string& field) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) throw InvalidInput(field, text, "not a range LO:HI", kRangeForms);
+  const auto lo = detail::angle_value(text.substr(0, colon));
+  const auto hi = detail::angle_value(text.substr(colon + 1));
+  if (!lo || !hi) throw InvalidInput(field, text, "not two finite angles LO:HI", kRangeForms);
+  if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
+    throw InvalidInput(field, text, "outside the valid range", kRangeForms);
+  return AngleRange{*lo, *hi};
+}
+
+AtlasShard parse_shard(const std::string& text, std::size_t grid) {
+  const std::string range = "I/K with 1 <= I <= K <= grid (" + std::to_string(grid) + ")";
+  const auto slash = text.find('/');
+  const std::string i = slash == std::string::npos ? "" : text.substr(0, slash);
+  const std::string k = slash == std::string::npos ? "" : text.substr(slash + 1);
+  auto whole = [](const std::string& s) {
+    return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (!whole(i) || !whole(k)) throw InvalidInput("shard", text, "not I/K", range);
+  const AtlasShard s{static_cast<std::size_t>(std::stoul(i)), static_cast<std::size_t>(std::stoul(k))};
+  if (!(s.index >= 1 && s.index <= s.count && s.count <= grid))
+    throw InvalidInput("shard", text, "outside the valid range", range);
+  return s;
+}
+
+/// Fails early (before any computing) when `path`'s directory cannot take a new file.
+void check_writable(const std::string& path, const std::string& option) {
+  if (path.empty() || path == "-") return;
+  const auto slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw UsageError{option + " = " + path + ": cannot be written (" + std::strerror(errno) +
+                     "); valid: a path in an existing, writable directory"};
+}
+
+std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& cells) {
+  return render_atlas_svg(spec, cells);
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& option) {
+  try {
+    write_output(path, [&](std::ostream& out) { out << text; });
+  } catch (const UsageError& e) {
+    // write_output names -o; this file came from another option.
+    std::string m = e.message;
+    if (m.rfind("--output", 0) == 0) m = option + m.substr(8);
+    throw UsageError{m};
+  }
+}
+
+/// The summary: what was computed, counts per class, and every disagreement with its nearest
+/// boundary (see kMaxListedDisagreements).
+void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<AtlasCell>& cells, AtlasRows rows,
+                   const std::optional<AtlasShard>& shard, std::optional<double> seconds, std::size_t threads) {
+  const AtlasSummary s = summarize_atlas(cells);
+  out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
+      << number(spec.a2.lo) << ", " << number(spec.a2.hi) << "], a3 in [" << number(spec.a3.lo) << ", "
+      << number(spec.a3.hi) << "], cell centres; "
+      << (spec.literal ? "literal reading (tolerances 0)"
+                       : "default reading (boundary tolerance " + number(spec.boundary_tolerance) + " rad)")
+      << "\n";
+  out << "cells: " << s.cells << " (";
+  if (shard) out << "shard " << shard->index << "/" << shard->count << ": ";
+  out << "a2 rows " << rows.begin << " .. " << (rows.end == 0 ? 0 : rows.end - 1) << " of " << spec.grid << ")\n";
+  out << "classes (root-count census): simple curve " << s.by_class[0] << ", nodes " << s.by_class[1] << ", cusps "
+      << s.by_class[2] << ", nodes and cusps " << s.by_class[3] << "\n";
+  out << "node counts:";
+  bool first = true;
+  for (const auto& [n, c] : s.by_nodes) {
+    out << (first ? " " : ", ") << n << ": " << c;
+    first = false;
+  }
+  out << " cells; " << s.with_tangencies << " with a tangency node\n";
+  const bool n1 = spec.ratio == Ratio(1), n2 = spec.ratio == Ratio(2);
+  if (n1 || n2)
+    out << "report's criteria: " << (n1 ? "Eq. 24" : "Eqs. 43, 46") << " and the pitch-cone criterion, predicted for "
+        << s.predicted << " cells\n";
+  else
+    out << "report's criteria: the pitch-cone criterion (cusps) only; no node criterion for n = " << spec.ratio.str()
+        << " (analytic_nodes, agree = NA)\n";
+  out << "disagreements (census vs report): " << s.disagreements.size() << "\n";
+  std::size_t listed = 0;
+  for (std::size_t k : s.disagreements) {
+    if (listed++ == kMaxListedDisagreements) {
+      out << "  ... and " << s.disagreements.size() - kMaxListedDisagreements
+          << " more (agree = 0 in the CSV)\n";
+      break;
+    }
+    const AtlasCell& c = cells[k];
+    const NearestBoundary b = nearest_boundary(c.a2, c.a3, spec.ratio);
+    out << "  i=" << c.i << " j=" << c.j << " a2=" << number(c.a2) << " a3=" << number(c.a3) << ": census " << c.nodes
+        << " node(s), " << c.cusps << " cusp(s); report "
+        << (c.analytic_nodes ? std::to_string(*c.analytic_nodes) : std::string("NA")) << " node(s), "
+        << c.analytic_cusps << " cusp(s); nearest boundary " << b.name << " at " << number(b.distance) << " rad\n";
+  }
+  if (seconds) {
+    const double per_cell = s.cells ? *seconds * static_cast<double>(threads) / static_cast<double>(s.cells) : 0.0;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "time: %.3f s on %zu thread(s), %.4f ms per cell per thread\n", *seconds, threads,
+                  per_cell * 1e3);
+    out << buf;
+  }
+}
+
+/// "\ratlas  37% (6062/16384 cells)" on stderr when it is a terminal; nothing otherwise.
+AtlasProgress progress_bar() {
+  if (!::isatty(STDERR_FILENO)) return {};
+  return [](std::size_t done, std::size_t total) {
+    const unsigned pct = total ? static_cast<unsigned>(100.0 * static_cast<double>(done) / static_cast<double>(total)) : 100;
+    std::fprintf(stderr, "\ratlas %3u%% (%zu/%zu cells)", pct, done, total);
+    if (done >= total) std::fprintf(stderr, "\r%*s\r", 60, "");
+    std::fflush(stderr);
+  };
+}
+
+void run_atlas(const AtlasOptions& o) {
+  AtlasSpec spec;
+  spec.ratio = parse_ratio(o.n, "n");
+  spec.grid = parse_count(o.grid, "grid", 1, kAtlasMaxGrid);
+  spec.a2 = parse_range(o.a2, "a2");
+  spec.a3 = parse_range(o.a3, "a3");
+  spec.literal = o.literal;
+  spec.validate();
+  const unsigned hw = std::thread::hardware_concurrency();
+  const std::size_t threads =
+      o.threads.empty() ? std::max<std::size_t>(1, std::min<std::size_t>(hw, kAtlasMaxThreads))
+                        : parse_count(o.threads, "threads", 1, kAtlasMaxThreads);
+  std::optional<AtlasShard> shard;
+  if (!o.shard.empty()) shard = parse_shard(o.shard, spec.grid);
+  if (shard && !o.svg.empty())
+    throw UsageError{"--svg = " + o.svg + ": cannot be combined with --shard = " + o.shard +
+                     "; valid: draw the whole atlas (sphtroch atlas-merge --svg FILE slices...)"};
+  check_writable(o.output, "--output");
+  check_writable(o.svg, "--svg");
+
+  const AtlasRows rows = shard ? shard_rows(spec.grid, *shard) : AtlasRows{0, spec.grid};
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<AtlasCell> cells = compute_atlas(spec, rows, threads, progress_bar());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells);
+  if (!o.output.empty()) write_output(o.output, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); });
+  if (!o.svg.empty()) write_text_file(o.svg, svg, "--svg");
+  print_summary(o.output == "-" ? std::cerr : std::cout, spec, cells, rows, shard, seconds, threads);
+}
+
+void run_merge(const MergeOptions& o) {
+  check_writable(o.output, "--output");
+  check_writable(o.svg, "--svg");
+  std::vector<AtlasCsv> slices;
+  try {
+    for (const std::string& path : o.slices) {
+      std::ifstream in(path, std::ios::binary);
+      if (!in)
+        throw UsageError{"atlas-merge: slice = " + path + ": cannot be read (" + std::strerror(errno) +
+                         "); valid: a readable CSV written by sphtroch atlas"};
+      std::ostringstream text;
+      text << in.rdbuf();
+      slices.push_back(read_atlas_csv(text.str(), path));
+    }
+    AtlasCsv whole = merge_atlas_slices(std::move(slices));
+    const std::string svg = o.svg.empty() ? std::string() : write_svg_text(whole.spec, whole.cells);
+    if (!o.output.empty())
+      write_output(o.output, [&](std::ostream& out) { write_atlas_csv(out, whole.spec, std::nullopt, whole.cells); });
+    if (!o.svg.empty()) write_text_file(o.svg, svg, "--svg");
+    print_summary(o.output == "-" ? std::cerr : std::cout, whole.spec, whole.cells, whole.rows, std::nullopt,
+                  std::nullopt, 1);
+  } catch (const InvalidInput& e) {
+    throw UsageError{std::string("atlas-merge: ") + e.what()};
+  }
+}
+
+}  // namespace
+
+void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<AtlasOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "atlas", "classification map over (a2, a3): node/cusp census per cell vs the report's criteria (CSV, SVG)");
+  cmd->footer(
+      "Cells are sampled at their centres a = LO + (k + 1/2)(HI - LO)/G. Per cell: the root-count\n"
+      "node census and the cusps (as `classify` reads the train), and the report's prediction\n"
+      "(Eq. 24 for n = 1, Eqs. 43/46 for n = 2, pitch cone for every n). Without -o only a summary\n"
+      "is printed; -o - writes the CSV to stdout and the summary to stderr.\n"
+      "Shards: --shard I/K (1 <= I <= K <= G) computes rows [(I-1)G/K, IG/K) of a2; join the\n"
+      "slices with `sphtroch atlas-merge -o atlas.csv slice*.csv` (byte-identical to one run).\n"
+      "Example: sphtroch atlas --n 2 --grid 128 -o atlas.csv --svg atlas.svg");
+  cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5")->required();
+  cmd->add_option("--grid", o->grid, "G: G x G cells (1 .. 4096)")->required();
+  cmd->add_option("--a2", o->a2, "a2 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");
+  cmd->add_option("--a3", o->a3, "a3 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");
+  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
+  cmd->add_option("--shard", o->shard, "compute slice I of K (1 <= I <= K <= G) for a batch job array");
+  cmd->add_flag("--literal", o->literal, "analyse the cell centres as given (no snapping onto boundaries)");
+  add_output_option(*cmd, o->output, "the CSV");
+  cmd->add_option("--svg", o->svg, "draw the map to FILE.svg (not with --shard)");
+  actions.emplace_back(cmd, [o] { run_atlas(*o); });
+
+  auto m = std::make_shared<MergeOptions>();
+  CLI::App* merge = app.add_subcommand("atlas-merge", "join atlas shard slices into the unsharded atlas (CSV, SVG)");
+  merge->footer(
+      "Slices in any order; refuses slices of different atlases, a missing or repeated shard.\n"
+      "Example: sphtroch atlas-merge -o atlas.csv --svg atlas.svg slice-*.csv");
+  merge->add_option("slices", m->slices, "slice CSV files written by sphtroch atlas --shard I/K")->required();
+  add_output_option(*merge, m->output, "the merged CSV");
+  merge->add_option("--svg", m->svg, "draw the merged map to FILE.svg");
+  actions.emplace_back(merge, [m] { run_merge(*m); });
+}
+
+}  // namespace sphtroch::cli
