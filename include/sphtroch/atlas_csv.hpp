@@ -19,7 +19,9 @@
 //    %.17g; analytic_nodes and agree are "NA" when the report has no node criterion (n != 1, 2);
 //    agree is 1 or 0 otherwise.
 //  * read_atlas_csv re-prints every row it parsed and requires the same text, so a merged file
-//    regenerated from parsed rows is byte-identical to the slices' rows.
+//    regenerated from parsed rows is byte-identical to the slices' rows; it also requires
+//    a2, a3 to be the cell centres of (i, j), nodes = crossings + tangencies, and agree to
+//    match the counts.
 //  Errors: InvalidInput with field "slice" (read, merge) or "slices" (merge), value the file name
 //  (or names), problem and the valid form.
 #pragma once
@@ -237,6 +239,10 @@ inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name) {
       c.analytic_nodes = static_cast<std::uint32_t>(*an);
     }
     if (f[10] != "NA") c.agree = f[10] == "1";
+    if (c.nodes != c.crossings + c.tangencies) throw row_error("nodes != crossings + tangencies");
+    if (c.agree.has_value() != c.analytic_nodes.has_value() ||
+        (c.agree && *c.agree != (c.nodes == *c.analytic_nodes && c.cusps_agree)))
+      throw row_error("agree does not match the counts");
     if (c.a2 != out.spec.a2_at(c.i) || c.a3 != out.spec.a3_at(c.j)) throw row_error("a2, a3 are not the cell centre");
     if (atlas_csv_row(c) != line) throw row_error("does not re-print identically");
     out.cells.push_back(c);

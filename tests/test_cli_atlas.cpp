@@ -1,0 +1,181 @@
+// `sphtroch atlas` and `sphtroch atlas-merge`, run as the real executable (SPHTROCH_EXE): the CSV
+// does not depend on --threads, shard slices merge (in any order) into a file byte-identical to
+// the unsharded run, merge refuses missing / repeated / foreign slices, bad input gets exit
+// status 2 with one stderr line naming the option and no file, and --svg writes the map.
+#include "catch2/catch.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "sphtroch-atlas-XXXXXX").string();
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    REQUIRE(mkdtemp(buf.data()) != nullptr);
+    path = buf.data();
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(path)) {
+      const std::string name = e.path().filename().string();
+      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(name);
+    }
+    return names;
+  }
+};
+
+/// Runs `sphtroch <args>` in `dir` (relative paths land there).
+Result run(const std::string& args, const TempDir& dir) {
+  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+  const std::string cmd = "cd '" + dir.path.string() + "' && '" + SPHTROCH_EXE + "' " + args + " >'" + out.string() +
+                          "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("atlas: CSV layout, and the same bytes with 1 or 2 threads", "[cli][atlas]") {
+  TempDir dir;
+  const Result one = run("atlas --n 2 --grid 12 --threads 1 -o one.csv", dir);
+  REQUIRE(one.status == 0);
+  CHECK(one.err.empty());  // no progress bar: stderr is not a terminal
+  CHECK(contains(one.out, "disagreements (census vs report): 0\n"));
+  const Result two = run("atlas --n 2 --grid 12 --threads 2 -o two.csv", dir);
+  REQUIRE(two.status == 0);
+  const std::string a = slurp(dir.path / "one.csv"), b = slurp(dir.path / "two.csv");
+  CHECK(a == b);
+  CHECK(a.rfind("# sphtroch atlas n=2 grid=12 a2=0:3.1415926535897931 a3=0:3.1415926535897931 reading=default\n"
+                "i,j,a2,a3,nodes,crossings,tangencies,cusps,analytic_nodes,analytic_cusps,agree\n",
+                0) == 0);
+  CHECK(count_lines(a) == 2 + 144);
+  // Row (i, j) = (0, 1): a2 = pi/24, a3 = 3 pi/24, printed with %.17g.
+  char expected[128];
+  std::snprintf(expected, sizeof expected, "\n0,1,%.17g,%.17g,", 3.14159265358979323846 / 12 * 0.5,
+                3.14159265358979323846 / 12 * 1.5);
+  CHECK(contains(a, expected));
+  // -o - : the CSV on stdout, the summary on stderr.
+  const Result dash = run("atlas --n 2 --grid 12 -o -", dir);
+  REQUIRE(dash.status == 0);
+  CHECK(dash.out == a);
+  CHECK(contains(dash.err, "disagreements (census vs report): 0"));
+}
+
+TEST_CASE("atlas: shards merged in any order equal the unsharded file byte for byte", "[cli][atlas][shard]") {
+  TempDir dir;
+  REQUIRE(run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 -o whole.csv", dir).status == 0);
+  for (int i = 1; i <= 3; ++i) {
+    const Result r = run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard " + std::to_string(i) + "/3 -o s" +
+                             std::to_string(i) + ".csv",
+                         dir);
+    REQUIRE(r.status == 0);
+    CHECK(contains(r.out, "shard " + std::to_string(i) + "/3"));
+  }
+  const Result merged = run("atlas-merge -o merged.csv --svg merged.svg s2.csv s3.csv s1.csv", dir);
+  REQUIRE(merged.status == 0);
+  CHECK(slurp(dir.path / "merged.csv") == slurp(dir.path / "whole.csv"));
+  CHECK(contains(slurp(dir.path / "merged.svg"), "class=\"boundary\""));
+  CHECK(run("atlas-merge -o merged2.csv s3.csv s1.csv s2.csv", dir).status == 0);
+  CHECK(slurp(dir.path / "merged2.csv") == slurp(dir.path / "whole.csv"));
+
+  REQUIRE(run("atlas --n 2 --grid 10 --shard 2/3 -o other.csv", dir).status == 0);
+  REQUIRE(run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard 2/4 -o four.csv", dir).status == 0);
+  struct Bad {
+    const char* args;
+    const char* says;
+  };
+  for (const Bad& bad : {Bad{"s1.csv s3.csv", "shard 2/3 missing"}, Bad{"s1.csv s2.csv s2.csv s3.csv", "given twice"},
+                         Bad{"s1.csv other.csv s3.csv", "another atlas"}, Bad{"s1.csv four.csv s3.csv", "shards"},
+                         Bad{"s1.csv s2.csv nowhere.csv", "cannot be read"}}) {
+    INFO(bad.args);
+    const Result r = run(std::string("atlas-merge -o out.csv ") + bad.args, dir);
+    CHECK(r.status == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, bad.says));
+    CHECK(r.out.empty());
+    CHECK_FALSE(fs::exists(dir.path / "out.csv"));
+  }
+}
+
+TEST_CASE("atlas: bad input is one stderr line naming the option, exit 2, no file", "[cli][atlas][errors]") {
+  TempDir dir;
+  struct Bad {
+    const char* args;
+    const char* option;
+  };
+  for (const Bad& bad : {Bad{"--n 2 --grid 0", "--grid = 0"}, Bad{"--n 2 --grid abc", "--grid = abc"},
+                         Bad{"--n 2 --grid 4097", "--grid = 4097"}, Bad{"--n 2 --grid 8 --shard 4/3", "--shard = 4/3"},
+                         Bad{"--n 2 --grid 8 --shard 0/3", "--shard = 0/3"},
+                         Bad{"--n 2 --grid 8 --shard 9/9", "--shard = 9/9"},
+                         Bad{"--n 2 --grid 8 --shard x", "--shard = x"}, Bad{"--n 2 --grid 8 --a2 2:1", "--a2 = 2:1"},
+                         Bad{"--n 2 --grid 8 --a2 0:4", "--a2 = 0:4"}, Bad{"--n 2 --grid 8 --a3 pi/6", "--a3 = pi/6"},
+                         Bad{"--n 2 --grid 8 --a3=-0.1:1", "--a3 = -0.1:1"},
+                         Bad{"--n 2 --grid 8 --threads 0", "--threads = 0"}, Bad{"--n 0 --grid 8", "--n = 0"},
+                         Bad{"--n x --grid 8", "--n = x"},
+                         Bad{"--n 2 --grid 8 --shard 1/2 --svg map.svg", "--svg = map.svg"},
+                         Bad{"--n 2 --grid 8 --svg nodir/map.svg", "--svg = nodir/map.svg"}}) {
+    INFO(bad.args);
+    const Result r = run(std::string("atlas ") + bad.args + " -o out.csv", dir);
+    CHECK(r.status == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, bad.option));
+    CHECK(contains(r.err, "valid"));
+    CHECK(r.out.empty());
+    CHECK(dir.entries().empty());
+  }
+}
+
+TEST_CASE("atlas --svg: the map file with the report's boundaries and a legend", "[cli][atlas][svg]") {
+  TempDir dir;
+  const Result r = run("atlas --n 1 --grid 16 --svg map.svg", dir);
+  REQUIRE(r.status == 0);
+  const std::string svg = slurp(dir.path / "map.svg");
+  CHECK(svg.rfind("<?xml", 0) == 0);
+  CHECK(contains(svg, "Eq. 24"));
+  CHECK(contains(svg, "class=\"legend\""));
+  CHECK(contains(r.out, "report's criteria: Eq. 24"));
+  CHECK(dir.entries().size() == 1);  // no CSV without -o
+}
