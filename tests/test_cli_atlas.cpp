@@ -179,3 +179,14 @@ TEST_CASE("atlas --svg: the map file with the report's boundaries and a legend",
   CHECK(contains(r.out, "report's criteria: Eq. 24"));
   CHECK(dir.entries().size() == 1);  // no CSV without -o
 }
+
+TEST_CASE("output files get the mode of a plain open(): 0666 & ~umask, not mkstemp's 0600", "[cli][atlas]") {
+  TempDir dir;
+  const std::string cmd = "cd '" + dir.path.string() + "' && umask 022 && '" + SPHTROCH_EXE +
+                          "' atlas --n 1 --grid 2 -o a.csv >/dev/null 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const fs::perms p = fs::status(dir.path / "a.csv").permissions();
+  CHECK((p & fs::perms::group_read) != fs::perms::none);
+  CHECK((p & fs::perms::others_read) != fs::perms::none);
+  CHECK((p & fs::perms::group_write) == fs::perms::none);
+}

@@ -5,6 +5,9 @@
 #pragma once
 
 #include "sphtroch/analytic.hpp"
+#include "sphtroch/atlas.hpp"
+#include "sphtroch/atlas_csv.hpp"
+#include "sphtroch/atlas_svg.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/errors.hpp"

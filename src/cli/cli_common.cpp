@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace sphtroch::cli {
@@ -63,6 +64,10 @@ void write_output(const std::string& path, const std::function<void(std::ostream
   if (fd < 0)
     throw UsageError{"--output = " + path + ": cannot be written (" + std::strerror(errno) +
                      "); valid: a path in an existing, writable directory"};
+  // mkstemp creates the file 0600; give the result the mode a plain open() would (0666 & ~umask).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
   const std::string tmp(name.data());
   try {
