@@ -98,7 +98,9 @@ void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<A
       << number(spec.a2.lo) << ", " << number(spec.a2.hi) << "], a3 in [" << number(spec.a3.lo) << ", "
       << number(spec.a3.hi) << "], cell centres; "
       << (spec.literal ? "literal reading (tolerances 0)"
-                       : "default reading (boundary tolerance " + number(spec.boundary_tolerance) + " rad)")
+                       : "default reading (boundary tolerance " + number(spec.boundary_tolerance) +
+                             " rad, tangency " + number(kTangencyTolerance) + ")")
+      << "; cusp resolution " << number(kCuspResolution) << " rad"
       << "\n";
   out << "cells: " << s.cells << " (";
   if (shard) out << "shard " << shard->index << "/" << shard->count << ": ";
@@ -232,7 +234,8 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
   cmd->add_option("--shard", o->shard, "compute slice I of K (1 <= I <= K <= G) for a batch job array");
   cmd->add_flag("--literal", o->literal, "analyse the cell centres as given (no snapping onto boundaries)");
-  add_output_option(*cmd, o->output, "the CSV");
+  cmd->add_option("-o,--output", o->output,
+                  "write the CSV to FILE (never left partial; - for stdout); without it only the summary");
   cmd->add_option("--svg", o->svg, "draw the map to FILE.svg (not with --shard)");
   actions.emplace_back(cmd, [o] { run_atlas(*o); });
 
@@ -242,7 +245,8 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "Slices in any order; refuses slices of different atlases, a missing or repeated shard.\n"
       "Example: sphtroch atlas-merge -o atlas.csv --svg atlas.svg slice-*.csv");
   merge->add_option("slices", m->slices, "slice CSV files written by sphtroch atlas --shard I/K")->required();
-  add_output_option(*merge, m->output, "the merged CSV");
+  merge->add_option("-o,--output", m->output,
+                    "write the merged CSV to FILE (never left partial; - for stdout); without it only the summary");
   merge->add_option("--svg", m->svg, "draw the merged map to FILE.svg");
   actions.emplace_back(merge, [m] { run_merge(*m); });
 }
