@@ -157,6 +157,28 @@ TEST_CASE("the class changes across a3 = a_p between the straddling cells and no
   }
 }
 
+TEST_CASE("literal reading: disagreements only where a2 + a3 rounds to pi, none off the boundaries",
+          "[atlas][criteria][literal]") {
+  // Cell (i, G-1-i) has a2 + a3 = pi up to rounding: in double the report's margin is 0
+  // (equality: a pole tangency), while the long-double census sees the pole just missed.
+  AtlasSpec spec = spec_of(Ratio(2), 64);
+  spec.literal = true;
+  const std::vector<AtlasCell> cells = compute_atlas(spec, {0, spec.grid}, 2);
+  const AtlasSummary s = summarize_atlas(cells, spec.ratio);
+  CHECK(s.disagreements_off_boundaries == 0);
+  CHECK_FALSE(s.disagreements.empty());  // the literal reading does differ on this grid
+  for (std::size_t k : s.disagreements) {
+    const AtlasCell& c = cells[k];
+    INFO("i = " << c.i << ", j = " << c.j);
+    CHECK(c.i + c.j == spec.grid - 1);
+    CHECK(std::abs(c.a2 + c.a3 - kPi) < 1e-15);
+    CHECK(nearest_boundary(c.a2, c.a3, spec.ratio).kind == BoundaryKind::pi_minus_a2);
+  }
+  // Everything off the anti-diagonal agrees, as in the default reading.
+  for (const AtlasCell& c : cells)
+    if (c.i + c.j != spec.grid - 1) CHECK(c.agree == std::optional<bool>(true));
+}
+
 TEST_CASE("a cell centred on the pitch cone has the report's two cusps (Fig. 5b)", "[atlas][cusp]") {
   // grid 1: the only cell is the centre of the ranges; a3 centred on a_p(a2 = 1.5) up to rounding.
   AtlasSpec spec = spec_of(Ratio(2), 1);
@@ -319,7 +341,7 @@ TEST_CASE("SVG map: well formed, boundary curves, legend, disagreements outlined
     CHECK(count_of(svg, "data-kind=\"mirror_pitch_cone\"") == 1);
     CHECK(count_of(svg, "data-kind=\"a2\"") == (n == 1 ? 0u : 1u));
     CHECK(count_of(svg, "class=\"legend\"") == 1);
-    CHECK(count_of(svg, "census ≠ report: 0 cells") == 1);
+    CHECK(count_of(svg, "census ≠ report: 0 cells (0 off the boundaries)") == 1);
     if (n == 1) CHECK(count_of(svg, ": Eq. 24, ") == 2);  // both ends of Eq. 24 in the legend
     if (n == 2) {
       CHECK(count_of(svg, ": Eq. 43, ") == 2);  // lower end a_p, upper end pi - a2
@@ -333,7 +355,7 @@ TEST_CASE("SVG map: well formed, boundary curves, legend, disagreements outlined
     // A disagreement is outlined and counted.
     cells[5].agree = false;
     const std::string marked = render_atlas_svg(spec, cells);
-    CHECK(count_of(marked, "census ≠ report: 1 cells") == 1);
+    CHECK(count_of(marked, "census ≠ report: 1 cells (1 off the boundaries)") == 1);
     const std::size_t at = marked.find("class=\"disagreements\"");
     REQUIRE(at != std::string::npos);
     CHECK(count_of(marked.substr(at, marked.find("</g>", at) - at), "<rect") == 1);

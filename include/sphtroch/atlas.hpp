@@ -68,6 +68,12 @@ namespace sphtroch {
 
 /// Largest grid side: 4096^2 = 16.8 M cells (about 1 GB of cells held at once; shard above that).
 constexpr std::size_t kAtlasMaxGrid = 4096;
+/// A disagreement within this distance (in a3, radians) of a boundary of atlas_boundary_kinds is a
+/// boundary case: the census and the criterion read an equality that holds up to rounding
+/// differently (e.g. --literal on the anti-diagonal, where a2 + a3 rounds to pi in double but not
+/// in the census's long double). Between the boundary tolerance 1e-10 and the 1e-9 size below
+/// which a near-cusp loop cannot be told from a cusp (analytic.hpp, kBoundaryTolerance).
+constexpr double kAtlasBoundaryBand = 1e-9;
 /// Largest thread count accepted.
 constexpr std::size_t kAtlasMaxThreads = 1024;
 
@@ -154,8 +160,9 @@ struct AtlasSummary {
   std::size_t with_tangencies = 0;                   // cells with a tangency node
   std::size_t predicted = 0;                         // cells with a node prediction (n = 1, 2)
   std::vector<std::size_t> disagreements;            // indices: agree == false or cusps differ
+  std::size_t disagreements_off_boundaries = 0;      // of those, farther than kAtlasBoundaryBand
 };
-inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells);
+inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const Ratio& ratio);
 
 /// The curves in the (a2, a3) plane where the class can change, for this ratio: a3 = a_p(a2)
 /// and pi - a_p(a2) for every n (cusps; for n = 1 these are Eq. 24's ends a2/2, pi - a2/2);
@@ -294,7 +301,7 @@ inline std::vector<AtlasCell> compute_atlas(const AtlasSpec& spec, AtlasRows row
   return cells;
 }
 
-inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells) {
+inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const Ratio& ratio) {
   AtlasSummary s;
   s.cells = cells.size();
   for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -303,7 +310,10 @@ inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells) {
     ++s.by_nodes[c.nodes];
     if (c.tangencies > 0) ++s.with_tangencies;
     if (c.analytic_nodes) ++s.predicted;
-    if ((c.agree && !*c.agree) || !c.cusps_agree) s.disagreements.push_back(k);
+    if ((c.agree && !*c.agree) || !c.cusps_agree) {
+      s.disagreements.push_back(k);
+      if (nearest_boundary(c.a2, c.a3, ratio).distance > kAtlasBoundaryBand) ++s.disagreements_off_boundaries;
+    }
   }
   return s;
 }

@@ -155,7 +155,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   const double cell = map / static_cast<double>(g);
   auto x_of = [&](double a2) { return left + (a2 - spec.a2.lo) / (spec.a2.hi - spec.a2.lo) * map; };
   auto y_of = [&](double a3) { return top + map - (a3 - spec.a3.lo) / (spec.a3.hi - spec.a3.lo) * map; };
-  const AtlasSummary summary = summarize_atlas(cells);
+  const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
 
   SvgWriter svg(width, height, 2);
   const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + ", " +
@@ -280,7 +280,10 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   const std::string predicted = spec.ratio == Ratio(1) ? "Eq. 24 and the pitch-cone criterion"
                                 : spec.ratio == Ratio(2) ? "Eqs. 43, 46 and the pitch-cone criterion"
                                                          : "the pitch-cone criterion (cusps only)";
-  svg.text(lx + 24, y, "census ≠ report: " + std::to_string(summary.disagreements.size()) + " cells", body);
+  svg.text(lx + 24, y,
+           "census ≠ report: " + std::to_string(summary.disagreements.size()) + " cells (" +
+               std::to_string(summary.disagreements_off_boundaries) + " off the boundaries)",
+           body);
   y += 18;
   svg.text(lx + 24, y, "(report: " + predicted + ")", body);
   y += 18;

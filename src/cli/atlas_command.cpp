@@ -93,7 +93,7 @@ void write_text_file(const std::string& path, const std::string& text, const std
 /// boundary (see kMaxListedDisagreements).
 void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<AtlasCell>& cells, AtlasRows rows,
                    const std::optional<AtlasShard>& shard, std::optional<double> seconds, std::size_t threads) {
-  const AtlasSummary s = summarize_atlas(cells);
+  const AtlasSummary s = summarize_atlas(cells, spec.ratio);
   out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
       << number(spec.a2.lo) << ", " << number(spec.a2.hi) << "], a3 in [" << number(spec.a3.lo) << ", "
       << number(spec.a3.hi) << "], cell centres; "
@@ -121,7 +121,9 @@ void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<A
   else
     out << "report's criteria: the pitch-cone criterion (cusps) only; no node criterion for n = " << spec.ratio.str()
         << " (analytic_nodes, agree = NA)\n";
-  out << "disagreements (census vs report): " << s.disagreements.size() << "\n";
+  out << "disagreements (census vs report): " << s.disagreements.size() << " ("
+      << s.disagreements.size() - s.disagreements_off_boundaries << " within " << kAtlasBoundaryBand
+      << " rad of a boundary, " << s.disagreements_off_boundaries << " elsewhere)\n";
   std::size_t listed = 0;
   for (std::size_t k : s.disagreements) {
     if (listed++ == kMaxListedDisagreements) {
