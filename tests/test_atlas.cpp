@@ -371,3 +371,30 @@ TEST_CASE("SVG map: well formed, boundary curves, legend, disagreements outlined
     WARN("xmllint not found (Debian package libxml2-utils): external XML validation skipped");
   }
 }
+
+TEST_CASE("node shades: distinct counts get distinct blues, darker for more; > 8 counts share the last",
+          "[atlas][svg]") {
+  auto cells_with = [](std::initializer_list<std::uint32_t> counts) {
+    std::vector<AtlasCell> cells;
+    for (std::uint32_t n : counts) {
+      AtlasCell c;
+      c.nodes = c.crossings = n;
+      cells.push_back(c);
+    }
+    return cells;
+  };
+  const AtlasNodeShades few(cells_with({4, 2, 0, 2, 1, 3}));
+  REQUIRE(few.entries().size() == 4);  // 1, 2, 3, 4 (0 is the simple curve)
+  for (std::size_t k = 0; k + 1 < few.entries().size(); ++k) {
+    CHECK(few.entries()[k].nodes < few.entries()[k + 1].nodes);
+    CHECK(std::string(few.entries()[k].colour) > std::string(few.entries()[k + 1].colour));  // hex: darker = smaller
+  }
+  CHECK(few.entries()[1].cells == 2);
+  AtlasCell simple;
+  CHECK(std::string(few.colour(simple)) == atlas_class_colour(AtlasClass::simple_curve));
+  const AtlasNodeShades many(cells_with({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+  REQUIRE(many.entries().size() == 8);
+  CHECK(many.entries().back().nodes == 8);
+  CHECK(many.entries().back().and_more);
+  CHECK(many.entries().back().cells == 3);
+}

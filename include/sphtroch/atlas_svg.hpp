@@ -1,6 +1,7 @@
 // sphtroch/atlas_svg.hpp — the atlas (atlas.hpp) drawn as a standalone SVG map: a2 horizontal,
 // a3 vertical (upwards), cells coloured by the census's class (simple curve; nodes, shaded by
-// the node count; cusps; nodes and cusps), the report's boundary curves drawn over them, cells
+// the node count — AtlasNodeShades spreads the counts present over eight blues; cusps; nodes
+// and cusps), the report's boundary curves drawn over them, cells
 // where the census and the report disagree outlined, tick labels in multiples of pi, a legend.
 // Eigen only.
 //
@@ -27,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -45,8 +47,29 @@ struct AtlasSvgOptions {
 inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<AtlasCell>& cells,
                                     const AtlasSvgOptions& options = {});
 
-/// Fill colour of a cell's class (node counts >= 8 share the darkest blue).
-inline const char* atlas_cell_colour(AtlasClass c, std::uint32_t nodes);
+/// Shades of the `nodes` class for one map: the distinct node counts present, spread evenly over
+/// eight blues from light (fewest) to dark (most); with more than eight distinct counts the
+/// largest ones share the darkest blue, labelled ">= N nodes".
+class AtlasNodeShades {
+ public:
+  explicit AtlasNodeShades(const std::vector<AtlasCell>& cells);
+  /// Fill colour of a cell: its class, and for `nodes` its shade.
+  const char* colour(const AtlasCell& cell) const;
+  struct Entry {
+    std::uint32_t nodes;  // the count (the smallest one of the last, shared shade)
+    bool and_more;        // the shade is shared by every larger count
+    std::size_t cells;
+    const char* colour;
+  };
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  std::map<std::uint32_t, const char*> shade_;
+  std::vector<Entry> entries_;
+};
+
+/// Fill colour of a class (for `nodes` the middle blue; maps shade it with AtlasNodeShades).
+inline const char* atlas_class_colour(AtlasClass c);
 
 /// Legend label of one boundary for this ratio, with the report's equation where it has one.
 inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio);
@@ -55,16 +78,49 @@ inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio);
 // Implementation details follow.
 // =============================================================================================
 
-inline const char* atlas_cell_colour(AtlasClass c, std::uint32_t nodes) {
-  static const char* const blues[] = {"#c6dbef", "#9ecae1", "#6baed6", "#4292c6",
-                                      "#2171b5", "#08519c", "#08306b", "#041c40"};
+namespace atlas_svg_detail {
+// Light to medium-dark, so that the boundary curves stay visible over every shade.
+inline const char* const kBlues[8] = {"#e3eef9", "#cfe1f2", "#b5d4e9", "#93c3df",
+                                      "#6daed5", "#4b97c9", "#2f7ebc", "#1864aa"};
+}  // namespace atlas_svg_detail
+
+inline const char* atlas_class_colour(AtlasClass c) {
   switch (c) {
     case AtlasClass::simple_curve: return "#ececec";
-    case AtlasClass::nodes: return blues[std::min<std::uint32_t>(nodes, 8) - 1];
+    case AtlasClass::nodes: return atlas_svg_detail::kBlues[4];
     case AtlasClass::cusps: return "#d62728";
     case AtlasClass::nodes_and_cusps: return "#9467bd";
   }
   return "#000000";
+}
+
+inline AtlasNodeShades::AtlasNodeShades(const std::vector<AtlasCell>& cells) {
+  std::map<std::uint32_t, std::size_t> counts;  // node count -> cells of class `nodes`
+  for (const AtlasCell& c : cells)
+    if (c.numeric_class() == AtlasClass::nodes) ++counts[c.nodes];
+  const std::size_t m = counts.size();
+  std::size_t k = 0;
+  for (const auto& [n, cells_with_n] : counts) {
+    // m <= 8: spread over the palette (rounded k * 7 / (m - 1)); m > 8: ranks 0..6 their own
+    // shade, the rest the last.
+    const std::size_t index = m == 1 ? 4 : m <= 8 ? (k * 7 + (m - 1) / 2) / (m - 1) : std::min<std::size_t>(k, 7);
+    const char* colour = atlas_svg_detail::kBlues[index];
+    shade_[n] = colour;
+    if (!entries_.empty() && entries_.back().colour == colour) {
+      entries_.back().and_more = true;
+      entries_.back().cells += cells_with_n;
+    } else {
+      entries_.push_back(Entry{n, false, cells_with_n, colour});
+    }
+    ++k;
+  }
+}
+
+inline const char* AtlasNodeShades::colour(const AtlasCell& cell) const {
+  const AtlasClass c = cell.numeric_class();
+  if (c != AtlasClass::nodes) return atlas_class_colour(c);
+  const auto it = shade_.find(cell.nodes);
+  return it == shade_.end() ? atlas_class_colour(c) : it->second;
 }
 
 inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio) {
@@ -156,6 +212,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   auto x_of = [&](double a2) { return left + (a2 - spec.a2.lo) / (spec.a2.hi - spec.a2.lo) * map; };
   auto y_of = [&](double a3) { return top + map - (a3 - spec.a3.lo) / (spec.a3.hi - spec.a3.lo) * map; };
   const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
+  const AtlasNodeShades shades(cells);
 
   SvgWriter svg(width, height, 2);
   const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + ", " +
@@ -171,11 +228,11 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
     std::size_t i = 0;
     while (i < g) {
       const AtlasCell& c = cells[i * g + j];
-      const char* colour = atlas_cell_colour(c.numeric_class(), c.nodes);
+      const char* colour = shades.colour(c);
       std::size_t run = 1;
       while (i + run < g) {
         const AtlasCell& d = cells[(i + run) * g + j];
-        if (atlas_cell_colour(d.numeric_class(), d.nodes) != colour) break;
+        if (shades.colour(d) != colour) break;
         ++run;
       }
       // Rects overlap their right/top neighbour by a hair so no background shows between them.
@@ -249,19 +306,15 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   };
   const auto count = [&](AtlasClass c) { return summary.by_class[static_cast<int>(c)]; };
   if (count(AtlasClass::simple_curve) > 0)
-    swatch(atlas_cell_colour(AtlasClass::simple_curve, 0),
+    swatch(atlas_class_colour(AtlasClass::simple_curve),
            "simple curve (" + std::to_string(count(AtlasClass::simple_curve)) + " cells)");
-  // Node counts present among cells of class `nodes` (cells with cusps are coloured by class).
-  std::map<std::uint32_t, std::size_t> node_cells;
-  for (const AtlasCell& c : cells)
-    if (c.numeric_class() == AtlasClass::nodes) ++node_cells[std::min<std::uint32_t>(c.nodes, 8)];
-  for (const auto& [n, cnt] : node_cells)
-    swatch(atlas_cell_colour(AtlasClass::nodes, n), (n >= 8 ? "≥ 8 nodes" : std::to_string(n) + (n == 1 ? " node" : " nodes")) +
-                                                        " (" + std::to_string(cnt) + " cells)");
+  for (const AtlasNodeShades::Entry& e : shades.entries())
+    swatch(e.colour, (e.and_more ? "≥ " : "") + std::to_string(e.nodes) + (e.nodes == 1 && !e.and_more ? " node" : " nodes") +
+                         " (" + std::to_string(e.cells) + " cells)");
   if (count(AtlasClass::cusps) > 0)
-    swatch(atlas_cell_colour(AtlasClass::cusps, 0), "cusps (" + std::to_string(count(AtlasClass::cusps)) + " cells)");
+    swatch(atlas_class_colour(AtlasClass::cusps), "cusps (" + std::to_string(count(AtlasClass::cusps)) + " cells)");
   if (count(AtlasClass::nodes_and_cusps) > 0)
-    swatch(atlas_cell_colour(AtlasClass::nodes_and_cusps, 1),
+    swatch(atlas_class_colour(AtlasClass::nodes_and_cusps),
            "nodes and cusps (" + std::to_string(count(AtlasClass::nodes_and_cusps)) + " cells)");
   if (summary.with_tangencies > 0) {
     svg.text(lx, y, "(" + std::to_string(summary.with_tangencies) + " cells with a tangency node: a pole node)", body);
