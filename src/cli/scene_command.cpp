@@ -272,7 +272,7 @@ std::string work_text(const StageWork& w) {
          " root evaluations, " + number(w.seconds) + " s";
 }
 
-nlohmann::json work_json(const StageWork& w) {
+nlohmann::ordered_json work_json(const StageWork& w) {
   return {{"ran", w.ran},
           {"points_evaluated", w.points_evaluated},
           {"predicates", w.predicates},
@@ -299,8 +299,8 @@ void explain_text(std::ostream& out, const SceneTrain& st, const Analysis& a) {
   out << "  total: " << work_text(a.total_work()) << "\n";
 }
 
-nlohmann::json explain_json(const SceneTrain& st, const Analysis& a) {
-  using nlohmann::json;
+nlohmann::ordered_json explain_json(const SceneTrain& st, const Analysis& a) {
+  using json = nlohmann::ordered_json;  // keys in the order of the shape documented in README
   json effects = json::array();
   for (const EffectRequest& e : st.effects) {
     json stages = json::array();
@@ -322,7 +322,7 @@ void run_scene(const SceneOptions& o) {
   const std::vector<SceneTrain> scene = read_scene(o);  // 1. validate everything first
   StagedOutputs outputs;
   std::ostringstream text;
-  nlohmann::json trains = nlohmann::json::array();
+  nlohmann::ordered_json trains = nlohmann::ordered_json::array();
   for (const SceneTrain& st : scene) {  // 2. compute what is asked, into temporaries
     const Analysis a(st.train, st.settings);
     for (const EffectRequest& e : st.effects) {
@@ -333,7 +333,7 @@ void run_scene(const SceneOptions& o) {
     else if (o.explain) explain_text(text, st, a);
   }
   outputs.commit();  // 3. every output appears, then the explanation
-  if (o.json) std::cout << nlohmann::json{{"trains", trains}}.dump(2) << "\n";
+  if (o.json) std::cout << nlohmann::ordered_json{{"trains", trains}}.dump(2) << "\n";
   else std::cout << text.str();
   std::cout.flush();
 }
