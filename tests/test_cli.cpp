@@ -779,6 +779,15 @@ std::vector<BadScene> bad_scenes() {
       {R"({"trains": [{)" + ok + R"(, "effects": {}}]})", "trains[0].effects = {}", "trace"},
       {R"({"trains": []})", "trains = []", "non-empty"},
       {R"({"train": []})", "train = []: unknown key", "trains"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {)" + "\"name\": \"b\", \"a2\": \"pi/3\", \"a3\": \"pi/2\", \"n\": \"2\"" +
+           R"(, "effects": {"trace": "b.csv", "trace": "c.csv"}}]})",
+       "trains[1].effects.trace: written twice in one object", "each key once"},
+      {R"({"trains": [{)" + ok + R"(, "samples": 720, "turns": 2, "effects": {"trace": "a.csv"}}]})", "trains[0].turns = 2",
+       "either samples"},
+      {R"({"trains": [{)" + ok + R"(, "literal": "yes", "effects": {"trace": "a.csv"}}]})", "trains[0].literal = \"yes\"",
+       "true or false"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "scene.json"}}]})", "trains[0].effects.trace = \"scene.json\"",
+       "the scene file itself"},
       {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {)" + ok + R"(, "effects": {"nodes": "b.csv"}}]})",
        "trains[1].name = \"a\": used twice", ""},
   };

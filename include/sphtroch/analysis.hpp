@@ -34,7 +34,12 @@
 //     trajectory's sample parameters t_i (the same t_i as trajectory(), without evaluating P).
 //     It is not normalised: |omega| = sqrt(1 + n^2 + 2 n cos a2) is constant and its direction
 //     sweeps the sun's pitch cone (half-angle a_s) about Z1.
+//  6. Dependencies are explicit (dependencies(stage)) and the enum order is a run order; the
+//     input stage runs in the constructor, every other stage only when asked for.
 //  CAVEAT: the memo is not synchronised; use one Analysis per thread.
+//  CAVEAT: this header includes CGAL (through polyline_census.hpp): the object owns the crossing
+//  stage. STYLE.md lists "analysis" among the Eigen-only headers; the Eigen-only closed forms
+//  stay in analytic.hpp, and a user who only wants trajectories still pays for Eigen alone.
 //  REQUIRES: settings valid (InvalidInput naming "samples" or "turns" otherwise, from the
 //  constructor).
 #pragma once

@@ -28,6 +28,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace sphtroch::cli {
@@ -86,9 +87,65 @@ std::string line_column(const std::string& text, std::size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+/// Rejects a key written twice in one object (JSON parsers keep one silently): the parse
+/// callback tracks the path ("trains[1].effects") of the value being read.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const SceneError& err) : err_(err) {}
+  bool operator()(int, nlohmann::detail::parse_event_t event, Json& parsed) {
+    using E = nlohmann::detail::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start:
+        element_begins();
+        frames_.push_back({event == E::array_start, 0, false, {}, {}});
+        break;
+      case E::object_end:
+      case E::array_end:
+        frames_.pop_back();
+        break;
+      case E::key: {
+        Frame& f = frames_.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second)
+          err_.field(path(), nullptr, "written twice in one object", "each key once (the second would silently win)");
+        break;
+      }
+      case E::value: element_begins(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;
+    bool started;
+    std::set<std::string> keys;
+    std::string key;
+  };
+  void element_begins() {
+    if (frames_.empty() || !frames_.back().array) return;
+    Frame& f = frames_.back();
+    if (f.started) ++f.index;
+    f.started = true;
+  }
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_)
+      p += f.array ? "[" + std::to_string(f.index) + "]" : (p.empty() ? "" : ".") + f.key;
+    return p;
+  }
+  const SceneError& err_;
+  std::vector<Frame> frames_;
+};
+
 Json read_json(const SceneError& err, const std::string& text) {
   try {
-    return Json::parse(text);
+    DuplicateKeyCheck check(err);
+    return Json::parse(text, [&](int depth, nlohmann::detail::parse_event_t event, Json& parsed) {
+      return check(depth, event, parsed);
+    });
   } catch (const nlohmann::json::parse_error& e) {
     // what(): "[json.exception.parse_error.101] parse error at line 3, column 9: syntax error ..."
     std::string why = e.what();
@@ -210,6 +267,7 @@ std::vector<SceneTrain> read_scene(const SceneOptions& o) {
 
   std::vector<SceneTrain> out;
   std::map<std::string, std::string> names, paths;  // name / normalised path -> where first used
+  paths.emplace(fs::absolute(o.file).lexically_normal().string(), "the scene file itself");
   for (std::size_t i = 0; i < trains->size(); ++i) {
     SceneTrain st = read_train(err, (*trains)[i], i, o.output_dir);
     const std::string at = "trains[" + std::to_string(i) + "].name";
