@@ -6,6 +6,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -575,4 +576,260 @@ TEST_CASE("cli: crossings rejects unreadable, malformed and degenerate polylines
     CHECK(split(r.err, '\n').size() <= 2);  // one line (+ the empty string after the newline)
     CHECK(r.err.find("--input") != std::string::npos);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// scene (issue 5). A scene's outputs are the single commands' bytes (run both ways here); the
+// explanation's counters prove that unrequested stages did no work; a malformed scene fails
+// before any work: exit 2, one stderr line naming the line or field, and no file at all.
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+fs::path write_scene(const TempDir& dir, const std::string& text, const std::string& name = "scene.json") {
+  const fs::path p = dir.path / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+std::string scene_args(const fs::path& scene, const TempDir& dir, const std::string& extra = "") {
+  return "scene '" + scene.string() + "' --output-dir '" + dir.path.string() + "'" + extra;
+}
+
+/// classify --json without the wall-clock time (the only field that may differ between runs).
+nlohmann::json without_seconds(nlohmann::json j) {
+  j["work"].erase("seconds");
+  return j;
+}
+}  // namespace
+
+TEST_CASE("cli: scene outputs are byte for byte the single commands' outputs", "[cli][scene]") {
+  TempDir dir;
+  const fs::path scene = write_scene(dir, R"({"trains": [
+    {"name": "f", "a2": "pi/3", "a3": "pi/2", "n": "2", "samples": 720,
+     "effects": {"trace": "f.csv", "velocity": "fv.csv", "nodes": "f_nodes.csv", "plot": "f.svg",
+                 "classification": "f.json", "cusps": "f_cusps.csv"}},
+    {"name": "g", "a2": 1.0471975511965976, "a3": "2pi/3", "n": 2, "phase": "-pi/4", "turns": 1.5,
+     "effects": {"classification": "g.txt", "trace": "g.csv", "nodes": "g_nodes.csv"}},
+    {"name": "e", "a2": "2pi/3", "a3": "pi-ap", "n": "2", "census_samples": 2048, "literal": true,
+     "effects": {"nodes": "e_nodes.csv", "plot": "e.svg"}}]})");
+  const Result r = run(scene_args(scene, dir), dir);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out.empty());  // nothing on stdout without --explain
+
+  const std::string f = " --a2 pi/3 --a3 pi/2 --n 2";
+  auto same = [&](const std::string& file, const std::string& args) {
+    const Result single = run(args, dir);
+    INFO(file << " vs sphtroch " << args << "\nstderr: " << single.err);
+    REQUIRE(single.status == 0);
+    CHECK(slurp(dir.path / file) == single.out);
+  };
+  same("f.csv", "trace" + f + " --samples 720");
+  same("fv.csv", "trace" + f + " --samples 720 --velocity");
+  same("f_nodes.csv", "nodes" + f);
+  same("g.csv", "trace --a2 1.0471975511965976 --a3 2pi/3 --n 2 --phase=-pi/4 --turns 1.5");
+  same("g_nodes.csv", "nodes --a2 1.0471975511965976 --a3 2pi/3 --n 2 --phase=-pi/4");
+  same("e_nodes.csv", "nodes --a2 2pi/3 --a3 pi-ap --n 2 --samples 2048 --literal");
+  // The cusp rows are the cusp rows of `nodes` (none here: row f has no cusp).
+  CHECK(slurp(dir.path / "f_cusps.csv") == "kind,x,y,z,t1,t2,branches\n");
+  // Pictures: plot writes only to -o.
+  const Result p1 = run("plot" + f + " -o '" + (dir.path / "single_f.svg").string() + "'", dir);
+  const Result p2 = run("plot --a2 2pi/3 --a3 pi-ap --n 2 --samples 2048 --literal -o '" +
+                            (dir.path / "single_e.svg").string() + "'", dir);
+  REQUIRE(p1.status == 0);
+  REQUIRE(p2.status == 0);
+  CHECK(slurp(dir.path / "f.svg") == slurp(dir.path / "single_f.svg"));
+  CHECK(slurp(dir.path / "e.svg") == slurp(dir.path / "single_e.svg"));
+  // Classification: the same JSON but for the wall-clock seconds.
+  const nlohmann::json scene_json = nlohmann::json::parse(slurp(dir.path / "f.json"));
+  const nlohmann::json single_json = run_json("classify" + f + " --json", dir);
+  CHECK(without_seconds(scene_json) == without_seconds(single_json));
+  CHECK(scene_json["counts"]["nodes"] == 4);  // Table 1 row (f)
+  // .txt: the text report, identical up to the last line (work, with its time).
+  const Result text = run("classify --a2 1.0471975511965976 --a3 2pi/3 --n 2 --phase=-pi/4", dir);
+  const std::string g = slurp(dir.path / "g.txt");
+  REQUIRE(text.status == 0);
+  CHECK(g.substr(0, g.rfind("work: ")) == text.out.substr(0, text.out.rfind("work: ")));
+  CHECK(contains(g, "class: nodes — 3 node(s) (2 crossing, 1 tangency)"));  // Table 1 row (g)
+}
+
+TEST_CASE("cli: scene --explain --json: a trace-only train runs no crossing search, and the counters prove it",
+          "[cli][scene][explain]") {
+  TempDir dir;
+  const fs::path scene = write_scene(dir, R"({"trains": [
+    {"name": "only_trace", "a2": "pi/3", "a3": "pi/2", "n": "2", "samples": 720, "effects": {"trace": "t.csv"}},
+    {"name": "closed_forms", "a2": "2pi/3", "a3": "pi-ap", "n": "2", "samples": 360,
+     "effects": {"extrema": "z.json", "screw_axis": "w.csv"}},
+    {"name": "nodes", "a2": "pi/3", "a3": "pi/2", "n": "2", "effects": {"nodes": "n.csv"}}]})");
+  const nlohmann::json j = run_json(scene_args(scene, dir, " --explain --json"), dir);
+  REQUIRE(j["trains"].size() == 3);
+  const auto& t = j["trains"][0];
+  CHECK(t["name"] == "only_trace");
+  REQUIRE(t["effects"].size() == 1);
+  CHECK(t["effects"][0]["effect"] == "trace");
+  CHECK(t["effects"][0]["stages"] == nlohmann::json::array({"input", "trajectory"}));
+  CHECK(t["work"]["points_evaluated"] == 720);
+  CHECK(t["work"]["predicates"] == 0);
+  CHECK(t["work"]["newton_steps"] == 0);
+  CHECK(t["work"]["root_evaluations"] == 0);
+  CHECK(t["work"]["seconds"].is_number());
+  CHECK(t["stages"]["crossings"]["ran"] == false);
+  CHECK(t["stages"]["crossings"]["predicates"] == 0);
+  CHECK(t["stages"]["trajectory"]["points_evaluated"] == 720);
+  CHECK(count_lines(slurp(dir.path / "t.csv")) == 721);
+
+  const auto& c = j["trains"][1];  // closed forms + omega at 360 parameters: no point of the curve
+  CHECK(c["stages"]["trajectory"]["ran"] == false);
+  CHECK(c["stages"]["extremes"]["points_evaluated"] == 0);
+  CHECK(c["work"]["points_evaluated"] == 360);  // the 360 screw-axis evaluations only
+  CHECK(c["work"]["predicates"] == 0);
+  const nlohmann::json z = nlohmann::json::parse(slurp(dir.path / "z.json"));
+  const double a2 = 2 * kPi / 3, a3 = 5 * kPi / 6;  // a_p = pi/6 for row (e)
+  CHECK(std::abs(z["z_max"].get<double>() - std::cos(a2 - a3)) < 1e-15);  // Eqs. 32/33
+  CHECK(std::abs(z["z_min"].get<double>() - std::cos(a2 + a3)) < 1e-15);  // Eqs. 34/35
+  CHECK(split(slurp(dir.path / "w.csv"), '\n').front() == "t,wx,wy,wz");
+
+  const auto& n = j["trains"][2];  // nodes: crossing search, but no root-count census
+  CHECK(n["stages"]["crossings"]["ran"] == true);
+  CHECK(n["work"]["predicates"].get<std::size_t>() > 0);
+  CHECK(n["work"]["newton_steps"].get<std::size_t>() > 0);
+  CHECK(n["stages"]["root_census"]["ran"] == false);
+  CHECK(n["work"]["root_evaluations"] == 0);
+
+  // The text form says the same.
+  const Result text = run(scene_args(scene, dir, " --explain"), dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "train only_trace"));
+  CHECK(contains(text.out, "trace -> "));
+  CHECK(contains(text.out, "not run: velocities, screw_axis, crossings,"));
+}
+
+TEST_CASE("cli: the example scene data/scenes/paper_figures.json runs every paper case with the report's counts",
+          "[cli][scene][paper]") {
+  TempDir dir;
+  const std::string scene = std::string(SPHTROCH_SOURCE_DIR) + "/data/scenes/paper_figures.json";
+  const nlohmann::json j = run_json("scene '" + scene + "' --output-dir '" + dir.path.string() + "' --json", dir);
+  // Expected counts: data/reference/paper_cases.csv (the report's figures and Table 1).
+  std::ifstream cases(std::string(SPHTROCH_REFERENCE_DIR) + "/paper_cases.csv");
+  std::string line;
+  std::getline(cases, line);
+  std::size_t checked = 0;
+  while (std::getline(cases, line)) {
+    const auto cells = split(line, ',');
+    const std::string id = cells[0];
+    INFO("case " << id);
+    const nlohmann::json c = nlohmann::json::parse(slurp(dir.path / (id + ".json")));
+    CHECK(c["counts"]["nodes"] == std::stoul(cells[7]));
+    CHECK(c["counts"]["cusps"] == std::stoul(cells[8]));
+    CHECK(fs::exists(dir.path / (id + ".svg")));
+    CHECK(fs::exists(dir.path / (id + "_nodes.csv")));
+    ++checked;
+  }
+  CHECK(checked == 10);
+  bool trace_only = false;
+  for (const auto& t : j["trains"])
+    if (t["effects"].size() == 1 && t["effects"][0]["effect"] == "trace") {
+      trace_only = true;
+      CHECK(t["stages"]["crossings"]["ran"] == false);
+      CHECK(t["work"]["predicates"] == 0);
+      CHECK(t["work"]["newton_steps"] == 0);
+    }
+  CHECK(trace_only);
+}
+
+namespace {
+struct BadScene {
+  std::string text;   // the scene file
+  std::string where;  // must appear in the one stderr line (the line or the field)
+  std::string also;   // and this (value or range), may be empty
+};
+
+std::vector<BadScene> bad_scenes() {
+  const std::string ok = R"("name": "a", "a2": "pi/3", "a3": "pi/2", "n": "2")";
+  return {
+      {"{\"trains\": [\n  {\"name\": \"a\",\n   \"a2\": pi/3}\n]}", "line 3", "not valid JSON"},
+      {"{\"trains\": [{" + ok + ", \"effects\": {\"trace\": \"a.csv\",}}]}", "line 1", "not valid JSON"},
+      {"", "line 1", "not valid JSON"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv", "trajectory": "b.csv"}}]})",
+       "trains[0].effects.trajectory = \"b.csv\": unknown effect", "trace, velocity, nodes"},
+      {R"({"trains": [{"name": "a", "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv"}}]})", "trains[0].a2: missing",
+       "(0, pi)"},
+      {R"({"trains": [{"name": "a", "a2": {"value": 1}, "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].a2 = {\"value\":1}: not an angle", "radians"},
+      {R"({"trains": [{"name": "a", "a2": true, "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].a2 = true: not an angle", "radians"},
+      {R"({"trains": [{"name": "a", "a2": 4, "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].a2 = 4: outside the valid range", "(0, pi) radians"},
+      {R"({"trains": [{"name": "a", "a2": "4", "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].a2 = \"4\": outside the valid range", "(0, pi) radians"},
+      {R"({"trains": [{"name": "a", "a2": "pi/3", "a3": "pi/2", "n": "0", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].n = \"0\"", "p/q"},
+      {R"({"trains": [{"name": "a", "a2": "pi/3", "a3": "2pi", "n": "2", "effects": {"trace": "a.csv"}}]})",
+       "trains[0].a3 = \"2pi\": outside the valid range", "(0, pi)"},
+      {R"({"trains": [{)" + ok + R"(, "smaples": 720, "effects": {"trace": "a.csv"}}]})", "trains[0].smaples = 720: unknown key",
+       "samples"},
+      {R"({"trains": [{)" + ok + R"(, "samples": 2, "effects": {"trace": "a.csv"}}]})", "trains[0].samples = 2", "3 .. 10000000"},
+      {R"({"trains": [{)" + ok + R"(, "samples": "720", "effects": {"trace": "a.csv"}}]})", "trains[0].samples = \"720\"",
+       "integer"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {"name": "b", "a2": "pi/2", "a3": "pi/2", "n": "1", "effects": {"nodes": "a.csv"}}]})",
+       "trains[1].effects.nodes = \"a.csv\": output path already used by trains[0].effects.trace", ""},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "no_such_dir/a.csv"}}]})",
+       "trains[0].effects.trace = \"no_such_dir/a.csv\"", "writable directory"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {}}]})", "trains[0].effects = {}", "trace"},
+      {R"({"trains": []})", "trains = []", "non-empty"},
+      {R"({"train": []})", "train = []: unknown key", "trains"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {)" + "\"name\": \"b\", \"a2\": \"pi/3\", \"a3\": \"pi/2\", \"n\": \"2\"" +
+           R"(, "effects": {"trace": "b.csv", "trace": "c.csv"}}]})",
+       "trains[1].effects.trace: written twice in one object", "each key once"},
+      {R"({"trains": [{)" + ok + R"(, "samples": 720, "turns": 2, "effects": {"trace": "a.csv"}}]})", "trains[0].turns = 2",
+       "either samples"},
+      {R"({"trains": [{)" + ok + R"(, "literal": "yes", "effects": {"trace": "a.csv"}}]})", "trains[0].literal = \"yes\"",
+       "true or false"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "scene.json"}}]})", "trains[0].effects.trace = \"scene.json\"",
+       "the scene file itself"},
+      {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {)" + ok + R"(, "effects": {"nodes": "b.csv"}}]})",
+       "trains[1].name = \"a\": used twice", ""},
+  };
+}
+}  // namespace
+
+TEST_CASE("cli: a malformed scene exits 2 with one stderr line naming the line or field, and writes no file at all",
+          "[cli][scene][errors]") {
+  for (const BadScene& c : bad_scenes()) {
+    TempDir dir;
+    const fs::path scene = write_scene(dir, c.text);
+    const Result r = run(scene_args(scene, dir, " --explain"), dir);
+    INFO("scene: " << c.text << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "sphtroch: " + scene.string() + ": "));
+    CHECK(contains(r.err, c.where));
+    CHECK(contains(r.err, c.also));
+    CHECK(dir.entries() == std::vector<std::string>{"scene.json"});  // no output, no temporary
+  }
+}
+
+TEST_CASE("cli: a scene whose last output cannot be written leaves none of the earlier outputs",
+          "[cli][scene][errors][output]") {
+  TempDir dir;
+  fs::create_directory(dir.path / "sub");
+  // Valid up to the last effect, whose path is an existing directory.
+  const fs::path scene = write_scene(dir, R"({"trains": [
+    {"name": "a", "a2": "pi/3", "a3": "pi/2", "n": "2", "effects": {"trace": "a.csv", "nodes": "a_nodes.csv"}},
+    {"name": "b", "a2": "pi/2", "a3": "pi/2", "n": "1", "effects": {"trace": "sub"}}]})");
+  const Result r = run(scene_args(scene, dir), dir);
+  INFO("stderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "trains[1].effects.trace"));
+  auto entries = dir.entries();
+  std::sort(entries.begin(), entries.end());
+  CHECK(entries == std::vector<std::string>{"scene.json", "sub"});
+  // An unreadable scene file is one line too.
+  const Result missing = run("scene '" + (dir.path / "nope.json").string() + "'", dir);
+  CHECK(missing.status == 2);
+  CHECK(count_lines(missing.err) == 1);
+  CHECK(contains(missing.err, "nope.json: cannot be read"));
 }

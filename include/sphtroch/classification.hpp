@@ -15,6 +15,8 @@
 //  * Nodes are those of the polyline census (exact CGAL crossings + near misses, refined by
 //    Newton on the true curve); the root-count census must find the same node points (positions
 //    within kAgreementDistance, same kinds) or the disagreement is listed.
+//  * The stages (and their memo and work counters) are those of sphtroch::Analysis
+//    (analysis.hpp); classify() is Analysis(train, settings).classification().
 //  * Cusps: where a3 is within kCuspResolution of a pitch cone (exactly 0 after snapping), at the
 //    parameters of the pitch-cone criterion, each verified by its speed |dP/dtheta2|.
 #pragma once
@@ -27,7 +29,6 @@
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/root_census.hpp"
 
-#include <chrono>
 #include <utility>
 #include <string>
 #include <vector>
@@ -100,68 +101,11 @@ inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& 
 }
 }  // namespace detail
 
-/// Classifies one gear train (see header). Never throws for a valid GearTrain.
-inline Classification classify(const GearTrain& input, const ClassifySettings& settings = {}) {
-  const auto start = std::chrono::steady_clock::now();
-  Classification c(input, snap_to_boundaries(input, settings.literal ? 0.0 : settings.boundary_tolerance));
-  c.literal = settings.literal;
-  const GearTrain& train = c.snapped.train;
-  c.tangency_tolerance = settings.literal ? 0.0 : kTangencyTolerance;
-
-  PolylineCensusSettings ps;
-  ps.samples = settings.samples;
-  ps.tangency_tolerance = c.tangency_tolerance;
-  c.polyline = polyline_census(train, ps);
-  RootCensusSettings rs;
-  rs.tangency_tolerance = c.tangency_tolerance;
-  c.root = root_census(train, rs);
-  c.nodes = c.polyline.nodes;
-  for (const Node& n : c.nodes) (n.kind == NodeKind::crossing ? c.crossings : c.tangencies)++;
-
-  // Cusps from the pitch-cone criterion, verified by the velocity.
-  c.cone = cone_margins(train);
-  const TracerCurve<double> curve(train);
-  for (const AnalyticCusp& a : pitch_cone_cusps(train, kCuspResolution)) {
-    Cusp k;
-    k.param = a.param;
-    k.position = curve.point(a.param);
-    k.speed = curve.velocity(a.param).norm();
-    c.cusps.push_back(k);
-  }
-  c.cusp_within_resolution = !c.cusps.empty() && c.cone.pitch != 0.0 && c.cone.mirror != 0.0;
-  c.work.points_evaluated += 2 * c.cusps.size();  // point and velocity of each cusp
-
-  c.analytic = classify_analytic(train, settings.literal ? 0.0 : settings.boundary_tolerance);
-  c.z = z_extremes(train);
-  c.symmetry_planes = symmetry(train);
-
-  const bool has_nodes = !c.nodes.empty(), has_cusps = !c.cusps.empty();
-  c.curve_class = has_nodes ? (has_cusps ? "nodes and cusps" : "nodes") : (has_cusps ? "cusps" : "simple curve");
-
-  // Agreement.
-  std::string why;
-  if (!detail::same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
-    c.agreement.censuses_agree = false;
-    c.agreement.notes.push_back("polyline census vs root-count census: " + why);
-  }
-  if (c.analytic.predicted_nodes) {
-    const bool nodes_ok = *c.analytic.predicted_nodes == c.nodes.size();
-    const bool cusps_ok = c.analytic.predicted_cusps == c.cusps.size();
-    c.agreement.analytic_agrees = nodes_ok && cusps_ok;
-    if (!nodes_ok)
-      c.agreement.notes.push_back("report's criteria predict " + std::to_string(*c.analytic.predicted_nodes) +
-                                  " nodes, the census finds " + std::to_string(c.nodes.size()));
-    if (!cusps_ok)
-      c.agreement.notes.push_back("report's criteria predict " + std::to_string(c.analytic.predicted_cusps) +
-                                  " cusps, found " + std::to_string(c.cusps.size()));
-  }
-
-  c.work.points_evaluated += c.polyline.work.points_evaluated;
-  c.work.predicates = c.polyline.work.predicates;
-  c.work.newton_steps = c.polyline.work.newton_steps;
-  c.work.root_evaluations = c.root.evaluations;
-  c.work.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return c;
-}
+/// Classifies one gear train (see header). Never throws for a valid GearTrain. Defined in
+/// analysis.hpp as the classification stage of an Analysis (one code path for `sphtroch
+/// classify` and a scene's classification); its `work` is that of the stages it ran.
+inline Classification classify(const GearTrain& input, const ClassifySettings& settings = {});
 
 }  // namespace sphtroch
+
+#include "sphtroch/analysis.hpp"  // defines classify()

@@ -115,4 +115,11 @@ inline std::vector<Node> assemble_nodes(const std::vector<BranchPair>& pairs, co
   return nodes;
 }
 
+/// The TracerCurve calls assemble_nodes made for `nodes` (one velocity per branch of each node).
+inline std::size_t assembly_evaluations(const std::vector<Node>& nodes) {
+  std::size_t n = 0;
+  for (const Node& node : nodes) n += node.params.size();
+  return n;
+}
+
 }  // namespace sphtroch

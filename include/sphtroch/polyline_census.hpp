@@ -64,11 +64,12 @@ struct PolylineCensusSettings {
   double tangency_tolerance = 1e-10;
 };
 
+/// Work of one census, counted exactly where it is done.
 struct PolylineWork {
-  std::size_t points_evaluated = 0;
+  std::size_t points_evaluated = 0;  // TracerCurve calls: point, velocity, acceleration
   std::size_t predicates = 0;
   std::size_t candidate_pairs = 0;
-  std::size_t newton_steps = 0;
+  std::size_t newton_steps = 0;     // refinement iterations + branch-projection steps
   std::size_t seeds = 0;
 };
 
@@ -82,6 +83,9 @@ struct PolylineCensus {
   std::vector<Node> nodes;
   PolylineWork work;
 };
+
+/// Fewest uniform samples a user may ask of the census (the CLI's --samples, a scene's census_samples).
+constexpr std::size_t kMinCensusSamples = 1024;
 
 /// Default uniform sample count: 256 per unit of (q + |p|), at least 1024.
 inline std::size_t census_sample_count(const GearTrain& train) {
@@ -129,12 +133,16 @@ inline std::vector<double> census_parameters(const GearTrain& train, std::size_t
 }
 
 /// Signed gap from P(t2 + s) to the branch through t1 (projection by Newton), long double.
+/// Adds the TracerCurve calls and projection Newton steps it makes to `work`.
 inline long double branch_gap(const TracerCurve<long double>& curve, long double t1, long double t2, long double s,
-                              long double* t1_out = nullptr) {
+                              PolylineWork& work, long double* t1_out = nullptr) {
   const Vector3<long double> x = curve.point(t2 + s);
+  ++work.points_evaluated;
   long double tau = t1;
   for (int it = 0; it < 8; ++it) {
     const Vector3<long double> p = curve.point(tau), v = curve.velocity(tau), a = curve.acceleration(tau);
+    work.points_evaluated += 3;
+    ++work.newton_steps;
     const long double phi = (p - x).dot(v);
     const long double dphi = v.squaredNorm() + (p - x).dot(a);
     if (dphi == 0) break;
@@ -142,6 +150,7 @@ inline long double branch_gap(const TracerCurve<long double>& curve, long double
   }
   if (t1_out) *t1_out = tau;
   const Vector3<long double> p = curve.point(tau), v = curve.velocity(tau);
+  work.points_evaluated += 2;
   const Vector3<long double> normal = p.cross(v).normalized();
   return (x - p).dot(normal);
 }
@@ -280,7 +289,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
   auto refine = [&](LD a, LD b) { 
     const auto r = refine_branch_pair(curve_ld, a, b, rs);
     out.work.newton_steps += r.iterations;
-    out.work.points_evaluated += 2 * r.iterations + 2;
+    out.work.points_evaluated += r.evaluations;
     return r;
   };
   for (const Seed& s : seeds) {
@@ -292,6 +301,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
       continue;
     }
     const Vector3<LD> v1 = curve_ld.velocity(r.t1), v2 = curve_ld.velocity(r.t2);
+    out.work.points_evaluated += 2;
     const double angle = tangent_line_angle(v1.cast<double>(), v2.cast<double>());
     if (dt < kCuspLoopParam && on_a_cone) {
       ++out.newton_failures;
@@ -305,10 +315,9 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     // Near-tangent branches: quadratic model of the gap along branch 2.
     const LD speed2 = v2.norm();
     const LD hs = 1e-3L / std::max<LD>(speed2, 1e-3L);
-    const LD g0 = detail::branch_gap(curve_ld, r.t1, r.t2, 0);
-    const LD gp = detail::branch_gap(curve_ld, r.t1, r.t2, hs);
-    const LD gm = detail::branch_gap(curve_ld, r.t1, r.t2, -hs);
-    out.work.points_evaluated += 60;
+    const LD g0 = detail::branch_gap(curve_ld, r.t1, r.t2, 0, out.work);
+    const LD gp = detail::branch_gap(curve_ld, r.t1, r.t2, hs, out.work);
+    const LD gm = detail::branch_gap(curve_ld, r.t1, r.t2, -hs, out.work);
     const LD c0 = g0, c1 = (gp - gm) / (2 * hs), c2 = (gp - 2 * g0 + gm) / (2 * hs * hs);
     if (c2 == 0) {
       if (r.residual <= kNodeResidual) meetings.push_back({r.t1, r.t2, NodeKind::crossing});
@@ -318,7 +327,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     const LD gap_min = c0 - c1 * c1 / (4 * c2);
     if (std::abs(gap_min) <= gap_tol) {
       LD t1s;
-      detail::branch_gap(curve_ld, r.t1, r.t2, s_star, &t1s);
+      detail::branch_gap(curve_ld, r.t1, r.t2, s_star, out.work, &t1s);
       if (distinct_branches(t1s, r.t2 + s_star)) meetings.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
       continue;
     }
@@ -329,7 +338,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
       // The quadratic model holds near s = 0 only; a crossing farther away has its own seed.
       if (!(std::abs(s) <= 4 * static_cast<LD>(h))) continue;
       LD t1s;
-      detail::branch_gap(curve_ld, r.t1, r.t2, s, &t1s);
+      detail::branch_gap(curve_ld, r.t1, r.t2, s, out.work, &t1s);
       const auto rr = refine(t1s, r.t2 + s);
       if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
         meetings.push_back({rr.t1, rr.t2, NodeKind::crossing});
@@ -373,10 +382,12 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     bp.t2 = wrap_param(static_cast<double>(wrap(u.t2)), period);
     if (bp.t2 < bp.t1) std::swap(bp.t1, bp.t2);
     bp.position = ((curve_ld.point(u.t1) + curve_ld.point(u.t2)) / 2).normalized().cast<double>();
+    out.work.points_evaluated += 2;
     bp.kind = u.kind;
     out.pairs.push_back(bp);
   }
   out.nodes = assemble_nodes(out.pairs, curve);
+  out.work.points_evaluated += assembly_evaluations(out.nodes);
   return out;
 }
 

@@ -38,6 +38,7 @@ struct RefinedPair {
   Scalar t1{0}, t2{0};
   Scalar residual{0};     // |P(t1) - P(t2)| at the result
   std::size_t iterations = 0;
+  std::size_t evaluations = 0;  // TracerCurve calls made (point and velocity), exactly
   RefineStatus status = RefineStatus::max_iterations;
 };
 
@@ -58,12 +59,14 @@ RefinedPair<Scalar> refine_branch_pair(const TracerCurve<Scalar>& curve, Scalar 
   const Scalar seed1 = t1, seed2 = t2;
   RefinedPair<Scalar> out;
   Vector3<Scalar> F = curve.point(t1) - curve.point(t2);
+  out.evaluations = 2;
   Scalar best = F.norm();
   std::size_t stalls = 0;
   for (std::size_t it = 0; it < settings.max_iterations; ++it) {
     out.iterations = it + 1;
     const Vector3<Scalar> v1 = curve.velocity(t1);
     const Vector3<Scalar> v2 = curve.velocity(t2);
+    out.evaluations += 2;
     const Scalar a = v1.squaredNorm(), b = -v1.dot(v2), c = v2.squaredNorm();
     const Scalar g1 = v1.dot(F), g2 = -v2.dot(F);
     const Scalar mu = Scalar(64) * eps * (a + c);
@@ -78,6 +81,7 @@ RefinedPair<Scalar> refine_branch_pair(const TracerCurve<Scalar>& curve, Scalar 
       break;
     }
     F = curve.point(t1) - curve.point(t2);
+    out.evaluations += 2;
     const Scalar r = F.norm();
     const Scalar step = abs(d1) + abs(d2);
     const Scalar scale = Scalar(1) + abs(t1) + abs(t2);

@@ -13,8 +13,10 @@
 #include "sphtroch/errors.hpp"
 #include "sphtroch/types.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,24 @@ inline void check_sample_count(std::size_t n, const char* field = "samples") {
                        "integer " + std::to_string(kMinSamples) + " .. " + std::to_string(kMaxSamples));
 }
 
+/// Default sample count of a trajectory (`sphtroch trace`, the analysis object): 360 per unit
+/// of (q + |p|) for a closed curve (about 0.5 degree of planet or carrier motion per step),
+/// 360*(1 + |n|)*K + 1 for an open one over K carrier turns; clamped to [kMinSamples, 1e6].
+inline std::size_t trace_sample_count(const GearTrain& train, std::optional<double> turns = std::nullopt) {
+  const auto& r = train.ratio();
+  const double n = turns ? 360.0 * (1.0 + std::abs(r.value())) * *turns + 1.0
+                         : 360.0 * static_cast<double>(r.q() + r.abs_p());
+  return static_cast<std::size_t>(std::clamp(std::ceil(n), static_cast<double>(kMinSamples), 1.0e6));
+}
+
 namespace detail {
+/// t_i = span * i / divisor, the one formula of every uniform sampling (so that a stage that needs
+/// the parameters only, e.g. the screw axis, gets bit-identical t_i without evaluating points).
+template <typename Scalar>
+Scalar uniform_parameter(const Scalar& span, std::size_t i, std::size_t divisor) {
+  return span * Scalar(static_cast<double>(i)) / Scalar(static_cast<double>(divisor));
+}
+
 template <typename Scalar>
 Trajectory<Scalar> sample_uniform(const TracerCurve<Scalar>& curve, const Scalar& span, std::size_t n,
                                   std::size_t divisor, bool closed, bool with_velocity) {
@@ -58,7 +77,7 @@ Trajectory<Scalar> sample_uniform(const TracerCurve<Scalar>& curve, const Scalar
   tr.points.reserve(n);
   if (with_velocity) tr.velocities.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Scalar t = span * Scalar(static_cast<double>(i)) / Scalar(static_cast<double>(divisor));
+    const Scalar t = uniform_parameter(span, i, divisor);
     tr.t.push_back(t);
     tr.points.push_back(curve.point(t));
     if (with_velocity) tr.velocities.push_back(curve.velocity(t));

@@ -1,7 +1,8 @@
 // sphtroch/sphtroch.hpp — umbrella header: everything that needs Eigen only.
 // The exact crossing search, the polyline census and the classification need CGAL
-// (target sphtroch::exact): include sphtroch/polyline_crossings.hpp, polyline_census.hpp or
-// classification.hpp yourself. The MPFR Scalar: sphtroch/mpreal_support.hpp (sphtroch::mpfr).
+// (target sphtroch::exact): include sphtroch/polyline_crossings.hpp, polyline_census.hpp,
+// classification.hpp or analysis.hpp (the lazy analysis object) yourself.
+// The MPFR Scalar: sphtroch/mpreal_support.hpp (sphtroch::mpfr).
 #pragma once
 
 #include "sphtroch/analytic.hpp"

@@ -65,6 +65,13 @@ namespace detail {
 constexpr double kAxisReach = 1.22;
 }  // namespace detail
 
+/// Samples of the trajectory drawn by `sphtroch plot` (and the analysis object's plot stage):
+/// 720 per unit of (q + |p|), clamped to [1440, 400000] (the picture needs ~0.25 degree steps).
+inline std::size_t plot_sample_count(const GearTrain& train) {
+  const auto& r = train.ratio();
+  return std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
+}
+
 struct PlotOptions {
   /// Direction of the viewer, radians: azimuth about +Z from +X towards +Y, elevation above
   /// the XY plane. Default: looking from (1, 0.6, 0.5) normalised. Must be finite; elevation

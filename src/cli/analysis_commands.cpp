@@ -1,8 +1,10 @@
-// sphtroch classify | nodes | plot — the node census and its reports. The one CLI translation
-// unit that includes CGAL (through classification.hpp).
+// sphtroch classify | nodes | plot | crossings — the node census and its reports. One of the two
+// CLI translation units that include CGAL (through analysis.hpp; the other is scene_command.cpp).
+// The printers (reports.hpp) are shared with `sphtroch scene`: one printer per output format.
 #include "cli_common.hpp"
+#include "reports.hpp"
 
-#include "sphtroch/classification.hpp"
+#include "sphtroch/analysis.hpp"
 #include "sphtroch/parse.hpp"
 #include "sphtroch/sampling.hpp"
 #include "sphtroch/svg_plot.hpp"
@@ -20,41 +22,28 @@ namespace sphtroch::cli {
 
 namespace {
 
-struct AnalysisOptions {
-  TrainOptions train;
-  std::string samples, output;
-  bool literal = false;
-  bool json = false;
-};
-
-void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
-  o.train.add_to(cmd);
-  cmd.add_flag("--literal", o.literal,
-               "analyse the given doubles exactly as given (no snapping onto boundaries within 1e-10 rad)");
-  cmd.add_option("--samples", o.samples, "uniform samples of the polyline census (1024 .. 10000000; default 256*(q+|p|))");
-  add_output_option(cmd, o.output, "the result");
-}
-
-Classification run_classification(const AnalysisOptions& o) {
-  const GearTrain train = o.train.train();
-  ClassifySettings s;
-  s.literal = o.literal;
-  if (!o.samples.empty()) s.samples = parse_count(o.samples, "samples", 1024, kMaxSamples);
-  return classify(train, s);
-}
-
 std::string vec_text(const Vector3d& v) { return "(" + number(v.x()) + ", " + number(v.y()) + ", " + number(v.z()) + ")"; }
 
 double degrees(double r) { return r * 180.0 / Constants<double>::pi(); }
 
 nlohmann::json vec_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
-nlohmann::json classification_json(const AnalysisOptions& o, const Classification& c) {
+}  // namespace
+
+nlohmann::json z_extremes_json(const ZExtremes& z) {
+  using nlohmann::json;
+  json zmax = json::array(), zmin = json::array();
+  for (const auto& p : z.maxima) zmax.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
+  for (const auto& p : z.minima) zmin.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
+  return {{"z_max", z.z_max}, {"z_min", z.z_min}, {"maxima", zmax}, {"minima", zmin}};
+}
+
+nlohmann::json classification_json(const TrainOptions& text, const Classification& c) {
   using nlohmann::json;
   const GearTrain& in = c.input;
   const GearTrain& tr = c.snapped.train;
   json j;
-  j["inputs"] = {{"a2", in.a2()}, {"a3", in.a3()}, {"a2_text", o.train.a2}, {"a3_text", o.train.a3},
+  j["inputs"] = {{"a2", in.a2()}, {"a3", in.a3()}, {"a2_text", text.a2}, {"a3_text", text.a3},
                  {"n", in.ratio().str()}, {"n_value", in.n()}, {"phase", in.phase()}, {"literal", c.literal}};
   j["cone_angles"] = {{"a_p", tr.planet_cone()}, {"a_s", tr.sun_cone()}};
   j["period"] = tr.period();
@@ -85,10 +74,7 @@ nlohmann::json classification_json(const AnalysisOptions& o, const Classificatio
                      {"tolerance", c.snapped.tolerance},
                      {"pitch_cone_margin", c.cone.pitch},
                      {"mirror_pitch_cone_margin", c.cone.mirror}};
-  json zmax = json::array(), zmin = json::array();
-  for (const auto& p : c.z.maxima) zmax.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
-  for (const auto& p : c.z.minima) zmin.push_back({{"param", p.param}, {"position", vec_json(p.position)}});
-  j["z_extremes"] = {{"z_max", c.z.z_max}, {"z_min", c.z.z_min}, {"maxima", zmax}, {"minima", zmin}};
+  j["z_extremes"] = z_extremes_json(c.z);
   json planes = json::array();
   for (const auto& p : c.symmetry_planes.planes)
     planes.push_back({{"normal", vec_json(p.normal)}, {"azimuth", p.azimuth}, {"param_offset", p.param_offset}});
@@ -137,13 +123,13 @@ nlohmann::json classification_json(const AnalysisOptions& o, const Classificatio
   return j;
 }
 
-void print_text(std::ostream& out, const AnalysisOptions& o, const Classification& c) {
+void write_classification_text(std::ostream& out, const TrainOptions& text, const Classification& c) {
   const GearTrain& in = c.input;
   const GearTrain& tr = c.snapped.train;
   out << "sphtroch classify — spherical planetary gear train (Lin & Tsai 1990)\n\n";
   out << "inputs\n";
-  out << "  a2 = " << o.train.a2 << " = " << number(in.a2()) << " rad (" << number(degrees(in.a2())) << " deg)\n";
-  out << "  a3 = " << o.train.a3 << " = " << number(in.a3()) << " rad (" << number(degrees(in.a3())) << " deg)\n";
+  out << "  a2 = " << text.a2 << " = " << number(in.a2()) << " rad (" << number(degrees(in.a2())) << " deg)\n";
+  out << "  a3 = " << text.a3 << " = " << number(in.a3()) << " rad (" << number(degrees(in.a3())) << " deg)\n";
   out << "  n = " << in.ratio().str() << ", phase = " << number(in.phase()) << " rad\n";
   out << "  reading: " << (c.literal ? "literal (the given doubles)" : "default (boundaries within tolerance are snapped)") << "\n";
   out << "cone angles\n  a_p = " << number(tr.planet_cone()) << " rad, a_s = " << number(tr.sun_cone())
@@ -200,45 +186,78 @@ void print_text(std::ostream& out, const AnalysisOptions& o, const Classificatio
       << number(c.work.seconds) << " s\n";
 }
 
+void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
+  out << "kind,x,y,z,t1,t2,branches\n";
+  for (const Node& n : nodes) {
+    out << to_string(n.kind) << ',' << number(n.position.x()) << ',' << number(n.position.y()) << ','
+        << number(n.position.z()) << ',' << number(n.params.front()) << ',' << number(n.params.size() > 1 ? n.params[1] : n.params.front())
+        << ',' << n.branches << '\n';
+  }
+  for (const Cusp& k : cusps)
+    out << "cusp," << number(k.position.x()) << ',' << number(k.position.y()) << ',' << number(k.position.z()) << ','
+        << number(k.param) << ',' << number(k.param) << ",1\n";
+}
+
+std::string plot_svg(const TrainOptions& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
+                     const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
+  std::size_t crossings = 0, tangencies = 0;
+  for (const Node& n : nodes) (n.kind == NodeKind::crossing ? crossings : tangencies)++;
+  PlotOptions po;
+  std::ostringstream caption;
+  caption << "a2 = " << text.a2 << ", a3 = " << text.a3 << ", n = " << analysed.ratio().str();
+  if (analysed.phase() != 0.0) caption << ", phase = " << text.phase;
+  caption << " — " << nodes.size() << " node(s)";
+  if (!nodes.empty()) caption << " (" << crossings << " crossing, " << tangencies << " tangency)";
+  caption << ", " << cusps.size() << " cusp(s)";
+  po.caption = caption.str();
+  return render_sphere_svg(trajectory, nodes, cusps, po);
+}
+
+namespace {
+
+struct AnalysisOptions {
+  TrainOptions train;
+  std::string samples, output;
+  bool literal = false;
+  bool json = false;
+};
+
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
+  o.train.add_to(cmd);
+  cmd.add_flag("--literal", o.literal,
+               "analyse the given doubles exactly as given (no snapping onto boundaries within 1e-10 rad)");
+  cmd.add_option("--samples", o.samples, "uniform samples of the polyline census (1024 .. 10000000; default 256*(q+|p|))");
+  add_output_option(cmd, o.output, "the result");
+}
+
+AnalysisSettings analysis_settings(const AnalysisOptions& o) {
+  AnalysisSettings s;
+  s.literal = o.literal;
+  if (!o.samples.empty()) s.census_samples = parse_count(o.samples, "samples", kMinCensusSamples, kMaxSamples);
+  return s;
+}
+
 void run_classify(const AnalysisOptions& o) {
-  const Classification c = run_classification(o);
+  const GearTrain train = o.train.train();  // first: its errors come before those of --samples
+  const Analysis a(train, analysis_settings(o));  // a.classification() is classify(train, settings)
+  const Classification& c = a.classification();
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << classification_json(o, c).dump(2) << "\n";
-    else print_text(out, o, c);
+    if (o.json) out << classification_json(o.train, c).dump(2) << "\n";
+    else write_classification_text(out, o.train, c);
   });
 }
 
+// nodes and plot need the crossing and cusp stages only: no root-count census.
 void run_nodes(const AnalysisOptions& o) {
-  const Classification c = run_classification(o);
-  write_output(o.output, [&](std::ostream& out) {
-    out << "kind,x,y,z,t1,t2,branches\n";
-    for (const Node& n : c.nodes) {
-      out << to_string(n.kind) << ',' << number(n.position.x()) << ',' << number(n.position.y()) << ','
-          << number(n.position.z()) << ',' << number(n.params.front()) << ',' << number(n.params.size() > 1 ? n.params[1] : n.params.front())
-          << ',' << n.branches << '\n';
-    }
-    for (const Cusp& k : c.cusps)
-      out << "cusp," << number(k.position.x()) << ',' << number(k.position.y()) << ',' << number(k.position.z()) << ','
-          << number(k.param) << ',' << number(k.param) << ",1\n";
-  });
+  const GearTrain train = o.train.train();
+  const Analysis a(train, analysis_settings(o));
+  write_output(o.output, [&](std::ostream& out) { write_nodes_csv(out, a.nodes(), a.cusps()); });
 }
 
 void run_plot(const AnalysisOptions& o) {
-  const Classification c = run_classification(o);
-  const GearTrain& tr = c.snapped.train;
-  const TracerCurve<double> curve(tr);
-  const auto& r = tr.ratio();
-  const std::size_t n = std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
-  const Trajectory<double> trajectory = sample_period(curve, n);
-  PlotOptions po;
-  std::ostringstream caption;
-  caption << "a2 = " << o.train.a2 << ", a3 = " << o.train.a3 << ", n = " << r.str();
-  if (tr.phase() != 0.0) caption << ", phase = " << o.train.phase;
-  caption << " — " << c.nodes.size() << " node(s)";
-  if (!c.nodes.empty()) caption << " (" << c.crossings << " crossing, " << c.tangencies << " tangency)";
-  caption << ", " << c.cusps.size() << " cusp(s)";
-  po.caption = caption.str();
-  const std::string svg = render_sphere_svg(trajectory, c.nodes, c.cusps, po);
+  const GearTrain train = o.train.train();
+  const Analysis a(train, analysis_settings(o));
+  const std::string svg = plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps());
   write_output(o.output, [&](std::ostream& out) { out << svg; });
 }
 

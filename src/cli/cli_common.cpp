@@ -38,6 +38,20 @@ std::string number(double v) {
   return buf;
 }
 
+void write_trajectory_csv(std::ostream& out, const Trajectory<double>& tr, const std::vector<Vector3d>& velocities) {
+  const bool with_velocity = !velocities.empty();
+  out << (with_velocity ? "t,x,y,z,vx,vy,vz\n" : "t,x,y,z\n");
+  for (std::size_t i = 0; i < tr.size(); ++i) {
+    const auto& p = tr.points[i];
+    out << number(tr.t[i]) << ',' << number(p.x()) << ',' << number(p.y()) << ',' << number(p.z());
+    if (with_velocity) {
+      const auto& v = velocities[i];
+      out << ',' << number(v.x()) << ',' << number(v.y()) << ',' << number(v.z());
+    }
+    out << '\n';
+  }
+}
+
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
   const std::string range = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
@@ -57,32 +71,43 @@ void write_output(const std::string& path, const std::function<void(std::ostream
     std::fflush(stdout);
     return;
   }
+  StagedOutputs out;
+  out.stage(path, "--output", write);
+  out.commit();
+}
+
+StagedOutputs::~StagedOutputs() {
+  for (const Pending& p : pending_) std::remove(p.tmp.c_str());
+}
+
+void StagedOutputs::stage(const std::string& path, const std::string& field,
+                          const std::function<void(std::ostream&)>& write) {
   const std::string tmpl = path + ".tmp.XXXXXX";
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');
   const int fd = mkstemp(name.data());
   if (fd < 0)
-    throw UsageError{"--output = " + path + ": cannot be written (" + std::strerror(errno) +
+    throw UsageError{field + " = " + path + ": cannot be written (" + std::strerror(errno) +
                      "); valid: a path in an existing, writable directory"};
   // mkstemp creates the file 0600; give the result the mode a plain open() would (0666 & ~umask).
   const mode_t mask = ::umask(0);
   ::umask(mask);
   ::fchmod(fd, 0666 & ~mask);
   ::close(fd);
-  const std::string tmp(name.data());
-  try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      write(out);
-      out.flush();
-      if (!out) throw UsageError{"--output = " + path + ": write failed; valid: a writable path with free space"};
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-      throw UsageError{"--output = " + path + ": cannot be replaced (" + std::strerror(errno) +
+  pending_.push_back({path, field, name.data()});
+  std::ofstream out(pending_.back().tmp, std::ios::binary | std::ios::trunc);
+  write(out);
+  out.flush();
+  if (!out) throw UsageError{field + " = " + path + ": write failed; valid: a writable path with free space"};
+}
+
+void StagedOutputs::commit() {
+  while (!pending_.empty()) {
+    const Pending& p = pending_.front();
+    if (std::rename(p.tmp.c_str(), p.path.c_str()) != 0)
+      throw UsageError{p.field + " = " + p.path + ": cannot be replaced (" + std::strerror(errno) +
                        "); valid: a writable file path"};
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
+    pending_.erase(pending_.begin());
   }
 }
 

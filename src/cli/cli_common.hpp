@@ -4,6 +4,7 @@
 #pragma once
 
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/sampling.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -41,11 +42,36 @@ void add_output_option(CLI::App& command, std::string& path, const std::string& 
 /// The callback runs before the file appears; on any failure no file is left behind.
 void write_output(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+/// Several output files that appear together or not at all: stage() writes each to a temporary
+/// file in its directory; commit() renames them all into place; the destructor removes every
+/// temporary not committed (so any failure before commit() leaves no file). Error messages name
+/// `field` ("--output", "trains[0].effects.trace") and the path.
+class StagedOutputs {
+ public:
+  StagedOutputs() = default;
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+  ~StagedOutputs();
+  void stage(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write);
+  void commit();
+
+ private:
+  struct Pending {
+    std::string path, field, tmp;
+  };
+  std::vector<Pending> pending_;
+};
+
 /// A non-negative integer option value, or InvalidInput naming the option.
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
 
 /// printf("%.17g") — every printed number round-trips to the same double.
 std::string number(double v);
+
+/// The `sphtroch trace` CSV: t,x,y,z (t,x,y,z,vx,vy,vz when `velocities` is not empty; then it
+/// holds dP/dtheta2 at every trajectory.t[i]).
+void write_trajectory_csv(std::ostream& out, const Trajectory<double>& trajectory,
+                          const std::vector<Vector3d>& velocities = {});
 
 /// Registers a subcommand's action; main() runs the selected one and maps errors to exit codes.
 using Action = std::function<void()>;
@@ -53,6 +79,7 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // atlas, atlas-merge
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #endif
 
 }  // namespace sphtroch::cli

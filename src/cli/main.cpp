@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   register_atlas(app, actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS
   register_analysis(app, actions);
+  register_scene(app, actions);
 #endif
   try {
     app.parse(argc, argv);

@@ -18,15 +18,6 @@ struct TraceOptions {
   bool velocity = false;
 };
 
-/// Default sample counts: 360 per unit of (q + |p|) for a closed curve (about 0.5 degree of
-/// planet or carrier motion per step), 360*(1 + |n|) per carrier turn for an open one.
-std::size_t default_samples(const GearTrain& train, std::optional<double> turns) {
-  const auto& r = train.ratio();
-  const double n = turns ? 360.0 * (1.0 + std::abs(r.value())) * *turns + 1.0
-                         : 360.0 * static_cast<double>(r.q() + r.abs_p());
-  return static_cast<std::size_t>(std::clamp(std::ceil(n), static_cast<double>(kMinSamples), 1.0e6));
-}
-
 void run_trace(const TraceOptions& o) {
   const GearTrain train = o.train.train();
   if (!o.samples.empty() && !o.turns.empty())
@@ -40,21 +31,10 @@ void run_trace(const TraceOptions& o) {
     turns = *k;
   }
   const std::size_t n =
-      o.samples.empty() ? default_samples(train, turns) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
+      o.samples.empty() ? trace_sample_count(train, turns) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
   const TracerCurve<double> curve(train);
   const Trajectory<double> tr = turns ? sample_turns(curve, *turns, n, o.velocity) : sample_period(curve, n, o.velocity);
-  write_output(o.output, [&](std::ostream& out) {
-    out << (o.velocity ? "t,x,y,z,vx,vy,vz\n" : "t,x,y,z\n");
-    for (std::size_t i = 0; i < tr.size(); ++i) {
-      const auto& p = tr.points[i];
-      out << number(tr.t[i]) << ',' << number(p.x()) << ',' << number(p.y()) << ',' << number(p.z());
-      if (o.velocity) {
-        const auto& v = tr.velocities[i];
-        out << ',' << number(v.x()) << ',' << number(v.y()) << ',' << number(v.z());
-      }
-      out << '\n';
-    }
-  });
+  write_output(o.output, [&](std::ostream& out) { write_trajectory_csv(out, tr, tr.velocities); });
 }
 
 }  // namespace
