@@ -183,7 +183,7 @@ void write_classification_text(std::ostream& out, const TrainOptions& text, cons
       << ", node merge " << number(kNodeMergeDistance) << "\n";
   out << "work: " << c.work.points_evaluated << " points evaluated, " << c.work.predicates << " exact predicates, "
       << c.work.newton_steps << " Newton steps, " << c.work.root_evaluations << " root-function evaluations, "
-      << number(c.work.seconds) << " s\n";
+      << seconds_text(c.work.seconds) << " s\n";
 }
 
 void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
@@ -330,7 +330,7 @@ void run_crossings(const CrossingsOptions& o) {
     } else {
       out << "vertices " << vertices.size() << (o.open ? " (open)" : " (closed)") << "\ncrossings "
           << sc.crossings.size() << "\ntouchings " << sc.touchings.size() << "\ncandidate pairs " << sc.candidate_pairs
-          << ", exact predicates " << sc.predicates << "\nseconds_search " << number(seconds) << "\n";
+          << ", exact predicates " << sc.predicates << "\nseconds_search " << seconds_text(seconds) << "\n";
     }
   });
 }

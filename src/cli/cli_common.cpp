@@ -38,6 +38,12 @@ std::string number(double v) {
   return buf;
 }
 
+std::string seconds_text(double seconds) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.3g", seconds);
+  return buf;
+}
+
 void write_trajectory_csv(std::ostream& out, const Trajectory<double>& tr, const std::vector<Vector3d>& velocities) {
   const bool with_velocity = !velocities.empty();
   out << (with_velocity ? "t,x,y,z,vx,vy,vz\n" : "t,x,y,z\n");

@@ -68,6 +68,10 @@ std::size_t parse_count(const std::string& text, const std::string& field, std::
 /// printf("%.17g") — every printed number round-trips to the same double.
 std::string number(double v);
 
+/// A measured time in seconds for text reports: 3 significant digits (timings are noisy; the
+/// JSON reports keep every digit).
+std::string seconds_text(double seconds);
+
 /// The `sphtroch trace` CSV: t,x,y,z (t,x,y,z,vx,vy,vz when `velocities` is not empty; then it
 /// holds dP/dtheta2 at every trajectory.t[i]).
 void write_trajectory_csv(std::ostream& out, const Trajectory<double>& trajectory,

@@ -327,7 +327,7 @@ std::string stage_list(const std::vector<Stage>& stages) {
 std::string work_text(const StageWork& w) {
   return std::to_string(w.points_evaluated) + " points evaluated, " + std::to_string(w.predicates) + " predicates, " +
          std::to_string(w.newton_steps) + " Newton steps, " + std::to_string(w.root_evaluations) +
-         " root evaluations, " + number(w.seconds) + " s";
+         " root evaluations, " + seconds_text(w.seconds) + " s";
 }
 
 nlohmann::ordered_json work_json(const StageWork& w) {
