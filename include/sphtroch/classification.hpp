@@ -29,6 +29,8 @@
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/root_census.hpp"
 
+#include <algorithm>
+#include <numeric>
 #include <utility>
 #include <string>
 #include <vector>
@@ -82,20 +84,38 @@ struct Classification {
 };
 
 namespace detail {
+/// One-to-one agreement: every node of `a` is paired with the NEAREST unused node of `b` within
+/// kAgreementDistance, of the same kind and branch count (nearest, because crossings of a
+/// cluster near a pole can be closer to each other than kAgreementDistance).
 inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& b, std::string& why) {
   if (a.size() != b.size()) {
     why = std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " node points";
     return false;
   }
+  std::vector<std::size_t> order(b.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return b[i].position.x() < b[j].position.x(); });
+  std::vector<bool> used(b.size(), false);
   for (const Node& n : a) {
-    const auto it = std::find_if(b.begin(), b.end(), [&](const Node& m) {
-      return (m.position - n.position).norm() <= kAgreementDistance && m.kind == n.kind && m.branches == n.branches;
-    });
-    if (it == b.end()) {
+    auto it = std::lower_bound(order.begin(), order.end(), n.position.x() - kAgreementDistance,
+                               [&](std::size_t j, double x) { return b[j].position.x() < x; });
+    std::size_t hit = b.size();
+    double best = kAgreementDistance;
+    for (; it != order.end() && b[*it].position.x() <= n.position.x() + kAgreementDistance; ++it) {
+      const Node& m = b[*it];
+      const double gap = (m.position - n.position).norm();
+      if (!used[*it] && gap <= best && m.kind == n.kind && m.branches == n.branches) {
+        hit = *it;
+        best = gap;
+      }
+    }
+    if (hit == b.size()) {
       why = "no match for the " + std::string(to_string(n.kind)) + " node at (" + to_text(n.position.x()) + ", " +
             to_text(n.position.y()) + ", " + to_text(n.position.z()) + ")";
       return false;
     }
+    used[hit] = true;
   }
   return true;
 }

@@ -34,8 +34,28 @@ struct BranchPair {
 /// from different pairs agree to that. 1e-9 keeps genuinely distinct nodes (the closest the
 /// hard cases produce are ~4e-8 apart) separate.
 constexpr double kNodeMergeDistance = 1e-9;
-/// Two branch parameters closer than this (modulo the period) are the same branch.
-constexpr double kBranchParamTolerance = 1e-9;
+/// Branch parameters of one node closer than this (modulo the period, along a chain of
+/// neighbours) are one branch. Pairs merged into one node may meet one branch at points up to a
+/// few merge distances apart (a cluster of crossings near a pole, ~1e-9 wide), i.e. at
+/// parameters ~1e-9 apart; distinct branches through one point are further apart than the
+/// shortest near-cusp loop resolved (parameters ~sqrt(kCuspResolution) = 1e-5 apart).
+constexpr double kBranchParamTolerance = 1e-7;
+
+/// The distinct branches among the parameters `ts` (each in [0, period)): sorted, then split
+/// where neighbours are more than `tolerance` apart, the last run joined to the first across
+/// the period. One representative (the run's first parameter) per branch, ascending. The
+/// result does not depend on the order of `ts`.
+inline std::vector<double> distinct_branches(std::vector<double> ts, double period,
+                                             double tolerance = kBranchParamTolerance) {
+  std::sort(ts.begin(), ts.end());
+  std::vector<double> runs;
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    if (i == 0 || ts[i] - ts[i - 1] > tolerance) runs.push_back(ts[i]);
+  // Wrap-around: the last run continues into the first one.
+  if (runs.size() > 1 && ts.front() + period - ts.back() <= tolerance) runs.erase(runs.begin());
+  std::sort(runs.begin(), runs.end());
+  return runs;
+}
 
 /// theta2 reduced to [0, period).
 inline double wrap_param(double t, double period) {
@@ -80,26 +100,20 @@ inline std::vector<Node> assemble_nodes(const std::vector<BranchPair>& pairs, co
   std::vector<std::vector<std::size_t>> groups(m);
   for (std::size_t i = 0; i < m; ++i) groups[find(i)].push_back(i);
 
-  auto same_param = [&](double a, double b) {
-    const double d = std::abs(a - b);
-    return std::min(d, period - d) <= kBranchParamTolerance;
-  };
-
   std::vector<Node> nodes;
   for (const auto& g : groups) {
     if (g.empty()) continue;
     Node node;
     Vector3d sum = Vector3d::Zero();
+    std::vector<double> params;
     for (std::size_t i : g) {
       sum += pairs[i].position;
-      for (double t : {pairs[i].t1, pairs[i].t2}) {
-        const bool known = std::any_of(node.params.begin(), node.params.end(), [&](double s) { return same_param(s, t); });
-        if (!known) node.params.push_back(t);
-      }
+      params.push_back(pairs[i].t1);
+      params.push_back(pairs[i].t2);
       if (pairs[i].kind == NodeKind::crossing) ++node.crossing_pairs;
       else ++node.tangency_pairs;
     }
-    std::sort(node.params.begin(), node.params.end());
+    node.params = distinct_branches(std::move(params), period);
     node.position = sum.normalized();
     node.branches = node.params.size();
     node.kind = node.crossing_pairs > 0 ? NodeKind::crossing : NodeKind::tangency;

@@ -53,6 +53,15 @@ constexpr double kCuspLoopParam = 1e-2;
 /// cusp), not a node: a near-cusp loop resolved at all (|a3 - a_p| >= kCuspResolution) has its
 /// branches ~sqrt(6 |a3 - a_p|) / |n| >= 1e-5 / |n| apart.
 constexpr long double kMinBranchSeparation = 1e-8L;
+/// Crossings at angles below this are checked for a second crossing of the same two branches
+/// close by (a lens hidden between polyline edges; see scan_lens in polyline_census). A lens of
+/// length L between branches whose geodesic curvatures differ by dk has crossing angles ~dk L / 2;
+/// hidden lenses are shorter than about two edges.
+constexpr double kLensScanAngle = 0.5;
+/// The lens scan covers |s| <= kLensScanSpan sample spacings along the second branch ...
+constexpr double kLensScanSpan = 3.0;
+/// ... at this many points (even).
+constexpr int kLensScanSamples = 4;
 /// Consecutive polyline vertices closer than this are merged (the exact search needs distinct ones).
 constexpr double kMinVertexSeparation = 1e-14;
 /// Literal mode: the gap-model tolerance is the evaluation noise of long double, not a boundary.
@@ -292,6 +301,32 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     out.work.points_evaluated += r.evaluations;
     return r;
   };
+  // A lens: two branches that cross twice within about one pair of polyline edges. Two chords
+  // cross at most once, so the polyline shows one crossing or a near miss, and Newton finds one
+  // of the two. Around a crossing (t1, t2) found at an angle below kLensScanAngle, the gap
+  // f(s) = gap(t2 + s) / s (the known root s = 0 divided out) is sampled at kLensScanSamples
+  // points over |s| <= kLensScanSpan * h; each sign change is refined as a crossing of its own
+  // (duplicates are removed below).
+  auto scan_lens = [&](LD t1, LD t2) {
+    const LD span = kLensScanSpan * static_cast<LD>(h);
+    const int half = kLensScanSamples / 2;
+    LD prev_s = 0, prev_f = 0;
+    for (int k = -half; k <= half; ++k) {
+      if (k == 0) continue;
+      const LD s = span * k / half;
+      const LD f = detail::branch_gap(curve_ld, t1, t2, s, out.work) / s;
+      if (k != -half && (f < 0) != (prev_f < 0)) {
+        const LD sm = prev_s + (s - prev_s) * prev_f / (prev_f - f);  // secant guess of the root
+        LD t1s;
+        detail::branch_gap(curve_ld, t1, t2, sm, out.work, &t1s);
+        const auto rr = refine(t1s, t2 + sm);
+        if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
+          meetings.push_back({rr.t1, rr.t2, NodeKind::crossing});
+      }
+      prev_s = s;
+      prev_f = f;
+    }
+  };
   for (const Seed& s : seeds) {
     const auto r = refine(s.t1, s.t2);
     LD dt = std::fmod(std::abs(r.t1 - r.t2), static_cast<LD>(period));
@@ -308,8 +343,12 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
       continue;
     }
     if (dt < kCuspLoopParam || angle >= kTransversalAngle) {
-      if (r.residual <= kNodeResidual) meetings.push_back({r.t1, r.t2, NodeKind::crossing});
-      else ++out.newton_failures;
+      if (r.residual <= kNodeResidual) {
+        meetings.push_back({r.t1, r.t2, NodeKind::crossing});
+        if (dt >= kCuspLoopParam && angle < kLensScanAngle) scan_lens(r.t1, r.t2);
+      } else {
+        ++out.newton_failures;
+      }
       continue;
     }
     // Near-tangent branches: quadratic model of the gap along branch 2.

@@ -82,6 +82,7 @@ struct RootCensusSettings {
 /// One root of g on (0, pi).
 struct HalfTurnRoot {
   double beta = 0.0;       // planet angle b of the first branch, radians in (0, pi)
+  long double beta_precise = 0.0L;  // the same root as solved, in long double
   std::int64_t value = 0;  // the integer g(b)
   NodeKind kind = NodeKind::crossing;
   double margin = 0.0;     // tangency: |g - m| at the stationary point; crossing: |g'|*pi
@@ -307,7 +308,8 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
       if (tan_lo && std::nearbyint(g_lo) == m) continue;
       if (tan_hi && std::nearbyint(g_hi) == m) continue;
       HalfTurnRoot r;
-      r.beta = static_cast<double>(f.solve(breaks[i], breaks[i + 1], m));
+      r.beta_precise = f.solve(breaks[i], breaks[i + 1], m);
+      r.beta = static_cast<double>(r.beta_precise);
       r.value = static_cast<std::int64_t>(m);
       r.kind = NodeKind::crossing;
       r.margin = static_cast<double>(std::abs(f.dg(r.beta)) * pi);
@@ -315,7 +317,8 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
     }
     if (tan_hi) {
       HalfTurnRoot r;
-      r.beta = static_cast<double>(breaks[i + 1]);
+      r.beta_precise = breaks[i + 1];
+      r.beta = static_cast<double>(r.beta_precise);
       r.value = static_cast<std::int64_t>(std::nearbyint(g_hi));
       r.kind = NodeKind::tangency;
       r.margin = static_cast<double>(std::abs(g_hi - std::nearbyint(g_hi)));
@@ -328,11 +331,18 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
   const std::int64_t p_inv = q == 1 ? 0 : detail::mod_inverse(((p % q) + q) % q, q);
   const Real two_pi = 2 * pi;
   for (const auto& r : out.roots) {
-    const Real b = r.beta;
+    const Real b = r.beta_precise;
     const Vector3<Real> y = f.circle_point(b);
-    const Real az = std::atan2(y.y(), y.x());
     const std::int64_t j = q == 1 ? 0 : ((-(r.value % q) * p_inv) % q + q) % q;
-    const Real d = 2 * az - pi + two_pi * static_cast<Real>(j);
+    // d = 2 az(b) - pi (+ 2 pi j). At a crossing root g(b) = m, so 2 az - pi = (2 pi m - 2 q b) / p
+    // exactly: this form carries the error of b with the factor 2q/p only, whereas az itself
+    // is steep where C(b) passes close to a pole (daz/db ~ 1/distance: a 1e-8 miss of the pole
+    // would turn the last bit of b into a 1e-8 error of the second branch's parameter).
+    const Real two_az_minus_pi =
+        r.kind == NodeKind::crossing
+            ? (two_pi * static_cast<Real>(r.value) - 2 * static_cast<Real>(q) * b) / static_cast<Real>(p)
+            : 2 * std::atan2(y.y(), y.x()) - pi;
+    const Real d = two_az_minus_pi + two_pi * static_cast<Real>(j);
     for (std::int64_t k = 0; k < abs_p; ++k) {
       const Real t1 = (b - static_cast<Real>(phase) + two_pi * static_cast<Real>(k)) * static_cast<Real>(q) /
                       static_cast<Real>(p);
