@@ -3,6 +3,7 @@
 // status 2, exactly one line on stderr naming the option (and value and range), nothing on
 // stdout, and no output or temporary file left behind.
 #include "catch2/catch.hpp"
+#include "cli_support.hpp"
 
 #include <sys/wait.h>
 
@@ -20,60 +21,9 @@
 namespace fs = std::filesystem;
 
 namespace {
+using namespace sphtroch::test;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// A fresh directory per test case, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "sphtroch-cli-XXXXXX").string();
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    REQUIRE(mkdtemp(buf.data()) != nullptr);
-    path = buf.data();
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  /// Every entry except the capture files.
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::recursive_directory_iterator(path)) {
-      const std::string name = e.path().filename().string();
-      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(fs::relative(e.path(), path).string());
-    }
-    return names;
-  }
-};
-
-/// Runs `sphtroch <args>` through the shell (args are already shell-quoted where needed),
-/// capturing stdout, stderr and the exit status in files of `dir`.
-Result run(const std::string& args, const TempDir& dir) {
-  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
-  const std::string cmd = std::string("'") + SPHTROCH_EXE + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> parts;
@@ -82,14 +32,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   while (std::getline(in, cur, sep)) parts.push_back(cur);
   return parts;
 }
-
-std::size_t count_lines(const std::string& s) {
-  std::size_t n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 /// A number printed with 17 significant digits round-trips and re-prints identically.
 bool is_17_digits(const std::string& field) {

@@ -3,6 +3,7 @@
 // the unsharded run, merge refuses missing / repeated / foreign slices, bad input gets exit
 // status 2 with one stderr line naming the option and no file, and --svg writes the map.
 #include "catch2/catch.hpp"
+#include "cli_support.hpp"
 
 #include <sys/wait.h>
 
@@ -18,73 +19,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
+using namespace sphtroch::test;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "sphtroch-atlas-XXXXXX").string();
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    REQUIRE(mkdtemp(buf.data()) != nullptr);
-    path = buf.data();
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path)) {
-      const std::string name = e.path().filename().string();
-      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(name);
-    }
-    return names;
-  }
-};
-
-/// Runs `sphtroch <args>` in `dir` (relative paths land there).
-Result run(const std::string& args, const TempDir& dir) {
-  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
-  const std::string cmd = "cd '" + dir.path.string() + "' && '" + SPHTROCH_EXE + "' " + args + " >'" + out.string() +
-                          "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-std::size_t count_lines(const std::string& s) {
-  std::size_t n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+/// `sphtroch <args>` run inside `dir` (relative paths land there).
+Result run_here(const std::string& args, const TempDir& dir) { return run(args, dir, true); }
 
 }  // namespace
 
 TEST_CASE("atlas: CSV layout, and the same bytes with 1 or 2 threads", "[cli][atlas]") {
   TempDir dir;
-  const Result one = run("atlas --n 2 --grid 12 --threads 1 -o one.csv", dir);
+  const Result one = run_here("atlas --n 2 --grid 12 --threads 1 -o one.csv", dir);
   REQUIRE(one.status == 0);
   CHECK(one.err.empty());  // no progress bar: stderr is not a terminal
   CHECK(contains(one.out, "disagreements (census vs report): 0 (0 within 1e-09 rad of a boundary, 0 elsewhere)\n"));
-  const Result two = run("atlas --n 2 --grid 12 --threads 2 -o two.csv", dir);
+  const Result two = run_here("atlas --n 2 --grid 12 --threads 2 -o two.csv", dir);
   REQUIRE(two.status == 0);
   const std::string a = slurp(dir.path / "one.csv"), b = slurp(dir.path / "two.csv");
   CHECK(a == b);
@@ -98,7 +46,7 @@ TEST_CASE("atlas: CSV layout, and the same bytes with 1 or 2 threads", "[cli][at
                 3.14159265358979323846 / 12 * 1.5);
   CHECK(contains(a, expected));
   // -o - : the CSV on stdout, the summary on stderr.
-  const Result dash = run("atlas --n 2 --grid 12 -o -", dir);
+  const Result dash = run_here("atlas --n 2 --grid 12 -o -", dir);
   REQUIRE(dash.status == 0);
   CHECK(dash.out == a);
   CHECK(contains(dash.err, "disagreements (census vs report): 0 ("));
@@ -106,23 +54,23 @@ TEST_CASE("atlas: CSV layout, and the same bytes with 1 or 2 threads", "[cli][at
 
 TEST_CASE("atlas: shards merged in any order equal the unsharded file byte for byte", "[cli][atlas][shard]") {
   TempDir dir;
-  REQUIRE(run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 -o whole.csv", dir).status == 0);
+  REQUIRE(run_here("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 -o whole.csv", dir).status == 0);
   for (int i = 1; i <= 3; ++i) {
-    const Result r = run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard " + std::to_string(i) + "/3 -o s" +
+    const Result r = run_here("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard " + std::to_string(i) + "/3 -o s" +
                              std::to_string(i) + ".csv",
                          dir);
     REQUIRE(r.status == 0);
     CHECK(contains(r.out, "shard " + std::to_string(i) + "/3"));
   }
-  const Result merged = run("atlas-merge -o merged.csv --svg merged.svg s2.csv s3.csv s1.csv", dir);
+  const Result merged = run_here("atlas-merge -o merged.csv --svg merged.svg s2.csv s3.csv s1.csv", dir);
   REQUIRE(merged.status == 0);
   CHECK(slurp(dir.path / "merged.csv") == slurp(dir.path / "whole.csv"));
   CHECK(contains(slurp(dir.path / "merged.svg"), "class=\"boundary\""));
-  CHECK(run("atlas-merge -o merged2.csv s3.csv s1.csv s2.csv", dir).status == 0);
+  CHECK(run_here("atlas-merge -o merged2.csv s3.csv s1.csv s2.csv", dir).status == 0);
   CHECK(slurp(dir.path / "merged2.csv") == slurp(dir.path / "whole.csv"));
 
-  REQUIRE(run("atlas --n 2 --grid 10 --shard 2/3 -o other.csv", dir).status == 0);
-  REQUIRE(run("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard 2/4 -o four.csv", dir).status == 0);
+  REQUIRE(run_here("atlas --n 2 --grid 10 --shard 2/3 -o other.csv", dir).status == 0);
+  REQUIRE(run_here("atlas --n 2 --grid 11 --a2 pi/6:5pi/6 --shard 2/4 -o four.csv", dir).status == 0);
   struct Bad {
     const char* args;
     const char* says;
@@ -131,7 +79,7 @@ TEST_CASE("atlas: shards merged in any order equal the unsharded file byte for b
                          Bad{"s1.csv other.csv s3.csv", "another atlas"}, Bad{"s1.csv four.csv s3.csv", "shards"},
                          Bad{"s1.csv s2.csv nowhere.csv", "cannot be read"}}) {
     INFO(bad.args);
-    const Result r = run(std::string("atlas-merge -o out.csv ") + bad.args, dir);
+    const Result r = run_here(std::string("atlas-merge -o out.csv ") + bad.args, dir);
     CHECK(r.status == 2);
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, bad.says));
@@ -158,7 +106,7 @@ TEST_CASE("atlas: bad input is one stderr line naming the option, exit 2, no fil
                          Bad{"--n 2 --grid 8 --shard 1/2 --svg map.svg", "--svg = map.svg"},
                          Bad{"--n 2 --grid 8 --svg nodir/map.svg", "--svg = nodir/map.svg"}}) {
     INFO(bad.args);
-    const Result r = run(std::string("atlas ") + bad.args + " -o out.csv", dir);
+    const Result r = run_here(std::string("atlas ") + bad.args + " -o out.csv", dir);
     CHECK(r.status == 2);
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, bad.option));
@@ -170,7 +118,7 @@ TEST_CASE("atlas: bad input is one stderr line naming the option, exit 2, no fil
 
 TEST_CASE("atlas --svg: the map file with the report's boundaries and a legend", "[cli][atlas][svg]") {
   TempDir dir;
-  const Result r = run("atlas --n 1 --grid 16 --svg map.svg", dir);
+  const Result r = run_here("atlas --n 1 --grid 16 --svg map.svg", dir);
   REQUIRE(r.status == 0);
   const std::string svg = slurp(dir.path / "map.svg");
   CHECK(svg.rfind("<?xml", 0) == 0);

@@ -1,0 +1,86 @@
+// tests/cli_support.hpp — running the `sphtroch` executable from a Catch2 test: a fresh
+// directory per test case, the exit status and both output streams captured.
+// REQUIRES: SPHTROCH_EXE (the executable's path) defined by CMake.
+#pragma once
+
+#include "catch2/catch.hpp"
+
+#include <sys/wait.h>
+#include <stdlib.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphtroch::test {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// A fresh directory per test case, removed at the end.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "sphtroch-test-XXXXXX").string();
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    REQUIRE(mkdtemp(buf.data()) != nullptr);
+    path = buf.data();
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  /// Every entry (relative path, recursively) except the capture files.
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(path)) {
+      const std::string name = e.path().filename().string();
+      if (name != "stdout.txt" && name != "stderr.txt") names.push_back(fs::relative(e.path(), path).string());
+    }
+    return names;
+  }
+};
+
+/// Runs `sphtroch <args>` through the shell (args already shell-quoted where needed), capturing
+/// stdout, stderr and the exit status in files of `dir`. With `in_dir`, runs inside `dir` so that
+/// relative paths land there.
+inline Result run(const std::string& args, const TempDir& dir, bool in_dir = false) {
+  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+  const std::string cd = in_dir ? "cd '" + dir.path.string() + "' && " : std::string();
+  const std::string cmd = cd + "'" + SPHTROCH_EXE + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+inline std::size_t count_lines(const std::string& s) {
+  std::size_t n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace sphtroch::test
