@@ -183,7 +183,7 @@ int main(int argc, char** argv) {
 
   {  // context
     std::ostringstream c;
-    c << "date,host,num_cpus,mhz_per_cpu,load_avg_1m,load_avg_5m,load_avg_15m,build_type,repetitions,s2\n";
+    c << "date,host,num_cpus,mhz_per_cpu,load_avg_1m,load_avg_5m,load_avg_15m,benchmark_library_build_type,repetitions,s2\n";
     const json la = ctx.value("load_avg", json::array());
     c << ctx.value("date", "") << "," << ctx.value("host_name", "") << "," << ctx.value("num_cpus", 0) << ","
       << ctx.value("mhz_per_cpu", 0) << "," << (la.size() > 0 ? num(la[0].get<double>()) : "") << ","

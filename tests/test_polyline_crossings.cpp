@@ -183,6 +183,38 @@ TEST_CASE("orientation_sign follows det[a, b, c]", "[arc_predicates]") {
   CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, -t)) == -1);
 }
 
+TEST_CASE("orientation_sign: the floating-point filter agrees with CGAL's exact orientation", "[arc_predicates]") {
+  // Random and nearly coplanar triples over many magnitudes (including products that underflow
+  // or overflow, where the filter must step aside); the reference is CGAL::orientation itself.
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::mt19937_64 rng(2024);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 4);
+  const double scales[] = {1.0, 1e-3, 1e3, 1e-110, 1e110};
+  const double tinies[] = {0.0, 1e-18, 1e-16, 1e-14, 1e-8};
+  std::size_t zeros = 0, nonzeros = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const V a = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    const V b = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    V c = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    if (trial % 2 == 0) {  // near the plane of a and b (or exactly on it when the sum is exact)
+      const double s = trial % 4 == 0 ? 1.0 : g(rng), t = trial % 4 == 0 ? 1.0 : g(rng);
+      c = s * a + t * b + tinies[pick(rng)] * a.norm() * V(g(rng), g(rng), g(rng));
+    }
+    const int expected = static_cast<int>(
+        CGAL::orientation(K::Point_3(0, 0, 0), K::Point_3(a.x(), a.y(), a.z()), K::Point_3(b.x(), b.y(), b.z()),
+                          K::Point_3(c.x(), c.y(), c.z())));
+    const int got = sphtroch::orientation_sign(a, b, c);
+    if (got != expected) {
+      INFO("a " << a.transpose() << " b " << b.transpose() << " c " << c.transpose());
+      REQUIRE(got == expected);
+    }
+    (expected == 0 ? zeros : nonzeros)++;
+  }
+  CHECK(zeros > 100);  // exact coplanarity occurs (c = a + b with exact sums, zero vectors after underflow)
+  CHECK(nonzeros > 100000);
+}
+
 TEST_CASE("relate_vertices: same direction, antipodal, distinct", "[arc_predicates]") {
   CHECK(sphtroch::relate_vertices(V(1, 2, 3), V(2, 4, 6)) == sphtroch::VertexRelation::same_direction);
   CHECK(sphtroch::relate_vertices(V(1, 2, 3), V(-0.5, -1, -1.5)) == sphtroch::VertexRelation::antipodal);

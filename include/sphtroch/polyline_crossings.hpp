@@ -88,8 +88,9 @@
 //   - consecutive runs (sharing one vertex v): if both are monotone the same way along some axis
 //     k, one run ends at v_k and the other starts there, so only the few edges within
 //     pad_a + pad_b of v_k along k can overlap: a walk outwards from v. Otherwise as below;
-//   - other overlapping run pairs: merge the two sorted interval lists along one axis in
-//     O(L_a + L_b + overlaps), then check the other two axes.
+//   - other overlapping run pairs: keep the edges of each run whose boxes meet the other run's
+//     box (none, often); pair few survivors directly, else merge their sorted interval lists
+//     along one axis in O(L_a + L_b + overlaps); then check the other two axes.
 // The visited set is exactly the set of non-adjacent pairs whose (run-padded) edge boxes overlap;
 // the work is O(N) plus O(R log R + K_runs) for the box search over R runs, plus the merges.
 // CandidateSearch::edges boxes every edge separately (the simple first version, kept for
@@ -421,13 +422,64 @@ bool visit_within_run(const PreparedPolyline& p, const Run& r, std::vector<EdgeI
   return true;
 }
 
-/// Edge pairs between two different runs: merge of two sorted interval lists along one axis.
+/// The edges of run `r` (in index order) whose boxes (padded with r's pad) overlap the box of
+/// run `other`. Every edge of r whose box overlaps the box of some edge of `other` is among them,
+/// since the edge boxes of a run lie inside its run box.
+inline void edges_meeting_box(const PreparedPolyline& p, const Run& r, const Run& other, std::vector<std::uint32_t>& out) {
+  out.clear();
+  for (std::uint32_t e = r.first; e < r.first + r.count; ++e) {
+    const Eigen::Vector3d& a = p.u(e);
+    const Eigen::Vector3d& b = p.u(p.head(e));
+    bool meets = true;
+    for (int k = 0; k < 3; ++k)
+      meets = meets && std::min(a[k], b[k]) - r.pad <= other.hi[k] && other.lo[k] <= std::max(a[k], b[k]) + r.pad;
+    if (meets) out.push_back(e);
+  }
+}
+
+/// The intervals along axis k of the given edges of run r (in index order), sorted by lower end:
+/// along a monotone run the lower ends follow the index order, or its reverse.
+inline void sorted_intervals_of(const PreparedPolyline& p, const Run& r, const std::vector<std::uint32_t>& edges, int k,
+                                std::vector<EdgeInterval>& out) {
+  out.clear();
+  const auto push = [&](std::uint32_t e) {
+    const double a = p.u(e)[k];
+    const double b = p.u(p.head(e))[k];
+    out.push_back({std::min(a, b) - r.pad, std::max(a, b) + r.pad, e});
+  };
+  if (r.dir[k] >= 0) {
+    for (std::uint32_t e : edges) push(e);
+  } else {
+    for (std::size_t x = edges.size(); x-- > 0;) push(edges[x]);
+  }
+}
+
+/// Scratch space of the run-pair visits, reused across pairs.
+struct RunPairScratch {
+  std::vector<EdgeInterval> la, lb;
+  std::vector<std::uint32_t> ea, eb;
+};
+
+/// Edge pairs between two different runs. First each run is cut down to its edges whose boxes
+/// meet the other run's box (often none: the run boxes overlap only at a corner); few survivors
+/// are paired directly, more are merged as two sorted interval lists along one axis.
 template <typename Visitor>
-bool visit_between_runs(const PreparedPolyline& p, const Run& ra, const Run& rb, std::vector<EdgeInterval>& la,
-                        std::vector<EdgeInterval>& lb, Visitor& visitor) {
+bool visit_between_runs(const PreparedPolyline& p, const Run& ra, const Run& rb, RunPairScratch& sc, Visitor& visitor) {
+  edges_meeting_box(p, ra, rb, sc.ea);
+  if (sc.ea.empty()) return true;
+  edges_meeting_box(p, rb, ra, sc.eb);
+  if (sc.eb.empty()) return true;
+  if (sc.ea.size() * sc.eb.size() <= 64) {
+    for (std::uint32_t e : sc.ea)
+      for (std::uint32_t f : sc.eb)
+        if (!offer_pair(p, e, ra.pad, f, rb.pad, -1, visitor)) return false;
+    return true;
+  }
   const int k = longest_axis(ra, rb);
-  sorted_intervals(p, ra, k, la);
-  sorted_intervals(p, rb, k, lb);
+  std::vector<EdgeInterval>& la = sc.la;
+  std::vector<EdgeInterval>& lb = sc.lb;
+  sorted_intervals_of(p, ra, sc.ea, k, la);
+  sorted_intervals_of(p, rb, sc.eb, k, lb);
   std::size_t i = 0, j = 0;
   while (i < la.size() && j < lb.size()) {
     if (la[i].lo <= lb[j].lo) {
@@ -451,8 +503,8 @@ bool visit_between_runs(const PreparedPolyline& p, const Run& ra, const Run& rb,
 /// prefix, found by walking outwards from v and stopping at the first edge beyond 2 (pad + pad).
 /// Without such an axis (all coordinates turn at v), the general merge.
 template <typename Visitor>
-bool visit_adjacent_runs(const PreparedPolyline& p, const Run& before, const Run& after,
-                         std::vector<EdgeInterval>& la, std::vector<EdgeInterval>& lb, Visitor& visitor) {
+bool visit_adjacent_runs(const PreparedPolyline& p, const Run& before, const Run& after, RunPairScratch& sc,
+                         Visitor& visitor) {
   const std::uint32_t before_end = before.first + before.count;  // one past its last edge
   const std::size_t v = p.head(before_end - 1);
   SPHTROCH_ASSERT(v == after.first, "runs are not consecutive");
@@ -466,7 +518,7 @@ bool visit_adjacent_runs(const PreparedPolyline& p, const Run& before, const Run
       k = a;
     }
   }
-  if (k < 0) return visit_between_runs(p, before, after, la, lb, visitor);
+  if (k < 0) return visit_between_runs(p, before, after, sc, visitor);
   const double vk = p.u(v)[k];
   const double reach = 2.0 * (before.pad + after.pad);
   std::uint32_t b_start = before_end;
@@ -561,24 +613,26 @@ VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_
         kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
   }
   std::sort(run_pairs.begin(), run_pairs.end());  // locality and a deterministic visiting order
-  std::vector<EdgeInterval> la, lb;
-  la.reserve(std::min<std::size_t>(max_run_edges, p.edges));
-  lb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  RunPairScratch sc;
+  sc.la.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.lb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.ea.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.eb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
   const std::size_t last = runs.size() - 1;
   // Closed with exactly 2 runs: they share two vertices; use the general merge for them.
   const bool wrap_adjacent = p.closed && runs.size() >= 3;
   std::size_t next_pair = 0;
   for (std::uint32_t r = 0; r < runs.size(); ++r) {
-    if (!visit_within_run(p, runs[r], la, visitor)) return {false, stats.boxes};
+    if (!visit_within_run(p, runs[r], sc.la, visitor)) return {false, stats.boxes};
     for (; next_pair < run_pairs.size() && run_pairs[next_pair].first == r; ++next_pair) {
       const std::uint32_t s = run_pairs[next_pair].second;
       bool go = true;
       if (s == r + 1 && !(p.closed && runs.size() == 2))
-        go = visit_adjacent_runs(p, runs[r], runs[s], la, lb, visitor);
+        go = visit_adjacent_runs(p, runs[r], runs[s], sc, visitor);
       else if (wrap_adjacent && r == 0 && s == last)
-        go = visit_adjacent_runs(p, runs[last], runs[0], la, lb, visitor);
+        go = visit_adjacent_runs(p, runs[last], runs[0], sc, visitor);
       else
-        go = visit_between_runs(p, runs[r], runs[s], la, lb, visitor);
+        go = visit_between_runs(p, runs[r], runs[s], sc, visitor);
       if (!go) return {false, stats.boxes};
     }
   }
