@@ -19,7 +19,9 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -50,10 +52,14 @@ double unit_seconds(const std::string& unit) {
   return 1.0;
 }
 
+/// Counts as integers, everything else with 6 significant digits; NaN as an empty field.
 std::string num(double v) {
   if (std::isnan(v)) return "";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  if (v == std::floor(v) && std::fabs(v) < 1e15)
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  else
+    std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
 
@@ -68,7 +74,7 @@ struct Series {
 
 std::string log_chart(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                       const std::vector<Series>& series) {
-  const double W = 720, H = 460, L = 80, R = 230, T = 40, B = 60;
+  const double W = 860, H = 460, L = 80, R = 330, T = 40, B = 60;
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   for (const Series& s : series)
     for (auto [x, y] : s.points) {
@@ -137,7 +143,11 @@ int main(int argc, char** argv) {
   try {
     std::ifstream in(argv[1]);
     if (!in) throw std::runtime_error("cannot open");
-    in >> doc;
+    // Google Benchmark prints non-finite values (the spread of a constant counter is 0/0) as
+    // NaN / -nan / inf, which is not JSON: read them as null.
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text = std::regex_replace(text, std::regex(R"((:\s*)-?(nan|NaN|inf|Inf|INF|NAN)\b)"), "$1null");
+    doc = json::parse(text);
   } catch (const std::exception& e) {
     std::cerr << "sphtroch_bench_report: " << argv[1] << ": unreadable benchmark JSON (" << e.what() << ")\n";
     return 2;
@@ -303,9 +313,10 @@ int main(int argc, char** argv) {
         << num(r->counter("nodes_found")) << "\n";
       const std::string key = r->param("method") + " " + r->param("case");
       Series& s = by[key];
-      s.label = "nodes: " + key;
+      s.label = (r->param("method") == "uniform_chords" ? "node, uniform chords, " : "node, census + Newton, ") +
+                r->param("case");
       if (r->counter("nodes_found") == r->counter("nodes_expected"))
-        s.points.push_back({r->seconds * 1e6, std::max(r->counter("max_error"), 1e-17)});
+        s.points.push_back({r->seconds * 1e6, std::max(r->counter("max_error"), 1e-40)});
     }
     int k = 0;
     for (auto& [name, s] : by) {
@@ -335,17 +346,15 @@ int main(int argc, char** argv) {
                               : r->param("k") == "0"         ? "recurrence"
                                                              : "recurrence, re-anchor " + r->param("k");
       Series& s = by["trace: " + key];
-      s.label = "trace point: " + key;
-      s.markers_only = false;
-      s.points.push_back({r->seconds / r->counter("points") * 1e6, std::max(r->counter("max_error"), 1e-17)});
+      s.label = "trace point, " + key;
+      s.points.push_back({r->seconds / r->counter("points") * 1e6, std::max(r->counter("max_error"), 1e-40)});
     }
     int k = 4;
-    for (auto& [name, s] : by) {
-      std::sort(s.points.begin(), s.points.end());
+    for (auto& [name, s] : by) {  // points in the order float, double, long double, mpfr (as registered)
       s.color = kColors[k++ % 8];
       accuracy.push_back(s);
     }
-    write_file(out + "/accuracy.svg", log_chart("What accuracy costs: error vs time (medians)",
+    write_file(out + "/accuracy.svg", log_chart("Error vs time (medians); each trace line joins float, double, long double, mpfr128",
                                                 "microseconds (per trace point; per node-finding call)",
                                                 "max position error", accuracy));
   }
