@@ -82,8 +82,9 @@
 //   k is a bijection of the plane of AB, because e_k . (A x B) != 0).
 //
 // Cost: the common answer `none` needs 2 predicates (4 at most); a crossing needs 4; degenerate
-// configurations need at most 24 (3D and 2D orientations together; each is CGAL's filtered
-// predicate, exact arithmetic only when the floating-point filter cannot decide).
+// configurations need at most 24 (3D and 2D orientations together; exact arithmetic only when a
+// floating-point filter cannot decide: for the 3D signs our own semi-static filter, whose error
+// bound is derived at kDetFilterError, then CGAL's filtered predicate; for the 2D signs CGAL's).
 //
 // Implementation details follow.
 #pragma once

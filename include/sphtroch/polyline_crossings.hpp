@@ -79,8 +79,9 @@
 // options.max_run_edges edges and an unpadded box at most options.max_run_extent wide. Box each
 // run (its vertices' box padded by its largest sagitta), and find overlapping runs with
 // CGAL::box_self_intersection_d (CLOSED boxes), or, for at most kSweepMaxBoxes runs, with a
-// plain sweep that reports the same pairs at a quarter of the cost. An edge's box uses its run's pad, so edge boxes
-// lie inside run boxes and no pair is lost. Then, with exact predicates only on the survivors:
+// plain sweep that reports the same pairs (at about a quarter of the cost of that step). An
+// edge's box uses its run's pad, so edge boxes lie inside run boxes and no pair is lost. Then,
+// with exact predicates only on the survivors:
 //   - within a run: nothing to do when every edge steps by more than 2.25 pad along some axis
 //     (the edge between two non-adjacent edges of a monotone run separates their boxes); else a
 //     sweep over the edges' intervals along one axis, sorted by construction (monotone
@@ -425,7 +426,8 @@ bool visit_within_run(const PreparedPolyline& p, const Run& r, std::vector<EdgeI
 /// The edges of run `r` (in index order) whose boxes (padded with r's pad) overlap the box of
 /// run `other`. Every edge of r whose box overlaps the box of some edge of `other` is among them,
 /// since the edge boxes of a run lie inside its run box.
-inline void edges_meeting_box(const PreparedPolyline& p, const Run& r, const Run& other, std::vector<std::uint32_t>& out) {
+inline void edges_meeting_box(const PreparedPolyline& p, const Run& r, const Run& other,
+                              std::vector<std::uint32_t>& out) {
   out.clear();
   for (std::uint32_t e = r.first; e < r.first + r.count; ++e) {
     const Eigen::Vector3d& a = p.u(e);
@@ -552,7 +554,8 @@ constexpr std::size_t kSweepMaxBoxes = 2048;
 /// boxes are thinnest relative to their spread: sort by lower end, scan forward while the lower
 /// end is within the current box, check the other two axes. O(R log R + pairs overlapping along
 /// that axis); meant for few boxes (see kSweepMaxBoxes), where that is no worse than the tree.
-inline void sweep_overlapping_runs(const std::vector<Run>& runs, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+inline void sweep_overlapping_runs(const std::vector<Run>& runs,
+                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
   int axis = 0;
   double best = -1.0;
   for (int k = 0; k < 3; ++k) {
