@@ -6,6 +6,7 @@
 
 #include "sphtroch/arc_predicates.hpp"
 #include "sphtroch/polyline_crossings.hpp"
+#include "sphtroch/root_census.hpp"
 #include "sphtroch/sampling.hpp"
 
 #include <algorithm>
@@ -14,12 +15,17 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 using sphtroch::ArcContact;
 using sphtroch::CandidateSearch;
@@ -175,6 +181,38 @@ TEST_CASE("orientation_sign follows det[a, b, c]", "[arc_predicates]") {
   const double t = std::ldexp(1.0, -60);
   CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, t)) == 1);
   CHECK(sphtroch::orientation_sign(V(1, 0, 0), V(0, 1, 0), V(1, 1, -t)) == -1);
+}
+
+TEST_CASE("orientation_sign: the floating-point filter agrees with CGAL's exact orientation", "[arc_predicates]") {
+  // Random and nearly coplanar triples over many magnitudes (including products that underflow
+  // or overflow, where the filter must step aside); the reference is CGAL::orientation itself.
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::mt19937_64 rng(2024);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 4);
+  const double scales[] = {1.0, 1e-3, 1e3, 1e-110, 1e110};
+  const double tinies[] = {0.0, 1e-18, 1e-16, 1e-14, 1e-8};
+  std::size_t zeros = 0, nonzeros = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const V a = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    const V b = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    V c = scales[pick(rng)] * V(g(rng), g(rng), g(rng));
+    if (trial % 2 == 0) {  // near the plane of a and b (or exactly on it when the sum is exact)
+      const double s = trial % 4 == 0 ? 1.0 : g(rng), t = trial % 4 == 0 ? 1.0 : g(rng);
+      c = s * a + t * b + tinies[pick(rng)] * a.norm() * V(g(rng), g(rng), g(rng));
+    }
+    const int expected = static_cast<int>(
+        CGAL::orientation(K::Point_3(0, 0, 0), K::Point_3(a.x(), a.y(), a.z()), K::Point_3(b.x(), b.y(), b.z()),
+                          K::Point_3(c.x(), c.y(), c.z())));
+    const int got = sphtroch::orientation_sign(a, b, c);
+    if (got != expected) {
+      INFO("a " << a.transpose() << " b " << b.transpose() << " c " << c.transpose());
+      REQUIRE(got == expected);
+    }
+    (expected == 0 ? zeros : nonzeros)++;
+  }
+  CHECK(zeros > 100);  // exact coplanarity occurs (c = a + b with exact sums, zero vectors after underflow)
+  CHECK(nonzeros > 100000);
 }
 
 TEST_CASE("relate_vertices: same direction, antipodal, distinct", "[arc_predicates]") {
@@ -414,6 +452,92 @@ TEST_CASE("samples_on_node: vertices landing on the node (0, 1, 0)", "[polyline_
   CHECK(ex.crossings.empty());
   CHECK(ex.touchings == expected);
 }
+
+TEST_CASE("run box search: the sweep (few runs) and CGAL's segment tree (many runs) agree", "[polyline_crossings]") {
+  // Up to kSweepMaxBoxes run boxes the overlapping run pairs come from a sweep, above from
+  // CGAL::box_self_intersection_d. The same polyline searched both ways, each against brute force.
+  const Polyline vs = trochoid(1.0, 2.0, 13, 5, 3000);
+  const SelfCrossings brute = sphtroch::exact_brute_force_crossings(vs, true);
+  REQUIRE(brute.crossings.size() > 100);
+  sphtroch::CrossingSearchOptions few;  // the defaults: a few hundred runs here
+  sphtroch::CrossingSearchOptions many;  // one edge per run: 3000 boxes
+  many.max_run_edges = 1;
+  const SelfCrossings a = sphtroch::find_self_crossings(vs, true, few);
+  const SelfCrossings b = sphtroch::find_self_crossings(vs, true, many);
+  CHECK(a.boxes <= sphtroch::detail::kSweepMaxBoxes);
+  CHECK(b.boxes > sphtroch::detail::kSweepMaxBoxes);
+  CHECK(a.crossings == brute.crossings);
+  CHECK(b.crossings == brute.crossings);
+  CHECK(a.touchings == brute.touchings);
+  CHECK(b.touchings == brute.touchings);
+}
+
+#ifdef SPHTROCH_EXE
+namespace {
+// All pairs of non-adjacent edges, each classified exactly, with a conservative prefilter: for
+// unit vectors every point p of arc AB has |p - a| <= |b - a| (the chord grows with the angle
+// along the arc, which is below pi), so arcs AB and CD can meet only if
+// |a - c| <= |a - b| + |c - d|; 1e-9 of slack covers the rounding of the unit vectors.
+std::size_t brute_force_crossing_count(const Polyline& vs, std::size_t* touchings) {
+  const std::size_t n = vs.size();
+  std::vector<double> len(n);
+  for (std::size_t e = 0; e < n; ++e) len[e] = (vs[(e + 1) % n] - vs[e]).norm();
+  std::size_t crossings = 0;
+  *touchings = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+      const double reach = len[i] + len[j] + 1e-9;
+      if ((vs[i] - vs[j]).squaredNorm() > reach * reach) continue;
+      const ArcContact k = sphtroch::classify_arcs(vs[i], vs[(i + 1) % n], vs[j], vs[(j + 1) % n]);
+      crossings += k == ArcContact::crossing;
+      *touchings += k == ArcContact::touching || k == ArcContact::overlap;
+    }
+  return crossings;
+}
+}  // namespace
+
+TEST_CASE("crossings CLI on a 1e6-vertex trochoid: the count of the 2e4-vertex brute force and of the root census",
+          "[polyline_crossings][cli]") {
+  // n = 7/3, a2 = 1, a3 = 2 (63 nodes, every one a transversal crossing of two branches).
+  const sphtroch::GearTrain train(1.0, 2.0, sphtroch::Ratio(7, 3));
+  // (ii) independent of any polyline: the one-dimensional root census of the curve.
+  const sphtroch::RootCensus roots = sphtroch::root_census(train);
+  std::size_t simple_crossings = 0;
+  for (const sphtroch::Node& node : roots.nodes)
+    simple_crossings += node.branches == 2 && node.kind == sphtroch::NodeKind::crossing;
+  REQUIRE(simple_crossings == roots.nodes.size());  // so each node is one crossing pair of a fine polyline
+  REQUIRE(roots.nodes.size() > 50);
+  // (i) all-pairs exact classification on a 2e4-vertex sample of the same curve.
+  std::size_t brute_touchings = 0;
+  const std::size_t brute = brute_force_crossing_count(trochoid(1.0, 2.0, 7, 3, 20000), &brute_touchings);
+  CHECK(brute_touchings == 0);
+  CHECK(brute == roots.nodes.size());
+  // The CLI, end to end: trace 1e6 samples to CSV (t dropped), then `crossings --json`.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("sphtroch-crossings-1e6-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path csv = dir / "trochoid.csv", json = dir / "out.json";
+  const std::string exe = std::string("'") + SPHTROCH_EXE + "'";
+  // trace writes t,x,y,z; crossings reads x,y,z (the header line x,y,z is allowed).
+  REQUIRE(std::system((exe + " trace --a2 1 --a3 2 --n 7/3 --samples 1000000 | cut -d, -f2- > '" + csv.string() + "'")
+                          .c_str()) == 0);
+  REQUIRE(std::system((exe + " crossings --json --input '" + csv.string() + "' > '" + json.string() + "'").c_str()) == 0);
+  std::ifstream in(json);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  fs::remove_all(dir);
+  INFO(text);
+  const auto field = [&text](const std::string& key) -> long {
+    const std::size_t at = text.find("\"" + key + "\":");
+    REQUIRE(at != std::string::npos);
+    return std::strtol(text.c_str() + at + key.size() + 3, nullptr, 10);
+  };
+  CHECK(field("vertices") == 1000000);
+  CHECK(field("crossings") == static_cast<long>(brute));
+  CHECK(field("crossings") == static_cast<long>(roots.nodes.size()));
+  CHECK(field("touchings") == 0);
+}
+#endif
 
 TEST_CASE("two_runs_closed_loop: two runs sharing both ends", "[polyline_crossings][degenerate]") {
   // Up along one monotone path, back down along another that crosses it near t = 1/2: with

@@ -82,8 +82,9 @@
 //   k is a bijection of the plane of AB, because e_k . (A x B) != 0).
 //
 // Cost: the common answer `none` needs 2 predicates (4 at most); a crossing needs 4; degenerate
-// configurations need at most 24 (3D and 2D orientations together; each is CGAL's filtered
-// predicate, exact arithmetic only when the floating-point filter cannot decide).
+// configurations need at most 24 (3D and 2D orientations together; exact arithmetic only when a
+// floating-point filter cannot decide: for the 3D signs our own semi-static filter, whose error
+// bound is derived at kDetFilterError, then CGAL's filtered predicate; for the 2D signs CGAL's).
 //
 // Implementation details follow.
 #pragma once
@@ -125,8 +126,34 @@ inline void count_predicates(std::size_t* counter, std::size_t n) {
   if (counter != nullptr) *counter += n;
 }
 
-/// Exact sign of det[a, b, c].
+/// Error bound of the double evaluation of det[a, b, c] in det_sign, as a multiple of the
+/// permanent P = |a0| (|b1 c2| + |b2 c1|) + |a1| (|b2 c0| + |b0 c2|) + |a2| (|b0 c1| + |b1 c0|).
+/// Derivation (u = 2^-53, each operation rounds with relative error <= u): a 2x2 minor
+/// m0 = b1 c2 - b2 c1 is computed with error <= (2u + u^2)(|b1 c2| + |b2 c1|); the product a0 m0
+/// adds u |a0 m0|, so each term errs by <= (3u + 3u^2 + u^3) |a0| (|b1 c2| + |b2 c1|); the two
+/// additions of the three terms add <= 2u (1 + u)(1 + 3u) P. Total <= 5u P + O(u^2) P. We use
+/// 8u P = 4 DBL_EPSILON P, which also absorbs the rounding of P and of the bound itself.
+constexpr double kDetFilterError = 4 * DBL_EPSILON;
+/// Below this permanent the filter is not used: products may underflow (their absolute error,
+/// at most a few 2^-1074, is far below 3u P only when P is not tiny).
+constexpr double kDetFilterMinPermanent = 1e-250;
+
+/// Exact sign of det[a, b, c]: a semi-static floating-point filter (the sign of the double
+/// determinant when it exceeds its error bound, see kDetFilterError), else CGAL's exact
+/// orientation predicate. Inputs with overflowing products give inf/NaN and fall through to CGAL.
 inline int det_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double p0 = b.y() * c.z(), q0 = b.z() * c.y();
+  const double p1 = b.z() * c.x(), q1 = b.x() * c.z();
+  const double p2 = b.x() * c.y(), q2 = b.y() * c.x();
+  const double det = a.x() * (p0 - q0) + a.y() * (p1 - q1) + a.z() * (p2 - q2);
+  const double perm = std::fabs(a.x()) * (std::fabs(p0) + std::fabs(q0)) +
+                      std::fabs(a.y()) * (std::fabs(p1) + std::fabs(q1)) +
+                      std::fabs(a.z()) * (std::fabs(p2) + std::fabs(q2));
+  if (perm >= kDetFilterMinPermanent) {  // false for NaN
+    const double bound = kDetFilterError * perm;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+  }
   static const EpickKernel::Point_3 origin(0, 0, 0);
   return static_cast<int>(CGAL::orientation(origin, epick_point(a), epick_point(b), epick_point(c)));
 }
