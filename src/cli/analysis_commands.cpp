@@ -114,7 +114,8 @@ nlohmann::json classification_json(const TrainOptions& text, const Classificatio
                     {"notes", c.agreement.notes}};
   j["tolerances"] = {{"boundary", c.snapped.tolerance},      {"cusp_resolution", kCuspResolution},
                      {"tangency", c.tangency_tolerance},     {"node_residual", kNodeResidual},
-                     {"node_merge_distance", kNodeMergeDistance}, {"agreement_distance", kAgreementDistance}};
+                     {"node_merge_distance", kNodeMergeDistance}, {"agreement_distance", kAgreementDistance},
+                     {"branch_grouping", kBranchParamTolerance}, {"lens_scan_angle", kLensScanAngle}};
   j["work"] = {{"points_evaluated", c.work.points_evaluated},
                {"predicates", c.work.predicates},
                {"newton_steps", c.work.newton_steps},
@@ -178,9 +179,11 @@ void write_classification_text(std::ostream& out, const TrainOptions& text, cons
       << (c.root.south_pole_node ? " + south pole" : "") << "\n";
   out << "  agreement: " << (c.agreement.ok() ? "yes" : "NO") << "\n";
   for (const auto& note : c.agreement.notes) out << "    DISAGREEMENT: " << note << "\n";
-  out << "\ntolerances: boundary " << number(c.snapped.tolerance) << " rad, cusp resolution " << number(kCuspResolution)
-      << " rad, tangency " << number(c.tangency_tolerance) << ", node residual " << number(kNodeResidual)
-      << ", node merge " << number(kNodeMergeDistance) << "\n";
+  out << "\ntolerances: boundary " << shortest_number(c.snapped.tolerance) << " rad, cusp resolution " << shortest_number(kCuspResolution)
+      << " rad, tangency " << shortest_number(c.tangency_tolerance) << ", node residual " << shortest_number(kNodeResidual)
+      << ", node merge " << shortest_number(kNodeMergeDistance) << ", agreement " << shortest_number(kAgreementDistance)
+      << ", branch grouping " << shortest_number(kBranchParamTolerance) << " rad, lens scan below " << shortest_number(kLensScanAngle)
+      << " rad\n";
   out << "work: " << c.work.points_evaluated << " points evaluated, " << c.work.predicates << " exact predicates, "
       << c.work.newton_steps << " Newton steps, " << c.work.root_evaluations << " root-function evaluations, "
       << seconds_text(c.work.seconds) << " s\n";

@@ -38,6 +38,15 @@ std::string number(double v) {
   return buf;
 }
 
+std::string shortest_number(double v) {
+  char buf[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
 std::string seconds_text(double seconds) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.3g", seconds);

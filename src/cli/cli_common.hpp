@@ -72,6 +72,10 @@ std::string number(double v);
 /// JSON reports keep every digit).
 std::string seconds_text(double seconds);
 
+/// The shortest %g form that reads back as the same double (1e-11, not 9.9999999999999994e-12):
+/// for named constants in text reports.
+std::string shortest_number(double v);
+
 /// The `sphtroch trace` CSV: t,x,y,z (t,x,y,z,vx,vy,vz when `velocities` is not empty; then it
 /// holds dP/dtheta2 at every trajectory.t[i]).
 void write_trajectory_csv(std::ostream& out, const Trajectory<double>& trajectory,
