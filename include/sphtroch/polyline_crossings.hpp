@@ -352,15 +352,18 @@ struct EdgeInterval {
   std::uint32_t edge;
 };
 
+/// Edge e of run r as an interval along axis k, padded with the run's pad.
+inline EdgeInterval edge_interval(const PreparedPolyline& p, const Run& r, std::uint32_t e, int k) {
+  const double a = p.u(e)[k];
+  const double b = p.u(p.head(e))[k];
+  return {std::min(a, b) - r.pad, std::max(a, b) + r.pad, e};
+}
+
 /// The run's edge intervals along axis k, sorted by lower end (by monotonicity: index order or
 /// reversed; rounding is monotone, so the computed lower ends are sorted too).
 inline void sorted_intervals(const PreparedPolyline& p, const Run& r, int k, std::vector<EdgeInterval>& out) {
   out.clear();
-  const auto push = [&](std::uint32_t e) {
-    const double a = p.u(e)[k];
-    const double b = p.u(p.head(e))[k];
-    out.push_back({std::min(a, b) - r.pad, std::max(a, b) + r.pad, e});
-  };
+  const auto push = [&](std::uint32_t e) { out.push_back(edge_interval(p, r, e, k)); };
   if (r.dir[k] >= 0) {
     for (std::uint32_t e = r.first; e < r.first + r.count; ++e) push(e);
   } else {
@@ -444,11 +447,7 @@ inline void edges_meeting_box(const PreparedPolyline& p, const Run& r, const Run
 inline void sorted_intervals_of(const PreparedPolyline& p, const Run& r, const std::vector<std::uint32_t>& edges, int k,
                                 std::vector<EdgeInterval>& out) {
   out.clear();
-  const auto push = [&](std::uint32_t e) {
-    const double a = p.u(e)[k];
-    const double b = p.u(p.head(e))[k];
-    out.push_back({std::min(a, b) - r.pad, std::max(a, b) + r.pad, e});
-  };
+  const auto push = [&](std::uint32_t e) { out.push_back(edge_interval(p, r, e, k)); };
   if (r.dir[k] >= 0) {
     for (std::uint32_t e : edges) push(e);
   } else {
