@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # sphtroch developer set-up, for a fresh Debian 12 machine (as root, or with sudo).
 #
-#   bash scripts/dev.sh run    # install missing packages, build (Release, build/), trace report Fig. 3
-#   bash scripts/dev.sh test   # the same set-up, then the whole test suite through ctest
+#   bash scripts/dev.sh run    # install what the tool needs, build only the tool (Release, build/), trace report Fig. 3
+#   bash scripts/dev.sh test   # also what the tests need, build everything, run the whole suite through ctest
 #
 # Both are re-runnable and incremental: only missing Debian packages are installed (apt-get
 # update runs only when something is missing), the build directory is reused and rebuilt
@@ -22,8 +22,13 @@ cd "$root"
 build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
 
+# What the library and the tool need; the tests add python3-numpy (numpy.load/numpy.save round
+# trips of the .npy files) and libbenchmark-dev (bench/, built by bench/run).
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
-          libcli11-dev nlohmann-json3-dev libbenchmark-dev)
+          libcli11-dev nlohmann-json3-dev)
+if [[ $mode == test ]]; then
+  packages+=(libbenchmark-dev python3-numpy)
+fi
 
 install_missing_packages() {
   local missing=() pkg
@@ -50,12 +55,21 @@ install_missing_packages() {
 }
 
 configure_and_build() {
-  # Configuring an existing build directory again is cheap and picks up new files.
+  # Configuring an existing build directory again is cheap and picks up new files. `run` builds
+  # only the tool (a newcomer's first command stays short); `test` builds everything.
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
-  cmake --build "$build_dir" -j "$jobs"
+  if [[ $mode == run ]]; then
+    cmake --build "$build_dir" -j "$jobs" --target sphtroch_cli
+  else
+    cmake --build "$build_dir" -j "$jobs"
+  fi
 }
 
 install_missing_packages
+if [[ $mode == test ]]; then
+  # The cluster test (ctest label `cluster`) runs a real one-node Slurm: slurm-wlm and munge.
+  bash tests/cluster/install_slurm.sh
+fi
 configure_and_build
 
 case $mode in

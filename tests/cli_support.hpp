@@ -81,6 +81,34 @@ inline std::size_t count_lines(const std::string& s) {
   return n;
 }
 
+/// The shortest "%.*g" form (1 to 17 digits) that reads back as v: how the tool prints numbers,
+/// computed here with printf/strtod, independently of the tool's std::to_chars.
+inline std::string shortest_g(double v) {
+  char buf[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+/// A field printed in the shortest round-trip form: it parses whole, and with one significant
+/// digit fewer the value would be lost. (The exponent spelling may differ from printf's.)
+inline bool is_shortest_round_trip(const std::string& field) {
+  char* end = nullptr;
+  const double v = std::strtod(field.c_str(), &end);
+  if (field.empty() || end != field.c_str() + field.size()) return false;
+  std::string digits;
+  for (char c : field.substr(0, field.find('e')))
+    if (c >= '0' && c <= '9') digits += c;
+  digits.erase(0, digits.find_first_not_of('0'));
+  if (digits.find_last_not_of('0') != std::string::npos) digits.erase(digits.find_last_not_of('0') + 1);
+  if (digits.size() < 2) return true;
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", static_cast<int>(digits.size() - 1), v);
+  return std::strtod(buf, nullptr) != v;
+}
+
 inline bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 }  // namespace sphtroch::test

@@ -33,16 +33,6 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return parts;
 }
 
-/// A number printed with 17 significant digits round-trips and re-prints identically.
-bool is_17_digits(const std::string& field) {
-  char* end = nullptr;
-  const double v = std::strtod(field.c_str(), &end);
-  if (end != field.c_str() + field.size()) return false;
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return field == buf;
-}
-
 /// Eq. 5, expanded, theta_p = 0.
 void eq5(double a2, double a3, double n, double t, double out[3]) {
   const double c2 = std::cos(t), s2 = std::sin(t), cn = std::cos(n * t), sn = std::sin(n * t);
@@ -65,7 +55,7 @@ std::vector<std::vector<double>> parse_csv(const std::string& text, const std::s
     std::vector<double> row;
     for (const auto& f : fields) {
       INFO("field '" << f << "' in line " << i);
-      CHECK(is_17_digits(f));
+      CHECK(is_shortest_round_trip(f));
       row.push_back(std::strtod(f.c_str(), nullptr));
     }
     rows.push_back(row);
@@ -76,7 +66,7 @@ std::vector<std::vector<double>> parse_csv(const std::string& text, const std::s
 const std::string kFig3 = "trace --a2 pi/2 --a3 pi/2 --n 1";
 }  // namespace
 
-TEST_CASE("cli: trace of Fig. 3 prints header t,x,y,z and 8 rows matching Eq. 5 with 17 digits", "[cli][trace][eq5]") {
+TEST_CASE("cli: trace of Fig. 3 prints header t,x,y,z and 8 rows matching Eq. 5, shortest round-trip numbers", "[cli][trace][eq5]") {
   TempDir dir;
   const Result r = run(kFig3 + " --samples 8", dir);
   CHECK(r.status == 0);
@@ -715,7 +705,7 @@ std::vector<BadScene> bad_scenes() {
       {R"({"trains": [{)" + ok + R"(, "samples": "720", "effects": {"trace": "a.csv"}}]})", "trains[0].samples = \"720\"",
        "integer"},
       {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "a.csv"}}, {"name": "b", "a2": "pi/2", "a3": "pi/2", "n": "1", "effects": {"nodes": "a.csv"}}]})",
-       "trains[1].effects.nodes = \"a.csv\": output path already used by trains[0].effects.trace", ""},
+       "trains[1].effects.nodes = \"a.csv\": output path reaches the same file as trains[0].effects.trace", ""},
       {R"({"trains": [{)" + ok + R"(, "effects": {"trace": "no_such_dir/a.csv"}}]})",
        "trains[0].effects.trace = \"no_such_dir/a.csv\"", "writable directory"},
       {R"({"trains": [{)" + ok + R"(, "effects": {}}]})", "trains[0].effects = {}", "trace"},

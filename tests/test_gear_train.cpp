@@ -86,11 +86,20 @@ TEST_CASE("GearTrain rejects a non-finite phase with field phase", "[gear_train]
   CHECK_NOTHROW(GearTrain(1.0, 1.0, Ratio(1), -100.0));
 }
 
-TEST_CASE("GearTrain accepts angles just inside (0, pi)", "[gear_train]") {
+TEST_CASE("GearTrain accepts a3 just inside (0, pi) and a2 down to 1e-6 from 0 and pi", "[gear_train]") {
   const double lo = std::nextafter(0.0, 1.0);
   const double hi = std::nextafter(kPi, 0.0);
-  CHECK_NOTHROW(GearTrain(lo, hi, Ratio(1)));
-  CHECK_NOTHROW(GearTrain(hi, lo, Ratio(-3, 2)));
+  CHECK_NOTHROW(GearTrain(1.0, lo, Ratio(1)));
+  CHECK_NOTHROW(GearTrain(1.0, hi, Ratio(-3, 2)));
+  CHECK_NOTHROW(GearTrain(1e-6, 1.0, Ratio(2)));
+  CHECK_NOTHROW(GearTrain(kPi - 1e-6, 1.0, Ratio(2)));
+  // Closer to 0 or pi the carrier twist is refused (kMinCarrierTwist), never a NaN later.
+  for (double a2 : {lo, 1e-300, 1e-10, 9e-7, hi, kPi - 9e-7}) {
+    INFO(a2);
+    const InvalidInput e = sphtroch::test::expect_invalid([&] { GearTrain(a2, 1.0, Ratio(2)); });
+    CHECK(e.field() == "a2");
+    CHECK(e.valid_range() == "[1e-6, pi - 1e-6] radians");
+  }
 }
 
 TEST_CASE("planet and sun cone angles satisfy n = sin a_s / sin a_p and a2 = a_s + a_p (Eq. 2)",

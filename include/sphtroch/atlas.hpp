@@ -211,6 +211,10 @@ inline void AtlasSpec::validate() const {
   check(a3, "a3");
   if (!(boundary_tolerance >= 0.0))
     throw InvalidInput("boundary_tolerance", detail::to_text(boundary_tolerance), "negative", ">= 0 radians");
+  // The carrier-twist bounds up front, for every row: a row whose pitch cone is ill-defined would
+  // refuse the cells near it (GearTrain), so the whole range is refused instead.
+  for (std::size_t i = 0; i < grid; ++i) GearTrain::on_cone(a2_at(i), A3Reference::pitch_cone, 0.0, ratio);
+  check_census_cost(ratio);  // every cell runs a root census
 }
 
 inline AtlasRows shard_rows(std::size_t grid, const AtlasShard& shard) {

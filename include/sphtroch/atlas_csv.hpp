@@ -13,10 +13,10 @@
 //   i,j,a2,a3,nodes,crossings,tangencies,cusps,analytic_nodes,analytic_cusps,agree
 //   0,0,0.012271846303085129,0.012271846303085129,0,0,0,0,0,0,1
 //  * The comment line names everything the rows depend on: the ratio p/q, the grid, the ranges
-//    (%.17g, so they round-trip) and the reading (default | literal). A slice appends
+//    (shortest round-trip form, number_text.hpp) and the reading (default | literal). A slice appends
 //    " shard=I/K rows=B:E" (rows B .. E-1). The unsharded file has no shard tag.
 //  * Rows are in the fixed order i (a2 index) major, j (a3 index) minor; a2, a3 printed with
-//    %.17g; analytic_nodes and agree are "NA" when the report has no node criterion (n != 1, 2);
+//    the shortest round-trip form; analytic_nodes and agree are "NA" when the report has no node criterion (n != 1, 2);
 //    agree is 1 or 0 otherwise.
 //  * read_atlas_csv re-prints every row it parsed and requires the same text, so a merged file
 //    regenerated from parsed rows is byte-identical to the slices' rows; it also requires

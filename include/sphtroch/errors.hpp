@@ -12,6 +12,7 @@
 //    in release builds (they guard cheap conditions only).
 #pragma once
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -43,11 +44,10 @@ class InvalidInput : public std::invalid_argument {
 };
 
 namespace detail {
-/// A double as text that round-trips (17 significant digits, "nan", "inf").
+/// A double as text that round-trips: the shortest such form ("0.1", "1e-300", "nan", "inf").
 inline std::string to_text(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
 [[noreturn]] inline void assertion_failed(const char* condition, const char* message, const char* file,

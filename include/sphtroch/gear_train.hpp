@@ -21,6 +21,7 @@
 #include "sphtroch/ratio.hpp"
 #include "sphtroch/types.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -38,6 +39,29 @@ inline const char* to_string(A3Reference r) {
     case A3Reference::mirror_pitch_cone: return "pi-ap";
   }
   return "?";
+}
+
+/// The carrier twist must stay this far from 0 and pi (radians; checked with 1% slack so that
+/// inputs written 1e-6 or pi-1e-6 pass after rounding). Closer, the curve is nearly a multiply
+/// covered circle whose nodes lie within the censuses' merge distances (1e-9) of each other:
+/// both censuses lose nodes below ~1e-9 (measured), so the bound keeps a factor 1000.
+constexpr double kMinCarrierTwist = 1e-6;
+/// |omega| = |Z1 + n Z2| = sqrt(1 + n^2 + 2 n cos a2), the planet's angular speed per unit carrier
+/// speed. Below this (n = -1 with a2 near 0, n = 1 with a2 near pi) the pitch cone a_p is
+/// ill-conditioned (da_p/da2 ~ 1/|omega|^2): a tracer within kPitchConeGuard of it, or given
+/// relative to it, is refused — there the censuses disagreed from |omega| ~ 1e-5 (measured; the
+/// bound keeps a factor 100). Tracers away from the cones stay fine (tested down to 1e-6).
+constexpr double kMinPlanetSpeed = 1e-3;
+constexpr double kPitchConeGuard = 0.01;
+
+/// The phase reduced to [-pi, pi]: unchanged when already there, else atan2(sin p, cos p) — the
+/// C library's sin and cos reduce any double argument exactly (Payne-Hanek), so the result is
+/// within a few ulp of the true p mod 2 pi even for p = 1e300. Adding 2 pi k to the phase turns
+/// theta3 by 2 pi k and leaves every point of the curve where it was (Eq. 3, 4).
+inline double reduce_phase(double phase) {
+  const double pi = Constants<double>::pi();
+  if (phase >= -pi && phase <= pi) return phase;
+  return std::atan2(std::sin(phase), std::cos(phase));
 }
 
 /// sin and cos of both twist angles in one Scalar type; the only way the curve sees a2 and a3.
@@ -65,7 +89,10 @@ class GearTrain {
   double a3_offset() const noexcept { return offset_; }
   const Ratio& ratio() const noexcept { return ratio_; }
   double n() const noexcept { return ratio_.value(); }
+  /// The phase in [-pi, pi] (reduce_phase of the given one); what every computation uses.
   double phase() const noexcept { return phase_; }
+  /// The phase as given.
+  double phase_given() const noexcept { return phase_given_; }
 
   /// Planet pitch-cone angle a_p = atan2(sin a2, cos a2 + n), in (0, pi) (report Sec. 5).
   double planet_cone() const { return planet_cone_of(a2_, ratio_); }
@@ -143,12 +170,25 @@ class GearTrain {
 
  private:
   GearTrain(double a2, A3Reference reference, double offset, Ratio n, double phase)
-      : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(phase) {
+      : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(0.0), phase_given_(phase) {
     const double pi = Constants<double>::pi();
     if (!(a2 > 0.0 && a2 < pi)) throw InvalidInput("a2", detail::to_text(a2), "outside the valid range", "(0, pi) radians");
+    if (!(a2 >= 0.99 * kMinCarrierTwist && pi - a2 >= 0.99 * kMinCarrierTwist))
+      throw InvalidInput("a2", detail::to_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
+                         "[1e-6, pi - 1e-6] radians");
+    const double nv = n.value(), speed = std::sqrt(std::max(0.0, 1.0 + nv * nv + 2.0 * nv * std::cos(a2)));
     if (!std::isfinite(offset)) throw InvalidInput("a3", detail::to_text(offset), "not a finite number", "(0, pi) radians");
     if (!std::isfinite(phase)) throw InvalidInput("phase", detail::to_text(phase), "not a finite number", "any finite angle in radians");
+    phase_ = reduce_phase(phase);
     a3_ = reference_angle() + offset;
+    const double ap = planet_cone_of(a2, n);
+    const bool near_cone = reference == A3Reference::pitch_cone || reference == A3Reference::mirror_pitch_cone ||
+                           std::abs(a3_ - ap) < kPitchConeGuard || std::abs(a3_ - (pi - ap)) < kPitchConeGuard;
+    if (!(speed >= kMinPlanetSpeed) && near_cone)
+      throw InvalidInput("a2", detail::to_text(a2),
+                         "with n = " + n.str() + " the planet barely turns in space (|Z1 + n Z2| = " + detail::to_text(speed) +
+                             ") and a3 is on or near its ill-defined pitch cone",
+                         "a2 with sqrt(1 + n^2 + 2 n cos a2) >= 1e-3, or a3 at least 0.01 rad from the pitch cones");
     if (!(a3_ > 0.0 && a3_ < pi)) {
       const std::string shown = reference == A3Reference::given
                                     ? detail::to_text(a3_)
@@ -175,7 +215,8 @@ class GearTrain {
   A3Reference reference_;
   double offset_;
   Ratio ratio_;
-  double phase_;
+  double phase_;        // reduced to [-pi, pi]
+  double phase_given_;  // as given
   bool a2_right_angle_ = false;
 };
 

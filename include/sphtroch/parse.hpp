@@ -64,9 +64,17 @@ inline std::optional<double> strict_double(std::string_view s) {
   return negative ? -v : v;
 }
 
+/// A whole string as an integer of at most 18 digits ("+-3", "--3" and overflow refused), so
+/// that |v| < 1e18 and negating it or taking llabs is always defined.
 inline std::optional<std::int64_t> strict_int(std::string_view s) {
   if (s.empty()) return std::nullopt;
-  if (s.front() == '+') s.remove_prefix(1);
+  if (s.front() == '+') {
+    s.remove_prefix(1);
+    if (s.empty() || !std::isdigit(static_cast<unsigned char>(s.front()))) return std::nullopt;
+  }
+  const std::string_view digits = !s.empty() && s.front() == '-' ? s.substr(1) : s;
+  if (digits.empty() || digits.size() > 18 || !std::isdigit(static_cast<unsigned char>(digits.front())))
+    return std::nullopt;
   std::int64_t v = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;

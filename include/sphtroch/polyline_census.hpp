@@ -25,6 +25,7 @@
 //  5. Assembly into nodes (node_assembly.hpp).
 #pragma once
 
+#include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
@@ -168,6 +169,7 @@ inline long double branch_gap(const TracerCurve<long double>& curve, long double
 
 /// The polyline node census of one gear train (see header). The train is analysed as given.
 inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCensusSettings& settings = {}) {
+  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
   using LD = long double;
   PolylineCensus out;
   const TracerCurve<double> curve(train);

@@ -49,6 +49,7 @@
 // undecidable and reported as such (a near-cusp loop below resolution, or a tangency).
 #pragma once
 
+#include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
@@ -252,6 +253,7 @@ inline std::int64_t mod_inverse(std::int64_t a, std::int64_t m) {
 /// The train is analysed as given: snap it to its boundaries first (boundary_snap.hpp) to get
 /// the report's boundary cases; pass settings.tangency_tolerance = 0 for the literal curve.
 inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& settings = {}) {
+  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
   using Real = long double;
   const detail::HalfTurnFunction f(train);
   const TracerCurve<double> curve(train);

@@ -50,47 +50,92 @@ inline void check_sample_count(std::size_t n, const char* field = "samples") {
                        "integer " + std::to_string(kMinSamples) + " .. " + std::to_string(kMaxSamples));
 }
 
+/// The largest default sample count; above it the caller must choose N (see trace_sample_count).
+constexpr std::size_t kMaxDefaultSamples = 1000000;
+
 /// Default sample count of a trajectory (`sphtroch trace`, the analysis object): 360 per unit
 /// of (q + |p|) for a closed curve (about 0.5 degree of planet or carrier motion per step),
-/// 360*(1 + |n|)*K + 1 for an open one over K carrier turns; clamped to [kMinSamples, 1e6].
+/// 360*(1 + |n|)*K + 1 for an open one over K carrier turns; at least kMinSamples. Throws
+/// InvalidInput("samples", ...) when that exceeds kMaxDefaultSamples (e.g. n = 999999/1000000):
+/// a default that silently undersamples or writes gigabytes is worse than asking for --samples.
 inline std::size_t trace_sample_count(const GearTrain& train, std::optional<double> turns = std::nullopt) {
   const auto& r = train.ratio();
   const double n = turns ? 360.0 * (1.0 + std::abs(r.value())) * *turns + 1.0
                          : 360.0 * static_cast<double>(r.q() + r.abs_p());
-  return static_cast<std::size_t>(std::clamp(std::ceil(n), static_cast<double>(kMinSamples), 1.0e6));
+  if (n > static_cast<double>(kMaxDefaultSamples)) {
+    if (turns)
+      throw InvalidInput("turns", detail::to_text(*turns),
+                         "needs 360 (1 + |n|) K + 1 = " + detail::to_text(std::ceil(n)) + " samples, more than 1000000",
+                         "K <= " + detail::to_text(std::floor((kMaxDefaultSamples - 1) / (360.0 * (1.0 + std::abs(r.value())))) ) +
+                             " carrier turns for this n");
+    throw InvalidInput("samples", "(default) " + detail::to_text(std::ceil(n)),
+                       "the default 360 (q + |p|) exceeds 1000000", "give the number of samples explicitly (3 .. 10000000)");
+  }
+  return static_cast<std::size_t>(std::max(std::ceil(n), static_cast<double>(kMinSamples)));
 }
 
-namespace detail {
-/// t_i = span * i / divisor, the one formula of every uniform sampling (so that a stage that needs
-/// the parameters only, e.g. the screw axis, gets bit-identical t_i without evaluating points).
+/// A uniform sampling: t_i = span * i / divisor for i < count (closed: divisor = count, the last
+/// point joins the first; open: divisor = count - 1, both ends included). The one formula of
+/// every uniform sampling, so that a stage that needs only the parameters (the screw axis, a
+/// streamed trace) gets bit-identical t_i.
 template <typename Scalar>
-Scalar uniform_parameter(const Scalar& span, std::size_t i, std::size_t divisor) {
-  return span * Scalar(static_cast<double>(i)) / Scalar(static_cast<double>(divisor));
+struct UniformSampling {
+  Scalar span;
+  std::size_t count = 0;
+  std::size_t divisor = 1;
+  bool closed = true;
+  Scalar parameter(std::size_t i) const {
+    return span * Scalar(static_cast<double>(i)) / Scalar(static_cast<double>(divisor));
+  }
+};
+
+/// N samples over one closing period [0, 2*pi*q). Throws InvalidInput unless kMinSamples <= n <= kMaxSamples.
+template <typename Scalar>
+UniformSampling<Scalar> period_sampling(const TracerCurve<Scalar>& curve, std::size_t n) {
+  check_sample_count(n);
+  return UniformSampling<Scalar>{curve.period(), n, n, true};
 }
 
+/// N samples over K carrier turns [0, 2*pi*K], both ends included (open curve). Throws
+/// InvalidInput unless 0 < turns <= kMaxTurns and kMinSamples <= n <= kMaxSamples.
 template <typename Scalar>
-Trajectory<Scalar> sample_uniform(const TracerCurve<Scalar>& curve, const Scalar& span, std::size_t n,
-                                  std::size_t divisor, bool closed, bool with_velocity) {
+UniformSampling<Scalar> turns_sampling(const TracerCurve<Scalar>& curve, double turns, std::size_t n) {
+  (void)curve;
+  if (!(turns > 0.0 && turns <= kMaxTurns))
+    throw InvalidInput("turns", detail::to_text(turns), "outside the valid range", "(0, 1e6] carrier turns");
+  check_sample_count(n);
+  return UniformSampling<Scalar>{Constants<Scalar>::two_pi() * Scalar(turns), n, n - 1, false};
+}
+
+/// The trajectory of a sampling (points, and velocities when asked).
+template <typename Scalar>
+Trajectory<Scalar> sample(const TracerCurve<Scalar>& curve, const UniformSampling<Scalar>& s, bool with_velocity = false) {
   Trajectory<Scalar> tr;
-  tr.closed = closed;
-  tr.t.reserve(n);
-  tr.points.reserve(n);
-  if (with_velocity) tr.velocities.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Scalar t = uniform_parameter(span, i, divisor);
+  tr.closed = s.closed;
+  tr.t.reserve(s.count);
+  tr.points.reserve(s.count);
+  if (with_velocity) tr.velocities.reserve(s.count);
+  for (std::size_t i = 0; i < s.count; ++i) {
+    const Scalar t = s.parameter(i);
     tr.t.push_back(t);
     tr.points.push_back(curve.point(t));
     if (with_velocity) tr.velocities.push_back(curve.velocity(t));
   }
   return tr;
 }
+
+namespace detail {
+/// t_i = span * i / divisor (UniformSampling::parameter).
+template <typename Scalar>
+Scalar uniform_parameter(const Scalar& span, std::size_t i, std::size_t divisor) {
+  return UniformSampling<Scalar>{span, 0, divisor, true}.parameter(i);
+}
 }  // namespace detail
 
 /// N uniform samples over one closing period [0, 2*pi*q). REQUIRES kMinSamples <= n <= kMaxSamples.
 template <typename Scalar>
 Trajectory<Scalar> sample_period(const TracerCurve<Scalar>& curve, std::size_t n, bool with_velocity = false) {
-  check_sample_count(n);
-  return detail::sample_uniform(curve, curve.period(), n, n, true, with_velocity);
+  return sample(curve, period_sampling(curve, n), with_velocity);
 }
 
 /// N uniform samples over K carrier turns [0, 2*pi*K], both ends included (open curve).
@@ -98,10 +143,7 @@ Trajectory<Scalar> sample_period(const TracerCurve<Scalar>& curve, std::size_t n
 template <typename Scalar>
 Trajectory<Scalar> sample_turns(const TracerCurve<Scalar>& curve, double turns, std::size_t n,
                                 bool with_velocity = false) {
-  if (!(turns > 0.0 && turns <= kMaxTurns))
-    throw InvalidInput("turns", detail::to_text(turns), "outside the valid range", "(0, 1e6] carrier turns");
-  check_sample_count(n);
-  return detail::sample_uniform(curve, Constants<Scalar>::two_pi() * Scalar(turns), n, n - 1, false, with_velocity);
+  return sample(curve, turns_sampling(curve, turns, n), with_velocity);
 }
 
 }  // namespace sphtroch

@@ -6,11 +6,13 @@
 
 #include "sphtroch/analysis.hpp"
 #include "sphtroch/parse.hpp"
+#include "sphtroch/polyline_input.hpp"
 #include "sphtroch/sampling.hpp"
 #include "sphtroch/svg_plot.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <chrono>
 #include <fstream>
 
@@ -44,7 +46,7 @@ nlohmann::json classification_json(const TrainOptions& text, const Classificatio
   const GearTrain& tr = c.snapped.train;
   json j;
   j["inputs"] = {{"a2", in.a2()}, {"a3", in.a3()}, {"a2_text", text.a2}, {"a3_text", text.a3},
-                 {"n", in.ratio().str()}, {"n_value", in.n()}, {"phase", in.phase()}, {"literal", c.literal}};
+                 {"n", in.ratio().str()}, {"n_value", in.n()}, {"phase", in.phase_given()}, {"phase_reduced", in.phase()}, {"literal", c.literal}};
   j["cone_angles"] = {{"a_p", tr.planet_cone()}, {"a_s", tr.sun_cone()}};
   j["period"] = tr.period();
   j["class"] = c.curve_class;
@@ -131,7 +133,9 @@ void write_classification_text(std::ostream& out, const TrainOptions& text, cons
   out << "inputs\n";
   out << "  a2 = " << text.a2 << " = " << number(in.a2()) << " rad (" << number(degrees(in.a2())) << " deg)\n";
   out << "  a3 = " << text.a3 << " = " << number(in.a3()) << " rad (" << number(degrees(in.a3())) << " deg)\n";
-  out << "  n = " << in.ratio().str() << ", phase = " << number(in.phase()) << " rad\n";
+  out << "  n = " << in.ratio().str() << ", phase = " << number(in.phase_given()) << " rad";
+  if (in.phase() != in.phase_given()) out << " (reduced to " << number(in.phase()) << ")";
+  out << "\n";
   out << "  reading: " << (c.literal ? "literal (the given doubles)" : "default (boundaries within tolerance are snapped)") << "\n";
   out << "cone angles\n  a_p = " << number(tr.planet_cone()) << " rad, a_s = " << number(tr.sun_cone())
       << " rad; period 2*pi*q = " << number(tr.period()) << " rad\n";
@@ -265,77 +269,65 @@ void run_plot(const AnalysisOptions& o) {
 }
 
 struct CrossingsOptions {
-  std::string input, pairs, output;
+  std::string input, pairs, output, threads;
   bool open = false;
   bool json = false;
 };
 
-/// Reads rows "x,y,z" (a non-numeric first line is a header; blank lines are skipped).
-std::vector<Vector3d> read_polyline_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError{"--input = " + path + ": cannot be read; valid: a readable CSV file of rows x,y,z"};
-  std::vector<Vector3d> v;
-  std::string line;
-  std::size_t line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::stringstream row(line);
-    std::string cell;
-    double xyz[3];
-    int k = 0;
-    bool ok = true;
-    while (std::getline(row, cell, ',')) {
-      const auto value = detail::strict_double(detail::trim(cell));
-      if (k >= 3 || !value) {
-        ok = false;
-        break;
-      }
-      xyz[k++] = *value;
-    }
-    if (!ok || k != 3) {
-      if (line_no == 1 && v.empty()) continue;  // header
-      throw UsageError{"--input = " + path + ": line " + std::to_string(line_no) + " is not x,y,z with 3 finite numbers; valid: CSV rows x,y,z"};
-    }
-    v.emplace_back(xyz[0], xyz[1], xyz[2]);
+void write_pairs_csv(OutputFile& file, const SelfCrossings& sc) {
+  std::vector<EdgePair> all = sc.crossings;
+  all.insert(all.end(), sc.touchings.begin(), sc.touchings.end());
+  std::sort(all.begin(), all.end());
+  file.write("i,j,kind\n");
+  for (const EdgePair& e : all) {
+    char* p = file.reserve(64);
+    p = std::to_chars(p, p + 20, e.i).ptr;
+    *p++ = ',';
+    p = std::to_chars(p, p + 20, e.j).ptr;
+    *p++ = ',';
+    const std::string_view kind = to_string(e.kind);
+    p = std::copy(kind.begin(), kind.end(), p);
+    *p++ = '\n';
+    file.advance(p);
   }
-  return v;
 }
 
 void run_crossings(const CrossingsOptions& o) {
-  const std::vector<Vector3d> vertices = read_polyline_csv(o.input);
+  using clock = std::chrono::steady_clock;
+  const std::size_t threads = parse_threads(o.threads);
+  check_distinct_files({{o.output, "--output"}, {o.pairs, "--pairs"}}, {{o.input, "--input"}});
+  const auto start_read = clock::now();
+  const PolylineInput input = read_polyline(o.input, "input", std::min<std::size_t>(threads, 2));
+  const double seconds_read = std::chrono::duration<double>(clock::now() - start_read).count();
+  const std::vector<Vector3d>& vertices = input.vertices;
   SelfCrossings sc;
   double seconds = 0;
   try {
     validate_spherical_polyline(vertices, !o.open);
-    const auto start = std::chrono::steady_clock::now();  // reading the file is not timed
+    const auto start = clock::now();
     sc = find_self_crossings(vertices, !o.open);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    seconds = std::chrono::duration<double>(clock::now() - start).count();
   } catch (const InvalidInput& e) {
     throw UsageError{"--input = " + o.input + ": " + e.value() + ": " + e.problem() + "; valid: " + e.valid_range()};
   }
-  if (!o.pairs.empty()) {
-    write_output(o.pairs, [&](std::ostream& out) {
-      out << "i,j,kind\n";
-      std::vector<EdgePair> all = sc.crossings;
-      all.insert(all.end(), sc.touchings.begin(), sc.touchings.end());
-      std::sort(all.begin(), all.end());
-      for (const EdgePair& e : all) out << e.i << ',' << e.j << ',' << to_string(e.kind) << '\n';
-    });
-  }
-  write_output(o.output, [&](std::ostream& out) {
+  StagedOutputs outputs;  // --pairs and -o appear together or not at all
+  if (!o.pairs.empty()) write_pairs_csv(outputs.open(o.pairs, "--pairs"), sc);
+  outputs.stage(o.output, "--output", [&](std::ostream& out) {
     if (o.json) {
       nlohmann::json j = {{"vertices", vertices.size()},           {"closed", !o.open},
                           {"crossings", sc.crossings.size()},      {"touchings", sc.touchings.size()},
                           {"candidate_pairs", sc.candidate_pairs}, {"predicates", sc.predicates},
+                          {"input_format", input.format},          {"seconds_read", seconds_read},
                           {"seconds_search", seconds}};
       out << j.dump(2) << "\n";
     } else {
-      out << "vertices " << vertices.size() << (o.open ? " (open)" : " (closed)") << "\ncrossings "
-          << sc.crossings.size() << "\ntouchings " << sc.touchings.size() << "\ncandidate pairs " << sc.candidate_pairs
-          << ", exact predicates " << sc.predicates << "\nseconds_search " << seconds_text(seconds) << "\n";
+      out << "vertices " << vertices.size() << (o.open ? " (open)" : " (closed)") << ", read as " << input.format
+          << "\ncrossings " << sc.crossings.size() << "\ntouchings " << sc.touchings.size() << "\ncandidate pairs "
+          << sc.candidate_pairs << ", exact predicates " << sc.predicates << "\nseconds_read "
+          << seconds_text(seconds_read) << "\nseconds_search " << seconds_text(seconds) << "\n";
     }
   });
+  outputs.commit();
 }
 
 }  // namespace
@@ -366,12 +358,20 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
   {
     auto o = std::make_shared<CrossingsOptions>();
     CLI::App* cmd = app.add_subcommand("crossings", "exact self-crossings of any spherical polyline given as CSV x,y,z");
-    cmd->add_option("--input", o->input, "CSV rows x,y,z (a header line is allowed; need not be normalised)")->required();
+    cmd->add_option("--input", o->input,
+                    "the polyline: CSV (rows x,y,z, or a header naming x,y,z), NumPy .npy (N,3|4|7), - for stdin")
+        ->required();
     cmd->add_flag("--open", o->open, "the polyline is open (default: closed, the last vertex joins the first)");
     cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE");
-    cmd->add_flag("--json", o->json, "one JSON object: vertices, crossings, touchings, seconds_search, ...");
+    cmd->add_flag("--json", o->json, "one JSON object: vertices, crossings, touchings, seconds_read, seconds_search, ...");
+    cmd->add_option("--threads", o->threads, "threads parsing CSV (1 .. 1024; default: all cores, at most 2 used)");
     add_output_option(*cmd, o->output, "the summary");
-    cmd->footer("Edge e joins vertex e to e+1; adjacent edges are never counted. Reading the file is not timed.");
+    cmd->footer(
+        "Edge e joins vertex e to e+1; adjacent edges are never counted. The format is told by the\n"
+        "first bytes (.npy magic), not the name: a CSV with a header takes the columns x, y, z by\n"
+        "name (so `sphtroch trace` output works); .npy float64/float32 (N, 3) x,y,z or (N, 4)/(N, 7)\n"
+        "trace arrays. Reading and searching are timed separately (seconds_read, seconds_search).\n"
+        "Example: sphtroch trace --a2 1 --a3 2 --n 7/3 | sphtroch crossings --input - --json");
     actions.emplace_back(cmd, [o] { run_crossings(*o); });
   }
 }

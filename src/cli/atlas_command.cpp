@@ -6,6 +6,7 @@
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"
 #include "sphtroch/atlas_svg.hpp"
+#include "sphtroch/input_file.hpp"
 #include "sphtroch/parse.hpp"
 
 #include <unistd.h>
@@ -39,6 +40,8 @@ struct MergeOptions {
 const char* const kRangeForms = "LO:HI with 0 <= LO < HI <= pi (angles: 1.2, pi/6, 5pi/6, 90deg)";
 
 AngleRange parse_range(const std::string& text, const std::string& field) {
+  if (text.find_first_of(" \t\r\n") != std::string::npos)
+    throw InvalidInput(field, text, "spaces inside a range", kRangeForms);
   const auto colon = text.find(':');
   if (colon == std::string::npos) throw InvalidInput(field, text, "not a range LO:HI", kRangeForms);
   const auto lo = detail::angle_value(text.substr(0, colon));
@@ -47,6 +50,29 @@ AngleRange parse_range(const std::string& text, const std::string& field) {
   if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
     throw InvalidInput(field, text, "outside the valid range", kRangeForms);
   return AngleRange{*lo, *hi};
+}
+
+/// Every cell centre must be a valid twist, strictly inside (0, pi): a range too narrow for the
+/// grid (0:4.9e-324) would put centres at 0. Named by the range as typed.
+void check_cell_centres(const AtlasSpec& spec, const AtlasOptions& o) {
+  const double pi = Constants<double>::pi();
+  auto check = [&](double (AtlasSpec::*at)(std::size_t) const, const std::string& text, const char* field) {
+    bool ok = (spec.*at)(0) > 0.0 && (spec.*at)(spec.grid - 1) < pi;
+    for (std::size_t k = 1; ok && k < spec.grid; ++k) ok = (spec.*at)(k - 1) < (spec.*at)(k);
+    if (!ok)
+      throw InvalidInput(field, text, "too narrow for the grid: its cell centres are not distinct angles in (0, pi)",
+                         std::string(kRangeForms) + ", wide enough for distinct cell centres");
+  };
+  check(&AtlasSpec::a2_at, o.a2, "a2");
+  check(&AtlasSpec::a3_at, o.a3, "a3");
+  for (std::size_t i = 0; i < spec.grid; ++i) {  // the carrier-twist bounds of GearTrain, per a2 row
+    try {
+      GearTrain::on_cone(spec.a2_at(i), A3Reference::pitch_cone, 0.0, spec.ratio);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("a2", o.a2, "its cell centre a2 = " + number(spec.a2_at(i)) + " is " + e.problem(),
+                         e.valid_range());
+    }
+  }
 }
 
 AtlasShard parse_shard(const std::string& text, std::size_t grid) {
@@ -78,14 +104,20 @@ std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& 
   return render_atlas_svg(spec, cells);
 }
 
-void write_text_file(const std::string& path, const std::string& text, const std::string& option) {
-  try {
-    write_output(path, [&](std::ostream& out) { out << text; });
-  } catch (const UsageError& e) {
-    // write_output names -o; this file came from another option.
-    std::string m = e.message;
-    if (m.rfind("--output", 0) == 0) m = option + m.substr(8);
-    throw UsageError{m};
+/// The atlas CSV (-o) and map (--svg): both appear or neither; then the summary (on stderr when the
+/// CSV goes to stdout).
+void write_atlas_outputs(const std::string& csv, const std::string& svg_path, const std::string& svg,
+                         const std::function<void(std::ostream&)>& write_csv,
+                         const std::function<void(std::ostream&)>& write_summary) {
+  StagedOutputs outputs;
+  if (!csv.empty()) outputs.stage(csv, "--output", write_csv);
+  if (!svg_path.empty()) outputs.stage(svg_path, "--svg", [&](std::ostream& out) { out << svg; });
+  outputs.commit();
+  if (csv == "-") {
+    write_summary(std::cerr);
+    std::cerr.flush();
+  } else {
+    write_output("-", write_summary);
   }
 }
 
@@ -165,6 +197,7 @@ void run_atlas(const AtlasOptions& o) {
   spec.a2 = parse_range(o.a2, "a2");
   spec.a3 = parse_range(o.a3, "a3");
   spec.literal = o.literal;
+  check_cell_centres(spec, o);
   spec.validate();
   const unsigned hw = std::thread::hardware_concurrency();
   const std::size_t threads =
@@ -177,6 +210,7 @@ void run_atlas(const AtlasOptions& o) {
                      "; valid: draw the whole atlas (sphtroch atlas-merge --svg FILE slices...)"};
   check_writable(o.output, "--output");
   check_writable(o.svg, "--svg");
+  check_distinct_files({{o.output, "--output"}, {o.svg, "--svg"}}, {});
 
   const AtlasRows rows = shard ? shard_rows(spec.grid, *shard) : AtlasRows{0, spec.grid};
   const auto start = std::chrono::steady_clock::now();
@@ -184,32 +218,35 @@ void run_atlas(const AtlasOptions& o) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells);
-  if (!o.output.empty()) write_output(o.output, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); });
-  if (!o.svg.empty()) write_text_file(o.svg, svg, "--svg");
-  print_summary(o.output == "-" ? std::cerr : std::cout, spec, cells, rows, shard, seconds, threads);
+  write_atlas_outputs(
+      o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); },
+      [&](std::ostream& out) { print_summary(out, spec, cells, rows, shard, seconds, threads); });
 }
 
 void run_merge(const MergeOptions& o) {
   check_writable(o.output, "--output");
   check_writable(o.svg, "--svg");
+  std::vector<NamedFile> inputs;
+  for (const std::string& s : o.slices) inputs.push_back({s, "slice"});
+  check_distinct_files({{o.output, "--output"}, {o.svg, "--svg"}}, inputs);
   std::vector<AtlasCsv> slices;
   try {
     for (const std::string& path : o.slices) {
-      std::ifstream in(path, std::ios::binary);
-      if (!in)
-        throw UsageError{"atlas-merge: slice = " + path + ": cannot be read (" + std::strerror(errno) +
-                         "); valid: a readable CSV written by sphtroch atlas"};
-      std::ostringstream text;
-      text << in.rdbuf();
-      slices.push_back(read_atlas_csv(text.str(), path));
+      std::string text;
+      try {
+        text = read_whole_input(path, "slice");
+      } catch (const InvalidInput& e) {
+        throw UsageError{"atlas-merge: slice = " + path + ": " + e.problem() + "; valid: a readable CSV written by sphtroch atlas"};
+      }
+      slices.push_back(read_atlas_csv(text, path));
     }
     AtlasCsv whole = merge_atlas_slices(std::move(slices));
     const std::string svg = o.svg.empty() ? std::string() : write_svg_text(whole.spec, whole.cells);
-    if (!o.output.empty())
-      write_output(o.output, [&](std::ostream& out) { write_atlas_csv(out, whole.spec, std::nullopt, whole.cells); });
-    if (!o.svg.empty()) write_text_file(o.svg, svg, "--svg");
-    print_summary(o.output == "-" ? std::cerr : std::cout, whole.spec, whole.cells, whole.rows, std::nullopt,
-                  std::nullopt, 1);
+    write_atlas_outputs(
+        o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, whole.spec, std::nullopt, whole.cells); },
+        [&](std::ostream& out) {
+          print_summary(out, whole.spec, whole.cells, whole.rows, std::nullopt, std::nullopt, 1);
+        });
   } catch (const InvalidInput& e) {
     throw UsageError{std::string("atlas-merge: ") + e.what()};
   }

@@ -1,6 +1,10 @@
 #include "cli_common.hpp"
 
+#include "sphtroch/number_text.hpp"
 #include "sphtroch/parse.hpp"
+
+#include <algorithm>
+#include <thread>
 
 #include <cerrno>
 #include <cstdlib>
@@ -32,20 +36,9 @@ void add_output_option(CLI::App& command, std::string& path, const std::string& 
   command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)");
 }
 
-std::string number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string number(double v) { return number_text(v); }
 
-std::string shortest_number(double v) {
-  char buf[40];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    if (std::strtod(buf, nullptr) == v) break;
-  }
-  return buf;
-}
+std::string shortest_number(double v) { return number_text(v); }
 
 std::string seconds_text(double seconds) {
   char buf[40];
@@ -53,18 +46,9 @@ std::string seconds_text(double seconds) {
   return buf;
 }
 
-void write_trajectory_csv(std::ostream& out, const Trajectory<double>& tr, const std::vector<Vector3d>& velocities) {
-  const bool with_velocity = !velocities.empty();
-  out << (with_velocity ? "t,x,y,z,vx,vy,vz\n" : "t,x,y,z\n");
-  for (std::size_t i = 0; i < tr.size(); ++i) {
-    const auto& p = tr.points[i];
-    out << number(tr.t[i]) << ',' << number(p.x()) << ',' << number(p.y()) << ',' << number(p.z());
-    if (with_velocity) {
-      const auto& v = velocities[i];
-      out << ',' << number(v.x()) << ',' << number(v.y()) << ',' << number(v.z());
-    }
-    out << '\n';
-  }
+std::size_t parse_threads(const std::string& text) {
+  if (!text.empty()) return parse_count(text, "threads", 1, kMaxThreads);
+  return std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxThreads);
 }
 
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
@@ -77,53 +61,59 @@ std::size_t parse_count(const std::string& text, const std::string& field, std::
   return static_cast<std::size_t>(v);
 }
 
-void write_output(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  if (path.empty() || path == "-") {
-    // Build the text first: a failure half-way must not leave partial output on stdout either.
-    std::ostringstream text;
-    write(text);
-    std::fwrite(text.str().data(), 1, text.str().size(), stdout);
-    std::fflush(stdout);
-    return;
-  }
-  StagedOutputs out;
-  out.stage(path, "--output", write);
-  out.commit();
+std::string file_key(const std::string& path) {
+  if (path.empty() || path == "-") return {};
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  const auto slash = path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (::stat(dir.c_str(), &st) != 0) return {};
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + "/" + name;
 }
 
-StagedOutputs::~StagedOutputs() {
-  for (const Pending& p : pending_) std::remove(p.tmp.c_str());
+void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs) {
+  std::vector<std::pair<std::string, const NamedFile*>> seen;
+  for (const NamedFile& in : inputs)
+    if (const std::string k = file_key(in.path); !k.empty()) seen.emplace_back(k, &in);
+  const std::size_t input_count = seen.size();
+  for (const NamedFile& out : outputs) {
+    const std::string k = file_key(out.path);
+    if (k.empty()) continue;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      if (seen[i].first == k)
+        throw UsageError{out.field + " = " + out.path + ": is the same file as " + seen[i].second->field + " = " +
+                         seen[i].second->path + (i < input_count ? " (an input would be replaced)" : "") +
+                         "; valid: a distinct output path"};
+    seen.emplace_back(k, &out);
+  }
+}
+
+void write_output(const std::string& path, const std::function<void(std::ostream&)>& write, const std::string& field) {
+  OutputFile file = OutputFile::open(path, field);
+  {
+    OutputStream out(file);
+    write(out);
+  }
+  file.commit();
+}
+
+OutputFile& StagedOutputs::open(const std::string& path, const std::string& field) {
+  files_.push_back(std::make_unique<OutputFile>(OutputFile::open(path, field)));
+  return *files_.back();
 }
 
 void StagedOutputs::stage(const std::string& path, const std::string& field,
                           const std::function<void(std::ostream&)>& write) {
-  const std::string tmpl = path + ".tmp.XXXXXX";
-  std::vector<char> name(tmpl.begin(), tmpl.end());
-  name.push_back('\0');
-  const int fd = mkstemp(name.data());
-  if (fd < 0)
-    throw UsageError{field + " = " + path + ": cannot be written (" + std::strerror(errno) +
-                     "); valid: a path in an existing, writable directory"};
-  // mkstemp creates the file 0600; give the result the mode a plain open() would (0666 & ~umask).
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  ::close(fd);
-  pending_.push_back({path, field, name.data()});
-  std::ofstream out(pending_.back().tmp, std::ios::binary | std::ios::trunc);
+  OutputFile& file = open(path, field);
+  OutputStream out(file);
   write(out);
-  out.flush();
-  if (!out) throw UsageError{field + " = " + path + ": write failed; valid: a writable path with free space"};
 }
 
 void StagedOutputs::commit() {
-  while (!pending_.empty()) {
-    const Pending& p = pending_.front();
-    if (std::rename(p.tmp.c_str(), p.path.c_str()) != 0)
-      throw UsageError{p.field + " = " + p.path + ": cannot be replaced (" + std::strerror(errno) +
-                       "); valid: a writable file path"};
-    pending_.erase(pending_.begin());
-  }
+  std::vector<OutputFile*> all;
+  for (auto& f : files_) all.push_back(f.get());
+  commit_together(all);
 }
 
 }  // namespace sphtroch::cli

@@ -1,9 +1,11 @@
 // src/cli/cli_common.hpp — plumbing shared by the sphtroch commands: reading gear-train
-// options, the one-line error contract (stderr, exit 2), and output files that are never
-// left partial (written to a temporary file in the same directory, then renamed).
+// options, the one-line error contract (stderr, exit 2), and outputs through the library's one
+// writer (sphtroch/output_file.hpp: stdout, devices and FIFOs directly; files through a
+// temporary in the same directory, renamed when complete, so never left partial).
 #pragma once
 
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/output_file.hpp"
 #include "sphtroch/sampling.hpp"
 
 #include <CLI/CLI.hpp>
@@ -38,48 +40,56 @@ struct TrainOptions {
 /// Adds "-o,--output FILE" to a command.
 void add_output_option(CLI::App& command, std::string& path, const std::string& what);
 
-/// Writes text produced by `write` to stdout (path empty or "-") or atomically to `path`.
-/// The callback runs before the file appears; on any failure no file is left behind.
-void write_output(const std::string& path, const std::function<void(std::ostream&)>& write);
+/// Writes text produced by `write` to stdout (path empty or "-"), or to `path` (see
+/// OutputFile: a file appears complete or not at all). `field` names the option in errors.
+/// Validate before calling: on stdout the bytes go out as they are written.
+void write_output(const std::string& path, const std::function<void(std::ostream&)>& write,
+                  const std::string& field = "--output");
 
-/// Several output files that appear together or not at all: stage() writes each to a temporary
-/// file in its directory; commit() renames them all into place; the destructor removes every
-/// temporary not committed (so any failure before commit() leaves no file). Error messages name
-/// `field` ("--output", "trains[0].effects.trace") and the path.
+/// Several outputs that appear together or not at all (commit_together): stage() writes each;
+/// commit() puts them all in place; the destructor removes every temporary not committed.
 class StagedOutputs {
  public:
-  StagedOutputs() = default;
-  StagedOutputs(const StagedOutputs&) = delete;
-  StagedOutputs& operator=(const StagedOutputs&) = delete;
-  ~StagedOutputs();
   void stage(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write);
+  /// The file of a stage, for writers that stream into it directly.
+  OutputFile& open(const std::string& path, const std::string& field);
   void commit();
 
  private:
-  struct Pending {
-    std::string path, field, tmp;
-  };
-  std::vector<Pending> pending_;
+  std::vector<std::unique_ptr<OutputFile>> files_;
 };
+
+/// A name for the file a path reaches, equal for every alias of it (symlinks, "dir/../x",
+/// hard links): "dev:ino" of an existing file, else "dev:ino/name" of its existing directory;
+/// empty for stdout ("-" or "") and for paths whose directory does not exist.
+std::string file_key(const std::string& path);
+
+/// A file a command names on its command line or in a scene.
+struct NamedFile {
+  std::string path, field;  // field: "--output", "trains[0].effects.trace", ...
+};
+
+/// Throws UsageError when an output reaches an input or another output under any alias
+/// (an output must never replace what the command reads, nor another output).
+void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs);
 
 /// A non-negative integer option value, or InvalidInput naming the option.
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
 
-/// printf("%.17g") — every printed number round-trips to the same double.
+/// The shortest form that reads back as the same double (number_text.hpp): every number the
+/// tool prints, in data and in reports.
 std::string number(double v);
 
 /// A measured time in seconds for text reports: 3 significant digits (timings are noisy; the
 /// JSON reports keep every digit).
 std::string seconds_text(double seconds);
 
-/// The shortest %g form that reads back as the same double (1e-11, not 9.9999999999999994e-12):
-/// for named constants in text reports.
+/// The same as number() (kept for the named constants of text reports).
 std::string shortest_number(double v);
 
-/// The `sphtroch trace` CSV: t,x,y,z (t,x,y,z,vx,vy,vz when `velocities` is not empty; then it
-/// holds dP/dtheta2 at every trajectory.t[i]).
-void write_trajectory_csv(std::ostream& out, const Trajectory<double>& trajectory,
-                          const std::vector<Vector3d>& velocities = {});
+/// The worker threads of a command: `text` ("" = all cores, capped at kMaxThreads) as a count.
+constexpr std::size_t kMaxThreads = 1024;
+std::size_t parse_threads(const std::string& text);
 
 /// Registers a subcommand's action; main() runs the selected one and maps errors to exit codes.
 using Action = std::function<void()>;
@@ -88,6 +98,10 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+/// Parses and validates a scene's text as `sphtroch scene` does, without touching the file system
+/// (output paths unchecked, nothing computed); returns the number of trains. Throws UsageError
+/// (one line) for anything wrong. For tests/fuzz.
+std::size_t validate_scene_text(const std::string& text);
 #endif
 
 }  // namespace sphtroch::cli

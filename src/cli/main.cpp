@@ -1,21 +1,91 @@
 // sphtroch — command-line tool. Parsing and printing only; the work is in the library.
+// Exit status: 0 success; 2 bad input or an output that cannot be written (one line on stderr);
+// killed by SIGPIPE (shell status 141) when the reader of stdout goes away; 1 only for an
+// internal error (a bug).
 #include "cli_common.hpp"
 
 #include "sphtroch/errors.hpp"
+#include "sphtroch/output_file.hpp"
 #include "sphtroch/version.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 
+namespace {
+
+using namespace sphtroch::cli;
+
+/// The message as one line: control characters (a newline in a key, a path) escaped.
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (unsigned char c : message) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else out += static_cast<char>(c);
+  }
+  return out;
+}
+
+int fail(const std::string& message) {
+  std::cerr << "sphtroch: " << one_line(message) << "\n";
+  return kBadInput;
+}
+
+/// The first argument names a command (anything not starting with '-'): refuse an unknown one by
+/// name, with the list, instead of CLI11's "A subcommand is required".
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  std::string names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name() == argv[1]) return std::nullopt;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  return std::string(argv[1]) + ": not a command; valid: " + names + " (see sphtroch --help)";
+}
+
+/// A flag written with a value ("--velocity=true"): flags take none.
+std::optional<std::string> flag_with_value(const CLI::App& app, int argc, char** argv) {
+  for (const CLI::App* sub : app.get_subcommands({}))
+    for (const CLI::Option* opt : sub->get_options())
+      if (opt->get_expected_max() == 0)
+        for (const std::string& name : opt->get_lnames())
+          for (int i = 1; i < argc; ++i)
+            if (std::string(argv[i]).rfind("--" + name + "=", 0) == 0)
+              return std::string(argv[i]) + ": --" + name + " is a flag and takes no value; valid: --" + name +
+                     " alone, or leave it out";
+  return std::nullopt;
+}
+
+/// An option given with an empty value ("--samples ''") is an error, never the default.
+void check_no_empty_values(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands())
+    for (const CLI::Option* opt : sub->get_options())
+      if (opt->count() > 0 && opt->get_expected_min() > 0)
+        for (const std::string& v : opt->results())
+          if (v.empty())
+            throw UsageError{opt->get_name() + " = \"\": an empty value; valid: see sphtroch " + sub->get_name() +
+                             " --help (leave the option out for its default)"};
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  using namespace sphtroch::cli;
   CLI::App app{"sphtroch " SPHTROCH_VERSION_STRING
                " - trajectories of spherical planetary gear trains (Lin & Tsai 1990)",
                "sphtroch"};
   app.set_version_flag("--version", std::string("sphtroch ") + SPHTROCH_VERSION_STRING);
   app.require_subcommand(1);
+  app.option_defaults()->disable_flag_override();  // --velocity=value is an error, not a value
+  sphtroch::install_output_signal_cleanup();  // temporaries removed on SIGINT/SIGTERM; EPIPE instead of SIGPIPE
   std::vector<std::pair<CLI::App*, Action>> actions;
   register_trace(app, actions);
   register_atlas(app, actions);
@@ -23,29 +93,43 @@ int main(int argc, char** argv) {
   register_analysis(app, actions);
   register_scene(app, actions);
 #endif
+  if (const auto bad = unknown_command(app, argc, argv)) return fail(*bad);
+  if (const auto bad = flag_with_value(app, argc, argv)) return fail(*bad);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    app.exit(e);
+    return std::cout.flush() ? 0 : fail("--help: the help text could not be written to stdout");
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    app.exit(e);
+    return std::cout.flush() ? 0 : fail("--help: the help text could not be written to stdout");
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    app.exit(e);
+    return std::cout.flush() ? 0 : fail("--version: the version could not be written to stdout");
   } catch (const CLI::ParseError& e) {
-    std::cerr << "sphtroch: " << e.what() << " (see sphtroch --help)\n";
-    return kBadInput;
+    return fail(std::string(e.what()) + " (see sphtroch --help)");
   }
   try {
+    check_no_empty_values(app);
     for (auto& [command, action] : actions)
       if (command->parsed()) action();
+  } catch (const sphtroch::BrokenPipe&) {
+    // The reader went away (`| head`): end quietly, as a filter killed by SIGPIPE does, after the
+    // temporaries are gone (the destructors have run).
+    std::signal(SIGPIPE, SIG_DFL);
+    std::raise(SIGPIPE);
+    return 141;
+  } catch (const sphtroch::OutputError& e) {
+    return fail(e.what());
   } catch (const sphtroch::InvalidInput& e) {
-    std::cerr << "sphtroch: --" << e.what() << "\n";
-    return kBadInput;
+    return fail(std::string("--") + e.what());
   } catch (const UsageError& e) {
-    std::cerr << "sphtroch: " << e.message << "\n";
-    return kBadInput;
+    return fail(e.message);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "sphtroch: out of memory; valid: a smaller problem (see README: Errors, cost bounds)\n";
+    return 1;
   } catch (const std::exception& e) {
-    std::cerr << "sphtroch: internal error: " << e.what() << "\n";
+    std::cerr << "sphtroch: internal error: " << one_line(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -14,7 +14,9 @@
 #include "reports.hpp"
 
 #include "sphtroch/analysis.hpp"
+#include "sphtroch/input_file.hpp"
 #include "sphtroch/parse.hpp"
+#include "sphtroch/trace_output.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -67,8 +69,9 @@ struct SceneError {
   std::string file;
   [[noreturn]] void field(const std::string& path, const Json* value, const std::string& problem,
                           const std::string& valid) const {
-    throw UsageError{file + ": " + path + (value ? " = " + value->dump() : std::string()) + ": " + problem +
-                     "; valid: " + valid};
+    std::string shown = value ? value->dump() : std::string();  // one line: dump() escapes newlines
+    if (shown.size() > 80) shown = shown.substr(0, 77) + "...";
+    throw UsageError{file + ": " + path + (value ? " = " + shown : std::string()) + ": " + problem + "; valid: " + valid};
   }
 };
 
@@ -140,10 +143,23 @@ class DuplicateKeyCheck {
   std::vector<Frame> frames_;
 };
 
+/// Scenes nest 4 levels (scene, trains, train, effects); anything deeper than this is refused
+/// while parsing, before a deep value could exhaust the stack of the code that prints it.
+constexpr int kMaxSceneDepth = 16;
+/// Scene files are a few kilobytes; a larger file is refused before it is parsed.
+constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
+
 Json read_json(const SceneError& err, const std::string& text) {
+  if (const auto nul = text.find('\0'); nul != std::string::npos)
+    throw UsageError{err.file + ": " + line_column(text, nul + 1) +
+                     ": not valid JSON (a NUL byte); valid: a JSON scene file (README: sphtroch scene)"};
   try {
     DuplicateKeyCheck check(err);
     return Json::parse(text, [&](int depth, nlohmann::detail::parse_event_t event, Json& parsed) {
+      if (depth > kMaxSceneDepth)
+        throw UsageError{err.file + ": nested deeper than " + std::to_string(kMaxSceneDepth) +
+                         " levels; valid: a JSON scene file (README: sphtroch scene; at most " +
+                         std::to_string(kMaxSceneDepth) + " levels)"};
       return check(depth, event, parsed);
     });
   } catch (const nlohmann::json::parse_error& e) {
@@ -242,42 +258,68 @@ SceneTrain read_train(const SceneError& err, const Json& t, std::size_t index, c
     if (!output_dir.empty() && path.is_relative()) path = fs::path(output_dir) / path;
     st.effects.push_back({*effect, path.string(), field});
   }
+  // Costs, up front: a census of a huge ratio, a default sample count beyond 1e6.
+  for (const EffectRequest& e : st.effects) {
+    const auto stages = Analysis::stages_for(e.effect);
+    const auto needs = [&](Stage s) { return std::find(stages.begin(), stages.end(), s) != stages.end(); };
+    try {
+      if (needs(Stage::crossings) || needs(Stage::root_census)) check_census_cost(st.train.ratio());
+      if ((needs(Stage::trajectory) || needs(Stage::velocities) || needs(Stage::screw_axis)) && !st.settings.samples)
+        (void)trace_sample_count(st.train, st.settings.turns);
+    } catch (const InvalidInput& ex) {
+      err.field(e.field, nullptr, (ex.field() == "n" ? "n = " + ex.value() + ": " : ex.value() + ": ") + ex.problem(),
+                ex.valid_range());
+    }
+  }
   return st;
 }
 
-std::vector<SceneTrain> read_scene(const SceneOptions& o) {
-  const SceneError err{o.file};
-  errno = 0;
-  std::ifstream in(o.file, std::ios::binary);
-  if (!in || fs::is_directory(o.file))
-    throw UsageError{o.file + ": cannot be read" + (errno ? " (" + std::string(std::strerror(errno)) + ")" : std::string()) +
-                     "; valid: a readable scene file (JSON)"};
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  const std::string text = buf.str();
-  const Json scene = read_json(err, text);
+/// The scene's JSON and trains, validated without touching the file system (paths unchecked).
+std::vector<SceneTrain> parse_scene(const SceneError& err, const std::string& text, const std::string& output_dir,
+                                    Json& scene) {
+  scene = read_json(err, text);
   if (!scene.is_object()) err.field("(top level)", nullptr, "not an object", "{\"trains\": [...]}");
   for (const auto& [key, value] : scene.items())
     if (key != "trains" && key != "description") err.field(key, &value, "unknown key", kTopKeys);
   const auto trains = scene.find("trains");
   if (trains == scene.end()) err.field("trains", nullptr, "missing", "a non-empty list of gear trains");
   if (!trains->is_array() || trains->empty()) err.field("trains", &*trains, "not a non-empty list", "a non-empty list of gear trains");
-  if (!o.output_dir.empty() && !fs::is_directory(o.output_dir))
-    throw UsageError{"--output-dir = " + o.output_dir + ": not a directory; valid: an existing, writable directory"};
-
   std::vector<SceneTrain> out;
-  std::map<std::string, std::string> names, paths;  // name / normalised path -> where first used
-  paths.emplace(fs::absolute(o.file).lexically_normal().string(), "the scene file itself");
+  std::map<std::string, std::string> names;  // name -> where first used
   for (std::size_t i = 0; i < trains->size(); ++i) {
-    SceneTrain st = read_train(err, (*trains)[i], i, o.output_dir);
+    SceneTrain st = read_train(err, (*trains)[i], i, output_dir);
     const std::string at = "trains[" + std::to_string(i) + "].name";
     if (const auto [it, fresh] = names.emplace(st.name, at); !fresh)
       err.field(at, &(*trains)[i].at("name"), "used twice (also " + it->second + ")", "a distinct name per gear train");
+    out.push_back(std::move(st));
+  }
+  return out;
+}
+
+std::vector<SceneTrain> read_scene(const SceneOptions& o) {
+  const SceneError err{o.file};
+  std::string text;
+  try {
+    text = read_whole_input(o.file, "scene", kMaxSceneBytes);
+  } catch (const InvalidInput& e) {
+    throw UsageError{o.file + ": " + e.problem() + "; valid: a readable scene file (JSON) of at most 16 MiB"};
+  }
+  if (!o.output_dir.empty() && !fs::is_directory(o.output_dir))
+    throw UsageError{"--output-dir = " + o.output_dir + ": not a directory; valid: an existing, writable directory"};
+  Json scene;
+  std::vector<SceneTrain> out = parse_scene(err, text, o.output_dir, scene);
+  const Json& trains = scene.at("trains");
+  std::map<std::string, std::string> paths;  // file identity -> where first used
+  paths.emplace(file_key(o.file), "the scene file itself");  // by identity: any alias of it is refused
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const SceneTrain& st = out[i];
     for (const EffectRequest& e : st.effects) {
       const fs::path abs = fs::absolute(e.path).lexically_normal();
-      const Json& shown = (*trains)[i].at("effects").at(to_string(e.effect));
-      if (const auto [it, fresh] = paths.emplace(abs.string(), e.field); !fresh)
-        err.field(e.field, &shown, "output path already used by " + it->second, "a distinct path per output");
+      const Json& shown = trains[i].at("effects").at(to_string(e.effect));
+      if (const std::string key = file_key(abs.string()); !key.empty())
+        if (const auto [it, fresh] = paths.emplace(key, e.field); !fresh)
+          err.field(e.field, &shown, "output path reaches the same file as " + it->second,
+                    "a distinct path per output, not the scene file");
       const fs::path dir = abs.parent_path();
       std::error_code ec;
       if (!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
@@ -285,7 +327,6 @@ std::vector<SceneTrain> read_scene(const SceneOptions& o) {
                   "a path in an existing, writable directory");
       if (fs::is_directory(abs, ec)) err.field(e.field, &shown, "is a directory", "a file path");
     }
-    out.push_back(std::move(st));
   }
   return out;
 }
@@ -391,12 +432,18 @@ void run_scene(const SceneOptions& o) {
     else if (o.explain) explain_text(text, st, a);
   }
   outputs.commit();  // 3. every output appears, then the explanation
-  if (o.json) std::cout << nlohmann::ordered_json{{"trains", trains}}.dump(2) << "\n";
-  else std::cout << text.str();
-  std::cout.flush();
+  write_output("-", [&](std::ostream& out) {
+    if (o.json) out << nlohmann::ordered_json{{"trains", trains}}.dump(2) << "\n";
+    else out << text.str();
+  });
 }
 
 }  // namespace
+
+std::size_t validate_scene_text(const std::string& text) {
+  Json scene;
+  return parse_scene(SceneError{"scene"}, text, "", scene).size();
+}
 
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto o = std::make_shared<SceneOptions>();

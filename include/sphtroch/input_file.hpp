@@ -1,0 +1,133 @@
+// sphtroch/input_file.hpp — reading a file or standard input in large blocks (POSIX).
+//
+//   sphtroch::InputFile in = sphtroch::InputFile::open("x.csv", "input");   // "-": standard input
+//   std::size_t got = in.read(buffer, size);   // < size only at the end of the input
+//
+// Errors throw InvalidInput(field, path, problem, "a readable file, or - for standard input"):
+// a path that does not exist, cannot be opened, is a directory, or fails while being read, and a
+// FIFO that no writer opens within kFifoWriterWaitMs (a named pipe with no writer would otherwise
+// block forever).
+#pragma once
+
+#include "sphtroch/errors.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace sphtroch {
+
+/// How long open() waits for a writer to open a FIFO given as input, in milliseconds.
+constexpr int kFifoWriterWaitMs = 10000;
+
+class InputFile {
+ public:
+  static InputFile open(const std::string& path, const std::string& field) {
+    InputFile f;
+    f.path_ = path;
+    f.field_ = field;
+    if (path == "-") {
+      f.fd_ = STDIN_FILENO;
+    } else {
+      // O_NONBLOCK: opening a FIFO must not wait for its writer here (see wait_for_writer).
+      f.fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+      if (f.fd_ < 0) f.fail("cannot be read", errno);
+      f.owned_ = true;
+      struct stat st {};
+      if (::fstat(f.fd_, &st) == 0 && S_ISFIFO(st.st_mode)) f.wait_for_writer();
+      ::fcntl(f.fd_, F_SETFL, ::fcntl(f.fd_, F_GETFL) & ~O_NONBLOCK);
+    }
+    struct stat st {};
+    if (::fstat(f.fd_, &st) == 0) {
+      if (S_ISDIR(st.st_mode)) f.fail("is a directory", 0);
+      if (S_ISREG(st.st_mode)) f.size_ = static_cast<std::uint64_t>(st.st_size);
+#ifdef F_SETPIPE_SZ
+      if (S_ISFIFO(st.st_mode)) (void)::fcntl(f.fd_, F_SETPIPE_SZ, 1 << 20);  // fewer, larger reads; a hint
+#endif
+    }
+    return f;
+  }
+
+  InputFile() = default;
+  InputFile(InputFile&& o) noexcept
+      : path_(std::move(o.path_)), field_(std::move(o.field_)), fd_(std::exchange(o.fd_, -1)),
+        owned_(std::exchange(o.owned_, false)), size_(o.size_) {}
+  InputFile& operator=(InputFile&&) = delete;
+  InputFile(const InputFile&) = delete;
+  ~InputFile() {
+    if (owned_) ::close(fd_);
+  }
+
+  const std::string& path() const noexcept { return path_; }
+  const std::string& field() const noexcept { return field_; }
+  /// The size of a regular file when opened; nullopt for pipes, FIFOs and devices.
+  std::optional<std::uint64_t> size() const noexcept { return size_; }
+
+  /// Reads up to n bytes; fewer only at the end of the input.
+  std::size_t read(char* out, std::size_t n) {
+    std::size_t got = 0;
+    while (got < n) {
+      const ssize_t k = ::read(fd_, out + got, n - got);
+      if (k < 0) {
+        if (errno == EINTR) continue;
+        fail("cannot be read", errno);
+      }
+      if (k == 0) break;
+      got += static_cast<std::size_t>(k);
+    }
+    return got;
+  }
+
+ private:
+  void wait_for_writer() const {
+    struct pollfd p {fd_, POLLIN, 0};
+    int r;
+    do r = ::poll(&p, 1, kFifoWriterWaitMs);
+    while (r < 0 && errno == EINTR);
+    if (r == 0)
+      throw InvalidInput(field_, path_,
+                         "a FIFO that no writer opened within " + std::to_string(kFifoWriterWaitMs / 1000) + " s",
+                         "a readable file, or a FIFO or pipe with a writer");
+  }
+
+  [[noreturn]] void fail(const std::string& problem, int error_number) const {
+    throw InvalidInput(field_, path_, problem + (error_number ? std::string(" (") + std::strerror(error_number) + ")" : ""),
+                       "a readable file, or - for standard input");
+  }
+
+  std::string path_, field_;
+  int fd_ = -1;
+  bool owned_ = false;
+  std::optional<std::uint64_t> size_;
+};
+
+/// The whole of a file or standard input as bytes; InvalidInput when it holds more than max_bytes.
+inline std::string read_whole_input(const std::string& path, const std::string& field,
+                                    std::size_t max_bytes = static_cast<std::size_t>(-1)) {
+  InputFile in = InputFile::open(path, field);
+  std::string text;
+  std::size_t got = 0;
+  do {
+    const std::size_t chunk = std::size_t(1) << 20;
+    text.resize(got + chunk);
+    const std::size_t k = in.read(text.data() + got, chunk);
+    got += k;
+    text.resize(got);
+    if (got > max_bytes)
+      throw InvalidInput(field, path, "larger than " + std::to_string(max_bytes) + " bytes",
+                         "a file of at most " + std::to_string(max_bytes) + " bytes");
+    if (k < chunk) break;
+  } while (true);
+  return text;
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,436 @@
+// Tests of the I/O headers: number_text.hpp (round-trip), npy.hpp (header written and parsed),
+// polyline_input.hpp (CSV by header or headerless, .npy, errors with line numbers),
+// output_file.hpp (staged files, devices and FIFOs written directly, all-or-nothing commits),
+// parallel_blocks.hpp (order, errors) and trace_output.hpp (same bytes for any thread count).
+// Expected values come from the formats' definitions and from invariants, not from the code.
+#include "catch2/catch.hpp"
+#include "cli_support.hpp"
+#include "test_support.hpp"
+
+#include "sphtroch/curve.hpp"
+#include "sphtroch/npy.hpp"
+#include "sphtroch/number_text.hpp"
+#include "sphtroch/output_file.hpp"
+#include "sphtroch/parallel_blocks.hpp"
+#include "sphtroch/polyline_input.hpp"
+#include "sphtroch/trace_output.hpp"
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <random>
+
+using namespace sphtroch;
+using sphtroch::test::expect_invalid;
+using sphtroch::test::slurp;
+using sphtroch::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::uint64_t bits(double v) {
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+/// Writes a file byte for byte.
+void put(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
+
+/// A .npy file built by hand from the format's definition (not by npy_header).
+std::string npy_by_hand(const std::string& dict, const std::string& data, int major = 1) {
+  std::string h = std::string("\x93NUMPY", 6) + static_cast<char>(major) + '\0';
+  const std::size_t len = dict.size();
+  h += static_cast<char>(len & 0xff);
+  h += static_cast<char>(len >> 8);
+  if (major >= 2) h += std::string(2, '\0');
+  return h + dict + data;
+}
+
+std::string doubles(const std::vector<double>& v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+}
+
+}  // namespace
+
+TEST_CASE("number_text: every double round-trips exactly, and the form is the shortest", "[io][numbers]") {
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                1.0,
+                                -1.0,
+                                0.1,
+                                1.0 / 3.0,
+                                DBL_MAX,
+                                -DBL_MAX,
+                                DBL_MIN,
+                                std::numeric_limits<double>::denorm_min(),
+                                -std::numeric_limits<double>::denorm_min(),
+                                DBL_MIN / 3,
+                                std::nextafter(1.0, 2.0),
+                                std::nextafter(1.0, 0.0),
+                                1e23,
+                                9007199254740993.0,
+                                6.123233995736766e-17};
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int i = 0; i < 100000; ++i) values.push_back(unit(rng));
+  for (int i = 0; i < 100000; ++i) {  // random bit patterns: every exponent, subnormals included
+    std::uint64_t b = rng();
+    double v;
+    std::memcpy(&v, &b, sizeof v);
+    if (std::isfinite(v)) values.push_back(v);
+  }
+  for (double v : values) {
+    char buf[kMaxNumberChars];
+    const char* end = write_number(buf, v);
+    REQUIRE(end - buf <= static_cast<std::ptrdiff_t>(kMaxNumberChars));
+    const auto back = parse_number(std::string_view(buf, static_cast<std::size_t>(end - buf)));
+    REQUIRE(back.has_value());
+    REQUIRE(bits(*back) == bits(v));  // -0.0 keeps its sign, subnormals their last bit
+  }
+  CHECK(number_text(0.1) == "0.1");
+  CHECK(number_text(-0.0) == "-0");
+  CHECK(number_text(1e-11) == "1e-11");
+  CHECK(number_text(std::numeric_limits<double>::denorm_min()) == "5e-324");
+  CHECK(number_text(DBL_MAX) == "1.7976931348623157e+308");
+  // Shortest: with one significant digit fewer (%.*g rounds correctly) the value is lost.
+  for (std::size_t i = 0; i < 5000; ++i) {
+    const double v = values[i];
+    const std::string s = number_text(v);
+    std::string digits;
+    for (char c : s.substr(0, s.find('e'))) if (std::isdigit(static_cast<unsigned char>(c))) digits += c;
+    digits.erase(0, digits.find_first_not_of('0'));
+    if (digits.find_last_not_of('0') != std::string::npos) digits.erase(digits.find_last_not_of('0') + 1);
+    if (digits.size() < 2) continue;
+    char shorter[40];
+    std::snprintf(shorter, sizeof shorter, "%.*g", static_cast<int>(digits.size() - 1), v);
+    INFO(s << " vs " << shorter);
+    CHECK(std::strtod(shorter, nullptr) != v);
+  }
+}
+
+TEST_CASE("number_text: parse_number accepts numbers only, whole, finite", "[io][numbers]") {
+  CHECK(parse_number("2.5e-3") == 2.5e-3);
+  CHECK(parse_number("+1") == 1.0);
+  CHECK(parse_number(".5") == 0.5);
+  for (const char* bad : {"", " 1", "1 ", "1,", "nan", "inf", "-inf", "1e999", "1e-400", "0x10", "+-1", "--1", "1e", "e1", "abc"})
+    CHECK_FALSE(parse_number(bad).has_value());
+}
+
+TEST_CASE("npy: the header is the documented dict, padded to 64 bytes, and parses back", "[io][npy]") {
+  const std::string h = npy_header(1000, 4);
+  CHECK(h.size() % 64 == 0);
+  CHECK(h.compare(0, 8, std::string("\x93NUMPY\x01\x00", 8)) == 0);
+  const std::size_t len = static_cast<unsigned char>(h[8]) | static_cast<unsigned char>(h[9]) << 8;
+  CHECK(len + 10 == h.size());
+  const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': (1000, 4), }";
+  CHECK(h.compare(10, dict.size(), dict) == 0);
+  CHECK(h.find_first_not_of(' ', 10 + dict.size()) == h.size() - 1);  // spaces, then '\n'
+
+  CHECK(h.back() == '\n');
+  const NpyHeader p = parse_npy_header(h, "input", "x.npy");
+  CHECK(p.item_bytes == 8);
+  CHECK(p.shape == std::vector<std::uint64_t>{1000, 4});
+  CHECK(p.data_offset == h.size());
+}
+
+TEST_CASE("npy: headers numpy.save writes are read; others are refused with one line", "[io][npy]") {
+  // Version 2.0 with a 32-bit length, double quotes, no trailing comma, float32.
+  const NpyHeader v2 =
+      parse_npy_header(npy_by_hand("{\"descr\": \"<f4\", \"fortran_order\": False, \"shape\": (7, 3)}\n", "", 2), "input", "a");
+  CHECK(v2.item_bytes == 4);
+  CHECK(v2.shape == std::vector<std::uint64_t>{7, 3});
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"{'descr': '>f8', 'fortran_order': False, 'shape': (2, 3), }", "big-endian"},
+      {"{'descr': '<i8', 'fortran_order': False, 'shape': (2, 3), }", "dtype <i8"},
+      {"{'descr': '<f8', 'fortran_order': True, 'shape': (2, 3), }", "Fortran order"},
+      {"{'descr': '<f8', 'shape': (2, 3), }", "needs the keys"},
+      {"{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), 'x': 1}", "unexpected or repeated key"},
+      {"{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3)", "malformed"},
+      {"{'descr': [('a', '<f8')], 'fortran_order': False, 'shape': (2,), }", "structured"},
+      {"{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999999999999999, 3), }", "shape too large"},
+      {"{'descr': '<f8', 'fortran_order': Maybe, 'shape': (2, 3), }", "True or False"},
+  };
+  for (const auto& [dict, problem] : bad) {
+    INFO(dict);
+    const InvalidInput e = expect_invalid([&] { parse_npy_header(npy_by_hand(dict, ""), "input", "f.npy"); });
+    CHECK(e.field() == "input");
+    CHECK(e.value() == "f.npy");
+    CHECK(e.problem().find(problem) != std::string::npos);
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+  }
+  CHECK(expect_invalid([] { npy_preamble_length(std::string("\x93NUMPY\x09\x00\x10\x00", 10), "input", "v9"); })
+            .problem()
+            .find("version 9.0") != std::string::npos);
+  CHECK(expect_invalid([] { npy_preamble_length(std::string("\x93NUMP", 5), "input", "short"); }).problem().find("magic") !=
+        std::string::npos);
+}
+
+TEST_CASE("polyline_input: CSV with a header takes x, y, z by name; headerless takes 3 numbers", "[io][csv]") {
+  TempDir dir;
+  const fs::path trace = dir.path / "trace.csv", plain = dir.path / "plain.csv", crlf = dir.path / "crlf.csv";
+  put(trace, "t,x,y,z,vx,vy,vz\n0,1,0,0,9,9,9\n1,0,1,0,9,9,9\n2,0,0,1,9,9,9\n");
+  put(plain, "\n1, 0, 0\n\n0,1,0\n0,0,1");  // blank lines, spaces, no final newline
+  put(crlf, "\xEF\xBB\xBF\"Z\",\"Y\",\"X\"\r\n3,2,1\r\n6,5,4\r\n");  // BOM, quoted names, other order
+  const PolylineInput a = read_polyline(trace.string());
+  REQUIRE(a.vertices.size() == 3);
+  CHECK(a.vertices[1] == Vector3d(0, 1, 0));
+  CHECK(a.format == "csv with header");
+  const PolylineInput b = read_polyline(plain.string());
+  REQUIRE(b.vertices.size() == 3);
+  CHECK(b.vertices[0] == Vector3d(1, 0, 0));
+  CHECK(b.vertices[2] == Vector3d(0, 0, 1));
+  const PolylineInput c = read_polyline(crlf.string());
+  REQUIRE(c.vertices.size() == 2);
+  CHECK(c.vertices[0] == Vector3d(1, 2, 3));
+  CHECK(c.vertices[1] == Vector3d(4, 5, 6));
+}
+
+TEST_CASE("polyline_input: bad CSV rows are refused naming the line", "[io][csv][errors]") {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"0,0,1,5\n1,0,1,5\n", "line 1 has 4 numbers"},  // a row of 4 numbers is not a header
+      {"t,x,y\n0,1,2\n", "without a column z"},
+      {"x,y,x,z\n1,2,3,4\n", "names column x twice"},
+      {"x,y,z\n1,2,3\n4,5\n", "line 3 has 2 fields"},
+      {"x,y,z\n1,2,3\n4,5,6,7\n", "line 3 has more than 3 fields"},
+      {"1,2,3\n4,nan,6\n", "line 2 column 2 is not a finite number"},
+      {"1,2,3\n4,5,1e999\n", "line 2 column 3 is not a finite number"},
+      {"1,2,3\n4,5,6x\n", "line 2 column 3"},
+  };
+  for (const auto& [text, problem] : cases) {
+    INFO(text);
+    const fs::path p = dir.path / "bad.csv";
+    put(p, text);
+    const InvalidInput e = expect_invalid([&] { read_polyline(p.string()); });
+    CHECK(e.problem().find(problem) != std::string::npos);
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+  }
+  CHECK(expect_invalid([&] { read_polyline((dir.path / "missing.csv").string()); }).problem().find("cannot be read") == 0);
+  CHECK(expect_invalid([&] { read_polyline(dir.path.string()); }).problem() == "is a directory");
+}
+
+TEST_CASE("polyline_input: a large CSV spans many blocks and both parser threads, errors keep their line", "[io][csv]") {
+  TempDir dir;
+  const fs::path p = dir.path / "big.csv";
+  std::string text = "t,x,y,z\n";
+  const std::size_t rows = 300000;  // ~9 MB: three 4 MiB blocks
+  for (std::size_t i = 0; i < rows; ++i)
+    text += number_text(static_cast<double>(i)) + ",0.5," + number_text(1.0 / static_cast<double>(i + 1)) + "," +
+            number_text(-static_cast<double>(i)) + "\n";
+  put(p, text);
+  for (std::size_t threads : {1, 2}) {
+    const PolylineInput in = read_polyline(p.string(), "input", threads);
+    REQUIRE(in.vertices.size() == rows);
+    for (std::size_t i = 0; i < rows; i += 997) {
+      CHECK(in.vertices[i].x() == 0.5);
+      CHECK(in.vertices[i].y() == 1.0 / static_cast<double>(i + 1));
+      CHECK(in.vertices[i].z() == -static_cast<double>(i));
+    }
+  }
+  const std::size_t bad_row = 250000;  // in the third block, second half
+  const std::size_t at = text.find("\n" + number_text(static_cast<double>(bad_row)) + ",") + 1;
+  text.insert(text.find(',', at) + 1, "x");
+  put(p, text);
+  CHECK(expect_invalid([&] { read_polyline(p.string()); }).problem().find("line " + std::to_string(bad_row + 2) + " ") == 0);
+}
+
+TEST_CASE("polyline_input: .npy by magic bytes, whatever the name; float32 and trace arrays", "[io][npy]") {
+  TempDir dir;
+  const fs::path a = dir.path / "a.csv", b = dir.path / "b", c = dir.path / "c.npy";
+  put(a, npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }\n", doubles({1, 2, 3, 4, 5, 6})));
+  put(b, npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 4), }\n", doubles({0, 1, 2, 3, 9, 4, 5, 6})));
+  const float f[6] = {1.5f, 2.5f, 3.5f, 4.5f, 5.5f, 6.5f};
+  put(c, npy_by_hand("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }\n",
+                     std::string(reinterpret_cast<const char*>(f), sizeof f)));
+  for (const fs::path& p : {a, b}) {
+    const PolylineInput in = read_polyline(p.string());
+    REQUIRE(in.vertices.size() == 2);
+    CHECK(in.vertices[0] == Vector3d(1, 2, 3));
+    CHECK(in.vertices[1] == Vector3d(4, 5, 6));
+  }
+  const PolylineInput in = read_polyline(c.string());
+  REQUIRE(in.vertices.size() == 2);
+  CHECK(in.vertices[1] == Vector3d(4.5, 5.5, 6.5));
+  CHECK(in.format == "npy <f4 (2, 3)");
+  // Fewer bytes than the shape says, more bytes, a 1-D array, a (N, 5) array.
+  const std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }\n";
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {npy_by_hand(dict, doubles({1, 2, 3, 4, 5})), "truncated"},
+      {npy_by_hand(dict, doubles({1, 2, 3, 4, 5, 6, 7})), "bytes after the array's data"},
+      {npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (6,), }\n", doubles({1, 2, 3, 4, 5, 6})), "shape (6,)"},
+      {npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (1, 5), }\n", doubles({1, 2, 3, 4, 5})), "shape (1, 5)"},
+      {npy_by_hand(dict, "").substr(0, 20), "truncated header"},
+  };
+  for (const auto& [bytes, problem] : bad) {
+    INFO(problem);
+    const fs::path p = dir.path / "bad.npy";
+    put(p, bytes);
+    CHECK(expect_invalid([&] { read_polyline(p.string()); }).problem().find(problem) != std::string::npos);
+  }
+}
+
+TEST_CASE("output_file: a file appears only on commit, with no temporary left; discard leaves the old file",
+          "[io][output]") {
+  TempDir dir;
+  const fs::path p = dir.path / "out.csv";
+  put(p, "old\n");
+  {
+    OutputFile f = OutputFile::open(p.string(), "--output");
+    f.write("new\n");
+    f.flush();
+    CHECK(slurp(p) == "old\n");  // until commit the target is untouched
+  }  // destroyed without commit: discarded
+  CHECK(slurp(p) == "old\n");
+  CHECK(dir.entries() == std::vector<std::string>{"out.csv"});
+  OutputFile f = OutputFile::open(p.string(), "--output");
+  for (int i = 0; i < 300000; ++i) f.write("0123456789");  // more than the buffer
+  f.commit();
+  CHECK(fs::file_size(p) == 3000000u);
+  CHECK(dir.entries() == std::vector<std::string>{"out.csv"});
+  // A 255-byte file name still works: the temporary name is short.
+  const fs::path longname = dir.path / std::string(255, 'a');
+  OutputFile g = OutputFile::open(longname.string(), "--output");
+  g.write("x");
+  g.commit();
+  CHECK(slurp(longname) == "x");
+}
+
+TEST_CASE("output_file: a device or FIFO target is written directly, never replaced", "[io][output][device]") {
+  TempDir dir;
+  const fs::path full = dir.path / "full", null = dir.path / "null", fifo = dir.path / "fifo";
+  REQUIRE(::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) == 0);  // a copy of /dev/full
+  REQUIRE(::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);  // a copy of /dev/null
+  OutputFile n = OutputFile::open(null.string(), "--output");
+  n.write("data");
+  n.commit();
+  CHECK(fs::is_character_file(null));
+  OutputFile f = OutputFile::open(full.string(), "--output");
+  f.write("data");
+  try {
+    f.commit();
+    FAIL("writing to a full device succeeded");
+  } catch (const OutputError& e) {
+    CHECK(e.error_number() == ENOSPC);
+    CHECK(std::string(e.what()).find("--output = " + full.string()) == 0);
+  }
+  CHECK(fs::is_character_file(full));
+  // A FIFO: the bytes arrive at the reader, the FIFO stays a FIFO.
+  REQUIRE(::mkfifo(fifo.c_str(), 0666) == 0);
+  std::string got;
+  std::thread reader([&] { got = slurp(fifo); });
+  OutputFile w = OutputFile::open(fifo.string(), "--output");
+  w.write("through the fifo\n");
+  w.commit();
+  reader.join();
+  CHECK(got == "through the fifo\n");
+  CHECK(fs::is_fifo(fifo));
+}
+
+TEST_CASE("output_file: commit_together puts back every file when a later rename fails", "[io][output]") {
+  TempDir dir;
+  const fs::path a = dir.path / "a.csv", blocker = dir.path / "b.csv";
+  put(a, "previous a\n");
+  {
+    OutputFile fa = OutputFile::open(a.string(), "--output");
+    fa.write("new a\n");
+    OutputFile fb = OutputFile::open(blocker.string(), "--pairs");
+    fb.write("new b\n");
+    fs::create_directory(blocker);           // renaming a file onto a directory fails (EISDIR)
+    fs::create_directory(blocker / "keep");  // non-empty
+    CHECK_THROWS_AS(commit_together({&fa, &fb}), OutputError);
+  }
+  CHECK(slurp(a) == "previous a\n");
+  CHECK(fs::is_directory(blocker));
+  std::vector<std::string> entries = dir.entries();
+  std::sort(entries.begin(), entries.end());
+  CHECK(entries == std::vector<std::string>{"a.csv", "b.csv", "b.csv/keep"});
+  // A new file (no previous one) is removed again.
+  const fs::path fresh = dir.path / "fresh.csv";
+  {
+    OutputFile ff = OutputFile::open(fresh.string(), "--output");
+    ff.write("x");
+    const fs::path blocker2 = dir.path / "c.csv";
+    OutputFile fb2 = OutputFile::open(blocker2.string(), "--pairs");
+    fb2.write("y");
+    fs::create_directory(blocker2);
+    fs::create_directory(blocker2 / "keep");
+    CHECK_THROWS_AS(commit_together({&ff, &fb2}), OutputError);
+  }
+  CHECK_FALSE(fs::exists(fresh));
+  entries = dir.entries();
+  std::sort(entries.begin(), entries.end());
+  CHECK(entries == std::vector<std::string>{"a.csv", "b.csv", "b.csv/keep", "c.csv", "c.csv/keep"});
+}
+
+TEST_CASE("parallel_blocks: blocks are consumed in order for any thread count; errors come back", "[io][parallel]") {
+  for (std::size_t threads : {1, 2, 3, 7}) {
+    std::vector<std::size_t> seen;
+    for_each_block_in_order(
+        100, threads, [](std::size_t b, std::string& s) { s = std::to_string(b); },
+        [&](const std::string& s) { seen.push_back(std::stoul(s)); });
+    REQUIRE(seen.size() == 100);
+    for (std::size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i);
+    CHECK_THROWS_WITH(for_each_block_in_order(
+                          50, threads,
+                          [](std::size_t b, std::string&) {
+                            if (b == 17) throw std::runtime_error("producer");
+                          },
+                          [](const std::string&) {}),
+                      "producer");
+    std::size_t consumed = 0;
+    CHECK_THROWS_WITH(for_each_block_in_order(
+                          50, threads, [](std::size_t, std::string&) {},
+                          [&](const std::string&) {
+                            if (++consumed == 5) throw std::runtime_error("consumer");
+                          }),
+                      "consumer");
+  }
+}
+
+TEST_CASE("trace_output: the same bytes for 1, 2 and 5 threads, CSV rows = the curve, npy = the same doubles",
+          "[io][trace]") {
+  TempDir dir;
+  const GearTrain train(1.0, 2.0, Ratio(7, 3));
+  const TracerCurve<double> curve(train);
+  const UniformSampling<double> s = period_sampling(curve, 40000);  // three blocks
+  std::string first_csv, first_npy;
+  for (std::size_t threads : {1, 2, 5}) {
+    for (TraceFormat format : {TraceFormat::csv, TraceFormat::npy}) {
+      const fs::path p = dir.path / (format == TraceFormat::csv ? "t.csv" : "t.npy");
+      OutputFile out = OutputFile::open(p.string(), "--output");
+      write_trace(out, curve, s, {format, true, threads});
+      out.commit();
+      const std::string bytes = slurp(p);
+      std::string& first = format == TraceFormat::csv ? first_csv : first_npy;
+      if (first.empty()) first = bytes;
+      CHECK(bytes == first);
+    }
+  }
+  // npy: header, then rows t, x, y, z, vx, vy, vz exactly as the curve computes them.
+  const NpyHeader h = parse_npy_header(first_npy, "input", "t.npy");
+  CHECK(h.shape == std::vector<std::uint64_t>{40000, 7});
+  REQUIRE(first_npy.size() == h.data_offset + 40000 * 7 * 8);
+  for (std::size_t i = 0; i < 40000; i += 1234) {
+    double row[7];
+    std::memcpy(row, first_npy.data() + h.data_offset + i * 56, sizeof row);
+    const double t = s.parameter(i);
+    const Vector3d P = curve.point(t), V = curve.velocity(t);
+    CHECK(bits(row[0]) == bits(t));
+    for (int k = 0; k < 3; ++k) {
+      CHECK(bits(row[1 + k]) == bits(P[k]));
+      CHECK(bits(row[4 + k]) == bits(V[k]));
+    }
+  }
+  // CSV: the header and 40000 rows that parse back to the same doubles as the npy.
+  const fs::path csv = dir.path / "t.csv";
+  const PolylineInput back = read_polyline(csv.string());
+  REQUIRE(back.vertices.size() == 40000);
+  CHECK(first_csv.rfind("t,x,y,z,vx,vy,vz\n", 0) == 0);
+  for (std::size_t i = 0; i < 40000; i += 777) CHECK(back.vertices[i] == curve.point(s.parameter(i)));
+}
