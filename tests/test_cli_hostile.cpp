@@ -94,6 +94,33 @@ TEST_CASE("hostile: scene_trailing_garbage and NUL bytes are not valid JSON", "[
   CHECK_FALSE(fs::exists(dir.path / "o.csv"));
 }
 
+TEST_CASE("hostile: fuzz_findings: a number overflowing JSON, a BOM-only CSV, a ratio overflowing int64 in a slice", "[cli][hostile][fuzz]") {
+  // Found by tests/fuzz (fuzz_scene, fuzz_atlas_csv): both used to end in an uncaught exception
+  // or undefined behaviour (a double beyond int64 cast to int64).
+  TempDir dir;
+  write_file(dir.path / "big.json", "{\"trains\":[{\"name\":\"a\",\"a2\":33e333,\"a3\":\"1\",\"n\":\"2\","
+                                    "\"effects\":{\"trace\":\"o.csv\"}}]}");
+  check_refused(shell(kExe + " scene big.json", dir), "number overflow");
+  CHECK_FALSE(fs::exists(dir.path / "o.csv"));
+
+  // A file holding only a UTF-8 byte order mark: no rows (used to divide 0 by 0 sizing a buffer).
+  write_file(dir.path / "bom.csv", "\xef\xbb\xbf");
+  check_refused(shell(kExe + " crossings --input bom.csv", dir), "0 vertices");
+
+  REQUIRE(shell(kExe + " atlas --n 2 --grid 2 -o a.csv", dir).status == 0);
+  std::string text = slurp(dir.path / "a.csv");
+  const std::string n_eq = "n=2 ";
+  REQUIRE(text.find(n_eq) != std::string::npos);
+  for (const char* n : {"n=33333333333333333333333333333333/1 ", "n=1e80 ", "n=-0/1 ", "n=2.5 "}) {
+    INFO(n);
+    std::string bad = text;
+    bad.replace(bad.find(n_eq), n_eq.size(), n);
+    write_file(dir.path / "bad.csv", bad);
+    check_refused(shell(kExe + " atlas-merge -o m.csv bad.csv", dir), "bad.csv");
+    CHECK_FALSE(fs::exists(dir.path / "m.csv"));
+  }
+}
+
 TEST_CASE("hostile: names_with_newlines are escaped so that errors stay one line", "[cli][hostile][scene]") {
   TempDir dir;
   write_file(dir.path / "k.json", "{\"trains\":[{" + kTrain + ",\"a\\nb\":1,\"effects\":{\"trace\":\"o.csv\"}}]}");

@@ -160,9 +160,16 @@ struct AtlasSummary {
   std::size_t with_tangencies = 0;                   // cells with a tangency node
   std::size_t predicted = 0;                         // cells with a node prediction (n = 1, 2)
   std::vector<std::size_t> disagreements;            // indices: agree == false or cusps differ
+  std::size_t disagreement_count = 0;                // all of them (disagreements may keep fewer)
   std::size_t disagreements_off_boundaries = 0;      // of those, farther than kAtlasBoundaryBand
 };
 inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const Ratio& ratio);
+
+/// Adds one cell, the k-th of the cells summarised (for a stream of cells, in bounded memory:
+/// indices of disagreeing cells are kept only while fewer than max_kept are; disagreement_count
+/// counts them all).
+inline void add_to_summary(AtlasSummary& s, const AtlasCell& c, std::size_t k, const Ratio& ratio,
+                           std::size_t max_kept = static_cast<std::size_t>(-1));
 
 /// The curves in the (a2, a3) plane where the class can change, for this ratio: a3 = a_p(a2)
 /// and pi - a_p(a2) for every n (cusps; for n = 1 these are Eq. 24's ends a2/2, pi - a2/2);
@@ -305,20 +312,23 @@ inline std::vector<AtlasCell> compute_atlas(const AtlasSpec& spec, AtlasRows row
   return cells;
 }
 
+inline void add_to_summary(AtlasSummary& s, const AtlasCell& c, std::size_t k, const Ratio& ratio,
+                           std::size_t max_kept) {
+  ++s.cells;
+  ++s.by_class[static_cast<int>(c.numeric_class())];
+  ++s.by_nodes[c.nodes];
+  if (c.tangencies > 0) ++s.with_tangencies;
+  if (c.analytic_nodes) ++s.predicted;
+  if ((c.agree && !*c.agree) || !c.cusps_agree) {
+    ++s.disagreement_count;
+    if (s.disagreements.size() < max_kept) s.disagreements.push_back(k);
+    if (nearest_boundary(c.a2, c.a3, ratio).distance > kAtlasBoundaryBand) ++s.disagreements_off_boundaries;
+  }
+}
+
 inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const Ratio& ratio) {
   AtlasSummary s;
-  s.cells = cells.size();
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    const AtlasCell& c = cells[k];
-    ++s.by_class[static_cast<int>(c.numeric_class())];
-    ++s.by_nodes[c.nodes];
-    if (c.tangencies > 0) ++s.with_tangencies;
-    if (c.analytic_nodes) ++s.predicted;
-    if ((c.agree && !*c.agree) || !c.cusps_agree) {
-      s.disagreements.push_back(k);
-      if (nearest_boundary(c.a2, c.a3, ratio).distance > kAtlasBoundaryBand) ++s.disagreements_off_boundaries;
-    }
-  }
+  for (std::size_t k = 0; k < cells.size(); ++k) add_to_summary(s, cells[k], k, ratio);
   return s;
 }
 

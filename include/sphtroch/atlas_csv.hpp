@@ -54,13 +54,18 @@ inline std::string atlas_csv_row(const AtlasCell& cell);
 inline void write_atlas_csv(std::ostream& out, const AtlasSpec& spec, const std::optional<AtlasShard>& shard,
                             const std::vector<AtlasCell>& cells);
 
-/// A parsed atlas file or slice.
-struct AtlasCsv {
+/// The first two lines of an atlas file or slice: which atlas, which rows.
+struct AtlasCsvHead {
   std::string name;                 // where it came from (for messages)
   AtlasSpec spec;
   std::string spec_comment;         // the comment line without the shard part
   std::optional<AtlasShard> shard;  // nullopt: the whole atlas
   AtlasRows rows;
+  std::size_t cell_count() const { return (rows.end - rows.begin) * spec.grid; }
+};
+
+/// A parsed atlas file or slice.
+struct AtlasCsv : AtlasCsvHead {
   std::vector<AtlasCell> cells;
 };
 
@@ -68,9 +73,18 @@ struct AtlasCsv {
 /// by write_atlas_csv (any row out of order, missing, or not re-printing identically).
 inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name);
 
-/// Joins slices (any order) into the whole atlas. Throws InvalidInput when the slices belong to
-/// different atlases (comment lines differ), when a shard is missing or given twice, or when
-/// the shard counts differ. A single unsharded file is returned as it is.
+/// The same checks, one line at a time (for reading a slice as a stream, in bounded memory):
+/// the comment and header lines, then row k (0-based, of head.cell_count()) of the file.
+inline AtlasCsvHead read_atlas_csv_head(std::string_view comment, std::string_view header, const std::string& name);
+inline AtlasCell read_atlas_csv_row(const AtlasCsvHead& head, std::size_t k, std::string_view line);
+
+/// The slices of one atlas in shard order (indices into heads). Throws InvalidInput when they
+/// belong to different atlases (comment lines differ), when a shard is missing or given twice,
+/// or when the shard counts differ.
+inline std::vector<std::size_t> atlas_slice_order(const std::vector<AtlasCsvHead>& heads);
+
+/// Joins slices (any order) into the whole atlas, with the checks of atlas_slice_order. A single
+/// unsharded file is returned as it is.
 inline AtlasCsv merge_atlas_slices(std::vector<AtlasCsv> slices);
 
 // =============================================================================================
@@ -142,19 +156,45 @@ inline void write_atlas_csv(std::ostream& out, const AtlasSpec& spec, const std:
   for (const AtlasCell& c : cells) out << atlas_csv_row(c) << '\n';
 }
 
-inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name) {
+namespace atlas_csv_detail {
+
+inline const char* const kAtlasCsvForm =
+    "a CSV written by sphtroch atlas (comment line, header, one row per cell in order)";
+
+inline InvalidInput bad_slice(const std::string& name, const std::string& problem) {
+  return InvalidInput("slice", name, problem, kAtlasCsvForm);
+}
+
+/// n=p or n=p/q in lowest terms, as Ratio::str() prints it (p may be negative). Ratio refuses
+/// terms beyond kMaxTerm, and to_uint reads at most 18 digits, so nothing can overflow.
+inline Ratio ratio_field(std::string_view text, const std::string& name) {
+  const auto nf = split(text, '/');
+  const bool negative = !nf[0].empty() && nf[0][0] == '-';
+  const auto p = to_uint(nf[0].substr(negative ? 1 : 0));
+  const auto q = nf.size() == 2 ? to_uint(nf[1]) : std::optional<std::uint64_t>(1);
+  if (!p || !q || nf.size() > 2) throw bad_slice(name, "n=" + std::string(text) + " is not p/q");
+  const auto signed_p = static_cast<std::int64_t>(*p);
+  return Ratio(negative ? -signed_p : signed_p, static_cast<std::int64_t>(*q));
+}
+
+inline AngleRange range_field(std::string_view text, const std::string& name) {
+  const auto r = split(text, ':');
+  const auto lo = r.size() == 2 ? to_double(r[0]) : std::nullopt;
+  const auto hi = r.size() == 2 ? to_double(r[1]) : std::nullopt;
+  if (!lo || !hi) throw bad_slice(name, "range " + std::string(text) + " is not LO:HI");
+  return AngleRange{*lo, *hi};
+}
+
+}  // namespace atlas_csv_detail
+
+inline AtlasCsvHead read_atlas_csv_head(std::string_view comment, std::string_view header, const std::string& name) {
   using namespace atlas_csv_detail;
-  const std::string form = "a CSV written by sphtroch atlas (comment line, header, one row per cell in order)";
-  auto bad = [&](const std::string& problem) { return InvalidInput("slice", name, problem, form); };
-  AtlasCsv out;
+  auto bad = [&](const std::string& problem) { return bad_slice(name, problem); };
+  AtlasCsvHead out;
   out.name = name;
-  if (text.empty() || text.back() != '\n') throw bad("empty or truncated (no final newline)");
-  std::vector<std::string_view> lines = split(text.substr(0, text.size() - 1), '\n');
-  if (lines.size() < 2) throw bad("no comment and header lines");
-  const std::string_view comment = lines[0];
   const std::string_view prefix = "# sphtroch atlas ";
   if (comment.substr(0, prefix.size()) != prefix) throw bad("first line is not \"# sphtroch atlas ...\"");
-  if (lines[1] != kAtlasCsvHeader) throw bad("second line is not the atlas header");
+  if (header != kAtlasCsvHeader) throw bad("second line is not the atlas header");
   const std::vector<std::string_view> words = split(comment.substr(prefix.size()), ' ');
 
   // The spec, re-printed and compared with the comment (so every field is as written).
@@ -162,23 +202,12 @@ inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name) {
              reading = field(words, "reading");
   if (!n || !grid || !a2 || !a3 || !reading) throw bad("comment line lacks n=, grid=, a2=, a3= or reading=");
   try {
-    const auto nf = split(*n, '/');
-    const auto p = to_double(nf[0]);
-    const auto q = nf.size() == 2 ? to_double(nf[1]) : std::optional<double>(1.0);
-    if (!p || !q || nf.size() > 2) throw bad("n=" + std::string(*n) + " is not p/q");
-    out.spec.ratio = Ratio(static_cast<std::int64_t>(*p), static_cast<std::int64_t>(*q));
+    out.spec.ratio = ratio_field(*n, name);
     const auto g = to_uint(*grid);
     if (!g) throw bad("grid=" + std::string(*grid) + " is not a whole number");
     out.spec.grid = static_cast<std::size_t>(*g);
-    auto range = [&](std::string_view s) {
-      const auto r = split(s, ':');
-      const auto lo = r.size() == 2 ? to_double(r[0]) : std::nullopt;
-      const auto hi = r.size() == 2 ? to_double(r[1]) : std::nullopt;
-      if (!lo || !hi) throw bad("range " + std::string(s) + " is not LO:HI");
-      return AngleRange{*lo, *hi};
-    };
-    out.spec.a2 = range(*a2);
-    out.spec.a3 = range(*a3);
+    out.spec.a2 = range_field(*a2, name);
+    out.spec.a3 = range_field(*a3, name);
     out.spec.literal = *reading == "literal";
     out.spec.validate();
   } catch (const InvalidInput& e) {
@@ -202,55 +231,67 @@ inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name) {
   }
   if (std::string(comment) != atlas_csv_comment(out.spec, out.shard))
     throw bad("comment line is not as sphtroch atlas writes it: \"" + std::string(comment) + "\"");
-
-  // Rows, in order; each must re-print identically.
-  const std::size_t g = out.spec.grid;
-  const std::size_t expected = (out.rows.end - out.rows.begin) * g;
-  if (lines.size() - 2 != expected)
-    throw bad(std::to_string(lines.size() - 2) + " rows where rows " + std::to_string(out.rows.begin) + ":" +
-              std::to_string(out.rows.end) + " of grid " + std::to_string(g) + " need " + std::to_string(expected));
-  out.cells.reserve(expected);
-  for (std::size_t k = 0; k < expected; ++k) {
-    const std::string_view line = lines[k + 2];
-    const auto f = split(line, ',');
-    auto row_error = [&](const std::string& what) {
-      return bad("line " + std::to_string(k + 3) + ": " + what + ": \"" + std::string(line.substr(0, 120)) + "\"");
-    };
-    if (f.size() != 11) throw row_error("not 11 fields");
-    AtlasCell c;
-    const auto i = to_uint(f[0]), j = to_uint(f[1]);
-    const auto a2v = to_double(f[2]), a3v = to_double(f[3]);
-    const auto nodes = to_uint(f[4]), cr = to_uint(f[5]), ta = to_uint(f[6]), cu = to_uint(f[7]), ac = to_uint(f[9]);
-    if (!i || !j || !a2v || !a3v || !nodes || !cr || !ta || !cu || !ac) throw row_error("malformed field");
-    if (*i != out.rows.begin + k / g || *j != k % g) throw row_error("cell out of order (rows go i major, j minor)");
-    c.i = static_cast<std::uint32_t>(*i);
-    c.j = static_cast<std::uint32_t>(*j);
-    c.a2 = *a2v;
-    c.a3 = *a3v;
-    c.nodes = static_cast<std::uint32_t>(*nodes);
-    c.crossings = static_cast<std::uint32_t>(*cr);
-    c.tangencies = static_cast<std::uint32_t>(*ta);
-    c.cusps = static_cast<std::uint32_t>(*cu);
-    c.analytic_cusps = static_cast<std::uint32_t>(*ac);
-    c.cusps_agree = c.cusps == c.analytic_cusps;
-    if (f[8] != "NA") {
-      const auto an = to_uint(f[8]);
-      if (!an) throw row_error("malformed analytic_nodes");
-      c.analytic_nodes = static_cast<std::uint32_t>(*an);
-    }
-    if (f[10] != "NA") c.agree = f[10] == "1";
-    if (c.nodes != c.crossings + c.tangencies) throw row_error("nodes != crossings + tangencies");
-    if (c.agree.has_value() != c.analytic_nodes.has_value() ||
-        (c.agree && *c.agree != (c.nodes == *c.analytic_nodes && c.cusps_agree)))
-      throw row_error("agree does not match the counts");
-    if (c.a2 != out.spec.a2_at(c.i) || c.a3 != out.spec.a3_at(c.j)) throw row_error("a2, a3 are not the cell centre");
-    if (atlas_csv_row(c) != line) throw row_error("does not re-print identically");
-    out.cells.push_back(c);
-  }
   return out;
 }
 
-inline AtlasCsv merge_atlas_slices(std::vector<AtlasCsv> slices) {
+inline AtlasCell read_atlas_csv_row(const AtlasCsvHead& head, std::size_t k, std::string_view line) {
+  using namespace atlas_csv_detail;
+  const std::size_t g = head.spec.grid;
+  auto row_error = [&](const std::string& what) {
+    return bad_slice(head.name,
+                     "line " + std::to_string(k + 3) + ": " + what + ": \"" + std::string(line.substr(0, 120)) + "\"");
+  };
+  const auto f = split(line, ',');
+  if (f.size() != 11) throw row_error("not 11 fields");
+  AtlasCell c;
+  const auto i = to_uint(f[0]), j = to_uint(f[1]);
+  const auto a2v = to_double(f[2]), a3v = to_double(f[3]);
+  const auto nodes = to_uint(f[4]), cr = to_uint(f[5]), ta = to_uint(f[6]), cu = to_uint(f[7]), ac = to_uint(f[9]);
+  if (!i || !j || !a2v || !a3v || !nodes || !cr || !ta || !cu || !ac) throw row_error("malformed field");
+  if (*i != head.rows.begin + k / g || *j != k % g) throw row_error("cell out of order (rows go i major, j minor)");
+  c.i = static_cast<std::uint32_t>(*i);
+  c.j = static_cast<std::uint32_t>(*j);
+  c.a2 = *a2v;
+  c.a3 = *a3v;
+  c.nodes = static_cast<std::uint32_t>(*nodes);
+  c.crossings = static_cast<std::uint32_t>(*cr);
+  c.tangencies = static_cast<std::uint32_t>(*ta);
+  c.cusps = static_cast<std::uint32_t>(*cu);
+  c.analytic_cusps = static_cast<std::uint32_t>(*ac);
+  c.cusps_agree = c.cusps == c.analytic_cusps;
+  if (f[8] != "NA") {
+    const auto an = to_uint(f[8]);
+    if (!an) throw row_error("malformed analytic_nodes");
+    c.analytic_nodes = static_cast<std::uint32_t>(*an);
+  }
+  if (f[10] != "NA") c.agree = f[10] == "1";
+  if (c.nodes != c.crossings + c.tangencies) throw row_error("nodes != crossings + tangencies");
+  if (c.agree.has_value() != c.analytic_nodes.has_value() ||
+      (c.agree && *c.agree != (c.nodes == *c.analytic_nodes && c.cusps_agree)))
+    throw row_error("agree does not match the counts");
+  if (c.a2 != head.spec.a2_at(c.i) || c.a3 != head.spec.a3_at(c.j)) throw row_error("a2, a3 are not the cell centre");
+  if (atlas_csv_row(c) != line) throw row_error("does not re-print identically");
+  return c;
+}
+
+inline AtlasCsv read_atlas_csv(std::string_view text, const std::string& name) {
+  using namespace atlas_csv_detail;
+  if (text.empty() || text.back() != '\n') throw bad_slice(name, "empty or truncated (no final newline)");
+  const std::vector<std::string_view> lines = split(text.substr(0, text.size() - 1), '\n');
+  if (lines.size() < 2) throw bad_slice(name, "no comment and header lines");
+  AtlasCsv out;
+  static_cast<AtlasCsvHead&>(out) = read_atlas_csv_head(lines[0], lines[1], name);
+  const std::size_t expected = out.cell_count();
+  if (lines.size() - 2 != expected)
+    throw bad_slice(name, std::to_string(lines.size() - 2) + " rows where rows " + std::to_string(out.rows.begin) +
+                              ":" + std::to_string(out.rows.end) + " of grid " + std::to_string(out.spec.grid) +
+                              " need " + std::to_string(expected));
+  out.cells.reserve(expected);
+  for (std::size_t k = 0; k < expected; ++k) out.cells.push_back(read_atlas_csv_row(out, k, lines[k + 2]));
+  return out;
+}
+
+inline std::vector<std::size_t> atlas_slice_order(const std::vector<AtlasCsvHead>& slices) {
   const std::string form = "the slices of one atlas, each shard I/K (I = 1 .. K) exactly once";
   auto names = [&] {
     std::string s;
@@ -258,39 +299,46 @@ inline AtlasCsv merge_atlas_slices(std::vector<AtlasCsv> slices) {
     return s;
   };
   if (slices.empty()) throw InvalidInput("slices", "(none)", "no slice given", form);
-  const AtlasCsv& first = slices.front();
-  for (const AtlasCsv& s : slices)
+  const AtlasCsvHead& first = slices.front();
+  for (const AtlasCsvHead& s : slices)
     if (s.spec_comment != first.spec_comment)
       throw InvalidInput("slice", s.name, "belongs to another atlas (\"" + s.spec_comment + "\" vs \"" +
                                               first.spec_comment + "\" in " + first.name + ")", form);
   const std::size_t k = first.shard ? first.shard->count : 1;
-  for (const AtlasCsv& s : slices) {
+  for (const AtlasCsvHead& s : slices) {
     const std::size_t ks = s.shard ? s.shard->count : 1;
     if (ks != k)
       throw InvalidInput("slice", s.name, "is one of " + std::to_string(ks) + " shards, " + first.name + " one of " +
                                               std::to_string(k), form);
   }
-  std::vector<const AtlasCsv*> by_index(k + 1, nullptr);
-  for (const AtlasCsv& s : slices) {
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> by_index(k + 1, kNone);
+  for (std::size_t at = 0; at < slices.size(); ++at) {
+    const AtlasCsvHead& s = slices[at];
     const std::size_t i = s.shard ? s.shard->index : 1;
-    if (by_index[i])
+    if (by_index[i] != kNone)
       throw InvalidInput("slice", s.name, "shard " + std::to_string(i) + "/" + std::to_string(k) +
-                                              " given twice (also " + by_index[i]->name + ")", form);
-    by_index[i] = &s;
+                                              " given twice (also " + slices[by_index[i]].name + ")", form);
+    by_index[i] = at;
   }
   std::string missing;
   for (std::size_t i = 1; i <= k; ++i)
-    if (!by_index[i]) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(k);
+    if (by_index[i] == kNone) missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(k);
   if (!missing.empty()) throw InvalidInput("slices", names(), "shard " + missing + " missing", form);
+  by_index.erase(by_index.begin());
+  return by_index;
+}
 
+inline AtlasCsv merge_atlas_slices(std::vector<AtlasCsv> slices) {
+  const std::vector<AtlasCsvHead> heads(slices.begin(), slices.end());
+  const std::vector<std::size_t> order = atlas_slice_order(heads);
   AtlasCsv whole;
-  whole.name = names();
-  whole.spec = first.spec;
-  whole.spec_comment = first.spec_comment;
-  whole.rows = AtlasRows{0, first.spec.grid};
-  whole.cells.reserve(first.spec.cells());
-  for (std::size_t i = 1; i <= k; ++i)
-    whole.cells.insert(whole.cells.end(), by_index[i]->cells.begin(), by_index[i]->cells.end());
+  for (const AtlasCsvHead& h : heads) whole.name += (whole.name.empty() ? "" : " ") + h.name;
+  whole.spec = heads.front().spec;
+  whole.spec_comment = heads.front().spec_comment;
+  whole.rows = AtlasRows{0, whole.spec.grid};
+  whole.cells.reserve(whole.spec.cells());
+  for (std::size_t at : order) whole.cells.insert(whole.cells.end(), slices[at].cells.begin(), slices[at].cells.end());
   return whole;
 }
 

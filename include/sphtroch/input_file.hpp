@@ -2,6 +2,8 @@
 //
 //   sphtroch::InputFile in = sphtroch::InputFile::open("x.csv", "input");   // "-": standard input
 //   std::size_t got = in.read(buffer, size);   // < size only at the end of the input
+//   InputLines lines(in, 4096);                 // or InputLines(text, 4096) over bytes in memory
+//   for (std::string_view line; lines.next(line);) ...   // each line without its '\n'
 //
 // Errors throw InvalidInput(field, path, problem, "a readable file, or - for standard input"):
 // a path that does not exist, cannot be opened, is a directory, or fails while being read, and a
@@ -16,13 +18,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 namespace sphtroch {
 
@@ -129,5 +135,80 @@ inline std::string read_whole_input(const std::string& path, const std::string& 
   } while (true);
   return text;
 }
+
+
+/// The lines of an InputFile (read in 64 KiB blocks) or of bytes in memory, one at a time, in
+/// memory bounded by the block and the longest line. A line longer than max_line bytes throws
+/// InvalidInput(field, path, "line N is longer than max_line bytes").
+class InputLines {
+ public:
+  InputLines(InputFile& in, std::size_t max_line)
+      : source_([&in](char* out, std::size_t n) { return in.read(out, n); }), path_(in.path()), field_(in.field()),
+        max_line_(max_line) {}
+  InputLines(std::string_view text, std::string path, std::string field, std::size_t max_line)
+      : path_(std::move(path)), field_(std::move(field)), max_line_(max_line) {
+    source_ = [text](char* out, std::size_t n) mutable {
+      const std::size_t k = std::min(n, text.size());
+      std::memcpy(out, text.data(), k);
+      text.remove_prefix(k);
+      return k;
+    };
+  }
+
+  /// The next line without its '\n' (valid until the next call); false at the end of the input.
+  bool next(std::string_view& line) {
+    for (;;) {
+      const char* nl = static_cast<const char*>(std::memchr(buf_.data() + begin_, '\n', end_ - begin_));
+      if (nl) {
+        line = std::string_view(buf_.data() + begin_, static_cast<std::size_t>(nl - (buf_.data() + begin_)));
+        begin_ += line.size() + 1;
+        return count(line, true);
+      }
+      if (end_ - begin_ > max_line_) too_long();
+      if (at_end_) {
+        if (begin_ == end_) return false;
+        line = std::string_view(buf_.data() + begin_, end_ - begin_);
+        begin_ = end_;
+        return count(line, false);
+      }
+      refill();
+    }
+  }
+  /// Lines returned so far; whether the last of them ended with '\n'.
+  std::size_t line_number() const noexcept { return lines_; }
+  bool last_ended_with_newline() const noexcept { return newline_; }
+
+ private:
+  static constexpr std::size_t kBlock = std::size_t(1) << 16;
+
+  bool count(std::string_view line, bool newline) {
+    if (line.size() > max_line_) too_long();
+    ++lines_;
+    newline_ = newline;
+    return true;
+  }
+  void refill() {
+    buf_.erase(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(begin_));
+    end_ -= begin_;
+    begin_ = 0;
+    buf_.resize(end_ + kBlock);
+    const std::size_t got = source_(buf_.data() + end_, kBlock);
+    end_ += got;
+    buf_.resize(end_);
+    if (got < kBlock) at_end_ = true;
+  }
+  [[noreturn]] void too_long() const {
+    throw InvalidInput(field_, path_,
+                       "line " + std::to_string(lines_ + 1) + " is longer than " + std::to_string(max_line_) + " bytes",
+                       "lines of at most " + std::to_string(max_line_) + " bytes");
+  }
+
+  std::function<std::size_t(char*, std::size_t)> source_;
+  std::string path_, field_;
+  std::size_t max_line_;
+  std::vector<char> buf_;
+  std::size_t begin_ = 0, end_ = 0, lines_ = 0;
+  bool at_end_ = false, newline_ = false;
+};
 
 }  // namespace sphtroch

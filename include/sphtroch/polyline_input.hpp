@@ -261,7 +261,7 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
                   path, lines);
       line_base += lines;
     }
-    if (consumed == 0 && in.size() && *in.size() > complete) {  // reserve from the first block's row density
+    if (consumed == 0 && complete > 0 && in.size() && *in.size() > complete) {  // reserve from the first block's row density
       const double rows_per_byte = static_cast<double>(result.vertices.size()) / static_cast<double>(complete);
       result.vertices.reserve(static_cast<std::size_t>(rows_per_byte * 1.05 * static_cast<double>(*in.size())) + 1024);
     }

@@ -123,9 +123,10 @@ void write_atlas_outputs(const std::string& csv, const std::string& svg_path, co
 
 /// The summary: what was computed, counts per class, and every disagreement with its nearest
 /// boundary (see kMaxListedDisagreements).
-void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<AtlasCell>& cells, AtlasRows rows,
-                   const std::optional<AtlasShard>& shard, std::optional<double> seconds, std::size_t threads) {
-  const AtlasSummary s = summarize_atlas(cells, spec.ratio);
+/// `listed`: the first disagreeing cells (at most kMaxListedDisagreements), in order.
+void print_summary(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s, const std::vector<AtlasCell>& listed,
+                   AtlasRows rows, const std::optional<AtlasShard>& shard, std::optional<double> seconds,
+                   std::size_t threads) {
   out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
       << number(spec.a2.lo) << ", " << number(spec.a2.hi) << "], a3 in [" << number(spec.a3.lo) << ", "
       << number(spec.a3.hi) << "], cell centres; "
@@ -153,23 +154,18 @@ void print_summary(std::ostream& out, const AtlasSpec& spec, const std::vector<A
   else
     out << "report's criteria: the pitch-cone criterion (cusps) only; no node criterion for n = " << spec.ratio.str()
         << " (analytic_nodes, agree = NA)\n";
-  out << "disagreements (census vs report): " << s.disagreements.size() << " ("
-      << s.disagreements.size() - s.disagreements_off_boundaries << " within " << kAtlasBoundaryBand
+  out << "disagreements (census vs report): " << s.disagreement_count << " ("
+      << s.disagreement_count - s.disagreements_off_boundaries << " within " << kAtlasBoundaryBand
       << " rad of a boundary, " << s.disagreements_off_boundaries << " elsewhere)\n";
-  std::size_t listed = 0;
-  for (std::size_t k : s.disagreements) {
-    if (listed++ == kMaxListedDisagreements) {
-      out << "  ... and " << s.disagreements.size() - kMaxListedDisagreements
-          << " more (agree = 0 in the CSV)\n";
-      break;
-    }
-    const AtlasCell& c = cells[k];
+  for (const AtlasCell& c : listed) {
     const NearestBoundary b = nearest_boundary(c.a2, c.a3, spec.ratio);
     out << "  i=" << c.i << " j=" << c.j << " a2=" << number(c.a2) << " a3=" << number(c.a3) << ": census " << c.nodes
         << " node(s), " << c.cusps << " cusp(s); report "
         << (c.analytic_nodes ? std::to_string(*c.analytic_nodes) : std::string("NA")) << " node(s), "
         << c.analytic_cusps << " cusp(s); nearest boundary " << b.name << " at " << number(b.distance) << " rad\n";
   }
+  if (s.disagreement_count > listed.size())
+    out << "  ... and " << s.disagreement_count - listed.size() << " more (agree = 0 in the CSV)\n";
   if (seconds) {
     const double per_cell = s.cells ? *seconds * static_cast<double>(threads) / static_cast<double>(s.cells) : 0.0;
     char buf[160];
@@ -220,33 +216,159 @@ void run_atlas(const AtlasOptions& o) {
   const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells);
   write_atlas_outputs(
       o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); },
-      [&](std::ostream& out) { print_summary(out, spec, cells, rows, shard, seconds, threads); });
+      [&](std::ostream& out) {
+        const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
+        std::vector<AtlasCell> listed;
+        for (std::size_t k : summary.disagreements)
+          if (listed.size() < kMaxListedDisagreements) listed.push_back(cells[k]);
+        print_summary(out, spec, summary, listed, rows, shard, seconds, threads);
+      });
 }
 
+/// One slice given to atlas-merge. A regular file is read twice or more (its head first, its rows
+/// when its turn comes), never held in memory; standard input, a pipe or a FIFO can be read only
+/// once, so its text is held (bounded by kMaxHeldSliceBytes).
+struct SliceSource {
+  std::string path;
+  AtlasCsvHead head;
+  std::optional<std::string> held;
+};
+
+/// Atlas lines are under 200 bytes; a longer one is not an atlas line.
+constexpr std::size_t kMaxAtlasLine = 4096;
+/// A slice read from a pipe is held in memory: at most this many bytes (~13 M cells).
+constexpr std::size_t kMaxHeldSliceBytes = std::size_t(1) << 30;
+
+UsageError unreadable_slice(const std::string& path, const InvalidInput& e) {
+  return UsageError{"atlas-merge: slice = " + path + ": " + e.problem() +
+                    "; valid: a readable CSV written by sphtroch atlas"};
+}
+
+/// Calls row(cell, line) for every row of the slice, in order, with read_atlas_csv's checks
+/// (the head again, row count, final newline); memory: one block and one line.
+template <class Row>
+void for_each_row(const SliceSource& s, const Row& row) {
+  std::optional<InputFile> file;
+  std::optional<InputLines> lines;
+  try {
+    if (s.held) {
+      lines.emplace(*s.held, s.path, "slice", kMaxAtlasLine);
+    } else {
+      file.emplace(InputFile::open(s.path, "slice"));
+      lines.emplace(*file, kMaxAtlasLine);
+    }
+  } catch (const InvalidInput& e) {
+    throw unreadable_slice(s.path, e);
+  }
+  auto bad = [&](const std::string& problem) { return InvalidInput("slice", s.path, problem, atlas_csv_detail::kAtlasCsvForm); };
+  auto next = [&](std::string_view& line) {
+    try {
+      return lines->next(line);
+    } catch (const InvalidInput& e) {
+      if (e.field() == "slice" && e.value() == s.path && e.problem().rfind("line ", 0) == 0) throw bad(e.problem());
+      throw unreadable_slice(s.path, e);
+    }
+  };
+  std::string_view comment, header, line;
+  if (!next(comment) || !next(header)) throw bad("no comment and header lines");
+  if (const AtlasCsvHead again = read_atlas_csv_head(comment, header, s.path);
+      again.spec_comment != s.head.spec_comment || again.rows.begin != s.head.rows.begin)
+    throw bad("changed while being merged");
+  const std::size_t expected = s.head.cell_count();
+  std::size_t k = 0;
+  for (; next(line); ++k)
+    if (k < expected) row(read_atlas_csv_row(s.head, k, line), line);
+  if (k != 0 && !lines->last_ended_with_newline()) throw bad("empty or truncated (no final newline)");
+  if (k != expected)
+    throw bad(std::to_string(k) + " rows where rows " + std::to_string(s.head.rows.begin) + ":" +
+              std::to_string(s.head.rows.end) + " of grid " + std::to_string(s.head.spec.grid) + " need " +
+              std::to_string(expected));
+}
+
+/// The head of every slice; a slice that is not a regular file is read whole and held.
+std::vector<SliceSource> open_slices(const std::vector<std::string>& paths) {
+  std::vector<SliceSource> sources;
+  for (const std::string& path : paths) {
+    SliceSource s;
+    s.path = path;
+    try {
+      InputFile in = InputFile::open(path, "slice");
+      if (path == "-" || !in.size()) {  // read once: stdin (even from a file), a pipe, a FIFO
+        std::string text;
+        std::vector<char> block(std::size_t(1) << 16);
+        while (const std::size_t k = in.read(block.data(), block.size())) {
+          text.append(block.data(), k);
+          if (text.size() > kMaxHeldSliceBytes)
+            throw InvalidInput("slice", path, "larger than " + std::to_string(kMaxHeldSliceBytes) + " bytes from a pipe",
+                               "a regular file (streamed), or a pipe of at most that size");
+          if (k < block.size()) break;
+        }
+        s.held = std::move(text);
+      }
+      std::optional<InputLines> lines;
+      if (s.held) lines.emplace(*s.held, path, "slice", kMaxAtlasLine);
+      else lines.emplace(in, kMaxAtlasLine);
+      std::string_view comment, header;
+      if (!lines->next(comment)) throw InvalidInput("slice", path, "empty or truncated (no final newline)", atlas_csv_detail::kAtlasCsvForm);
+      if (!lines->next(header) || !lines->last_ended_with_newline())
+        throw InvalidInput("slice", path, "no comment and header lines", atlas_csv_detail::kAtlasCsvForm);
+      s.head = read_atlas_csv_head(comment, header, path);
+    } catch (const InvalidInput& e) {
+      if (e.field() == "slice" && e.valid_range() == atlas_csv_detail::kAtlasCsvForm) throw;
+      throw unreadable_slice(path, e);
+    }
+    sources.push_back(std::move(s));
+  }
+  return sources;
+}
+
+/// Joins the slices in shard order: the merged CSV streamed row by row (memory: one block and
+/// one line per slice read, not the grid); with --svg the cells are also kept for the map
+/// (56 bytes per cell). On standard output every slice is checked whole before the first byte.
 void run_merge(const MergeOptions& o) {
   check_writable(o.output, "--output");
   check_writable(o.svg, "--svg");
   std::vector<NamedFile> inputs;
   for (const std::string& s : o.slices) inputs.push_back({s, "slice"});
   check_distinct_files({{o.output, "--output"}, {o.svg, "--svg"}}, inputs);
-  std::vector<AtlasCsv> slices;
   try {
-    for (const std::string& path : o.slices) {
-      std::string text;
-      try {
-        text = read_whole_input(path, "slice");
-      } catch (const InvalidInput& e) {
-        throw UsageError{"atlas-merge: slice = " + path + ": " + e.problem() + "; valid: a readable CSV written by sphtroch atlas"};
-      }
-      slices.push_back(read_atlas_csv(text, path));
-    }
-    AtlasCsv whole = merge_atlas_slices(std::move(slices));
-    const std::string svg = o.svg.empty() ? std::string() : write_svg_text(whole.spec, whole.cells);
-    write_atlas_outputs(
-        o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, whole.spec, std::nullopt, whole.cells); },
-        [&](std::ostream& out) {
-          print_summary(out, whole.spec, whole.cells, whole.rows, std::nullopt, std::nullopt, 1);
+    const std::vector<SliceSource> sources = open_slices(o.slices);
+    std::vector<AtlasCsvHead> heads;
+    for (const SliceSource& s : sources) heads.push_back(s.head);
+    const std::vector<std::size_t> order = atlas_slice_order(heads);
+    const AtlasSpec& spec = heads.front().spec;
+
+    AtlasSummary summary;
+    std::vector<AtlasCell> listed, all;
+    auto pass = [&](std::ostream* out) {
+      summary = AtlasSummary{};
+      listed.clear();
+      all.clear();
+      if (out) *out << atlas_csv_comment(spec) << '\n' << kAtlasCsvHeader << '\n';
+      std::size_t k = 0;
+      for (std::size_t at : order)
+        for_each_row(sources[at], [&](const AtlasCell& c, std::string_view line) {
+          const std::size_t before = summary.disagreement_count;
+          add_to_summary(summary, c, k++, spec.ratio, 0);
+          if (summary.disagreement_count > before && listed.size() < kMaxListedDisagreements) listed.push_back(c);
+          if (!o.svg.empty()) all.push_back(c);
+          if (out) out->write(line.data(), static_cast<std::streamsize>(line.size())).put('\n');
         });
+    };
+    StagedOutputs outputs;
+    if (o.output.empty() || o.output == "-") pass(nullptr);  // every check before stdout sees a byte
+    if (!o.output.empty()) outputs.stage(o.output, "--output", [&](std::ostream& out) { pass(&out); });
+    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << render_atlas_svg(spec, all); });
+    outputs.commit();
+    auto write_summary = [&](std::ostream& out) {
+      print_summary(out, spec, summary, listed, AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1);
+    };
+    if (o.output == "-") {
+      write_summary(std::cerr);
+      std::cerr.flush();
+    } else {
+      write_output("-", write_summary);
+    }
   } catch (const InvalidInput& e) {
     throw UsageError{std::string("atlas-merge: ") + e.what()};
   }

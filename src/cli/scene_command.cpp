@@ -169,6 +169,12 @@ Json read_json(const SceneError& err, const std::string& text) {
     if (at != std::string::npos) why = why.substr(at + 2);
     throw UsageError{err.file + ": " + line_column(text, e.byte) + ": not valid JSON (" + why +
                      "); valid: a JSON scene file (README: sphtroch scene)"};
+  } catch (const nlohmann::json::out_of_range& e) {
+    // what(): "[json.exception.out_of_range.406] number overflow parsing '1e999'" (no position).
+    std::string why = e.what();
+    if (const auto at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    throw UsageError{err.file + ": not valid JSON (" + why +
+                     "); valid: a JSON scene file with finite numbers (README: sphtroch scene)"};
   }
 }
 
