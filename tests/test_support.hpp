@@ -4,6 +4,12 @@
 #include "catch2/catch.hpp"
 #include "sphtroch/errors.hpp"
 
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
 namespace sphtroch::test {
 
 /// Runs f, expects sphtroch::InvalidInput, and returns it for inspection (fails the test otherwise).
@@ -17,5 +23,37 @@ InvalidInput expect_invalid(F&& f) {
   FAIL("no InvalidInput thrown");
   return InvalidInput("", "", "", "");
 }
+
+#ifdef SPHTROCH_REFERENCE_DIR
+/// One row of data/reference/paper_cases.csv: a case the report states outright.
+struct PaperCase {
+  std::string id;
+  std::int64_t n_num = 1, n_den = 1;
+  double a2 = 0, a3 = 0;  // radians, as the CSV gives them
+  std::size_t nodes = 0, cusps = 0;
+};
+
+inline std::vector<PaperCase> paper_cases() {
+  std::ifstream in(std::string(SPHTROCH_REFERENCE_DIR) + "/paper_cases.csv");
+  REQUIRE(in.good());
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line.rfind("id,n_num,n_den,a2_symbolic,a3_symbolic,a2_rad,a3_rad,nodes,cusps", 0) == 0);
+  std::vector<PaperCase> rows;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    // The first nine fields hold no commas or quotes; the tenth (source) is quoted free text.
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    std::string cell;
+    for (int i = 0; i < 9 && std::getline(ss, cell, ','); ++i) f.push_back(cell);
+    REQUIRE(f.size() == 9);
+    rows.push_back(PaperCase{f[0], std::stoll(f[1]), std::stoll(f[2]), std::stod(f[5]), std::stod(f[6]),
+                             static_cast<std::size_t>(std::stoul(f[7])), static_cast<std::size_t>(std::stoul(f[8]))});
+  }
+  REQUIRE(rows.size() >= 10);
+  return rows;
+}
+#endif
 
 }  // namespace sphtroch::test

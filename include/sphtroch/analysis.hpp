@@ -44,6 +44,10 @@
 //  constructor).
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/analysis.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
 #include "sphtroch/analytic.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/classification.hpp"
@@ -462,8 +466,7 @@ inline const Classification& Analysis::classification() const {
     c.z = *extremes_;
     c.symmetry_planes = *symmetry_;
 
-    const bool has_nodes = !c.nodes.empty(), has_cusps = !c.cusps.empty();
-    c.curve_class = has_nodes ? (has_cusps ? "nodes and cusps" : "nodes") : (has_cusps ? "cusps" : "simple curve");
+    c.curve_class = sphtroch::curve_class(c.nodes.size(), c.cusps.size());
 
     // Agreement.
     std::string why;

@@ -89,6 +89,10 @@
 // Implementation details follow.
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/arc_predicates.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
 #include "sphtroch/errors.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

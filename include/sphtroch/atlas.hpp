@@ -46,6 +46,7 @@
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/ratio.hpp"
 #include "sphtroch/root_census.hpp"
+#include "sphtroch/root_classification.hpp"
 #include "sphtroch/types.hpp"
 
 #include <algorithm>
@@ -104,13 +105,9 @@ struct AtlasSpec {
   }
 };
 
-/// The class of a curve, as the report names them.
-enum class AtlasClass { simple_curve, nodes, cusps, nodes_and_cusps };
-inline const char* to_string(AtlasClass c);
-inline AtlasClass atlas_class(std::size_t nodes, std::size_t cusps) {
-  return nodes > 0 ? (cusps > 0 ? AtlasClass::nodes_and_cusps : AtlasClass::nodes)
-                   : (cusps > 0 ? AtlasClass::cusps : AtlasClass::simple_curve);
-}
+/// The class of a curve (root_classification.hpp); the atlas's old name for it.
+using AtlasClass = CurveClass;
+inline AtlasClass atlas_class(std::size_t nodes, std::size_t cusps) { return curve_class(nodes, cusps); }
 
 struct AtlasCell {
   std::uint32_t i = 0, j = 0;  // a2 index, a3 index
@@ -194,16 +191,6 @@ inline NearestBoundary nearest_boundary(double a2, double a3, const Ratio& ratio
 // Implementation details follow.
 // =============================================================================================
 
-inline const char* to_string(AtlasClass c) {
-  switch (c) {
-    case AtlasClass::simple_curve: return "simple curve";
-    case AtlasClass::nodes: return "nodes";
-    case AtlasClass::cusps: return "cusps";
-    case AtlasClass::nodes_and_cusps: return "nodes and cusps";
-  }
-  return "?";
-}
-
 inline void AtlasSpec::validate() const {
   if (grid < 1 || grid > kAtlasMaxGrid)
     throw InvalidInput("grid", std::to_string(grid), "outside the valid range",
@@ -240,24 +227,19 @@ inline AtlasCell atlas_cell(const AtlasSpec& spec, std::size_t i, std::size_t j)
   cell.j = static_cast<std::uint32_t>(j);
   cell.a2 = spec.a2_at(i);
   cell.a3 = spec.a3_at(j);
-  const double tolerance = spec.literal ? 0.0 : spec.boundary_tolerance;
-  const GearTrain input(cell.a2, cell.a3, spec.ratio);
-  const SnappedTrain snapped = snap_to_boundaries(input, tolerance);
-  const GearTrain& train = snapped.train;
-
-  RootCensusSettings rs;
-  rs.tangency_tolerance = spec.literal ? 0.0 : kTangencyTolerance;
-  const RootCensus census = root_census(train, rs);
-  for (const Node& n : census.nodes) ++(n.kind == NodeKind::crossing ? cell.crossings : cell.tangencies);
-  cell.nodes = cell.crossings + cell.tangencies;
-  cell.cusps = static_cast<std::uint32_t>(pitch_cone_cusps(train, kCuspResolution).size());
-
-  const AnalyticClassification a = classify_analytic(train, tolerance);
-  cell.analytic_cusps = static_cast<std::uint32_t>(a.predicted_cusps);
+  RootClassificationSettings settings;
+  settings.literal = spec.literal;
+  settings.boundary_tolerance = spec.boundary_tolerance;
+  const RootClassification c = classify_roots(GearTrain(cell.a2, cell.a3, spec.ratio), settings);
+  cell.crossings = static_cast<std::uint32_t>(c.crossings);
+  cell.tangencies = static_cast<std::uint32_t>(c.tangencies);
+  cell.nodes = static_cast<std::uint32_t>(c.nodes);
+  cell.cusps = static_cast<std::uint32_t>(c.cusps);
+  cell.analytic_cusps = static_cast<std::uint32_t>(c.analytic_cusps);
   cell.cusps_agree = cell.cusps == cell.analytic_cusps;
-  if (a.predicted_nodes) {
-    cell.analytic_nodes = static_cast<std::uint32_t>(*a.predicted_nodes);
-    cell.agree = cell.nodes == *cell.analytic_nodes && cell.cusps_agree;
+  if (c.analytic_nodes) {
+    cell.analytic_nodes = static_cast<std::uint32_t>(*c.analytic_nodes);
+    cell.agree = c.agrees_with_report();
   }
   return cell;
 }

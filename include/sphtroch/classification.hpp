@@ -4,7 +4,7 @@
 //
 //   #include <sphtroch/classification.hpp>    // needs sphtroch::exact (CGAL)
 //   sphtroch::Classification c = sphtroch::classify(train);
-//   c.curve_class;          // "simple curve", "nodes", "cusps", "nodes and cusps"
+//   c.curve_class;          // CurveClass::nodes; to_string(c.curve_class) == "nodes"
 //   c.nodes, c.cusps;       // nodes (crossing / tangency, branches) and cusps, refined positions
 //   c.agreement.ok;         // both numeric censuses and (n = 1, 2) the report's criteria agree
 //
@@ -21,6 +21,10 @@
 //    parameters of the pitch-cone criterion, each verified by its speed |dP/dtheta2|.
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/classification.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
 #include "sphtroch/analytic.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/curve.hpp"
@@ -28,6 +32,7 @@
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/root_census.hpp"
+#include "sphtroch/root_classification.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -71,7 +76,7 @@ struct Classification {
   bool cusp_within_resolution = false;  // a cone within kCuspResolution but not exactly on it
   std::size_t crossings = 0;       // node points of kind crossing
   std::size_t tangencies = 0;      // node points of kind tangency
-  std::string curve_class;
+  CurveClass curve_class = CurveClass::simple_curve;  // to_string: "simple curve", "nodes", ...
   PolylineCensus polyline;
   RootCensus root;
   AnalyticClassification analytic;

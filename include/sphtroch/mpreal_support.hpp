@@ -8,6 +8,10 @@
 // (the CMake target sphtroch::mpfr does this).
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_MPFR)
+#error "sphtroch/mpreal_support.hpp needs MPFR and GMP: link the CMake target sphtroch::mpfr (find_package(sphtroch CONFIG REQUIRED COMPONENTS mpfr)), or define SPHTROCH_HAVE_MPFR and link mpfr and gmp yourself"
+#endif
+
 #include <Eigen/Core>
 #include <unsupported/Eigen/MPRealSupport>
 

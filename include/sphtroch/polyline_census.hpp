@@ -25,6 +25,10 @@
 //  5. Assembly into nodes (node_assembly.hpp).
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/polyline_census.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
 #include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/gear_train.hpp"

@@ -102,6 +102,10 @@
 // Implementation details follow.
 #pragma once
 
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/polyline_crossings.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
 #include "sphtroch/arc_predicates.hpp"
 #include "sphtroch/errors.hpp"
 

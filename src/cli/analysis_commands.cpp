@@ -49,7 +49,7 @@ nlohmann::json classification_json(const TrainOptions& text, const Classificatio
                  {"n", in.ratio().str()}, {"n_value", in.n()}, {"phase", in.phase_given()}, {"phase_reduced", in.phase()}, {"literal", c.literal}};
   j["cone_angles"] = {{"a_p", tr.planet_cone()}, {"a_s", tr.sun_cone()}};
   j["period"] = tr.period();
-  j["class"] = c.curve_class;
+  j["class"] = to_string(c.curve_class);
   j["counts"] = {{"nodes", c.nodes.size()}, {"cusps", c.cusps.size()}, {"crossings", c.crossings},
                  {"tangencies", c.tangencies}};
   json nodes = json::array();
@@ -146,7 +146,7 @@ void write_classification_text(std::ostream& out, const TrainOptions& text, cons
   out << "  margin to pitch cone a3 - a_p = " << number(c.cone.pitch) << ", to mirror a3 - (pi - a_p) = "
       << number(c.cone.mirror) << "\n\n";
 
-  out << "class: " << c.curve_class << " — " << c.nodes.size() << " node(s) (" << c.crossings << " crossing, "
+  out << "class: " << to_string(c.curve_class) << " — " << c.nodes.size() << " node(s) (" << c.crossings << " crossing, "
       << c.tangencies << " tangency), " << c.cusps.size() << " cusp(s)"
       << (c.cusp_within_resolution ? " [cusp within resolution " + number(kCuspResolution) + " rad]" : "") << "\n";
   std::size_t i = 0;
