@@ -1,10 +1,14 @@
 # Builds and runs tests/consumer against sphtroch; called by ctest:
-#   cmake -DSOURCE_DIR=<sphtroch source> -DWORK_DIR=<scratch> -DMODE=find_package|add_subdirectory -P run_consumer.cmake
+#   cmake -DSOURCE_DIR=<sphtroch source> -DWORK_DIR=<scratch> -DMODE=find_package|add_subdirectory
+#         -DPART=eigen|exact|exact_unlinked -P run_consumer.cmake
+# PART eigen configures the consumer with CGAL hidden (CMAKE_DISABLE_FIND_PACKAGE_CGAL): the
+# Eigen-only package must not need it. PART exact_unlinked must FAIL to build, with the #error
+# that names sphtroch::exact.
 # find_package:     configure + install sphtroch (tests, CLI, benchmarks off) into WORK_DIR/<mode>/prefix,
 #                   then configure, build and run the consumer with CMAKE_PREFIX_PATH = that prefix.
 # add_subdirectory: the consumer adds SOURCE_DIR as a subdirectory.
 # Any failing step is a FATAL_ERROR (the ctest test fails, with the step's output).
-foreach(var SOURCE_DIR WORK_DIR MODE)
+foreach(var SOURCE_DIR WORK_DIR MODE PART)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_consumer.cmake: -D${var}=... is required")
   endif()
@@ -13,7 +17,7 @@ if(NOT MODE STREQUAL "find_package" AND NOT MODE STREQUAL "add_subdirectory")
   message(FATAL_ERROR "run_consumer.cmake: MODE must be find_package or add_subdirectory, not '${MODE}'")
 endif()
 
-set(work "${WORK_DIR}/${MODE}")
+set(work "${WORK_DIR}/${MODE}-${PART}")
 set(prefix "${work}/prefix")
 set(consumer_build "${work}/consumer-build")
 # Fresh every run: an install left from an earlier run must not hide a broken one.
@@ -29,6 +33,10 @@ function(step name)
   set(step_output "${out}" PARENT_SCOPE)
 endfunction()
 
+set(part_flags -DSPHTROCH_CONSUMER_PART=${PART})
+if(PART STREQUAL "eigen")
+  list(APPEND part_flags -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE)
+endif()
 set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF)
 if(MODE STREQUAL "find_package")
   step("configure sphtroch" ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${work}/sphtroch-build"
@@ -38,16 +46,29 @@ if(MODE STREQUAL "find_package")
     message(FATAL_ERROR "consumer (${MODE}): headers not installed under ${prefix}/include")
   endif()
   step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
-       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DSPHTROCH_CONSUMER_MODE=find_package)
+       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DSPHTROCH_CONSUMER_MODE=find_package ${part_flags})
 else()
   step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
-       -DCMAKE_BUILD_TYPE=Release -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR})
+       -DCMAKE_BUILD_TYPE=Release -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR}
+       ${part_flags})
   # As a subproject sphtroch must not build its tests, CLI or benchmarks by default.
   foreach(dir tests src/cli bench)
     if(EXISTS "${consumer_build}/sphtroch/${dir}/Makefile" OR EXISTS "${consumer_build}/sphtroch/${dir}/build.ninja")
       message(FATAL_ERROR "consumer (${MODE}): sphtroch built ${dir} as a subproject")
     endif()
   endforeach()
+endif()
+if(PART STREQUAL "exact_unlinked")
+  execute_process(COMMAND ${CMAKE_COMMAND} --build "${consumer_build}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "consumer (${MODE}, ${PART}): built without sphtroch::exact; the #error did not fire")
+  endif()
+  if(NOT "${out}${err}" MATCHES "polyline_crossings.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact")
+    message(FATAL_ERROR "consumer (${MODE}, ${PART}): failed, but not with the #error naming sphtroch::exact:\n${out}\n${err}")
+  endif()
+  message(STATUS "consumer (${MODE}, ${PART}): refused at compile time with the #error naming sphtroch::exact")
+  return()
 endif()
 step("build consumer" ${CMAKE_COMMAND} --build "${consumer_build}")
 step("run consumer" "${consumer_build}/consumer")
