@@ -263,3 +263,23 @@ TEST_CASE("analysis: invalid trajectory settings throw InvalidInput naming sampl
   t.turns = 0.0;
   CHECK(test::expect_invalid([&] { Analysis a(fig5f(), t); }).field() == "turns");
 }
+
+TEST_CASE("analysis and classify: bad census settings throw InvalidInput, never abort", "[analysis][errors]") {
+  for (double bad : {-1.0, std::nan(""), 1.0}) {
+    INFO(bad);
+    AnalysisSettings s;
+    s.boundary_tolerance = bad;
+    CHECK(test::expect_invalid([&] { Analysis a(fig5f(), s); }).field() == "boundary_tolerance");
+    ClassifySettings c;
+    c.boundary_tolerance = bad;
+    CHECK(test::expect_invalid([&] { classify(fig5f(), c); }).field() == "boundary_tolerance");
+  }
+  AnalysisSettings few;
+  few.census_samples = 8;  // the CLI's --samples floor (kMinCensusSamples) holds in the library too
+  const InvalidInput e = test::expect_invalid([&] { Analysis a(fig5f(), few); });
+  CHECK(e.field() == "census_samples");
+  CHECK(e.valid_range() == "0 (default) or integer 1024 .. 10000000");
+  ClassifySettings c;
+  c.samples = 8;
+  CHECK(test::expect_invalid([&] { classify(fig5f(), c); }).field() == "census_samples");
+}

@@ -13,12 +13,15 @@
 // i.e. float ~1e-6, double ~1e-15, long double ~1e-18 for |theta3| of a few radians. Measured
 // worst case: ~0.25 of this bound for each type.
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "sphtroch/curve.hpp"
 #include "sphtroch/sampling.hpp"
 
 #include <cmath>
+#include <thread>
+#include <utility>
 #include <limits>
 #include <vector>
 
@@ -191,4 +194,32 @@ TEST_CASE("sampling instantiates for every Scalar type", "[scalar][sampling]") {
       CHECK(std::fabs(to_ld(td.points[i][k]) - to_ld(tm.points[i][k])) <= 1e-15L);
     }
   }
+}
+
+TEST_CASE("MPFR precision is per thread: a worker gets 256-bit results only with MpfrPrecision", "[scalar][mpfr]") {
+  const GearTrain train(kPi / 3, kPi / 2, Ratio(5, 2));
+  // The reference at 1000 bits, on this thread: |P| = 1 to far below 1e-70.
+  auto norm_error = [&](const char* label) {
+    const TracerCurve<mpreal> curve(train);
+    const auto p = curve.point(mpreal("0.7"));
+    INFO(label << ": precision " << p.x().get_prec());
+    return std::make_pair(static_cast<long>(p.x().get_prec()), abs(p.norm() - 1).toLDouble());
+  };
+  std::pair<long, long double> plain, guarded, after;
+  std::thread worker([&] {
+    plain = norm_error("worker, default");  // a new thread starts at MPFR's 53 bits
+    {
+      const sphtroch::MpfrPrecision bits(256);
+      guarded = norm_error("worker, MpfrPrecision(256)");
+    }
+    after = norm_error("worker, after the guard");
+  });
+  worker.join();
+  CHECK(plain.first == 53);
+  CHECK(guarded.first == 256);
+  CHECK(guarded.second < 1e-70L);
+  CHECK(after.first == 53);  // restored
+  const InvalidInput e = sphtroch::test::expect_invalid([] { sphtroch::MpfrPrecision bad(0); });
+  CHECK(e.field() == "precision");
+  CHECK_THROWS_AS(sphtroch::MpfrPrecision(2000000), InvalidInput);
 }

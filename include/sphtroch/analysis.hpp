@@ -57,6 +57,7 @@
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/root_census.hpp"
+#include "sphtroch/root_classification.hpp"
 #include "sphtroch/sampling.hpp"
 #include "sphtroch/svg_plot.hpp"
 
@@ -120,8 +121,8 @@ struct StageWork {
 struct AnalysisSettings {
   // Census (as ClassifySettings).
   bool literal = false;                            // analyse the doubles as given
-  double boundary_tolerance = kBoundaryTolerance;  // default reading only
-  std::size_t census_samples = 0;                  // polyline census samples; 0 = census_sample_count
+  double boundary_tolerance = kBoundaryTolerance;  // default reading only; [0, kMaxBoundaryTolerance]
+  std::size_t census_samples = 0;  // polyline census samples; 0 = census_sample_count, else >= kMinCensusSamples
   // Trajectory (trace, velocity, screw axis).
   std::size_t samples = 0;       // closed curve: samples per period; 0 = trace_sample_count
   std::optional<double> turns;   // open curve over K carrier turns instead (K in (0, kMaxTurns])
@@ -293,6 +294,12 @@ inline std::vector<Stage> Analysis::stages_for(Effect effect) {
 inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settings)
     : input_(train), settings_(settings), snapped_{train, {}, false, 0.0, 0.0} {
   if (settings.samples != 0) check_sample_count(settings.samples);
+  RootClassificationSettings{settings.literal, settings.boundary_tolerance}.validate();
+  if (settings.census_samples != 0 &&
+      (settings.census_samples < kMinCensusSamples || settings.census_samples > kMaxSamples))
+    throw InvalidInput("census_samples", std::to_string(settings.census_samples), "outside the valid range",
+                       "0 (default) or integer " + std::to_string(kMinCensusSamples) + " .. " +
+                           std::to_string(kMaxSamples));
   if (settings.turns && !(*settings.turns > 0.0 && *settings.turns <= kMaxTurns))
     throw InvalidInput("turns", detail::to_text(*settings.turns), "outside the valid range", "(0, 1e6] carrier turns");
   run_stage(Stage::input, [&](StageWork&) {
