@@ -66,6 +66,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace sphtroch {
@@ -535,7 +536,9 @@ inline StageWork Analysis::total_work() const {
 }
 
 /// classification.hpp's entry point (declared there): the classification stage of an Analysis.
-inline Classification classify(const GearTrain& input, const ClassifySettings& settings) {
+template <typename Settings>
+Classification classify(const GearTrain& input, const Settings& settings) {
+  static_assert(std::is_same<Settings, ClassifySettings>::value, "classify(train, ClassifySettings)");
   AnalysisSettings s;
   s.literal = settings.literal;
   s.boundary_tolerance = settings.boundary_tolerance;

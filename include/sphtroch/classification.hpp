@@ -19,6 +19,14 @@
 //    (analysis.hpp); classify() is Analysis(train, settings).classification().
 //  * Cusps: where a3 is within kCuspResolution of a pitch cone (exactly 0 after snapping), at the
 //    parameters of the pitch-cone criterion, each verified by its speed |dP/dtheta2|.
+//
+// Compile time (separate mode). By default this header defines classify() (it includes
+// analysis.hpp, and through it CGAL): ~12 s of g++ -O2 in every file that includes it. Define
+// SPHTROCH_SEPARATE_EXACT (for the whole project, e.g. target_compile_definitions) and this
+// header only declares classify() — Eigen headers only, ~3.5 s — while exactly one of your
+// files includes <sphtroch/exact_implementation.hpp>, which defines and instantiates it (the
+// stb / fmt pattern). classify() is a function template (Settings = ClassifySettings) so that a
+// file in either mode and the implementation file may share one program without an ODR clash.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -30,7 +38,7 @@
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/pitch_cone.hpp"
-#include "sphtroch/polyline_census.hpp"
+#include "sphtroch/polyline_census_result.hpp"
 #include "sphtroch/root_census.hpp"
 #include "sphtroch/root_classification.hpp"
 
@@ -126,11 +134,16 @@ inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& 
 }
 }  // namespace detail
 
-/// Classifies one gear train (see header). Never throws for a valid GearTrain. Defined in
+/// Classifies one gear train (see header). Throws InvalidInput for bad settings (field
+/// "boundary_tolerance", "census_samples") and the census cost bound (field "n"). Defined in
 /// analysis.hpp as the classification stage of an Analysis (one code path for `sphtroch
 /// classify` and a scene's classification); its `work` is that of the stages it ran.
-inline Classification classify(const GearTrain& input, const ClassifySettings& settings = {});
+/// A template only for separate compilation (see header): call it as classify(train[, settings]).
+template <typename Settings = ClassifySettings>
+Classification classify(const GearTrain& input, const Settings& settings = Settings{});
 
 }  // namespace sphtroch
 
+#if !defined(SPHTROCH_SEPARATE_EXACT)
 #include "sphtroch/analysis.hpp"  // defines classify()
+#endif

@@ -35,6 +35,7 @@
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
 #include "sphtroch/pitch_cone.hpp"
+#include "sphtroch/polyline_census_result.hpp"
 #include "sphtroch/polyline_crossings.hpp"
 #include "sphtroch/refinement.hpp"
 #include "sphtroch/sampling.hpp"
@@ -72,40 +73,6 @@ constexpr double kMinVertexSeparation = 1e-14;
 /// Literal mode: the gap-model tolerance is the evaluation noise of long double, not a boundary.
 constexpr double kLiteralGapTolerance = 1e-17;
 
-struct PolylineCensusSettings {
-  std::size_t samples = 0;  // uniform samples per period; 0 = census_sample_count(train)
-  /// Branches whose closest approach is within this (radians) are one tangency (default mode).
-  double tangency_tolerance = 1e-10;
-};
-
-/// Work of one census, counted exactly where it is done.
-struct PolylineWork {
-  std::size_t points_evaluated = 0;  // TracerCurve calls: point, velocity, acceleration
-  std::size_t predicates = 0;
-  std::size_t candidate_pairs = 0;
-  std::size_t newton_steps = 0;     // refinement iterations + branch-projection steps
-  std::size_t seeds = 0;
-};
-
-struct PolylineCensus {
-  std::size_t samples = 0;             // polyline vertices (uniform + refined)
-  std::size_t polyline_crossings = 0;  // exact crossings of the polyline
-  std::size_t polyline_touchings = 0;  // exact touching/overlap contacts of the polyline
-  std::size_t near_misses = 0;         // near-miss seeds
-  std::size_t newton_failures = 0;     // seeds whose refinement did not converge to a meeting
-  std::vector<BranchPair> pairs;
-  std::vector<Node> nodes;
-  PolylineWork work;
-};
-
-/// Fewest uniform samples a user may ask of the census (the CLI's --samples, a scene's census_samples).
-constexpr std::size_t kMinCensusSamples = 1024;
-
-/// Default uniform sample count: 256 per unit of (q + |p|), at least 1024.
-inline std::size_t census_sample_count(const GearTrain& train) {
-  const auto& r = train.ratio();
-  return std::min<std::size_t>(kMaxSamples, std::max<std::size_t>(1024, 256 * static_cast<std::size_t>(r.q() + r.abs_p())));
-}
 
 namespace detail {
 

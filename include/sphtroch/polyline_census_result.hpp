@@ -1,0 +1,53 @@
+// sphtroch/polyline_census_result.hpp — what the polyline census (polyline_census.hpp) returns
+// and takes, without the census itself: Eigen only, no CGAL. classification.hpp needs these types
+// (a Classification holds a PolylineCensus) and includes only this header, so that a file calling
+// classify() in separate mode (SPHTROCH_SEPARATE_EXACT, see classification.hpp) parses no CGAL.
+#pragma once
+
+#include "sphtroch/gear_train.hpp"
+#include "sphtroch/node.hpp"
+#include "sphtroch/node_assembly.hpp"
+#include "sphtroch/sampling.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace sphtroch {
+
+struct PolylineCensusSettings {
+  std::size_t samples = 0;  // uniform samples per period; 0 = census_sample_count(train)
+  /// Branches whose closest approach is within this (radians) are one tangency (default mode).
+  double tangency_tolerance = 1e-10;
+};
+
+/// Work of one census, counted exactly where it is done.
+struct PolylineWork {
+  std::size_t points_evaluated = 0;  // TracerCurve calls: point, velocity, acceleration
+  std::size_t predicates = 0;
+  std::size_t candidate_pairs = 0;
+  std::size_t newton_steps = 0;     // refinement iterations + branch-projection steps
+  std::size_t seeds = 0;
+};
+
+struct PolylineCensus {
+  std::size_t samples = 0;             // polyline vertices (uniform + refined)
+  std::size_t polyline_crossings = 0;  // exact crossings of the polyline
+  std::size_t polyline_touchings = 0;  // exact touching/overlap contacts of the polyline
+  std::size_t near_misses = 0;         // near-miss seeds
+  std::size_t newton_failures = 0;     // seeds whose refinement did not converge to a meeting
+  std::vector<BranchPair> pairs;
+  std::vector<Node> nodes;
+  PolylineWork work;
+};
+
+/// Fewest uniform samples a user may ask of the census (the CLI's --samples, a scene's census_samples).
+constexpr std::size_t kMinCensusSamples = 1024;
+
+/// Default uniform sample count: 256 per unit of (q + |p|), at least 1024.
+inline std::size_t census_sample_count(const GearTrain& train) {
+  const auto& r = train.ratio();
+  return std::min<std::size_t>(kMaxSamples, std::max<std::size_t>(1024, 256 * static_cast<std::size_t>(r.q() + r.abs_p())));
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,32 @@
+// Separate compilation of classify() (classification.hpp, SPHTROCH_SEPARATE_EXACT) and the ODR
+// of mixing modes: this file is compiled with SPHTROCH_SEPARATE_EXACT (tests/CMakeLists.txt) and
+// sees only the declaration; separate_compilation_default.cpp includes the definitions as a
+// header-only user does; separate_compilation_impl.cpp is the one file with
+// exact_implementation.hpp. One program, three files: both callers must give the report's counts.
+#include "test_support.hpp"
+
+#include "sphtroch/classification.hpp"
+
+#if !defined(SPHTROCH_SEPARATE_EXACT)
+#error "this file must be compiled with SPHTROCH_SEPARATE_EXACT"
+#endif
+#if defined(CGAL_VERSION_NR)
+#error "separate mode must not pull in CGAL"
+#endif
+
+#include <cstddef>
+
+// Defined in separate_compilation_default.cpp (header-only mode).
+std::size_t classify_nodes_header_only(double a2, double a3, std::int64_t p, std::int64_t q);
+
+TEST_CASE("separate compilation: classify() declared here, defined in one file, equal to header-only", "[exact][odr]") {
+  for (const auto& row : sphtroch::test::paper_cases()) {
+    INFO(row.id);
+    const sphtroch::GearTrain train(row.a2, row.a3, sphtroch::Ratio(row.n_num, row.n_den));
+    const sphtroch::Classification c = sphtroch::classify(train);
+    CHECK(c.nodes.size() == row.nodes);
+    CHECK(c.cusps.size() == row.cusps);
+    CHECK(c.agreement.ok());
+    CHECK(classify_nodes_header_only(row.a2, row.a3, row.n_num, row.n_den) == row.nodes);
+  }
+}
