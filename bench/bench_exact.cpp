@@ -10,7 +10,7 @@
 
 #include "sphtroch/analytic.hpp"
 #include "sphtroch/arc_predicates.hpp"
-#include "sphtroch/classification.hpp"
+#include "sphtroch/classify.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/polyline_crossings.hpp"
 #include "sphtroch/sampling.hpp"

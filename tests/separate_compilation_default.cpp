@@ -1,6 +1,6 @@
 // Header-only mode (no SPHTROCH_SEPARATE_EXACT): classify() defined and instantiated here too.
 // See test_separate_compilation.cpp.
-#include "sphtroch/classification.hpp"
+#include "sphtroch/classify.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -11,7 +11,7 @@
 #include "catch2/catch.hpp"
 
 #include "sphtroch/analytic.hpp"
-#include "sphtroch/classification.hpp"
+#include "sphtroch/classify.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node_assembly.hpp"
 #include "sphtroch/polyline_census.hpp"

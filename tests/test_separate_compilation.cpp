@@ -5,7 +5,7 @@
 // exact_implementation.hpp. One program, three files: both callers must give the report's counts.
 #include "test_support.hpp"
 
-#include "sphtroch/classification.hpp"
+#include "sphtroch/classify.hpp"
 
 #if !defined(SPHTROCH_SEPARATE_EXACT)
 #error "this file must be compiled with SPHTROCH_SEPARATE_EXACT"

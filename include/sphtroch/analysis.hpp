@@ -348,7 +348,7 @@ inline const std::vector<Vector3d>& Analysis::velocities() const {
       const double span = trajectory_span();
       std::vector<Vector3d> v;
       v.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) v.push_back(curve.velocity(detail::uniform_parameter(span, i, divisor)));
+      for (std::size_t i = 0; i < n; ++i) v.push_back(curve.velocity(uniform_parameter(span, i, divisor)));
       w.points_evaluated = n;
       velocities_ = std::move(v);
     });
@@ -365,7 +365,7 @@ inline const ScrewAxisSamples& Analysis::screw_axis() const {
       s.t.reserve(n);
       s.omega.reserve(n);
       for (std::size_t i = 0; i < n; ++i) {
-        s.t.push_back(detail::uniform_parameter(span, i, divisor));
+        s.t.push_back(uniform_parameter(span, i, divisor));
         s.omega.push_back(curve.screw_axis(s.t.back()));  // Eq. 47a
       }
       w.points_evaluated = n;
@@ -460,40 +460,8 @@ inline const Classification& Analysis::classification() const {
   // Dependencies first, so that the assembly's own time excludes theirs.
   for (Stage d : dependencies(Stage::classification)) compute(d);
   run_stage(Stage::classification, [&](StageWork&) {
-    Classification c(input_, snapped_);
-    c.literal = settings_.literal;
-    c.tangency_tolerance = settings_.literal ? 0.0 : kTangencyTolerance;
-    c.polyline = *crossings_;
-    c.root = *root_;
-    c.nodes = c.polyline.nodes;
-    for (const Node& n : c.nodes) (n.kind == NodeKind::crossing ? c.crossings : c.tangencies)++;
-    c.cone = cone_margins(analysed());
-    c.cusps = *cusps_;
-    c.cusp_within_resolution = !c.cusps.empty() && c.cone.pitch != 0.0 && c.cone.mirror != 0.0;
-    c.analytic = *analytic_;
-    c.z = *extremes_;
-    c.symmetry_planes = *symmetry_;
-
-    c.curve_class = sphtroch::curve_class(c.nodes.size(), c.cusps.size());
-
-    // Agreement.
-    std::string why;
-    if (!detail::same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
-      c.agreement.censuses_agree = false;
-      c.agreement.notes.push_back("polyline census vs root-count census: " + why);
-    }
-    if (c.analytic.predicted_nodes) {
-      const bool nodes_ok = *c.analytic.predicted_nodes == c.nodes.size();
-      const bool cusps_ok = c.analytic.predicted_cusps == c.cusps.size();
-      c.agreement.analytic_agrees = nodes_ok && cusps_ok;
-      if (!nodes_ok)
-        c.agreement.notes.push_back("report's criteria predict " + std::to_string(*c.analytic.predicted_nodes) +
-                                    " nodes, the census finds " + std::to_string(c.nodes.size()));
-      if (!cusps_ok)
-        c.agreement.notes.push_back("report's criteria predict " + std::to_string(c.analytic.predicted_cusps) +
-                                    " cusps, found " + std::to_string(c.cusps.size()));
-    }
-    classification_ = std::move(c);
+    classification_ = assemble_classification(
+        {input_, snapped_, settings_.literal, *crossings_, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
   });
   // The work of everything the classification needed (contract 4).
   StageWork sum;

@@ -74,6 +74,9 @@ enum class BoundaryKind {
 
 inline const char* to_string(BoundaryKind kind);
 
+/// The boundary in words, as Boundary::name gives it: "a3 = a_p (pitch cone)", ...
+inline const char* boundary_name(BoundaryKind kind);
+
 struct Boundary {
   BoundaryKind kind = BoundaryKind::pitch_cone;
   std::string name;     // e.g. "a3 = a_p (pitch cone)"
@@ -302,7 +305,7 @@ inline bool reference_matches(A3Reference ref, BoundaryKind kind) {
   }
 }
 
-inline const char* boundary_name(BoundaryKind kind) {
+inline const char* boundary_name_text(BoundaryKind kind) {
   switch (kind) {
     case BoundaryKind::pitch_cone: return "a3 = a_p (pitch cone)";
     case BoundaryKind::mirror_pitch_cone: return "a3 = pi - a_p (mirror pitch cone)";
@@ -363,6 +366,8 @@ inline double omega_norm(const GearTrain& train) {
 
 }  // namespace analytic_detail
 
+inline const char* boundary_name(BoundaryKind kind) { return analytic_detail::boundary_name_text(kind); }
+
 inline const char* to_string(BoundaryKind kind) {
   switch (kind) {
     case BoundaryKind::pitch_cone: return "pitch_cone";
@@ -405,7 +410,7 @@ inline std::vector<Boundary> boundaries(const GearTrain& train) {
     kinds.push_back(BoundaryKind::pi_minus_half_a2);
   }
   std::vector<Boundary> out;
-  for (BoundaryKind k : kinds) out.push_back(Boundary{k, boundary_name(k), boundary_value(train, k), boundary_margin(train, k)});
+  for (BoundaryKind k : kinds) out.push_back(Boundary{k, boundary_name_text(k), boundary_value(train, k), boundary_margin(train, k)});
   return out;
 }
 

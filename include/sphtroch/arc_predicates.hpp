@@ -306,4 +306,11 @@ inline ArcContact classify_arcs(const Eigen::Vector3d& a, const Eigen::Vector3d&
   return detail::classify_arcs_unchecked(a, b, c, d, predicates);
 }
 
+/// classify_arcs without its precondition checks, for callers that validated every vertex once
+/// (polyline_crossings.hpp). REQUIRES: the four vertices finite and nonzero, a != +-b, c != +-d.
+inline ArcContact classify_arcs_unchecked(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                          const Eigen::Vector3d& d, std::size_t* predicates = nullptr) {
+  return detail::classify_arcs_unchecked(a, b, c, d, predicates);
+}
+
 }  // namespace sphtroch

@@ -347,7 +347,7 @@ inline NearestBoundary nearest_boundary(double a2, double a3, const Ratio& ratio
       best.distance = d;
     }
   }
-  best.name = analytic_detail::boundary_name(best.kind);
+  best.name = boundary_name(best.kind);
   return best;
 }
 

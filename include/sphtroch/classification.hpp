@@ -2,7 +2,7 @@
 // the numeric node census (polyline + Newton), the independent root-count census, the cusps, the
 // report's analytic criteria side by side, z extremes and symmetry planes, with the work done.
 //
-//   #include <sphtroch/classification.hpp>    // needs sphtroch::exact (CGAL)
+//   #include <sphtroch/classify.hpp>          // needs sphtroch::exact (CGAL)
 //   sphtroch::Classification c = sphtroch::classify(train);
 //   c.curve_class;          // CurveClass::nodes; to_string(c.curve_class) == "nodes"
 //   c.nodes, c.cusps;       // nodes (crossing / tangency, branches) and cusps, refined positions
@@ -20,13 +20,10 @@
 //  * Cusps: where a3 is within kCuspResolution of a pitch cone (exactly 0 after snapping), at the
 //    parameters of the pitch-cone criterion, each verified by its speed |dP/dtheta2|.
 //
-// Compile time (separate mode). By default this header defines classify() (it includes
-// analysis.hpp, and through it CGAL): ~12 s of g++ -O2 in every file that includes it. Define
-// SPHTROCH_SEPARATE_EXACT (for the whole project, e.g. target_compile_definitions) and this
-// header only declares classify() — Eigen headers only, ~3.5 s — while exactly one of your
-// files includes <sphtroch/exact_implementation.hpp>, which defines and instantiates it (the
-// stb / fmt pattern). classify() is a function template (Settings = ClassifySettings) so that a
-// file in either mode and the implementation file may share one program without an ODR clash.
+// This header holds the types, the assembly and the declaration of classify(); its definition is
+// the classification stage of Analysis (analysis.hpp). To call classify() include classify.hpp
+// (or sphtroch.hpp), which also gives the definition unless SPHTROCH_SEPARATE_EXACT is defined:
+// see classify.hpp for separate compilation. Eigen headers only: no CGAL here.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -134,6 +131,58 @@ inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& 
 }
 }  // namespace detail
 
+/// The stage results a classification is assembled from (Analysis::classification() passes its
+/// memoized stages; every reference must outlive the call).
+struct ClassificationInputs {
+  const GearTrain& input;                // as given
+  const SnappedTrain& snapped;           // the train analysed
+  bool literal;
+  const PolylineCensus& polyline;
+  const RootCensus& root;
+  const std::vector<Cusp>& cusps;
+  const AnalyticClassification& analytic;
+  const ZExtremes& z;
+  const Symmetry& symmetry;
+};
+
+/// The classification of those results: counts, class, cone margins, and the agreement of the
+/// two censuses (same node sets, detail::same_node_sets) and of the report's criteria (n = 1, 2),
+/// every disagreement in words. `work` is left zero (the caller sums its stages).
+inline Classification assemble_classification(const ClassificationInputs& in) {
+  Classification c(in.input, in.snapped);
+  c.literal = in.literal;
+  c.tangency_tolerance = in.literal ? 0.0 : kTangencyTolerance;
+  c.polyline = in.polyline;
+  c.root = in.root;
+  c.nodes = c.polyline.nodes;
+  for (const Node& n : c.nodes) (n.kind == NodeKind::crossing ? c.crossings : c.tangencies)++;
+  c.cone = cone_margins(in.snapped.train);
+  c.cusps = in.cusps;
+  c.cusp_within_resolution = !c.cusps.empty() && c.cone.pitch != 0.0 && c.cone.mirror != 0.0;
+  c.analytic = in.analytic;
+  c.z = in.z;
+  c.symmetry_planes = in.symmetry;
+  c.curve_class = curve_class(c.nodes.size(), c.cusps.size());
+
+  std::string why;
+  if (!detail::same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
+    c.agreement.censuses_agree = false;
+    c.agreement.notes.push_back("polyline census vs root-count census: " + why);
+  }
+  if (c.analytic.predicted_nodes) {
+    const bool nodes_ok = *c.analytic.predicted_nodes == c.nodes.size();
+    const bool cusps_ok = c.analytic.predicted_cusps == c.cusps.size();
+    c.agreement.analytic_agrees = nodes_ok && cusps_ok;
+    if (!nodes_ok)
+      c.agreement.notes.push_back("report's criteria predict " + std::to_string(*c.analytic.predicted_nodes) +
+                                  " nodes, the census finds " + std::to_string(c.nodes.size()));
+    if (!cusps_ok)
+      c.agreement.notes.push_back("report's criteria predict " + std::to_string(c.analytic.predicted_cusps) +
+                                  " cusps, found " + std::to_string(c.cusps.size()));
+  }
+  return c;
+}
+
 /// Classifies one gear train (see header). Throws InvalidInput for bad settings (field
 /// "boundary_tolerance", "census_samples") and the census cost bound (field "n"). Defined in
 /// analysis.hpp as the classification stage of an Analysis (one code path for `sphtroch
@@ -143,7 +192,3 @@ template <typename Settings = ClassifySettings>
 Classification classify(const GearTrain& input, const Settings& settings = Settings{});
 
 }  // namespace sphtroch
-
-#if !defined(SPHTROCH_SEPARATE_EXACT)
-#include "sphtroch/analysis.hpp"  // defines classify()
-#endif

@@ -717,7 +717,7 @@ inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& ver
   out.edges = p.edges;
   auto visitor = [&](std::size_t i, std::size_t j) {
     ++out.candidate_pairs;
-    const ArcContact kind = detail::classify_arcs_unchecked(vertices[i], vertices[p.head(i)], vertices[j],
+    const ArcContact kind = classify_arcs_unchecked(vertices[i], vertices[p.head(i)], vertices[j],
                                                             vertices[p.head(j)], &out.predicates);
     detail::record_contact(out, i, j, kind);
     return true;
@@ -743,7 +743,7 @@ inline SelfCrossings exact_brute_force_crossings(const std::vector<Eigen::Vector
       if (closed && i == 0 && j + 1 == n) continue;  // edges n-1 and 0 share vertex 0
       ++out.candidate_pairs;
       detail::record_contact(out, i, j,
-                             detail::classify_arcs_unchecked(vertices[i], vertices[head(i)], vertices[j],
+                             classify_arcs_unchecked(vertices[i], vertices[head(i)], vertices[j],
                                                              vertices[head(j)], &out.predicates));
     }
   }

@@ -124,13 +124,12 @@ Trajectory<Scalar> sample(const TracerCurve<Scalar>& curve, const UniformSamplin
   return tr;
 }
 
-namespace detail {
-/// t_i = span * i / divisor (UniformSampling::parameter).
+/// t_i = span * i / divisor, rounded exactly as every sampler here computes it
+/// (UniformSampling::parameter).
 template <typename Scalar>
 Scalar uniform_parameter(const Scalar& span, std::size_t i, std::size_t divisor) {
   return UniformSampling<Scalar>{span, 0, divisor, true}.parameter(i);
 }
-}  // namespace detail
 
 /// N uniform samples over one closing period [0, 2*pi*q). REQUIRES kMinSamples <= n <= kMaxSamples.
 template <typename Scalar>

@@ -42,6 +42,7 @@
 #include "sphtroch/analysis.hpp"
 #include "sphtroch/arc_predicates.hpp"
 #include "sphtroch/classification.hpp"
+#include "sphtroch/classify.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/polyline_crossings.hpp"
 #endif

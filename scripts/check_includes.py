@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Checks the include graph of include/sphtroch (CI runs it; exit 1 on a violation).
+
+1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
+   runs back up; each one found is printed with its path.
+2. No header uses another header's detail namespace: `detail::name` (or `xyz_detail::name`)
+   may only name something the header itself defines in a detail namespace, or that a header it
+   includes defines in the shared `detail` namespace it also opens... simpler and stricter: a
+   header may only use `<prefix>_detail::` namespaces it defines itself, and `detail::` names it
+   defines itself or that are listed in SHARED_DETAIL (small helpers meant to be shared).
+Usage: python3 scripts/check_includes.py [include/sphtroch]
+"""
+import os
+import re
+import sys
+
+# detail:: helpers every header may use (defined once, in the header named).
+SHARED_DETAIL = {
+    "to_text": "errors.hpp",
+}
+
+root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
+headers = sorted(f for f in os.listdir(root) if f.endswith(".hpp"))
+text = {h: open(os.path.join(root, h), encoding="utf-8").read() for h in headers}
+include_re = re.compile(r'^\s*#\s*include\s+"sphtroch/([^"]+)"', re.M)
+graph = {h: include_re.findall(text[h]) for h in headers}
+
+problems = []
+
+# 1. Cycles (depth-first search, reporting each back edge with the path).
+state = {}
+stack = []
+
+
+def visit(h):
+    state[h] = "open"
+    stack.append(h)
+    for d in graph.get(h, []):
+        if d not in text:
+            problems.append(f"{h}: includes sphtroch/{d}, which does not exist")
+            continue
+        if state.get(d) == "open":
+            cycle = stack[stack.index(d):] + [d]
+            problems.append("cycle (an arrow runs back up): " + " -> ".join(cycle))
+        elif d not in state:
+            visit(d)
+    stack.pop()
+    state[h] = "done"
+
+
+for h in headers:
+    if h not in state:
+        visit(h)
+
+# 2. detail namespaces used across headers.
+def_re = re.compile(r"namespace\s+(\w*detail)\s*\{(.*?)^\}\s*//\s*namespace\s+\1", re.S | re.M)
+name_re = re.compile(r"^(?:inline|constexpr|template|struct|class|using|enum)[^;{(=]*?\b(\w+)\s*(?:[({=;:<]|$)", re.M)
+defined = {}
+for h in headers:
+    for ns, body in def_re.findall(text[h]):
+        # Top-level declarations of the namespace body (no indentation in this code base): the
+        # first name followed by ( [ = { ; on the line, and struct/class/enum/using names.
+        for line in body.splitlines():
+            if not line or line[0].isspace() or line.startswith(("//", "#", "}")):
+                continue
+            m = re.search(r"\b(?:struct|class|enum(?:\s+class)?|using)\s+(\w+)", line)
+            if not m:
+                m = re.search(r"(\w+)\s*(?:\(|\[|=|\{|;)", line)
+            if m:
+                defined.setdefault((ns, m.group(1)), set()).add(h)
+
+use_re = re.compile(r"\b(\w*detail)::(\w+)")
+for h in headers:
+    code = re.sub(r"//.*", "", text[h])
+    for ns, name in sorted(set(use_re.findall(code))):
+        owners = defined.get((ns, name), set())
+        if h in owners:
+            continue
+        if ns == "detail" and SHARED_DETAIL.get(name) in owners:
+            continue
+        where = ", ".join(sorted(owners)) or "unknown header"
+        problems.append(f"{h}: uses {ns}::{name} of {where}")
+
+for p in problems:
+    print("check_includes:", p)
+if problems:
+    sys.exit(1)
+print(f"check_includes: {len(headers)} headers, {sum(len(v) for v in graph.values())} arrows, no cycle, "
+      "no detail namespace used across headers")
