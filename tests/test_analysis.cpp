@@ -283,3 +283,13 @@ TEST_CASE("analysis and classify: bad census settings throw InvalidInput, never 
   c.samples = 8;
   CHECK(test::expect_invalid([&] { classify(fig5f(), c); }).field() == "census_samples");
 }
+
+TEST_CASE("Classification is a regular value type: default-constructible, copyable", "[analysis][api]") {
+  std::vector<Classification> many(200);
+  CHECK(many[0].nodes.empty());
+  CHECK(many[0].curve_class == CurveClass::simple_curve);
+  many[5] = classify(fig5f());
+  const Classification copy = many[5];
+  CHECK(copy.nodes.size() == many[5].nodes.size());
+  CHECK(copy.input.a2() == fig5f().a2());
+}

@@ -9,6 +9,7 @@
 #include "sphtroch/ratio.hpp"
 
 #include <cmath>
+#include <vector>
 #include <limits>
 #include <string>
 
@@ -172,4 +173,14 @@ TEST_CASE("a3 references: ap, pi-ap, a2, pi-a2 plus an offset", "[gear_train][a3
   CHECK(e.field() == "a3");
   CHECK(contains(e.value(), "ap"));
   CHECK(expect_invalid([&] { GearTrain::on_cone(a2, A3Reference::pi_minus_a2, 2.5, n); }).field() == "a3");
+}
+
+TEST_CASE("Ratio and GearTrain are default-constructible: n = 1 and the report's Fig. 3 train", "[gear_train]") {
+  const std::vector<Ratio> ratios(3);
+  CHECK(ratios[2] == Ratio(1));
+  const std::vector<GearTrain> trains(200);
+  CHECK(trains[199].a2() == kPi / 2);
+  CHECK(trains[199].a3() == kPi / 2);
+  CHECK(trains[199].ratio() == Ratio(1));
+  CHECK(trains[199].phase() == 0.0);
 }

@@ -72,6 +72,7 @@ struct ClassificationWork {
 };
 
 struct Classification {
+  Classification() = default;  // Fig. 3's train, nothing computed (a regular value type)
   Classification(GearTrain given, SnappedTrain analysed) : input(std::move(given)), snapped(std::move(analysed)) {}
   GearTrain input;                 // as given
   SnappedTrain snapped;            // the train analysed, and the boundaries it was put on

@@ -72,6 +72,10 @@ struct TwistTrig {
 
 class GearTrain {
  public:
+  /// The report's Fig. 3 train, a2 = a3 = pi/2, n = 1, phase 0 (a valid train, so that
+  /// GearTrain, and results holding one, are default-constructible regular value types).
+  GearTrain() : GearTrain(Constants<double>::pi() / 2, Constants<double>::pi() / 2, Ratio(1)) {}
+
   /// REQUIRES: a2, a3 in (0, pi); phase finite. Throws InvalidInput naming "a2", "a3" or "phase".
   GearTrain(double a2, double a3, Ratio n, double phase = 0.0)
       : GearTrain(a2, A3Reference::given, a3, n, phase) {}

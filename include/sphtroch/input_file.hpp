@@ -149,7 +149,7 @@ class InputLines {
       : path_(std::move(path)), field_(std::move(field)), max_line_(max_line) {
     source_ = [text](char* out, std::size_t n) mutable {
       const std::size_t k = std::min(n, text.size());
-      std::memcpy(out, text.data(), k);
+      if (k > 0) std::memcpy(out, text.data(), k);
       text.remove_prefix(k);
       return k;
     };
@@ -158,7 +158,8 @@ class InputLines {
   /// The next line without its '\n' (valid until the next call); false at the end of the input.
   bool next(std::string_view& line) {
     for (;;) {
-      const char* nl = static_cast<const char*>(std::memchr(buf_.data() + begin_, '\n', end_ - begin_));
+      const char* nl =  // memchr of 0 bytes at a null data() would be undefined
+          end_ > begin_ ? static_cast<const char*>(std::memchr(buf_.data() + begin_, '\n', end_ - begin_)) : nullptr;
       if (nl) {
         line = std::string_view(buf_.data() + begin_, static_cast<std::size_t>(nl - (buf_.data() + begin_)));
         begin_ += line.size() + 1;

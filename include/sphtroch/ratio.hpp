@@ -20,6 +20,9 @@ class Ratio {
   /// count (which grows like p*q) printable.
   static constexpr std::int64_t kMaxTerm = 1000000;
 
+  /// n = 1 (a regular value type: default-constructible, e.g. std::vector<Ratio>(k)).
+  Ratio() : Ratio(1) {}
+
   /// REQUIRES: q != 0, p != 0, |p| and |q| <= kMaxTerm; otherwise throws InvalidInput (field "n").
   explicit Ratio(std::int64_t p, std::int64_t q = 1) : p_(p), q_(q) {
     if (q == 0 || p == 0 || p > kMaxTerm || p < -kMaxTerm || q > kMaxTerm || q < -kMaxTerm) {
