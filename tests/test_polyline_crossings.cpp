@@ -3,7 +3,9 @@
 // Expected values come from construction (exact coordinates), from an independent integer
 // oracle, or from the O(N^2) brute force; never from the fast search itself.
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
+#include "sphtroch/arc_crossing_point.hpp"
 #include "sphtroch/arc_predicates.hpp"
 #include "sphtroch/polyline_crossings.hpp"
 #include "sphtroch/root_census.hpp"
@@ -680,4 +682,30 @@ TEST_CASE("timing: closed trochoid a2 = 1, a3 = 2, n = 7/3", "[.timing]") {
                   r.crossings.size(), r.touchings.size(), r.boxes, r.candidate_pairs, r.predicates);
     }
   }
+}
+
+TEST_CASE("arc_crossing_point: on both circles, on both arcs, either order; degenerate pairs refused", "[crossings][point]") {
+  const double s = std::sqrt(0.5);
+  const Eigen::Vector3d a(1, 0, 0), b(0, 1, 0);                              // the equator, x to y
+  const Eigen::Vector3d c = Eigen::Vector3d(s, s, -0.5).normalized(), d = Eigen::Vector3d(s, s, 0.5).normalized();
+  const Eigen::Vector3d expected(s, s, 0);                                    // meridian at 45 deg meets it
+  for (const auto& x : {sphtroch::arc_crossing_point(a, b, c, d), sphtroch::arc_crossing_point(c, d, a, b),
+                        sphtroch::arc_crossing_point(b, a, d, c), sphtroch::arc_crossing_point(d, c, b, a)}) {
+    CHECK((x - expected).norm() < 4e-16);
+    CHECK(std::abs(x.norm() - 1.0) < 4e-16);
+  }
+  // The crossing of report Fig. 3's trajectory (a2 = a3 = pi/2, n = 1) is its node (0, 1, 0) of
+  // Eq. 25, up to the chord error of the sampling (~h^2, h = 2 pi / 4000).
+  const sphtroch::GearTrain fig3(kPi / 2, kPi / 2, sphtroch::Ratio(1));
+  const auto tr = sphtroch::sample_period(sphtroch::TracerCurve<double>(fig3), 4000);
+  const sphtroch::SelfCrossings sc = sphtroch::find_self_crossings(tr.points, true);
+  REQUIRE(sc.crossings.size() == 1);
+  const auto& e = sc.crossings[0];
+  const std::size_t n = tr.points.size();
+  const Eigen::Vector3d x = sphtroch::arc_crossing_point(tr.points[e.i], tr.points[(e.i + 1) % n], tr.points[e.j],
+                                                         tr.points[(e.j + 1) % n]);
+  CHECK((x - Eigen::Vector3d(0, 1, 0)).norm() < 1e-5);
+  // One great circle twice, or a zero-length arc: refused.
+  CHECK(sphtroch::test::expect_invalid([&] { sphtroch::arc_crossing_point(a, b, b, a); }).field() == "arcs");
+  CHECK(sphtroch::test::expect_invalid([&] { sphtroch::arc_crossing_point(a, a, c, d); }).field() == "arcs");
 }

@@ -11,6 +11,7 @@
 #endif
 
 #include "sphtroch/analytic.hpp"
+#include "sphtroch/arc_crossing_point.hpp"
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"
 #include "sphtroch/atlas_svg.hpp"
