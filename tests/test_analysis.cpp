@@ -293,3 +293,17 @@ TEST_CASE("Classification is a regular value type: default-constructible, copyab
   CHECK(copy.nodes.size() == many[5].nodes.size());
   CHECK(copy.input.a2() == fig5f().a2());
 }
+
+TEST_CASE("stage table: one row per stage in enum order, dependencies earlier, names unique", "[analysis][stages]") {
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < kStageCount; ++i) {
+    const Stage s = static_cast<Stage>(i);
+    INFO(to_string(s));
+    CHECK(std::string(to_string(s)) != "?");
+    CHECK(names.insert(to_string(s)).second);
+    for (Stage d : Analysis::dependencies(s)) CHECK(static_cast<std::size_t>(d) < i);
+    if (s != Stage::input) CHECK_FALSE(Analysis::dependencies(s).empty());
+  }
+  CHECK(Analysis::dependencies(Stage::nodes) == std::vector<Stage>{Stage::crossings});
+  CHECK(Analysis::dependencies(Stage::classification).size() == 6);
+}

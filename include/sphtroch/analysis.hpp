@@ -199,23 +199,44 @@ class Analysis {
 // Implementation details follow.
 // =============================================================================================
 
+namespace analysis_detail {
+
+/// One row per stage, in enum order: its name and the stages it needs. With the enum and the
+/// member that computes it (dispatched in Analysis::compute), adding a stage is these three edits.
+struct StageRow {
+  Stage stage;
+  const char* name;
+  std::array<Stage, 6> needs;  // the first `need_count` entries
+  std::size_t need_count;
+};
+
+inline const std::array<StageRow, kStageCount>& stage_table() {
+  using S = Stage;
+  static const std::array<StageRow, kStageCount> table{{
+      {S::input, "input", {}, 0},
+      {S::trajectory, "trajectory", {S::input}, 1},
+      {S::velocities, "velocities", {S::input}, 1},
+      {S::screw_axis, "screw_axis", {S::input}, 1},
+      {S::crossings, "crossings", {S::input}, 1},
+      {S::nodes, "nodes", {S::crossings}, 1},
+      {S::cusps, "cusps", {S::input}, 1},
+      {S::root_census, "root_census", {S::input}, 1},
+      {S::analytic, "analytic", {S::input}, 1},
+      {S::extremes, "extremes", {S::input}, 1},
+      {S::symmetry, "symmetry", {S::input}, 1},
+      {S::classification, "classification", {S::nodes, S::cusps, S::root_census, S::analytic, S::extremes, S::symmetry}, 6},
+      {S::plot_trajectory, "plot_trajectory", {S::input}, 1},
+  }};
+  return table;
+}
+static_assert(static_cast<std::size_t>(Stage::plot_trajectory) + 1 == kStageCount,
+              "kStageCount must count every Stage, and stage_table() must have a row for each");
+
+}  // namespace analysis_detail
+
 inline const char* to_string(Stage s) {
-  switch (s) {
-    case Stage::input: return "input";
-    case Stage::trajectory: return "trajectory";
-    case Stage::velocities: return "velocities";
-    case Stage::screw_axis: return "screw_axis";
-    case Stage::crossings: return "crossings";
-    case Stage::nodes: return "nodes";
-    case Stage::cusps: return "cusps";
-    case Stage::root_census: return "root_census";
-    case Stage::analytic: return "analytic";
-    case Stage::extremes: return "extremes";
-    case Stage::symmetry: return "symmetry";
-    case Stage::classification: return "classification";
-    case Stage::plot_trajectory: return "plot_trajectory";
-  }
-  return "?";
+  const std::size_t i = static_cast<std::size_t>(s);
+  return i < kStageCount ? analysis_detail::stage_table()[i].name : "?";
 }
 
 inline const char* to_string(Effect e) {
@@ -245,23 +266,8 @@ inline std::string effect_names() {
 }
 
 inline std::vector<Stage> Analysis::dependencies(Stage stage) {
-  switch (stage) {
-    case Stage::input: return {};
-    case Stage::trajectory:
-    case Stage::velocities:
-    case Stage::screw_axis:
-    case Stage::crossings:
-    case Stage::cusps:
-    case Stage::root_census:
-    case Stage::analytic:
-    case Stage::extremes:
-    case Stage::symmetry:
-    case Stage::plot_trajectory: return {Stage::input};
-    case Stage::nodes: return {Stage::crossings};
-    case Stage::classification:
-      return {Stage::nodes, Stage::cusps, Stage::root_census, Stage::analytic, Stage::extremes, Stage::symmetry};
-  }
-  return {};
+  const analysis_detail::StageRow& row = analysis_detail::stage_table()[static_cast<std::size_t>(stage)];
+  return std::vector<Stage>(row.needs.begin(), row.needs.begin() + static_cast<std::ptrdiff_t>(row.need_count));
 }
 
 inline std::vector<Stage> Analysis::stages_for(Effect effect) {
