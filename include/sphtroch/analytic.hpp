@@ -31,6 +31,7 @@
 //      was given relative to that boundary (GearTrain::on_cone): then margin = offset.
 #pragma once
 
+#include "sphtroch/boundaries.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/ratio.hpp"
@@ -46,55 +47,7 @@
 
 namespace sphtroch {
 
-/// Default tolerance (radians) within which a3 is taken to lie on a boundary.
-///
-/// Why 1e-10: inputs typed as multiples of pi ("2pi/3", "pi - a_p") reach us rounded to double,
-/// so their margin to the boundary they were meant to hit is a few 1e-16 (Table 1 row (g),
-/// a2 = pi/3, a3 = 2pi/3, has a2 + a3 = pi - 3.4e-16); the tolerance must swallow that with a wide
-/// safety factor. From above it is bounded by resolution: at a3 = a_p + d the node of a near-cusp
-/// loop lies within O(d) of the cusp and its two branch parameters are O(sqrt d) apart; below
-/// d ~ 1e-9 rad that loop is smaller than double precision evaluation of the curve (and Newton on
-/// P(t1) = P(t2)) can separate from a cusp, so calling it a cusp is the honest answer. 1e-10 sits
-/// between the two with six orders of magnitude above the rounding and one below the resolution.
-constexpr double kBoundaryTolerance = 1e-10;
 
-// ---------------------------------------------------------------------------------------------
-// Boundaries
-// ---------------------------------------------------------------------------------------------
-
-/// The a3 values where the shape of the curve changes kind.
-enum class BoundaryKind {
-  pitch_cone,         // a3 = a_p: cusps (Eq. 20b, 43, pitch-cone criterion)
-  mirror_pitch_cone,  // a3 = pi - a_p: cusps (Eq. 20b, 46)
-  a2,                 // a3 = a2: the north pole (0,0,1) is on the curve (z_max = cos(a2 - a3) = 1)
-  pi_minus_a2,        // a3 = pi - a2: the south pole is on the curve (z_min = cos(a2 + a3) = -1)
-  half_a2,            // a3 = a2/2 (n = 1 only, Eq. 24; equals a_p there)
-  pi_minus_half_a2,   // a3 = pi - a2/2 (n = 1 only, Eq. 24; equals pi - a_p there)
-};
-
-inline const char* to_string(BoundaryKind kind);
-
-/// The boundary in words, as Boundary::name gives it: "a3 = a_p (pitch cone)", ...
-inline const char* boundary_name(BoundaryKind kind);
-
-struct Boundary {
-  BoundaryKind kind = BoundaryKind::pitch_cone;
-  std::string name;     // e.g. "a3 = a_p (pitch cone)"
-  double value = 0.0;   // the boundary's a3, radians
-  double margin = 0.0;  // a3 - value, radians (exact when a3 was given relative to this boundary)
-};
-
-/// The boundaries that matter for this train: a_p, pi - a_p, a2, pi - a2 for every n; for n = 1
-/// also a2/2 and pi - a2/2 (the same two values as a_p, pi - a_p: their margins are defined as
-/// the pitch-cone margins so that every decision about them agrees).
-inline std::vector<Boundary> boundaries(const GearTrain& train);
-
-/// The boundaries with |margin| <= tolerance. REQUIRES: tolerance >= 0.
-inline std::vector<Boundary> boundaries_hit(const GearTrain& train, double tolerance = kBoundaryTolerance);
-
-/// a3 - value of one boundary (the margin of `boundaries`, for any kind and any n; for n != 1,
-/// half_a2 and pi_minus_half_a2 are plain a3 - a2/2 and a3 - (pi - a2/2)).
-inline double boundary_margin(const GearTrain& train, BoundaryKind kind);
 
 // ---------------------------------------------------------------------------------------------
 // Criteria
@@ -269,53 +222,11 @@ inline Vector3d base_from_carrier(const GearTrain& train, double theta2, const V
 }
 
 /// The angle a3 is measured from, as GearTrain holds it symbolically.
-inline double reference_angle(const GearTrain& train) {
-  switch (train.a3_reference()) {
-    case A3Reference::given: return 0.0;
-    case A3Reference::a2: return train.a2();
-    case A3Reference::pi_minus_a2: return pi() - train.a2();
-    case A3Reference::pitch_cone: return train.planet_cone();
-    case A3Reference::mirror_pitch_cone: return pi() - train.planet_cone();
-  }
-  return 0.0;
-}
 
 inline bool is_n(const GearTrain& train, std::int64_t p) { return train.ratio() == Ratio(p); }
 
-inline double boundary_value(const GearTrain& train, BoundaryKind kind) {
-  switch (kind) {
-    case BoundaryKind::pitch_cone: return train.planet_cone();
-    case BoundaryKind::mirror_pitch_cone: return pi() - train.planet_cone();
-    case BoundaryKind::a2: return train.a2();
-    case BoundaryKind::pi_minus_a2: return pi() - train.a2();
-    case BoundaryKind::half_a2: return 0.5 * train.a2();
-    case BoundaryKind::pi_minus_half_a2: return pi() - 0.5 * train.a2();
-  }
-  return 0.0;
-}
 
-/// Which GearTrain reference measures a3 from this boundary exactly.
-inline bool reference_matches(A3Reference ref, BoundaryKind kind) {
-  switch (kind) {
-    case BoundaryKind::pitch_cone: return ref == A3Reference::pitch_cone;
-    case BoundaryKind::mirror_pitch_cone: return ref == A3Reference::mirror_pitch_cone;
-    case BoundaryKind::a2: return ref == A3Reference::a2;
-    case BoundaryKind::pi_minus_a2: return ref == A3Reference::pi_minus_a2;
-    default: return false;
-  }
-}
 
-inline const char* boundary_name_text(BoundaryKind kind) {
-  switch (kind) {
-    case BoundaryKind::pitch_cone: return "a3 = a_p (pitch cone)";
-    case BoundaryKind::mirror_pitch_cone: return "a3 = pi - a_p (mirror pitch cone)";
-    case BoundaryKind::a2: return "a3 = a2 (north pole on the curve)";
-    case BoundaryKind::pi_minus_a2: return "a3 = pi - a2 (south pole on the curve)";
-    case BoundaryKind::half_a2: return "a3 = a2/2 (Eq. 24 lower end; = a_p for n = 1)";
-    case BoundaryKind::pi_minus_half_a2: return "a3 = pi - a2/2 (Eq. 24 upper end; = pi - a_p for n = 1)";
-  }
-  return "?";
-}
 
 inline CriterionStatus decide(double lower_margin, double upper_margin, double tol) {
   const bool on_lower = std::abs(lower_margin) <= tol;
@@ -366,19 +277,7 @@ inline double omega_norm(const GearTrain& train) {
 
 }  // namespace analytic_detail
 
-inline const char* boundary_name(BoundaryKind kind) { return analytic_detail::boundary_name_text(kind); }
 
-inline const char* to_string(BoundaryKind kind) {
-  switch (kind) {
-    case BoundaryKind::pitch_cone: return "pitch_cone";
-    case BoundaryKind::mirror_pitch_cone: return "mirror_pitch_cone";
-    case BoundaryKind::a2: return "a2";
-    case BoundaryKind::pi_minus_a2: return "pi_minus_a2";
-    case BoundaryKind::half_a2: return "half_a2";
-    case BoundaryKind::pi_minus_half_a2: return "pi_minus_half_a2";
-  }
-  return "?";
-}
 
 inline const char* to_string(CriterionStatus status) {
   switch (status) {
@@ -391,40 +290,11 @@ inline const char* to_string(CriterionStatus status) {
   return "?";
 }
 
-inline double boundary_margin(const GearTrain& train, BoundaryKind kind) {
-  using namespace analytic_detail;
-  // n = 1: a_p = a2/2 identically (Eq. 20a <=> 20b); use one margin for both names.
-  if (is_n(train, 1) && kind == BoundaryKind::half_a2) kind = BoundaryKind::pitch_cone;
-  if (is_n(train, 1) && kind == BoundaryKind::pi_minus_half_a2) kind = BoundaryKind::mirror_pitch_cone;
-  if (reference_matches(train.a3_reference(), kind)) return train.a3_offset();
-  if (train.a3_reference() == A3Reference::given) return train.a3() - boundary_value(train, kind);
-  return (reference_angle(train) - boundary_value(train, kind)) + train.a3_offset();
-}
-
-inline std::vector<Boundary> boundaries(const GearTrain& train) {
-  using namespace analytic_detail;
-  std::vector<BoundaryKind> kinds{BoundaryKind::pitch_cone, BoundaryKind::mirror_pitch_cone, BoundaryKind::a2,
-                                  BoundaryKind::pi_minus_a2};
-  if (is_n(train, 1)) {
-    kinds.push_back(BoundaryKind::half_a2);
-    kinds.push_back(BoundaryKind::pi_minus_half_a2);
-  }
-  std::vector<Boundary> out;
-  for (BoundaryKind k : kinds) out.push_back(Boundary{k, boundary_name_text(k), boundary_value(train, k), boundary_margin(train, k)});
-  return out;
-}
-
-inline std::vector<Boundary> boundaries_hit(const GearTrain& train, double tolerance) {
-  SPHTROCH_ASSERT(tolerance >= 0.0, "boundary tolerance must be >= 0");
-  std::vector<Boundary> out;
-  for (const Boundary& b : boundaries(train))
-    if (std::abs(b.margin) <= tolerance) out.push_back(b);
-  return out;
-}
 
 inline Criterion criterion_eq24(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 1), "Eq. 24 is the n = 1 criterion");
+  if (!is_n(train, 1))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 24 is the n = 1 criterion", "n = 1");
   Criterion c = make_criterion("Eq. 24", "a2/2 <= a3 <= pi - a2/2", boundary_value(train, BoundaryKind::half_a2),
                                boundary_value(train, BoundaryKind::pi_minus_half_a2),
                                boundary_margin(train, BoundaryKind::half_a2),
@@ -447,7 +317,8 @@ inline Criterion criterion_eq24(const GearTrain& train, double tol) {
 
 inline Criterion criterion_eq43(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 2), "Eq. 43 is an n = 2 criterion");
+  if (!is_n(train, 2))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 43 is an n = 2 criterion", "n = 2");
   Criterion c = make_criterion("Eq. 43", "a_p <= a3 <= pi - a2", boundary_value(train, BoundaryKind::pitch_cone),
                                boundary_value(train, BoundaryKind::pi_minus_a2),
                                boundary_margin(train, BoundaryKind::pitch_cone),
@@ -476,7 +347,8 @@ inline Criterion criterion_eq43(const GearTrain& train, double tol) {
 
 inline Criterion criterion_eq46(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 2), "Eq. 46 is an n = 2 criterion");
+  if (!is_n(train, 2))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 46 is an n = 2 criterion", "n = 2");
   Criterion c = make_criterion("Eq. 46", "a2 <= a3 <= pi - a_p", boundary_value(train, BoundaryKind::a2),
                                boundary_value(train, BoundaryKind::mirror_pitch_cone),
                                boundary_margin(train, BoundaryKind::a2),
@@ -535,7 +407,8 @@ inline Criterion pitch_cone_criterion(const GearTrain& train, double tol) {
 
 inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 1), "Eq. 25 is the n = 1 node");
+  if (!is_n(train, 1))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 25 is the n = 1 node", "n = 1");
   const Criterion c = criterion_eq24(train, tol);
   if (c.status != CriterionStatus::holds_strictly) return {};
   const TwistTrig<double> t = train.trig<double>();
@@ -555,7 +428,8 @@ inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) 
 
 inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 2), "Eq. 39b is an n = 2 node");
+  if (!is_n(train, 2))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 39b is an n = 2 node", "n = 2");
   const Criterion c = criterion_eq43(train, tol);
   const double pi_ = pi();
   if (c.status == CriterionStatus::equality_at_upper) {
@@ -589,7 +463,8 @@ inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol)
 
 inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(is_n(train, 2), "Eq. 44b is an n = 2 node");
+  if (!is_n(train, 2))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 44b is an n = 2 node", "n = 2");
   const Criterion c = criterion_eq46(train, tol);
   const double pi_ = pi();
   if (c.status == CriterionStatus::equality_at_lower) {
@@ -648,7 +523,8 @@ inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double
 
 inline AnalyticClassification classify_analytic(const GearTrain& train, double tol) {
   using namespace analytic_detail;
-  SPHTROCH_ASSERT(tol >= 0.0, "boundary tolerance must be >= 0");
+  if (!(tol >= 0.0))
+    throw InvalidInput("boundary_tolerance", detail::to_text(tol), "not a number >= 0", ">= 0 radians");
   AnalyticClassification a;
   a.tolerance = tol;
   a.boundaries_hit = boundaries_hit(train, tol);

@@ -39,6 +39,7 @@
 #pragma once
 
 #include "sphtroch/analytic.hpp"
+#include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/errors.hpp"
 #include "sphtroch/gear_train.hpp"
@@ -168,24 +169,6 @@ inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const R
 inline void add_to_summary(AtlasSummary& s, const AtlasCell& c, std::size_t k, const Ratio& ratio,
                            std::size_t max_kept = static_cast<std::size_t>(-1));
 
-/// The curves in the (a2, a3) plane where the class can change, for this ratio: a3 = a_p(a2)
-/// and pi - a_p(a2) for every n (cusps; for n = 1 these are Eq. 24's ends a2/2, pi - a2/2);
-/// a3 = a2 and pi - a2 when |p| >= 2 (a pole on the curve is a node; for n = 2 the other ends of
-/// Eqs. 43 and 46). For n other than 1, 2 the class can also change where two branches touch
-/// away from the poles (a stationary value of the root census's g is an integer); those curves
-/// are not in the report and not listed here.
-inline std::vector<BoundaryKind> atlas_boundary_kinds(const Ratio& ratio);
-
-/// a3 on a boundary at a2: a_p, pi - a_p, a2 or pi - a2.
-inline double atlas_boundary_a3(BoundaryKind kind, double a2, const Ratio& ratio);
-
-/// The boundary nearest to (a2, a3) in a3, and the distance |a3 - boundary(a2)| in radians.
-struct NearestBoundary {
-  BoundaryKind kind = BoundaryKind::pitch_cone;
-  std::string name;
-  double distance = 0.0;
-};
-inline NearestBoundary nearest_boundary(double a2, double a3, const Ratio& ratio);
 
 // =============================================================================================
 // Implementation details follow.
@@ -314,41 +297,5 @@ inline AtlasSummary summarize_atlas(const std::vector<AtlasCell>& cells, const R
   return s;
 }
 
-inline std::vector<BoundaryKind> atlas_boundary_kinds(const Ratio& ratio) {
-  std::vector<BoundaryKind> kinds{BoundaryKind::pitch_cone, BoundaryKind::mirror_pitch_cone};
-  if (ratio.abs_p() >= 2) {
-    kinds.push_back(BoundaryKind::a2);
-    kinds.push_back(BoundaryKind::pi_minus_a2);
-  }
-  return kinds;
-}
-
-inline double atlas_boundary_a3(BoundaryKind kind, double a2, const Ratio& ratio) {
-  const double pi = Constants<double>::pi();
-  const double a_p = GearTrain::planet_cone_of(a2, ratio);
-  switch (kind) {
-    case BoundaryKind::pitch_cone:
-    case BoundaryKind::half_a2: return a_p;
-    case BoundaryKind::mirror_pitch_cone:
-    case BoundaryKind::pi_minus_half_a2: return pi - a_p;
-    case BoundaryKind::a2: return a2;
-    case BoundaryKind::pi_minus_a2: return pi - a2;
-  }
-  return a_p;
-}
-
-inline NearestBoundary nearest_boundary(double a2, double a3, const Ratio& ratio) {
-  NearestBoundary best;
-  best.distance = std::numeric_limits<double>::infinity();
-  for (BoundaryKind k : atlas_boundary_kinds(ratio)) {
-    const double d = std::abs(a3 - atlas_boundary_a3(k, a2, ratio));
-    if (d < best.distance) {
-      best.kind = k;
-      best.distance = d;
-    }
-  }
-  best.name = boundary_name(best.kind);
-  return best;
-}
 
 }  // namespace sphtroch

@@ -172,6 +172,18 @@ class GearTrain {
     return t;
   }
 
+  /// The value a3 is measured from (radians): 0 (given), a2, pi - a2, a_p or pi - a_p.
+  double reference_angle() const {
+    const double pi = Constants<double>::pi();
+    switch (reference_) {
+      case A3Reference::given: return 0.0;
+      case A3Reference::a2: return a2_;
+      case A3Reference::pi_minus_a2: return pi - a2_;
+      case A3Reference::pitch_cone: return planet_cone_of(a2_, ratio_);
+      case A3Reference::mirror_pitch_cone: return pi - planet_cone_of(a2_, ratio_);
+    }
+    return 0.0;
+  }
  private:
   GearTrain(double a2, A3Reference reference, double offset, Ratio n, double phase)
       : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(0.0), phase_given_(phase) {
@@ -202,17 +214,7 @@ class GearTrain {
     }
   }
 
-  double reference_angle() const {
-    const double pi = Constants<double>::pi();
-    switch (reference_) {
-      case A3Reference::given: return 0.0;
-      case A3Reference::a2: return a2_;
-      case A3Reference::pi_minus_a2: return pi - a2_;
-      case A3Reference::pitch_cone: return planet_cone_of(a2_, ratio_);
-      case A3Reference::mirror_pitch_cone: return pi - planet_cone_of(a2_, ratio_);
-    }
-    return 0.0;
-  }
+
 
   double a2_;
   double a3_;

@@ -15,6 +15,7 @@
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"
 #include "sphtroch/atlas_svg.hpp"
+#include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
