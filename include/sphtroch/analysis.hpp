@@ -127,6 +127,8 @@ struct AnalysisSettings {
   // Trajectory (trace, velocity, screw axis).
   std::size_t samples = 0;       // closed curve: samples per period; 0 = trace_sample_count
   std::optional<double> turns;   // open curve over K carrier turns instead (K in (0, kMaxTurns])
+  /// The boundary reading these settings ask for (boundaries.hpp).
+  Reading reading() const { return Reading{literal, boundary_tolerance}; }
 };
 
 /// omega(t_i) along the trajectory's parameters (contract 5).
@@ -301,7 +303,7 @@ inline std::vector<Stage> Analysis::stages_for(Effect effect) {
 inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settings)
     : input_(train), settings_(settings), snapped_{train, {}, false, 0.0, 0.0} {
   if (settings.samples != 0) check_sample_count(settings.samples);
-  RootClassificationSettings{settings.literal, settings.boundary_tolerance}.validate();
+  settings.reading().validate();
   if (settings.census_samples != 0 &&
       (settings.census_samples < kMinCensusSamples || settings.census_samples > kMaxSamples))
     throw InvalidInput("census_samples", std::to_string(settings.census_samples), "outside the valid range",
@@ -310,7 +312,7 @@ inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settin
   if (settings.turns && !(*settings.turns > 0.0 && *settings.turns <= kMaxTurns))
     throw InvalidInput("turns", detail::to_text(*settings.turns), "outside the valid range", "(0, 1e6] carrier turns");
   run_stage(Stage::input, [&](StageWork&) {
-    snapped_ = snap_to_boundaries(input_, settings_.literal ? 0.0 : settings_.boundary_tolerance);
+    snapped_ = snap_to_boundaries(input_, settings_.reading().boundary());
   });
 }
 
@@ -385,7 +387,7 @@ inline const PolylineCensus& Analysis::crossings() const {
     run_stage(Stage::crossings, [&](StageWork& w) {
       PolylineCensusSettings ps;
       ps.samples = settings_.census_samples;
-      ps.tangency_tolerance = settings_.literal ? 0.0 : kTangencyTolerance;
+      ps.tangency_tolerance = settings_.reading().tangency();
       crossings_ = polyline_census(analysed(), ps);
       w.points_evaluated = crossings_->work.points_evaluated;
       w.predicates = crossings_->work.predicates;
@@ -425,7 +427,7 @@ inline const RootCensus& Analysis::root_census() const {
   if (!root_)
     run_stage(Stage::root_census, [&](StageWork& w) {
       RootCensusSettings rs;
-      rs.tangency_tolerance = settings_.literal ? 0.0 : kTangencyTolerance;
+      rs.tangency_tolerance = settings_.reading().tangency();
       root_ = sphtroch::root_census(analysed(), rs);
       w.root_evaluations = root_->evaluations;
       w.points_evaluated = assembly_evaluations(root_->nodes);  // velocities of node assembly
@@ -436,7 +438,7 @@ inline const RootCensus& Analysis::root_census() const {
 inline const AnalyticClassification& Analysis::analytic() const {
   if (!analytic_)
     run_stage(Stage::analytic, [&](StageWork&) {
-      analytic_ = classify_analytic(analysed(), settings_.literal ? 0.0 : settings_.boundary_tolerance);
+      analytic_ = classify_analytic(analysed(), settings_.reading().boundary());
     });
   return *analytic_;
 }

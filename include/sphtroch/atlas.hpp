@@ -92,6 +92,8 @@ struct AtlasSpec {
   AngleRange a3;           // vertical axis, index j
   bool literal = false;    // analyse the doubles as given (no boundary snapping, tolerances 0)
   double boundary_tolerance = kBoundaryTolerance;  // default reading only
+  /// The boundary reading of every cell (boundaries.hpp).
+  Reading reading() const { return Reading{literal, boundary_tolerance}; }
 
   std::size_t cells() const { return grid * grid; }
   /// Cell centre lo + (k + 1/2)(hi - lo)/G.
@@ -210,10 +212,7 @@ inline AtlasCell atlas_cell(const AtlasSpec& spec, std::size_t i, std::size_t j)
   cell.j = static_cast<std::uint32_t>(j);
   cell.a2 = spec.a2_at(i);
   cell.a3 = spec.a3_at(j);
-  RootClassificationSettings settings;
-  settings.literal = spec.literal;
-  settings.boundary_tolerance = spec.boundary_tolerance;
-  const RootClassification c = classify_roots(GearTrain(cell.a2, cell.a3, spec.ratio), settings);
+  const RootClassification c = classify_roots(GearTrain(cell.a2, cell.a3, spec.ratio), spec.reading());
   cell.crossings = static_cast<std::uint32_t>(c.crossings);
   cell.tangencies = static_cast<std::uint32_t>(c.tangencies);
   cell.nodes = static_cast<std::uint32_t>(c.nodes);

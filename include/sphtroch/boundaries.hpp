@@ -36,6 +36,33 @@ namespace sphtroch {
 /// between the two with six orders of magnitude above the rounding and one below the resolution.
 constexpr double kBoundaryTolerance = 1e-10;
 
+/// Default tolerance on |g - integer| at a stationary point of the root census's g for calling it
+/// a tangency (root_census.hpp): two branches that come this close (in units of g, about radians
+/// times O(1)) are one touching node.
+constexpr double kTangencyTolerance = 1e-10;
+
+/// The largest boundary tolerance accepted (radians): beyond it the default reading would move
+/// trains visibly.
+constexpr double kMaxBoundaryTolerance = 1e-3;
+
+/// How a train near a boundary is read, decided once: by default an input within
+/// boundary_tolerance of a boundary is analysed on it and branches within kTangencyTolerance
+/// touch; `literal` analyses the doubles as given (both tolerances 0).
+struct Reading {
+  bool literal = false;
+  double boundary_tolerance = kBoundaryTolerance;  // default reading only; [0, kMaxBoundaryTolerance]
+  /// The tolerance in effect for boundaries (0 when literal), radians.
+  double boundary() const { return literal ? 0.0 : boundary_tolerance; }
+  /// The tolerance in effect for tangencies (0 when literal).
+  double tangency() const { return literal ? 0.0 : kTangencyTolerance; }
+  /// Throws InvalidInput("boundary_tolerance", ...) unless 0 <= boundary_tolerance <= 1e-3.
+  void validate() const {
+    if (!(boundary_tolerance >= 0.0 && boundary_tolerance <= kMaxBoundaryTolerance))
+      throw InvalidInput("boundary_tolerance", detail::to_text(boundary_tolerance), "outside the valid range",
+                         "[0, 1e-3] radians");
+  }
+};
+
 /// The a3 values where the shape of the curve changes kind.
 enum class BoundaryKind {
   pitch_cone,         // a3 = a_p: cusps (Eq. 20b, 43, pitch-cone criterion)

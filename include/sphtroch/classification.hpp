@@ -54,6 +54,8 @@ struct ClassifySettings {
   bool literal = false;                          // analyse the doubles as given
   double boundary_tolerance = kBoundaryTolerance;  // default reading only
   std::size_t samples = 0;                       // polyline census samples; 0 = default
+  /// The boundary reading these settings ask for (boundaries.hpp).
+  Reading reading() const { return Reading{literal, boundary_tolerance}; }
 };
 
 struct CensusAgreement {
@@ -152,7 +154,7 @@ struct ClassificationInputs {
 inline Classification assemble_classification(const ClassificationInputs& in) {
   Classification c(in.input, in.snapped);
   c.literal = in.literal;
-  c.tangency_tolerance = in.literal ? 0.0 : kTangencyTolerance;
+  c.tangency_tolerance = Reading{in.literal}.tangency();
   c.polyline = in.polyline;
   c.root = in.root;
   c.nodes = c.polyline.nodes;

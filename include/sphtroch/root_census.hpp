@@ -51,6 +51,7 @@
 
 #include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
+#include "sphtroch/boundaries.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
@@ -68,9 +69,6 @@ namespace sphtroch {
 
 /// Multiplies LDBL_EPSILON * (|p| + q) in the error bound of g (see header).
 constexpr long double kRootCensusErrorFactor = 64.0L;
-/// Default tolerance on |g - integer| at a stationary point for calling it a tangency: two
-/// branches that come this close (in units of g, about radians times O(1)) are one touching node.
-constexpr double kTangencyTolerance = 1e-10;
 /// A stationary point of g closer than this to b = 0 or pi, with g there equal to the end's
 /// integer, belongs to a near-cusp loop (its parameter half-length grows like sqrt(|a3 - a_p|)).
 constexpr double kCuspNeighbourhood = 1e-2;

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "sphtroch/analytic.hpp"
+#include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/errors.hpp"
 #include "sphtroch/gear_train.hpp"
@@ -51,20 +52,8 @@ inline CurveClass curve_class(std::size_t nodes, std::size_t cusps) {
                    : (cusps > 0 ? CurveClass::cusps : CurveClass::simple_curve);
 }
 
-/// The largest boundary tolerance accepted (radians): beyond it the default reading would move
-/// trains visibly.
-constexpr double kMaxBoundaryTolerance = 1e-3;
-
-struct RootClassificationSettings {
-  bool literal = false;                            // analyse the doubles as given
-  double boundary_tolerance = kBoundaryTolerance;  // default reading only; [0, kMaxBoundaryTolerance]
-  /// Throws InvalidInput("boundary_tolerance", ...) unless finite and in range.
-  void validate() const {
-    if (!(boundary_tolerance >= 0.0 && boundary_tolerance <= kMaxBoundaryTolerance))
-      throw InvalidInput("boundary_tolerance", detail::to_text(boundary_tolerance), "outside the valid range",
-                         "[0, 1e-3] radians");
-  }
-};
+/// The reading of classify_roots (boundaries.hpp: default or literal, boundary tolerance).
+using RootClassificationSettings = Reading;
 
 /// One train classified by the root census. A regular value type.
 struct RootClassification {
@@ -86,7 +75,7 @@ struct RootClassification {
 
 inline RootClassification classify_roots(const GearTrain& train, const RootClassificationSettings& settings = {}) {
   settings.validate();
-  const double tolerance = settings.literal ? 0.0 : settings.boundary_tolerance;
+  const double tolerance = settings.boundary();
   const SnappedTrain snapped = snap_to_boundaries(train, tolerance);
   const GearTrain& t = snapped.train;
   RootClassification c;
@@ -94,7 +83,7 @@ inline RootClassification classify_roots(const GearTrain& train, const RootClass
   c.a3 = t.a3();
   for (const Boundary& b : snapped.hits) c.boundaries.push_back(b.name);
   RootCensusSettings rs;
-  rs.tangency_tolerance = settings.literal ? 0.0 : kTangencyTolerance;
+  rs.tangency_tolerance = settings.tangency();
   c.node_points = root_census(t, rs).nodes;
   for (const Node& n : c.node_points) ++(n.kind == NodeKind::crossing ? c.crossings : c.tangencies);
   c.nodes = c.crossings + c.tangencies;
