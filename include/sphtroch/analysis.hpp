@@ -60,6 +60,7 @@
 #include "sphtroch/root_classification.hpp"
 #include "sphtroch/sampling.hpp"
 #include "sphtroch/svg_plot.hpp"
+#include "sphtroch/work.hpp"
 
 #include <array>
 #include <chrono>
@@ -100,24 +101,8 @@ inline std::optional<Effect> effect_from_name(const std::string& name);
 /// Every effect name, comma separated (for error messages).
 inline std::string effect_names();
 
-/// Work of one stage (see contract 2).
-struct StageWork {
-  bool ran = false;
-  std::size_t points_evaluated = 0;
-  std::size_t predicates = 0;
-  std::size_t newton_steps = 0;
-  std::size_t root_evaluations = 0;
-  double seconds = 0.0;
-  StageWork& operator+=(const StageWork& o) {
-    ran = ran || o.ran;
-    points_evaluated += o.points_evaluated;
-    predicates += o.predicates;
-    newton_steps += o.newton_steps;
-    root_evaluations += o.root_evaluations;
-    seconds += o.seconds;
-    return *this;
-  }
-};
+/// Work of one stage (see contract 2; work.hpp).
+using StageWork = Work;
 
 struct AnalysisSettings {
   // Census (as ClassifySettings).
@@ -474,12 +459,7 @@ inline const Classification& Analysis::classification() const {
   // The work of everything the classification needed (contract 4).
   StageWork sum;
   for (Stage s : stages_for(Effect::classification)) sum += work(s);
-  ClassificationWork& cw = classification_->work;
-  cw.points_evaluated = sum.points_evaluated;
-  cw.predicates = sum.predicates;
-  cw.newton_steps = sum.newton_steps;
-  cw.root_evaluations = sum.root_evaluations;
-  cw.seconds = sum.seconds;
+  classification_->work = sum;
   return *classification_;
 }
 

@@ -38,6 +38,7 @@
 #include "sphtroch/polyline_census_result.hpp"
 #include "sphtroch/root_census.hpp"
 #include "sphtroch/root_classification.hpp"
+#include "sphtroch/work.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -65,13 +66,8 @@ struct CensusAgreement {
   bool ok() const { return censuses_agree && analytic_agrees.value_or(true); }
 };
 
-struct ClassificationWork {
-  std::size_t points_evaluated = 0;
-  std::size_t predicates = 0;
-  std::size_t newton_steps = 0;
-  std::size_t root_evaluations = 0;
-  double seconds = 0.0;
-};
+/// The work of every stage a classification needed (work.hpp).
+using ClassificationWork = Work;
 
 struct Classification {
   Classification() = default;  // Fig. 3's train, nothing computed (a regular value type)
