@@ -39,6 +39,7 @@
 #include "sphtroch/trace_output.hpp"
 #include "sphtroch/types.hpp"
 #include "sphtroch/version.hpp"
+#include "sphtroch/work.hpp"
 
 #if defined(SPHTROCH_HAVE_EXACT)
 #include "sphtroch/analysis.hpp"
