@@ -121,6 +121,24 @@ TEST_CASE("hostile: fuzz_findings: a number overflowing JSON, a BOM-only CSV, a 
   }
 }
 
+TEST_CASE("hostile: output_through_symlinks: a dangling link gets its target created, the link kept", "[cli][hostile][output]") {
+  TempDir dir;
+  fs::create_directory(dir.path / "real");
+  fs::create_symlink("real/new.csv", dir.path / "dangling.csv");  // target does not exist yet
+  const Result r = shell(kExe + " trace --a2 1 --a3 2 --n 2 --samples 8 -o dangling.csv", dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(fs::is_symlink(dir.path / "dangling.csv"));        // as a shell's > would: the link stays
+  CHECK(fs::is_regular_file(dir.path / "real" / "new.csv"));  // and its target is the file
+  CHECK(count_lines(slurp(dir.path / "real" / "new.csv")) == 9);
+  // A link to an existing file: the file is replaced, the link stays.
+  REQUIRE(shell(kExe + " trace --a2 1 --a3 2 --n 2 --samples 5 -o dangling.csv", dir).status == 0);
+  CHECK(fs::is_symlink(dir.path / "dangling.csv"));
+  CHECK(count_lines(slurp(dir.path / "real" / "new.csv")) == 6);
+  // atlas-merge: stdin twice is refused by name; a full stdout is named "stdout".
+  check_refused(shell(kExe + " atlas-merge -o m.csv - - < /dev/null", dir), "standard input given twice");
+}
+
 TEST_CASE("hostile: names_with_newlines are escaped so that errors stay one line", "[cli][hostile][scene]") {
   TempDir dir;
   write_file(dir.path / "k.json", "{\"trains\":[{" + kTrain + ",\"a\\nb\":1,\"effects\":{\"trace\":\"o.csv\"}}]}");

@@ -161,6 +161,23 @@ namespace atlas_csv_detail {
 inline const char* const kAtlasCsvForm =
     "a CSV written by sphtroch atlas (comment line, header, one row per cell in order)";
 
+/// The start of a line for a message: at most 120 bytes, control bytes (NUL included) as \xNN,
+/// so that the message stays one C string on one line.
+inline std::string quoted_line(std::string_view line) {
+  std::string out;
+  for (unsigned char c : line.substr(0, 120)) {
+    if (c < 0x20 || c == 0x7f) {
+      const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 inline InvalidInput bad_slice(const std::string& name, const std::string& problem) {
   return InvalidInput("slice", name, problem, kAtlasCsvForm);
 }
@@ -230,7 +247,7 @@ inline AtlasCsvHead read_atlas_csv_head(std::string_view comment, std::string_vi
     out.rows = AtlasRows{0, out.spec.grid};
   }
   if (std::string(comment) != atlas_csv_comment(out.spec, out.shard))
-    throw bad("comment line is not as sphtroch atlas writes it: \"" + std::string(comment) + "\"");
+    throw bad("comment line is not as sphtroch atlas writes it: \"" + quoted_line(comment) + "\"");
   return out;
 }
 
@@ -239,7 +256,7 @@ inline AtlasCell read_atlas_csv_row(const AtlasCsvHead& head, std::size_t k, std
   const std::size_t g = head.spec.grid;
   auto row_error = [&](const std::string& what) {
     return bad_slice(head.name,
-                     "line " + std::to_string(k + 3) + ": " + what + ": \"" + std::string(line.substr(0, 120)) + "\"");
+                     "line " + std::to_string(k + 3) + ": " + what + ": \"" + quoted_line(line) + "\"");
   };
   const auto f = split(line, ',');
   if (f.size() != 11) throw row_error("not 11 fields");

@@ -155,6 +155,7 @@ class OutputFile {
     f.field_ = field;
     f.path_ = path.empty() ? "-" : path;
     if (f.path_ == "-") {
+      f.field_ = "stdout";  // errors name what failed, also when no option named it ("stdout = -: ...")
       f.fd_ = STDOUT_FILENO;
       f.kind_ = Kind::stream;
     } else {
@@ -258,6 +259,22 @@ class OutputFile {
     return -1;
   }
 
+  /// `path` with the symbolic links of its last component followed (at most 40), also to a target
+  /// that does not exist yet; canonical (realpath) when the target exists.
+  static std::string follow_links(std::string path) {
+    for (int hop = 0; hop < 40; ++hop) {
+      struct stat st {};
+      if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) break;
+      std::string link(PATH_MAX, '\0');
+      const ssize_t n = ::readlink(path.c_str(), link.data(), link.size());
+      if (n <= 0) break;
+      link.resize(static_cast<std::size_t>(n));
+      path = link[0] == '/' ? link : detail::split_path(path).first + "/" + link;
+    }
+    char resolved[PATH_MAX];
+    return ::realpath(path.c_str(), resolved) != nullptr ? std::string(resolved) : path;
+  }
+
   void open_path() {
     struct stat st {};
     const bool exists = ::stat(path_.c_str(), &st) == 0;
@@ -273,11 +290,9 @@ class OutputFile {
       kind_ = Kind::direct;
       return;
     }
-    target_ = path_;
-    if (::lstat(path_.c_str(), &st) == 0 || errno != ENOENT) {  // a regular file, possibly through symlinks: replace the file itself
-      char resolved[PATH_MAX];
-      if (::realpath(path_.c_str(), resolved) != nullptr) target_ = resolved;
-    }
+    // A regular file, possibly through symlinks: replace the file itself. A symlink whose target
+    // does not exist yet gets that target created (as a shell's > does), the link kept.
+    target_ = follow_links(path_);
     const std::string dir = detail::split_path(target_).first;
     std::string tmpl = dir + "/.sphtroch-XXXXXX";
     fd_ = ::mkostemp(tmpl.data(), O_CLOEXEC);

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <chrono>
@@ -331,6 +332,8 @@ void run_merge(const MergeOptions& o) {
   std::vector<NamedFile> inputs;
   for (const std::string& s : o.slices) inputs.push_back({s, "slice"});
   check_distinct_files({{o.output, "--output"}, {o.svg, "--svg"}}, inputs);
+  if (std::count(o.slices.begin(), o.slices.end(), std::string("-")) > 1)
+    throw UsageError{"atlas-merge: slice = -: standard input given twice; valid: each slice once, at most one as -"};
   try {
     const std::vector<SliceSource> sources = open_slices(o.slices);
     std::vector<AtlasCsvHead> heads;
