@@ -75,6 +75,23 @@ inline Result run(const std::string& args, const TempDir& dir, bool in_dir = fal
   return r;
 }
 
+/// Runs a bash command line (with pipefail) inside `dir`, for pipes and redirections around the
+/// tool; captures stdout, stderr and the exit status as run() does.
+inline Result shell(const std::string& line, const TempDir& dir) {
+  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt", script = dir.path / "cmd.sh";
+  std::ofstream(script) << "set -o pipefail\ncd '" << dir.path.string() << "'\n" << line << "\n";
+  const std::string cmd = "bash '" + script.string() + "' >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  fs::remove(script);
+  return r;
+}
+
 inline std::size_t count_lines(const std::string& s) {
   std::size_t n = 0;
   for (char c : s) n += c == '\n';

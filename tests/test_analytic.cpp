@@ -3,6 +3,7 @@
 // invariants of the curve evaluated by TracerCurve (points equal at both node parameters, zero
 // velocity at cusps, stationary z, reflected points on the curve) — never from analytic.hpp itself.
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/analytic.hpp"
 #include "sphtroch/curve.hpp"
@@ -36,40 +37,8 @@ struct Ratios {
 
 const std::vector<Ratios> kRatios{{1, 1}, {2, 1}, {3, 1}, {1, 2}, {1, 3}, {3, 2}, {5, 2}, {7, 3}, {-2, 1}, {-1, 3}, {13, 5}};
 
-struct CsvRow {
-  std::string id;
-  std::int64_t n_num = 1, n_den = 1;
-  double a2 = 0, a3 = 0;
-  std::size_t nodes = 0, cusps = 0;
-};
-
-std::vector<CsvRow> read_paper_cases() {
-  std::ifstream in(std::string(SPHTROCH_REFERENCE_DIR) + "/paper_cases.csv");
-  REQUIRE(in.good());
-  std::string line;
-  std::getline(in, line);  // header
-  REQUIRE(line.rfind("id,n_num,n_den,a2_symbolic,a3_symbolic,a2_rad,a3_rad,nodes,cusps", 0) == 0);
-  std::vector<CsvRow> rows;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    // The first nine fields hold no commas or quotes; the tenth (source) is quoted free text.
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    for (int i = 0; i < 9 && std::getline(ss, cell, ','); ++i) f.push_back(cell);
-    REQUIRE(f.size() == 9);
-    CsvRow r;
-    r.id = f[0];
-    r.n_num = std::stoll(f[1]);
-    r.n_den = std::stoll(f[2]);
-    r.a2 = std::stod(f[5]);
-    r.a3 = std::stod(f[6]);
-    r.nodes = static_cast<std::size_t>(std::stoul(f[7]));
-    r.cusps = static_cast<std::size_t>(std::stoul(f[8]));
-    rows.push_back(r);
-  }
-  return rows;
-}
+using CsvRow = sphtroch::test::PaperCase;
+std::vector<CsvRow> read_paper_cases() { return sphtroch::test::paper_cases(); }
 
 /// Every node: on the curve at both parameters, the parameters distinct mod the period.
 void check_nodes_on_curve(const GearTrain& train, const std::vector<AnalyticNode>& nodes, double tol = 1e-14) {

@@ -21,21 +21,6 @@ namespace {
 
 const std::string kExe = std::string("'") + SPHTROCH_EXE + "'";
 
-/// Runs a bash command line in `dir`; captures stdout, stderr, status.
-Result shell(const std::string& line, const TempDir& dir) {
-  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt", script = dir.path / "cmd.sh";
-  std::ofstream(script) << "cd '" << dir.path.string() << "'\n" << line << "\n";
-  const std::string cmd = "bash '" + script.string() + "' >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  fs::remove(script);
-  return r;
-}
 
 /// Exit 2, nothing on stdout, exactly one line on stderr containing `part`.
 void check_refused(const Result& r, const std::string& part) {

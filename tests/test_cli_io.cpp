@@ -21,21 +21,6 @@ namespace {
 const std::string kExe = std::string("'") + SPHTROCH_EXE + "'";
 const std::string kTrain = "trace --a2 1 --a3 2 --n 7/3";
 
-/// Runs a shell command line (bash, pipefail) in `dir`; captures stdout, stderr, status.
-Result shell(const std::string& line, const TempDir& dir) {
-  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt", script = dir.path / "cmd.sh";
-  std::ofstream(script) << "set -o pipefail\ncd '" << dir.path.string() << "'\n" << line << "\n";
-  const std::string cmd = "bash '" + script.string() + "' >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  fs::remove(script);
-  return r;
-}
 
 nlohmann::json json_of(const Result& r) {
   INFO(r.err);
