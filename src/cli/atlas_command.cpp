@@ -245,6 +245,18 @@ UsageError unreadable_slice(const std::string& path, const InvalidInput& e) {
                     "; valid: a readable CSV written by sphtroch atlas"};
 }
 
+/// The comment and header lines of a slice, checked as read_atlas_csv checks them.
+AtlasCsvHead read_head(InputLines& lines, const std::string& path) {
+  const auto bad = [&](const char* problem) {
+    return InvalidInput("slice", path, problem, atlas_csv_detail::kAtlasCsvForm);
+  };
+  std::string_view line;
+  if (!lines.next(line)) throw bad("empty or truncated (no final newline)");
+  const std::string comment(line);  // the view ends with the next call
+  if (!lines.next(line) || !lines.last_ended_with_newline()) throw bad("no comment and header lines");
+  return read_atlas_csv_head(comment, line, path);
+}
+
 /// Calls row(cell, line) for every row of the slice, in order, with read_atlas_csv's checks
 /// (the head again, row count, final newline); memory: one block and one line.
 template <class Row>
@@ -270,11 +282,16 @@ void for_each_row(const SliceSource& s, const Row& row) {
       throw unreadable_slice(s.path, e);
     }
   };
-  std::string_view comment, header, line;
-  if (!next(comment) || !next(header)) throw bad("no comment and header lines");
-  if (const AtlasCsvHead again = read_atlas_csv_head(comment, header, s.path);
-      again.spec_comment != s.head.spec_comment || again.rows.begin != s.head.rows.begin)
+  AtlasCsvHead again;
+  try {
+    again = read_head(*lines, s.path);
+  } catch (const InvalidInput& e) {
+    if (e.valid_range() == atlas_csv_detail::kAtlasCsvForm) throw;
+    throw unreadable_slice(s.path, e);
+  }
+  if (again.spec_comment != s.head.spec_comment || again.rows.begin != s.head.rows.begin)
     throw bad("changed while being merged");
+  std::string_view line;
   const std::size_t expected = s.head.cell_count();
   std::size_t k = 0;
   for (; next(line); ++k)
@@ -309,11 +326,7 @@ std::vector<SliceSource> open_slices(const std::vector<std::string>& paths) {
       std::optional<InputLines> lines;
       if (s.held) lines.emplace(*s.held, path, "slice", kMaxAtlasLine);
       else lines.emplace(in, kMaxAtlasLine);
-      std::string_view comment, header;
-      if (!lines->next(comment)) throw InvalidInput("slice", path, "empty or truncated (no final newline)", atlas_csv_detail::kAtlasCsvForm);
-      if (!lines->next(header) || !lines->last_ended_with_newline())
-        throw InvalidInput("slice", path, "no comment and header lines", atlas_csv_detail::kAtlasCsvForm);
-      s.head = read_atlas_csv_head(comment, header, path);
+      s.head = read_head(*lines, path);
     } catch (const InvalidInput& e) {
       if (e.field() == "slice" && e.valid_range() == atlas_csv_detail::kAtlasCsvForm) throw;
       throw unreadable_slice(path, e);
