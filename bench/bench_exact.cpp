@@ -8,7 +8,7 @@
 //   f_classify    sphtroch::classify with the defaults (what `sphtroch classify` runs), p, q <= 5.
 #include "bench_common.hpp"
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/arc_predicates.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/polyline_census.hpp"

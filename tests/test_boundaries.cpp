@@ -2,7 +2,7 @@
 // tan a_p = sin a2 / (cos a2 + n)) and the report's boundary cases.
 #include "test_support.hpp"
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/boundaries.hpp"
 
 #include <cmath>

@@ -10,7 +10,7 @@
 
 #include "catch2/catch.hpp"
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node_assembly.hpp"

@@ -39,7 +39,7 @@
 //  CAVEAT: the memo is not synchronised; use one Analysis per thread.
 //  CAVEAT: this header includes CGAL (through polyline_census.hpp): the object owns the crossing
 //  stage. STYLE.md lists "analysis" among the Eigen-only headers; the Eigen-only closed forms
-//  stay in analytic.hpp, and a user who only wants trajectories still pays for Eigen alone.
+//  stay in criteria.hpp, and a user who only wants trajectories still pays for Eigen alone.
 //  REQUIRES: settings valid (InvalidInput naming "samples" or "turns" otherwise, from the
 //  constructor).
 #pragma once
@@ -48,7 +48,7 @@
 #error "sphtroch/analysis.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
 #endif
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/classification.hpp"
 #include "sphtroch/curve.hpp"

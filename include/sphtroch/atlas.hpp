@@ -38,7 +38,7 @@
 //  exception thrown in a worker is rethrown on the calling thread.
 #pragma once
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/errors.hpp"
@@ -74,7 +74,7 @@ constexpr std::size_t kAtlasMaxGrid = 4096;
 /// boundary case: the census and the criterion read an equality that holds up to rounding
 /// differently (e.g. --literal on the anti-diagonal, where a2 + a3 rounds to pi in double but not
 /// in the census's long double). Between the boundary tolerance 1e-10 and the 1e-9 size below
-/// which a near-cusp loop cannot be told from a cusp (analytic.hpp, kBoundaryTolerance).
+/// which a near-cusp loop cannot be told from a cusp (criteria.hpp, kBoundaryTolerance).
 constexpr double kAtlasBoundaryBand = 1e-9;
 /// Largest thread count accepted.
 constexpr std::size_t kAtlasMaxThreads = 1024;

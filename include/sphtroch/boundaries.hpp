@@ -1,7 +1,7 @@
 // sphtroch/boundaries.hpp — the boundary vocabulary: the a3 values where the class of the curve
 // can change (pitch cones, pole passages, Eq. 24's ends), their names, values and margins for a
 // train, the default tolerance of the boundary reading, and the boundary curves of the (a2, a3)
-// map with the nearest one to a point. Eigen only; analytic.hpp, boundary_snap.hpp and atlas.hpp
+// map with the nearest one to a point. Eigen only; criteria.hpp, boundary_snap.hpp and atlas.hpp
 // build on it.
 //
 //   for (const sphtroch::Boundary& b : sphtroch::boundaries(train)) b.name, b.value, b.margin;

@@ -13,7 +13,7 @@
 // Fig. 3). A tolerance of 0 (the `--literal` reading) changes nothing.
 #pragma once
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/gear_train.hpp"
 
 #include <algorithm>

@@ -30,7 +30,7 @@
 #error "sphtroch/classification.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
 #endif
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node.hpp"

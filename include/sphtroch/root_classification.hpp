@@ -11,12 +11,12 @@
 // boundary (pitch cone, pole passage, a2 = pi/2) is analysed on it; `literal` analyses the doubles
 // as given (tolerances 0). Node points come from the root census (root_census.hpp: tangency
 // tolerance kTangencyTolerance, or 0 when literal); cusps from the pitch-cone test
-// (pitch_cone.hpp, resolution kCuspResolution); the report's prediction from analytic.hpp.
+// (pitch_cone.hpp, resolution kCuspResolution); the report's prediction from criteria.hpp.
 // Errors: InvalidInput (field "boundary_tolerance", "count", "a3_range") on bad settings; the
 // census cost bound of cost_bounds.hpp (field "n").
 #pragma once
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/errors.hpp"

@@ -10,7 +10,7 @@
 #include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport must precede other Eigen use
 #endif
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/arc_crossing_point.hpp"
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"

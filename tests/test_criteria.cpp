@@ -1,11 +1,11 @@
-// Tests for sphtroch/analytic.hpp: the report's analytic criteria, nodes, cusps, z extremes and
+// Tests for sphtroch/criteria.hpp: the report's analytic criteria, nodes, cusps, z extremes and
 // mirror planes. Expected values come from the report's equations (Lin & Tsai 1990) or from
 // invariants of the curve evaluated by TracerCurve (points equal at both node parameters, zero
-// velocity at cusps, stationary z, reflected points on the curve) — never from analytic.hpp itself.
+// velocity at cusps, stationary z, reflected points on the curve) — never from criteria.hpp itself.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/analytic.hpp"
+#include "sphtroch/criteria.hpp"
 #include "sphtroch/curve.hpp"
 
 #include <algorithm>

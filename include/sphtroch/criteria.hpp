@@ -1,4 +1,4 @@
-// sphtroch/analytic.hpp — the report's analytic results, computed in closed form: the a3
+// sphtroch/criteria.hpp — the report's analytic results, computed in closed form: the a3
 // boundaries, the node criteria (Eq. 24 for n = 1; Eqs. 43 and 46 for n = 2), the pitch-cone cusp
 // criterion (every n), the predicted nodes and cusps with their positions and parameters, the z
 // extremes (Eqs. 14/15, 32-35 generalised) and the mirror-symmetry planes.
@@ -179,7 +179,7 @@ inline double mirror_parameter(const MirrorPlane& plane, double t, double period
 // Implementation details follow.
 // =============================================================================================
 
-namespace analytic_detail {
+namespace criteria_detail {
 
 inline double pi() { return Constants<double>::pi(); }
 
@@ -275,7 +275,7 @@ inline double omega_norm(const GearTrain& train) {
   return std::sqrt(1.0 + n * n + 2.0 * n * c2);
 }
 
-}  // namespace analytic_detail
+}  // namespace criteria_detail
 
 
 
@@ -292,7 +292,7 @@ inline const char* to_string(CriterionStatus status) {
 
 
 inline Criterion criterion_eq24(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 1))
     throw InvalidInput("n", train.ratio().str(), "Eq. 24 is the n = 1 criterion", "n = 1");
   Criterion c = make_criterion("Eq. 24", "a2/2 <= a3 <= pi - a2/2", boundary_value(train, BoundaryKind::half_a2),
@@ -316,7 +316,7 @@ inline Criterion criterion_eq24(const GearTrain& train, double tol) {
 }
 
 inline Criterion criterion_eq43(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 2))
     throw InvalidInput("n", train.ratio().str(), "Eq. 43 is an n = 2 criterion", "n = 2");
   Criterion c = make_criterion("Eq. 43", "a_p <= a3 <= pi - a2", boundary_value(train, BoundaryKind::pitch_cone),
@@ -346,7 +346,7 @@ inline Criterion criterion_eq43(const GearTrain& train, double tol) {
 }
 
 inline Criterion criterion_eq46(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 2))
     throw InvalidInput("n", train.ratio().str(), "Eq. 46 is an n = 2 criterion", "n = 2");
   Criterion c = make_criterion("Eq. 46", "a2 <= a3 <= pi - a_p", boundary_value(train, BoundaryKind::a2),
@@ -376,7 +376,7 @@ inline Criterion criterion_eq46(const GearTrain& train, double tol) {
 }
 
 inline Criterion pitch_cone_criterion(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   // Written as the interval a_p <= a3 <= pi - a_p (Eq. 20b generalised); only its ends matter:
   // the ends are where P can be parallel to omega. (For a_p > pi/2 the interval is empty and
   // "fails" / "holds strictly" both mean: no cusps.)
@@ -406,7 +406,7 @@ inline Criterion pitch_cone_criterion(const GearTrain& train, double tol) {
 }
 
 inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 1))
     throw InvalidInput("n", train.ratio().str(), "Eq. 25 is the n = 1 node", "n = 1");
   const Criterion c = criterion_eq24(train, tol);
@@ -427,7 +427,7 @@ inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) 
 }
 
 inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 2))
     throw InvalidInput("n", train.ratio().str(), "Eq. 39b is an n = 2 node", "n = 2");
   const Criterion c = criterion_eq43(train, tol);
@@ -462,7 +462,7 @@ inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol)
 }
 
 inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!is_n(train, 2))
     throw InvalidInput("n", train.ratio().str(), "Eq. 44b is an n = 2 node", "n = 2");
   const Criterion c = criterion_eq46(train, tol);
@@ -493,7 +493,7 @@ inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol)
 }
 
 inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   // Derivation. dP/dtheta2 = omega x P (Eq. 47a) vanishes iff P is parallel to omega. In the
   // carrier frame omega ~ (0, sin a2, cos a2 + n) = |omega| (0, sin a_p, cos a_p) (Eq. 47b) and
   // the tracer is (sin th3 sin a3, -cos th3 sin a3, cos a3) (Eq. 4). Since sin a3 > 0, parallel
@@ -522,7 +522,7 @@ inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double
 }
 
 inline AnalyticClassification classify_analytic(const GearTrain& train, double tol) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   if (!(tol >= 0.0))
     throw InvalidInput("boundary_tolerance", detail::to_text(tol), "not a number >= 0", ">= 0 radians");
   AnalyticClassification a;
@@ -554,7 +554,7 @@ inline AnalyticClassification classify_analytic(const GearTrain& train, double t
 }
 
 inline ZExtremes z_extremes(const GearTrain& train) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   // dz/dtheta2 = n sin(th3) sin a2 sin a3 (Eq. 4 third row; Eqs. 13, 31): stationary where
   // sin th3 = 0. th3 = pi: carrier-frame tracer (0, sin a3, cos a3), Rx(a2) turns it into
   // (0, -sin(a2 - a3), cos(a2 - a3)); th3 = 0: (0, -sin a3, cos a3) -> (0, -sin(a2 + a3), cos(a2 + a3)).
@@ -570,7 +570,7 @@ inline ZExtremes z_extremes(const GearTrain& train) {
 }
 
 inline Symmetry symmetry(const GearTrain& train) {
-  using namespace analytic_detail;
+  using namespace criteria_detail;
   // Derivation (phase 0). The carrier-frame tracer c(th3) = (sin th3 sin a3, -cos th3 sin a3, cos a3)
   // has c(-th3) = M_x c(th3) with M_x = diag(-1, 1, 1); M_x commutes with Rx(a2) and
   // Rz(-t) M_x = M_x Rz(t), so P(-t) = M_x P(t). Also t -> t + 2 pi q/p advances th3 by 2 pi, so
@@ -600,7 +600,7 @@ inline Symmetry symmetry(const GearTrain& train) {
 }
 
 inline double mirror_parameter(const MirrorPlane& plane, double t, double period) {
-  return analytic_detail::wrap(plane.param_offset - t, period);
+  return criteria_detail::wrap(plane.param_offset - t, period);
 }
 
 }  // namespace sphtroch
