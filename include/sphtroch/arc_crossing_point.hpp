@@ -2,7 +2,7 @@
 // double; Eigen only). Pairs come from find_self_crossings (polyline_crossings.hpp), which decides
 // exactly THAT they cross; this computes WHERE, approximately.
 //
-//   for (const sphtroch::EdgePair& e : crossings)
+//   for (const sphtroch::EdgePair& e : crossings)   // find_self_crossings(v, true).crossings
 //     Eigen::Vector3d x = sphtroch::arc_crossing_point(v[e.i], v[e.i + 1], v[e.j], v[(e.j + 1) % n]);
 //
 // The two great circles meet at +-m, m = (a x b) x (c x d); the point returned is the one of the

@@ -6,7 +6,7 @@
 //   sphtroch::Classification c = sphtroch::classify(train);
 //   c.curve_class;          // CurveClass::nodes; to_string(c.curve_class) == "nodes"
 //   c.nodes, c.cusps;       // nodes (crossing / tangency, branches) and cusps, refined positions
-//   c.agreement.ok;         // both numeric censuses and (n = 1, 2) the report's criteria agree
+//   c.agreement.ok();       // both numeric censuses and (n = 1, 2) the report's criteria agree
 //
 // Decisions (stated in every report):
 //  * Default reading: an input within settings.boundary_tolerance of a boundary (a3 = a_p,

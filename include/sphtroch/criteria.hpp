@@ -34,6 +34,7 @@
 #include "sphtroch/boundaries.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/ratio.hpp"
 #include "sphtroch/types.hpp"
 
@@ -183,42 +184,9 @@ namespace criteria_detail {
 
 inline double pi() { return Constants<double>::pi(); }
 
-/// x reduced to [0, period).
-inline double wrap(double x, double period) {
-  double r = std::fmod(x, period);
-  if (r < 0) r += period;
-  if (r >= period) r = 0.0;  // -tiny + period rounds to period
-  return r;
-}
-
-inline Matrix3d rot_z(double angle) {
-  Matrix3d r;
-  const double c = std::cos(angle), s = std::sin(angle);
-  r << c, -s, 0, s, c, 0, 0, 0, 1;
-  return r;
-}
-
-/// theta2 in [0, period) at which theta3 = n theta2 + theta_p = c (mod 2 pi), ascending
-/// (convention 2): theta2 = (c - theta_p + 2 pi m) q / p, m = 0 .. |p| - 1.
-inline std::vector<double> params_at_planet_angle(const GearTrain& train, double c) {
-  const Ratio& n = train.ratio();
-  const double period = train.period();
-  const double p = static_cast<double>(n.p()), q = static_cast<double>(n.q());
-  std::vector<double> out;
-  for (std::int64_t m = 0; m < n.abs_p(); ++m) {
-    const double t = (c - train.phase() + Constants<double>::two_pi() * static_cast<double>(m)) * q / p;
-    out.push_back(wrap(t, period));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-/// Base-frame position of a carrier-frame vector at carrier angle theta2: Rz(theta2) Rx(a2) v.
+/// Base-frame position of a carrier-frame vector at carrier angle theta2 (parameters.hpp frames).
 inline Vector3d base_from_carrier(const GearTrain& train, double theta2, const Vector3d& p_carrier) {
-  const double s2 = std::sin(train.a2()), c2 = std::cos(train.a2());
-  Matrix3d carrier_twist;
-  carrier_twist << 1, 0, 0, 0, c2, -s2, 0, s2, c2;
-  return Vector3d(rot_z(theta2) * carrier_twist * p_carrier);
+  return Vector3d(base_R_carrier(theta2, train.trig<double>()) * p_carrier);
 }
 
 /// The angle a3 is measured from, as GearTrain holds it symbolically.
@@ -261,8 +229,8 @@ inline AnalyticNode phased_node(const GearTrain& train, Vector3d position0, std:
                                 NodeKind kind, const char* equation) {
   const double shift = train.phase() / train.n();
   AnalyticNode node;
-  node.position = rot_z(-shift) * position0;
-  for (double t : params0) node.params.push_back(wrap(t - shift, train.period()));
+  node.position = rotation_z(-shift) * position0;
+  for (double t : params0) node.params.push_back(reduce_to_period(t - shift, train.period()));
   std::sort(node.params.begin(), node.params.end());
   node.kind = kind;
   node.equation = equation;
@@ -589,9 +557,9 @@ inline Symmetry symmetry(const GearTrain& train) {
   for (std::int64_t k = 0; k < n.abs_p(); ++k) {
     const double kk = static_cast<double>(k);
     MirrorPlane plane;
-    plane.azimuth = wrap(pi() * kk * q / p - d, pi());
+    plane.azimuth = reduce_to_period(pi() * kk * q / p - d, pi());
     plane.normal = Vector3d(std::cos(plane.azimuth), std::sin(plane.azimuth), 0.0);
-    plane.param_offset = wrap(Constants<double>::two_pi() * kk * q / p - 2.0 * d, period);
+    plane.param_offset = reduce_to_period(Constants<double>::two_pi() * kk * q / p - 2.0 * d, period);
     s.planes.push_back(plane);
   }
   std::sort(s.planes.begin(), s.planes.end(),
@@ -600,7 +568,7 @@ inline Symmetry symmetry(const GearTrain& train) {
 }
 
 inline double mirror_parameter(const MirrorPlane& plane, double t, double period) {
-  return criteria_detail::wrap(plane.param_offset - t, period);
+  return reduce_to_period(plane.param_offset - t, period);
 }
 
 }  // namespace sphtroch

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/types.hpp"
 
 #include <cmath>
@@ -41,11 +42,7 @@ class TracerCurve {
   Scalar planet_angle(const Scalar& theta2) const { return p_ * theta2 / q_ + phase_; }
 
   /// Rotation taking carrier-frame coordinates to base coordinates: Rz(theta2) Rx(a2).
-  Mat3 base_R_carrier(const Scalar& theta2) const {
-    using std::cos;
-    using std::sin;
-    return rot_z(cos(theta2), sin(theta2)) * rot_x(trig_.cos_a2, trig_.sin_a2);
-  }
+  Mat3 base_R_carrier(const Scalar& theta2) const { return sphtroch::base_R_carrier(theta2, trig_); }
 
   /// The tracer in carrier coordinates: Rz(theta3) Rx(a3) z = (s3 sa3, -c3 sa3, ca3) (Eq. 4, right factor).
   Vec3 point_in_carrier(const Scalar& theta2) const {
@@ -86,17 +83,6 @@ class TracerCurve {
 
   /// theta2 span after which the curve closes (2*pi*q), in Scalar.
   Scalar period() const { return Constants<Scalar>::two_pi() * q_; }
-
-  static Mat3 rot_z(const Scalar& c, const Scalar& s) {
-    Mat3 r;
-    r << c, -s, Scalar(0), s, c, Scalar(0), Scalar(0), Scalar(0), Scalar(1);
-    return r;
-  }
-  static Mat3 rot_x(const Scalar& c, const Scalar& s) {
-    Mat3 r;
-    r << Scalar(1), Scalar(0), Scalar(0), Scalar(0), c, -s, Scalar(0), s, c;
-    return r;
-  }
 
  private:
   GearTrain train_;

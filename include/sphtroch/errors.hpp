@@ -1,5 +1,8 @@
 // sphtroch/errors.hpp — the two tiers of errors.
 //
+//   try { sphtroch::GearTrain bad(4.0, 1.0, sphtroch::Ratio(1)); }
+//   catch (const sphtroch::InvalidInput& e) { e.field(); e.value(); e.valid_range(); }  // "a2", "4", "(0, pi) radians"
+//
 // 1. User input is validated; a bad value throws sphtroch::InvalidInput, a
 //    std::invalid_argument that names the field, the offending value and the valid range:
 //

@@ -2,8 +2,8 @@
 //
 //   sphtroch::InputFile in = sphtroch::InputFile::open("x.csv", "input");   // "-": standard input
 //   std::size_t got = in.read(buffer, size);   // < size only at the end of the input
-//   InputLines lines(in, 4096);                 // or InputLines(text, 4096) over bytes in memory
-//   for (std::string_view line; lines.next(line);) ...   // each line without its '\n'
+//   sphtroch::InputLines lines(in, 4096);       // or InputLines(text, 4096) over bytes in memory
+//   for (std::string_view line; lines.next(line);) { }   // each line without its '\n'
 //
 // Errors throw InvalidInput(field, path, problem, "a readable file, or - for standard input"):
 // a path that does not exist, cannot be opened, is a directory, or fails while being read, and a

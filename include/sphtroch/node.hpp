@@ -4,6 +4,9 @@
 // point; a *node* is a point through which two or more branches pass; its kind is `crossing`
 // when at least one pair of its branches crosses, `tangency` when every pair only touches.
 // A *cusp* is a parameter where the velocity is exactly zero.
+//
+//   for (const sphtroch::Node& node : sphtroch::root_census(train).nodes)
+//     node.position, node.kind, node.params;   // unit vector, crossing/tangency, theta2 of each branch
 #pragma once
 
 #include "sphtroch/types.hpp"

@@ -1,7 +1,6 @@
 // sphtroch/node_assembly.hpp — turn branch pairs (t1, t2 with P(t1) = P(t2)) into nodes.
 //
-//   std::vector<BranchPair> pairs = ...;               // from any census
-//   std::vector<Node> nodes = assemble_nodes(pairs, curve);
+//   std::vector<sphtroch::Node> nodes = sphtroch::assemble_nodes(pairs, curve);  // pairs: BranchPair of any census
 //
 // Pairs whose points lie within `merge_distance` of each other are one node (a point where
 // k branches meet yields up to k(k-1)/2 pairs, one node). A node is a `crossing` when at least
@@ -11,6 +10,7 @@
 
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/types.hpp"
 
 #include <algorithm>
@@ -55,14 +55,6 @@ inline std::vector<double> distinct_branches(std::vector<double> ts, double peri
   if (runs.size() > 1 && ts.front() + period - ts.back() <= tolerance) runs.erase(runs.begin());
   std::sort(runs.begin(), runs.end());
   return runs;
-}
-
-/// theta2 reduced to [0, period).
-inline double wrap_param(double t, double period) {
-  double r = std::fmod(t, period);
-  if (r < 0) r += period;
-  if (r >= period) r -= period;
-  return r;
 }
 
 /// Angle between the tangent lines of two velocity vectors, in [0, pi/2]; 0 when either is zero.

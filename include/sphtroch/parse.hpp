@@ -1,10 +1,8 @@
 // sphtroch/parse.hpp — angles, gear ratios and tracer twists written the way people type them.
 //
-//   parse_angle("2pi/3", "a2")   == 2*pi/3      parse_angle("90deg", "a2") == pi/2
-//   parse_angle("-pi/4", "phase")                parse_angle("1.25", "a2")  == 1.25
-//   parse_ratio("5/2") == Ratio(5, 2)            parse_ratio("2.5")         == Ratio(5, 2)
-//   parse_a3("ap+1e-6")  -> {A3Reference::pitch_cone, 1e-6}
-//   parse_a3("pi-ap-1e-9") -> {A3Reference::mirror_pitch_cone, -1e-9}
+//   sphtroch::parse_angle("2pi/3", "a2");        // 2 pi / 3; also "90deg", "-pi/4", "1.25", "pi-1e-6"
+//   sphtroch::parse_ratio("5/2", "n");           // Ratio(5, 2); also "2.5", "-3", "10/4"
+//   sphtroch::parse_a3("ap+1e-6", "a3");         // {A3Reference::pitch_cone, 1e-6}; "pi-ap-1e-9", "a2"
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
 //   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]

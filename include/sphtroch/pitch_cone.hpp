@@ -3,7 +3,7 @@
 //   sphtroch::ConeMargins m = sphtroch::cone_margins(train);
 //   m.pitch;    // a3 - a_p, radians (0 exactly when a3 was given as "ap")
 //   m.mirror;   // a3 - (pi - a_p)
-//   m.on_pitch_cone(), m.on_mirror_cone()   // |margin| <= kCuspResolution
+//   m.on_pitch_cone(), m.on_mirror_cone();  // |margin| <= kCuspResolution
 //
 // The velocity vanishes (a cusp) exactly when P is parallel to omega, i.e. a3 = a_p or
 // a3 = pi - a_p (DESIGN.md; report Sec. 4.2 and Eq. 47). Margins are computed in long double from

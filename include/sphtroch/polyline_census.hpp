@@ -22,7 +22,10 @@
 //     crossings of a rounding-split tangency merge back into it); otherwise its real roots are
 //     the crossings (both refined). Tiny near-cusp loops (branches closer in parameter than
 //     kCuspLoopParam) are crossings.
-//  5. Assembly into nodes (node_assembly.hpp).
+//  5. Deduplication: meetings found from several seeds (unordered pairs, modulo the period).
+//  6. Assembly into nodes (node_assembly.hpp).
+// Each stage is a function of namespace sphtroch::census below (tested in test_polyline_census.cpp);
+// polyline_census() runs them in order.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -34,6 +37,7 @@
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/polyline_census_result.hpp"
 #include "sphtroch/polyline_crossings.hpp"
@@ -44,6 +48,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace sphtroch {
@@ -60,7 +65,7 @@ constexpr double kCuspLoopParam = 1e-2;
 /// branches ~sqrt(6 |a3 - a_p|) / |n| >= 1e-5 / |n| apart.
 constexpr long double kMinBranchSeparation = 1e-8L;
 /// Crossings at angles below this are checked for a second crossing of the same two branches
-/// close by (a lens hidden between polyline edges; see scan_lens in polyline_census). A lens of
+/// close by (a lens hidden between polyline edges; see census::MeetingFinder). A lens of
 /// length L between branches whose geodesic curvatures differ by dk has crossing angles ~dk L / 2;
 /// hidden lenses are shorter than about two edges.
 constexpr double kLensScanAngle = 0.5;
@@ -72,11 +77,40 @@ constexpr int kLensScanSamples = 4;
 constexpr double kMinVertexSeparation = 1e-14;
 /// Literal mode: the gap-model tolerance is the evaluation noise of long double, not a boundary.
 constexpr double kLiteralGapTolerance = 1e-17;
+/// Sampling: a tracer within this of a pitch cone or its mirror (radians of a3) gets graded dense
+/// samples around each near-cusp parameter ...
+constexpr double kDenseConeDistance = 0.3;
+/// ... kDenseFineSamples fine samples on each side, spread over 4 sqrt(6 d) / |n| (d clamped
+/// below at kDenseMinConeDistance), at most kDenseMaxSpacings uniform spacings ...
+constexpr int kDenseFineSamples = 64;
+constexpr double kDenseMinConeDistance = 1e-13;
+constexpr double kDenseMaxSpacings = 8;
+/// ... then offsets growing by this factor up to two uniform spacings.
+constexpr double kDenseGrowth = 1.25;
+/// Sample parameters closer than this fraction of the period are one sample.
+constexpr double kSameSampleFraction = 1e-15;
+/// Near misses: edges within this many uniform spacings in parameter are one branch ...
+constexpr double kBranchNeighbourSpacings = 6;
+/// ... pairs closer than this fraction of the longest chord are candidates ...
+constexpr double kNearMissChordFraction = 0.25;
+/// ... and a candidate within this many edges (in both indices) of an exact contact is that contact.
+constexpr int kContactNeighbourhood = 2;
+/// Newton on a seed may move each parameter by kRefineTravelSpacings uniform spacings plus kRefineTravelSlack.
+constexpr double kRefineTravelSpacings = 4;
+constexpr double kRefineTravelSlack = 0.05;
+/// The quadratic gap model samples the gap at arc lengths 0, +-kGapModelArc (radians) ...
+constexpr long double kGapModelArc = 1e-3L;
+/// ... and is trusted within kGapModelReachSpacings uniform spacings of the refined pair.
+constexpr double kGapModelReachSpacings = 4;
+/// Projection of a point onto a branch: Newton steps.
+constexpr int kProjectionSteps = 8;
+/// Meetings closer than this in both parameters (radians of theta2) are one.
+constexpr long double kSameMeetingParam = 1e-10L;
 
+namespace census {
 
-namespace detail {
-
-/// Uniform parameters plus graded refinement around near-cusp parameters (see header).
+/// Stage 1. Uniform parameters over the period plus graded refinement around near-cusp
+/// parameters (see header), ascending, distinct.
 inline std::vector<double> census_parameters(const GearTrain& train, std::size_t n) {
   const double period = train.period();
   const double h = period / static_cast<double>(n);
@@ -87,20 +121,20 @@ inline std::vector<double> census_parameters(const GearTrain& train, std::size_t
   const double abs_n = std::abs(r.value());
   struct Cone {
     double distance;
-    double theta3;
+    double theta3;  // the planet angle of the near-cusp parameters
   };
   const Cone cones[] = {{std::abs(train.a3() - train.planet_cone()), pi}, {std::abs(train.a3() - (pi - train.planet_cone())), 0.0}};
   for (const Cone& c : cones) {
-    if (c.distance > 0.3) continue;
+    if (c.distance > kDenseConeDistance) continue;
     // Loop parameter half-length ~ sqrt(6 d) in theta3, i.e. / |n| in theta2; cover 4x that.
-    const double w = std::min(8 * h, 4.0 * std::sqrt(6.0 * std::max(c.distance, 1e-13)) / abs_n);
-    const double fine = w / 64;
+    const double w = std::min(kDenseMaxSpacings * h, 4.0 * std::sqrt(6.0 * std::max(c.distance, kDenseMinConeDistance)) / abs_n);
+    const double fine = w / kDenseFineSamples;
     for (std::int64_t k = 0; k < r.abs_p(); ++k) {
-      const double tc = wrap_param((c.theta3 - train.phase() + 2 * pi * static_cast<double>(k)) / r.value(), period);
-      for (int j = -64; j <= 64; ++j) ts.push_back(wrap_param(tc + fine * j, period));
-      for (double off = w * 1.25; off < 2 * h; off *= 1.25) {
-        ts.push_back(wrap_param(tc + off, period));
-        ts.push_back(wrap_param(tc - off, period));
+      const double tc = reduce_to_period(theta2_at_planet_angle(r, train.phase(), c.theta3, k), period);
+      for (int j = -kDenseFineSamples; j <= kDenseFineSamples; ++j) ts.push_back(reduce_to_period(tc + fine * j, period));
+      for (double off = w * kDenseGrowth; off < 2 * h; off *= kDenseGrowth) {
+        ts.push_back(reduce_to_period(tc + off, period));
+        ts.push_back(reduce_to_period(tc - off, period));
       }
     }
   }
@@ -108,19 +142,143 @@ inline std::vector<double> census_parameters(const GearTrain& train, std::size_t
   std::vector<double> out;
   out.reserve(ts.size());
   for (double t : ts)
-    if (out.empty() || t - out.back() > 1e-15 * period) out.push_back(t);
-  if (out.size() > 1 && period - out.back() + out.front() <= 1e-15 * period) out.pop_back();
+    if (out.empty() || t - out.back() > kSameSampleFraction * period) out.push_back(t);
+  if (out.size() > 1 && period - out.back() + out.front() <= kSameSampleFraction * period) out.pop_back();
+  return out;
+}
+
+/// The closed polyline of the census: parameters and distinct unit vertices.
+struct SampledPolyline {
+  std::vector<double> t;
+  std::vector<Vector3d> points;
+  double period = 0;
+
+  std::size_t size() const { return t.size(); }
+  /// Parameters at the ends of edge e (points[e] -> points[e + 1], the last edge closing the loop).
+  double edge_start(std::size_t e) const { return t[e]; }
+  double edge_end(std::size_t e) const { return e + 1 < t.size() ? t[e + 1] : t[0] + period; }
+  double edge_mid(std::size_t e) const { return 0.5 * (edge_start(e) + edge_end(e)); }
+};
+
+/// Stage 1. The census polyline of n uniform samples (plus dense ones); vertices closer than
+/// kMinVertexSeparation to the previous one are dropped.
+inline SampledPolyline sample_polyline(const GearTrain& train, std::size_t n, PolylineWork& work) {
+  const TracerCurve<double> curve(train);
+  SampledPolyline poly;
+  poly.period = train.period();
+  for (double t : census_parameters(train, n)) {
+    const Vector3d p = curve.point(t);
+    ++work.points_evaluated;
+    // Refined samples at a (near-)cusp move by less than rounding: keep distinct vertices only.
+    if (!poly.points.empty() && (p - poly.points.back()).norm() <= kMinVertexSeparation) continue;
+    poly.t.push_back(t);
+    poly.points.push_back(p);
+  }
+  while (poly.points.size() > 3 && (poly.points.back() - poly.points.front()).norm() <= kMinVertexSeparation) {
+    poly.points.pop_back();
+    poly.t.pop_back();
+  }
+  return poly;
+}
+
+/// A pair of parameters to refine into a meeting of two branches.
+struct Seed {
+  double t1, t2;
+};
+using EdgePair = std::pair<std::size_t, std::size_t>;
+
+/// Stage 2a. Edge pairs (i < j) of the exact crossings and touchings of the polyline, sorted;
+/// counts and work go to `out`.
+inline std::vector<EdgePair> exact_contacts(const SampledPolyline& poly, PolylineCensus& out) {
+  const SelfCrossings sc = find_self_crossings(poly.points, true);
+  out.polyline_crossings = sc.crossings.size();
+  out.polyline_touchings = sc.touchings.size();
+  out.work.predicates += sc.predicates;
+  out.work.candidate_pairs += sc.candidate_pairs;
+  std::vector<EdgePair> contacts;
+  for (const auto& e : sc.crossings) contacts.emplace_back(e.i, e.j);
+  for (const auto& e : sc.touchings) contacts.emplace_back(e.i, e.j);
+  std::sort(contacts.begin(), contacts.end());
+  return contacts;
+}
+
+/// Distance between the chords of edges i and j (segments in R^3), a proxy for the arcs' distance.
+inline double chord_distance(const SampledPolyline& poly, std::size_t i, std::size_t j) {
+  const std::size_t m = poly.size();
+  const auto& pts = poly.points;
+  const Vector3d a = pts[i], b = pts[(i + 1) % m], c = pts[j], d = pts[(j + 1) % m];
+  auto point_seg = [](const Vector3d& p, const Vector3d& s0, const Vector3d& s1) {
+    const Vector3d u = s1 - s0;
+    const double l2 = u.squaredNorm();
+    const double f = l2 > 0 ? std::clamp((p - s0).dot(u) / l2, 0.0, 1.0) : 0.0;
+    return (p - (s0 + f * u)).norm();
+  };
+  const double ends = std::min({(a - c).norm(), (a - d).norm(), (b - c).norm(), (b - d).norm()});
+  return std::min({ends, point_seg(a, c, d), point_seg(b, c, d), point_seg(c, a, b), point_seg(d, a, b)});
+}
+
+/// True when (i, j) lies within kContactNeighbourhood edges of a pair in `contacts` (sorted).
+inline bool near_contact(const std::vector<EdgePair>& contacts, std::size_t m, std::size_t i, std::size_t j) {
+  const int r = kContactNeighbourhood;
+  for (int di = -r; di <= r; ++di)
+    for (int dj = -r; dj <= r; ++dj) {
+      std::size_t a = (i + m + di) % m, b = (j + m + dj) % m;
+      if (a > b) std::swap(a, b);
+      if (std::binary_search(contacts.begin(), contacts.end(), std::make_pair(a, b))) return true;
+    }
+  return false;
+}
+
+/// Stage 2b. Near misses: edge pairs (i < j) of different branches (more than
+/// kBranchNeighbourSpacings uniform spacings h apart in parameter) whose chords come closer than
+/// kNearMissChordFraction of the longest chord, at a local minimum of that distance over
+/// (i +- 1, j +- 1), and not next to an exact contact.
+inline std::vector<EdgePair> near_misses(const SampledPolyline& poly, double h, const std::vector<EdgePair>& contacts) {
+  const std::size_t m = poly.size();
+  double max_chord = 0;
+  for (std::size_t e = 0; e < m; ++e) max_chord = std::max(max_chord, (poly.points[(e + 1) % m] - poly.points[e]).norm());
+  const double margin = kNearMissChordFraction * max_chord;
+  struct NearMiss {
+    double distance;
+    std::size_t i, j;
+  };
+  std::vector<NearMiss> near;
+  visit_close_edge_pairs(poly.points, true, margin, [&](std::size_t i, std::size_t j) {
+    if (periodic_distance(poly.edge_mid(i), poly.edge_mid(j), poly.period) < kBranchNeighbourSpacings * h) return true;
+    const double d = chord_distance(poly, i, j);
+    if (d <= margin) near.push_back({d, i, j});
+    return true;
+  });
+  const auto by_edges = [](const NearMiss& a, const NearMiss& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; };
+  std::sort(near.begin(), near.end(), by_edges);
+  auto find_near = [&](std::size_t i, std::size_t j) -> const NearMiss* {
+    auto it = std::lower_bound(near.begin(), near.end(), NearMiss{0, i, j}, by_edges);
+    return it != near.end() && it->i == i && it->j == j ? &*it : nullptr;
+  };
+  std::vector<EdgePair> out;
+  for (const auto& nm : near) {
+    bool is_min = true;
+    for (int di = -1; di <= 1 && is_min; ++di)
+      for (int dj = -1; dj <= 1 && is_min; ++dj) {
+        if (di == 0 && dj == 0) continue;
+        const std::size_t i2 = (nm.i + m + di) % m, j2 = (nm.j + m + dj) % m;
+        const NearMiss* o = find_near(std::min(i2, j2), std::max(i2, j2));
+        if (o && o->distance < nm.distance) is_min = false;
+      }
+    if (is_min && !near_contact(contacts, m, nm.i, nm.j)) out.emplace_back(nm.i, nm.j);
+  }
   return out;
 }
 
 /// Signed gap from P(t2 + s) to the branch through t1 (projection by Newton), long double.
-/// Adds the TracerCurve calls and projection Newton steps it makes to `work`.
+/// Adds the TracerCurve calls and projection Newton steps it makes to `work`; the projection's
+/// parameter on branch 1 goes to *t1_out.
 inline long double branch_gap(const TracerCurve<long double>& curve, long double t1, long double t2, long double s,
                               PolylineWork& work, long double* t1_out = nullptr) {
   const Vector3<long double> x = curve.point(t2 + s);
   ++work.points_evaluated;
   long double tau = t1;
-  for (int it = 0; it < 8; ++it) {
+  for (int it = 0; it < kProjectionSteps; ++it) {
     const Vector3<long double> p = curve.point(tau), v = curve.velocity(tau), a = curve.acceleration(tau);
     work.points_evaluated += 3;
     ++work.newton_steps;
@@ -136,269 +294,221 @@ inline long double branch_gap(const TracerCurve<long double>& curve, long double
   return (x - p).dot(normal);
 }
 
-}  // namespace detail
+/// A meeting of two branches on the true curve (long double parameters).
+struct Meeting {
+  long double t1, t2;
+  NodeKind kind;
+};
 
-/// The polyline node census of one gear train (see header). The train is analysed as given.
-inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCensusSettings& settings = {}) {
-  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
+/// Stages 3 and 4: refine seeds into meetings and tell their kind (see header). Counts
+/// newton_failures and work in the census it is given.
+class MeetingFinder {
+ public:
   using LD = long double;
-  PolylineCensus out;
-  const TracerCurve<double> curve(train);
-  const TracerCurve<LD> curve_ld(train);
-  const double period = train.period();
-  const bool literal = settings.tangency_tolerance <= 0;
-  const long double gap_tol = literal ? kLiteralGapTolerance : settings.tangency_tolerance;
-  // On a pitch cone (within resolution) there is no near-cusp loop: meetings of branches a few
-  // parameters apart around the cusp are the cusp itself (Newton creeping into it), not nodes.
-  const ConeMargins cones = cone_margins(train);
-  const bool on_a_cone = cones.on_pitch_cone() || cones.on_mirror_cone();
 
-  // 1. Sampling.
-  const std::size_t n = settings.samples ? settings.samples : census_sample_count(train);
-  std::vector<double> ts;
-  std::vector<Vector3d> pts;
-  for (double t : detail::census_parameters(train, n)) {
-    const Vector3d p = curve.point(t);
-    ++out.work.points_evaluated;
-    // Refined samples at a (near-)cusp move by less than rounding: keep distinct vertices only.
-    if (!pts.empty() && (p - pts.back()).norm() <= kMinVertexSeparation) continue;
-    ts.push_back(t);
-    pts.push_back(p);
+  /// h: uniform sample spacing; gap_tolerance: a gap-model minimum below it is one tangency.
+  MeetingFinder(const GearTrain& train, double h, long double gap_tolerance, PolylineCensus& out)
+      : curve_(train), period_(train.period()), h_(h), gap_tolerance_(gap_tolerance), out_(out) {
+    // On a pitch cone (within resolution) there is no near-cusp loop: meetings of branches a few
+    // parameters apart around the cusp are the cusp itself (Newton creeping into it), not nodes.
+    const ConeMargins cones = cone_margins(train);
+    on_a_cone_ = cones.on_pitch_cone() || cones.on_mirror_cone();
+    settings_.max_travel = kRefineTravelSpacings * h + kRefineTravelSlack;
   }
-  while (pts.size() > 3 && (pts.back() - pts.front()).norm() <= kMinVertexSeparation) {
-    pts.pop_back();
-    ts.pop_back();
-  }
-  out.samples = ts.size();
-  const std::size_t m = ts.size();
-  auto edge_t0 = [&](std::size_t e) { return ts[e]; };
-  auto edge_t1 = [&](std::size_t e) { return e + 1 < m ? ts[e + 1] : ts[0] + period; };
 
-  // 2. Seeds: exact crossings and touchings, then near misses.
-  struct Seed {
-    double t1, t2;
-  };
-  std::vector<Seed> seeds;
-  const SelfCrossings sc = find_self_crossings(pts, true);
-  out.polyline_crossings = sc.crossings.size();
-  out.polyline_touchings = sc.touchings.size();
-  out.work.predicates += sc.predicates;
-  out.work.candidate_pairs += sc.candidate_pairs;
-  auto mid = [&](std::size_t e) { return 0.5 * (edge_t0(e) + edge_t1(e)); };
-  std::vector<std::pair<std::size_t, std::size_t>> contacts;
-  for (const auto& e : sc.crossings) contacts.emplace_back(e.i, e.j);
-  for (const auto& e : sc.touchings) contacts.emplace_back(e.i, e.j);
-  std::sort(contacts.begin(), contacts.end());
-  for (const auto& [i, j] : contacts) seeds.push_back({mid(i), mid(j)});
-  auto near_contact = [&](std::size_t i, std::size_t j) {
-    for (int di = -2; di <= 2; ++di)
-      for (int dj = -2; dj <= 2; ++dj) {
-        std::size_t a = (i + m + di) % m, b = (j + m + dj) % m;
-        if (a > b) std::swap(a, b);
-        if (std::binary_search(contacts.begin(), contacts.end(), std::make_pair(a, b))) return true;
-      }
-    return false;
-  };
-
-  const double h = period / static_cast<double>(n);
-  double max_chord = 0;
-  for (std::size_t e = 0; e < m; ++e) max_chord = std::max(max_chord, (pts[(e + 1) % m] - pts[e]).norm());
-  const double margin = 0.25 * max_chord;
-  auto chord_distance = [&](std::size_t i, std::size_t j) {
-    // Distance between two chords (segments in R^3), a proxy for the arcs' distance.
-    const Vector3d a = pts[i], b = pts[(i + 1) % m], c = pts[j], d = pts[(j + 1) % m];
-    double best = std::min({(a - c).norm(), (a - d).norm(), (b - c).norm(), (b - d).norm()});
-    auto point_seg = [](const Vector3d& p, const Vector3d& s0, const Vector3d& s1) {
-      const Vector3d u = s1 - s0;
-      const double l2 = u.squaredNorm();
-      const double f = l2 > 0 ? std::clamp((p - s0).dot(u) / l2, 0.0, 1.0) : 0.0;
-      return (p - (s0 + f * u)).norm();
-    };
-    best = std::min({best, point_seg(a, c, d), point_seg(b, c, d), point_seg(c, a, b), point_seg(d, a, b)});
-    return best;
-  };
-  struct NearMiss {
-    double distance;
-    std::size_t i, j;
-  };
-  std::vector<NearMiss> near;
-  visit_close_edge_pairs(pts, true, margin, [&](std::size_t i, std::size_t j) {
-    double dt = std::abs(mid(i) - mid(j));
-    dt = std::min(dt, period - dt);
-    if (dt < 6 * h) return true;  // neighbours along one branch
-    const double d = chord_distance(i, j);
-    if (d <= margin) near.push_back({d, i, j});
-    return true;
-  });
-  // Keep local minima of the distance over (i +- 1, j +- 1) only.
-  std::sort(near.begin(), near.end(), [](const NearMiss& a, const NearMiss& b) {
-    return a.i != b.i ? a.i < b.i : a.j < b.j;
-  });
-  auto find_near = [&](std::size_t i, std::size_t j) -> const NearMiss* {
-    auto it = std::lower_bound(near.begin(), near.end(), NearMiss{0, i, j},
-                               [](const NearMiss& a, const NearMiss& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
-    return it != near.end() && it->i == i && it->j == j ? &*it : nullptr;
-  };
-  for (const auto& nm : near) {
-    bool is_min = true;
-    for (int di = -1; di <= 1 && is_min; ++di)
-      for (int dj = -1; dj <= 1 && is_min; ++dj) {
-        if (di == 0 && dj == 0) continue;
-        const std::size_t i2 = (nm.i + m + di) % m, j2 = (nm.j + m + dj) % m;
-        const NearMiss* o = find_near(std::min(i2, j2), std::max(i2, j2));
-        if (o && o->distance < nm.distance) is_min = false;
-      }
-    if (is_min && !near_contact(nm.i, nm.j)) {
-      seeds.push_back({mid(nm.i), mid(nm.j)});
-      ++out.near_misses;
+  /// Refine one seed; every meeting it yields is appended to meetings().
+  void add_seed(const Seed& s) {
+    const auto r = refine(s.t1, s.t2);
+    const LD dt = separation(r.t1, r.t2);
+    if (r.status == RefineStatus::left_bracket || dt < kMinBranchSeparation) {
+      ++out_.newton_failures;
+      return;
     }
+    const Vector3<LD> v1 = curve_.velocity(r.t1), v2 = curve_.velocity(r.t2);
+    out_.work.points_evaluated += 2;
+    const double angle = tangent_line_angle(v1.cast<double>(), v2.cast<double>());
+    if (dt < kCuspLoopParam && on_a_cone_) {
+      ++out_.newton_failures;
+      return;
+    }
+    if (dt < kCuspLoopParam || angle >= kTransversalAngle) {
+      if (r.residual <= kNodeResidual) {
+        meetings_.push_back({r.t1, r.t2, NodeKind::crossing});
+        if (dt >= kCuspLoopParam && angle < kLensScanAngle) scan_lens(r.t1, r.t2);
+      } else {
+        ++out_.newton_failures;
+      }
+      return;
+    }
+    split_near_tangency(r, v2.norm());
   }
-  out.work.seeds = seeds.size();
 
-  // 3. + 4. Refinement and kinds.
-  struct Meeting {
-    LD t1, t2;
-    NodeKind kind;
-  };
-  std::vector<Meeting> meetings;
-  // Every meeting must join two different branches (not t1 = t2 modulo the period).
-  auto distinct_branches = [&](LD a, LD b) {
-    LD d = std::fmod(std::abs(a - b), static_cast<LD>(period));
-    return std::min(d, static_cast<LD>(period) - d) >= kMinBranchSeparation;
-  };
-  RefineSettings rs;
-  rs.max_travel = 4 * h + 0.05;
-  auto refine = [&](LD a, LD b) { 
-    const auto r = refine_branch_pair(curve_ld, a, b, rs);
-    out.work.newton_steps += r.iterations;
-    out.work.points_evaluated += r.evaluations;
+  const std::vector<Meeting>& meetings() const { return meetings_; }
+
+ private:
+  LD separation(LD a, LD b) const { return periodic_distance<LD>(a, b, period_); }
+  /// Every meeting must join two different branches (not t1 = t2 modulo the period).
+  bool distinct_branches(LD a, LD b) const { return separation(a, b) >= kMinBranchSeparation; }
+
+  RefinedPair<LD> refine(LD a, LD b) {
+    const auto r = refine_branch_pair(curve_, a, b, settings_);
+    out_.work.newton_steps += r.iterations;
+    out_.work.points_evaluated += r.evaluations;
     return r;
-  };
+  }
+  LD gap(LD t1, LD t2, LD s, LD* t1_out = nullptr) { return branch_gap(curve_, t1, t2, s, out_.work, t1_out); }
+
+  /// Refine a crossing guessed at s along branch 2 from (t1, t2); keep it if it converges.
+  void add_crossing_near(LD t1, LD t2, LD s) {
+    LD t1s;
+    gap(t1, t2, s, &t1s);
+    const auto rr = refine(t1s, t2 + s);
+    if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
+      meetings_.push_back({rr.t1, rr.t2, NodeKind::crossing});
+  }
+
   // A lens: two branches that cross twice within about one pair of polyline edges. Two chords
   // cross at most once, so the polyline shows one crossing or a near miss, and Newton finds one
   // of the two. Around a crossing (t1, t2) found at an angle below kLensScanAngle, the gap
   // f(s) = gap(t2 + s) / s (the known root s = 0 divided out) is sampled at kLensScanSamples
   // points over |s| <= kLensScanSpan * h; each sign change is refined as a crossing of its own
-  // (duplicates are removed below).
-  auto scan_lens = [&](LD t1, LD t2) {
-    const LD span = kLensScanSpan * static_cast<LD>(h);
+  // (duplicates are removed by unique_meetings).
+  void scan_lens(LD t1, LD t2) {
+    const LD span = kLensScanSpan * static_cast<LD>(h_);
     const int half = kLensScanSamples / 2;
     LD prev_s = 0, prev_f = 0;
     for (int k = -half; k <= half; ++k) {
       if (k == 0) continue;
       const LD s = span * k / half;
-      const LD f = detail::branch_gap(curve_ld, t1, t2, s, out.work) / s;
-      if (k != -half && (f < 0) != (prev_f < 0)) {
-        const LD sm = prev_s + (s - prev_s) * prev_f / (prev_f - f);  // secant guess of the root
-        LD t1s;
-        detail::branch_gap(curve_ld, t1, t2, sm, out.work, &t1s);
-        const auto rr = refine(t1s, t2 + sm);
-        if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
-          meetings.push_back({rr.t1, rr.t2, NodeKind::crossing});
-      }
+      const LD f = gap(t1, t2, s) / s;
+      if (k != -half && (f < 0) != (prev_f < 0))
+        add_crossing_near(t1, t2, prev_s + (s - prev_s) * prev_f / (prev_f - f));  // secant guess of the root
       prev_s = s;
       prev_f = f;
     }
-  };
-  for (const Seed& s : seeds) {
-    const auto r = refine(s.t1, s.t2);
-    LD dt = std::fmod(std::abs(r.t1 - r.t2), static_cast<LD>(period));
-    dt = std::min(dt, static_cast<LD>(period) - dt);
-    if (r.status == RefineStatus::left_bracket || dt < kMinBranchSeparation) {
-      ++out.newton_failures;
-      continue;
-    }
-    const Vector3<LD> v1 = curve_ld.velocity(r.t1), v2 = curve_ld.velocity(r.t2);
-    out.work.points_evaluated += 2;
-    const double angle = tangent_line_angle(v1.cast<double>(), v2.cast<double>());
-    if (dt < kCuspLoopParam && on_a_cone) {
-      ++out.newton_failures;
-      continue;
-    }
-    if (dt < kCuspLoopParam || angle >= kTransversalAngle) {
-      if (r.residual <= kNodeResidual) {
-        meetings.push_back({r.t1, r.t2, NodeKind::crossing});
-        if (dt >= kCuspLoopParam && angle < kLensScanAngle) scan_lens(r.t1, r.t2);
-      } else {
-        ++out.newton_failures;
-      }
-      continue;
-    }
-    // Near-tangent branches: quadratic model of the gap along branch 2.
-    const LD speed2 = v2.norm();
-    const LD hs = 1e-3L / std::max<LD>(speed2, 1e-3L);
-    const LD g0 = detail::branch_gap(curve_ld, r.t1, r.t2, 0, out.work);
-    const LD gp = detail::branch_gap(curve_ld, r.t1, r.t2, hs, out.work);
-    const LD gm = detail::branch_gap(curve_ld, r.t1, r.t2, -hs, out.work);
+  }
+
+  // Near-tangent branches: the gap along branch 2 as a quadratic c0 + c1 s + c2 s^2 (see header).
+  void split_near_tangency(const RefinedPair<LD>& r, LD speed2) {
+    const LD hs = kGapModelArc / std::max<LD>(speed2, kGapModelArc);
+    const LD g0 = gap(r.t1, r.t2, 0);
+    const LD gp = gap(r.t1, r.t2, hs);
+    const LD gm = gap(r.t1, r.t2, -hs);
     const LD c0 = g0, c1 = (gp - gm) / (2 * hs), c2 = (gp - 2 * g0 + gm) / (2 * hs * hs);
     if (c2 == 0) {
-      if (r.residual <= kNodeResidual) meetings.push_back({r.t1, r.t2, NodeKind::crossing});
-      continue;
+      if (r.residual <= kNodeResidual) meetings_.push_back({r.t1, r.t2, NodeKind::crossing});
+      return;
     }
     const LD s_star = -c1 / (2 * c2);
     const LD gap_min = c0 - c1 * c1 / (4 * c2);
-    if (std::abs(gap_min) <= gap_tol) {
+    if (std::abs(gap_min) <= gap_tolerance_) {
       LD t1s;
-      detail::branch_gap(curve_ld, r.t1, r.t2, s_star, out.work, &t1s);
-      if (distinct_branches(t1s, r.t2 + s_star)) meetings.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
-      continue;
+      gap(r.t1, r.t2, s_star, &t1s);
+      if (distinct_branches(t1s, r.t2 + s_star)) meetings_.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
+      return;
     }
     const LD disc = c1 * c1 - 4 * c0 * c2;
-    if (disc < 0) continue;  // a near miss, not a node
+    if (disc < 0) return;  // a near miss, not a node
     for (LD sgn : {-1.0L, 1.0L}) {
       const LD s = (-c1 + sgn * std::sqrt(disc)) / (2 * c2);
       // The quadratic model holds near s = 0 only; a crossing farther away has its own seed.
-      if (!(std::abs(s) <= 4 * static_cast<LD>(h))) continue;
-      LD t1s;
-      detail::branch_gap(curve_ld, r.t1, r.t2, s, out.work, &t1s);
-      const auto rr = refine(t1s, r.t2 + s);
-      if (rr.status != RefineStatus::left_bracket && rr.residual <= kNodeResidual && distinct_branches(rr.t1, rr.t2))
-        meetings.push_back({rr.t1, rr.t2, NodeKind::crossing});
+      if (!(std::abs(s) <= kGapModelReachSpacings * static_cast<LD>(h_))) continue;
+      add_crossing_near(r.t1, r.t2, s);
     }
   }
 
-  // Deduplicate (unordered pairs modulo the period) and assemble.
-  const LD P = period;
-  auto wrap = [&](LD t) {
-    LD r = std::fmod(t, P);
-    if (r < 0) r += P;
-    return r;
-  };
+  TracerCurve<LD> curve_;
+  double period_;
+  double h_;
+  LD gap_tolerance_;
+  bool on_a_cone_ = false;
+  RefineSettings settings_;
+  PolylineCensus& out_;
+  std::vector<Meeting> meetings_;
+};
+
+/// Stage 5. Meetings with both parameters within kSameMeetingParam (modulo the period, either
+/// order) are one; the first in order of t1 is kept. Returns canonical meetings: parameters in
+/// [0, period), t1 <= t2, ascending in t1.
+inline std::vector<Meeting> unique_meetings(std::vector<Meeting> meetings, long double period) {
+  using LD = long double;
+  const LD tol = kSameMeetingParam;
   auto close = [&](LD a, LD b) {
-    const LD d = std::abs(wrap(a) - wrap(b));
-    return std::min(d, P - d) <= 1e-10L;
+    const LD d = std::abs(reduce_to_period(a, period) - reduce_to_period(b, period));
+    return std::min(d, period - d) <= tol;
   };
-  // Canonical order (t1 <= t2 after wrapping), sorted: duplicates become neighbours in t1.
+  // Canonical order (t1 <= t2 after reduction), sorted: duplicates become neighbours in t1.
   for (auto& mt : meetings) {
-    mt.t1 = wrap(mt.t1);
-    mt.t2 = wrap(mt.t2);
+    mt.t1 = reduce_to_period(mt.t1, period);
+    mt.t2 = reduce_to_period(mt.t2, period);
     if (mt.t2 < mt.t1) std::swap(mt.t1, mt.t2);
   }
   std::sort(meetings.begin(), meetings.end(), [](const Meeting& a, const Meeting& b) { return a.t1 < b.t1; });
   std::vector<Meeting> unique;
-  for (std::size_t a = 0; a < meetings.size(); ++a) {
+  for (const Meeting& m : meetings) {
     bool dup = false;
-    // Look back over the meetings whose t1 is within the tolerance (and across the wrap).
+    // Look back over the meetings whose t1 is within the tolerance ...
     for (std::size_t b = unique.size(); b-- > 0 && !dup;) {
-      if (meetings[a].t1 - unique[b].t1 > 1e-10L && unique[b].t1 > 1e-10L) break;
-      dup = (close(unique[b].t1, meetings[a].t1) && close(unique[b].t2, meetings[a].t2));
+      if (m.t1 - unique[b].t1 > tol && unique[b].t1 > tol) break;
+      dup = close(unique[b].t1, m.t1) && close(unique[b].t2, m.t2);
     }
-    for (std::size_t b = 0; b < unique.size() && !dup && unique[b].t1 <= 1e-10L; ++b)
-      dup = (close(unique[b].t1, meetings[a].t2) && close(unique[b].t2, meetings[a].t1)) ||
-            (close(unique[b].t1, meetings[a].t1) && close(unique[b].t2, meetings[a].t2));
-    if (!dup) unique.push_back(meetings[a]);
+    // ... and across the wrap (t1 near 0 may pair with t2 near the period).
+    for (std::size_t b = 0; b < unique.size() && !dup && unique[b].t1 <= tol; ++b)
+      dup = (close(unique[b].t1, m.t2) && close(unique[b].t2, m.t1)) ||
+            (close(unique[b].t1, m.t1) && close(unique[b].t2, m.t2));
+    if (!dup) unique.push_back(m);
   }
-  for (const auto& u : unique) {
+  return unique;
+}
+
+/// Stage 6 (first half). Branch pairs of unique meetings: parameters in double, reduced, ordered;
+/// the position is the normalised midpoint of the two branch points (long double).
+inline std::vector<BranchPair> branch_pairs(const GearTrain& train, const std::vector<Meeting>& meetings,
+                                            PolylineWork& work) {
+  const TracerCurve<long double> curve(train);
+  const double period = train.period();
+  std::vector<BranchPair> out;
+  for (const auto& u : meetings) {
     BranchPair bp;
-    bp.t1 = wrap_param(static_cast<double>(wrap(u.t1)), period);
-    bp.t2 = wrap_param(static_cast<double>(wrap(u.t2)), period);
+    bp.t1 = reduce_to_period(static_cast<double>(reduce_to_period<long double>(u.t1, period)), period);
+    bp.t2 = reduce_to_period(static_cast<double>(reduce_to_period<long double>(u.t2, period)), period);
     if (bp.t2 < bp.t1) std::swap(bp.t1, bp.t2);
-    bp.position = ((curve_ld.point(u.t1) + curve_ld.point(u.t2)) / 2).normalized().cast<double>();
-    out.work.points_evaluated += 2;
+    bp.position = ((curve.point(u.t1) + curve.point(u.t2)) / 2).normalized().cast<double>();
+    work.points_evaluated += 2;
     bp.kind = u.kind;
-    out.pairs.push_back(bp);
+    out.push_back(bp);
   }
-  out.nodes = assemble_nodes(out.pairs, curve);
+  return out;
+}
+
+}  // namespace census
+
+/// The polyline node census of one gear train (see header). The train is analysed as given.
+inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCensusSettings& settings = {}) {
+  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
+  PolylineCensus out;
+  const bool literal = settings.tangency_tolerance <= 0;
+  const long double gap_tolerance = literal ? kLiteralGapTolerance : settings.tangency_tolerance;
+
+  const std::size_t n = settings.samples ? settings.samples : census_sample_count(train);
+  const census::SampledPolyline poly = census::sample_polyline(train, n, out.work);
+  out.samples = poly.size();
+  const double h = train.period() / static_cast<double>(n);
+
+  const std::vector<census::EdgePair> contacts = census::exact_contacts(poly, out);
+  const std::vector<census::EdgePair> near = census::near_misses(poly, h, contacts);
+  out.near_misses = near.size();
+  std::vector<census::Seed> seeds;
+  for (const auto& [i, j] : contacts) seeds.push_back({poly.edge_mid(i), poly.edge_mid(j)});
+  for (const auto& [i, j] : near) seeds.push_back({poly.edge_mid(i), poly.edge_mid(j)});
+  out.work.seeds = seeds.size();
+
+  census::MeetingFinder finder(train, h, gap_tolerance, out);
+  for (const census::Seed& s : seeds) finder.add_seed(s);
+  const auto unique = census::unique_meetings(finder.meetings(), static_cast<long double>(train.period()));
+
+  out.pairs = census::branch_pairs(train, unique, out.work);
+  out.nodes = assemble_nodes(out.pairs, TracerCurve<double>(train));
   out.work.points_evaluated += assembly_evaluations(out.nodes);
   return out;
 }

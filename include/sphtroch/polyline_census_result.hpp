@@ -2,6 +2,9 @@
 // and takes, without the census itself: Eigen only, no CGAL. classification.hpp needs these types
 // (a Classification holds a PolylineCensus) and includes only this header, so that a file calling
 // classify() in separate mode (SPHTROCH_SEPARATE_EXACT, see classification.hpp) parses no CGAL.
+//
+//   sphtroch::PolylineCensusSettings s;  s.samples = 4096;   // at least kMinCensusSamples
+//   sphtroch::census_sample_count(train);                    // the default: 256 (q + |p|), >= 1024
 #pragma once
 
 #include "sphtroch/gear_train.hpp"

@@ -53,6 +53,7 @@
 #include "sphtroch/curve.hpp"
 #include "sphtroch/boundaries.hpp"
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
 #include "sphtroch/pitch_cone.hpp"
@@ -344,11 +345,10 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
             : 2 * std::atan2(y.y(), y.x()) - pi;
     const Real d = two_az_minus_pi + two_pi * static_cast<Real>(j);
     for (std::int64_t k = 0; k < abs_p; ++k) {
-      const Real t1 = (b - static_cast<Real>(phase) + two_pi * static_cast<Real>(k)) * static_cast<Real>(q) /
-                      static_cast<Real>(p);
+      const Real t1 = theta2_at_planet_angle(train.ratio(), static_cast<Real>(phase), b, k);
       BranchPair bp;
-      bp.t1 = wrap_param(static_cast<double>(t1), period);
-      bp.t2 = wrap_param(static_cast<double>(t1 + d), period);
+      bp.t1 = reduce_to_period(static_cast<double>(t1), period);
+      bp.t2 = reduce_to_period(static_cast<double>(t1 + d), period);
       const Real ct = std::cos(t1), st = std::sin(t1);
       bp.position = Vector3d(static_cast<double>(ct * y.x() - st * y.y()), static_cast<double>(st * y.x() + ct * y.y()),
                              static_cast<double>(y.z()));
@@ -362,9 +362,7 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
   auto add_pole = [&](Real b_pole, double z) {
     std::vector<double> ts;
     for (std::int64_t k = 0; k < abs_p; ++k)
-      ts.push_back(wrap_param(static_cast<double>((b_pole - static_cast<Real>(phase) + two_pi * static_cast<Real>(k)) *
-                                                  static_cast<Real>(q) / static_cast<Real>(p)),
-                              period));
+      ts.push_back(reduce_to_period(static_cast<double>(theta2_at_planet_angle(train.ratio(), static_cast<Real>(phase), b_pole, k)), period));
     for (std::int64_t k = 0; k < abs_p; ++k)
       for (std::int64_t l = k + 1; l < abs_p; ++l) {
         BranchPair bp;

@@ -27,6 +27,7 @@
 #include "sphtroch/npy.hpp"
 #include "sphtroch/number_text.hpp"
 #include "sphtroch/output_file.hpp"
+#include "sphtroch/parameters.hpp"
 #include "sphtroch/parse.hpp"
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/polyline_input.hpp"

@@ -8,10 +8,10 @@
 //   GearTrain train(pi / 2, pi / 2, Ratio(1));                   // report Fig. 3
 //   TracerCurve<double> curve(train);
 //   Trajectory<double> tr = sample_period(curve, 2000);
-//   std::vector<Node> nodes = ...;  std::vector<Cusp> cusps = ...;  // from the census
+//   RootCensus census = root_census(train);                      // or any census
 //   PlotOptions opt;
 //   opt.caption = "a2 = pi/2, a3 = pi/2, n = 1 - 1 node (crossing), 0 cusps";
-//   std::string svg = render_sphere_svg(tr, nodes, cusps, opt);   // write it to a .svg file
+//   std::string svg = render_sphere_svg(tr, census.nodes, {}, opt);  // nodes, cusps; write it to a .svg file
 //
 // The view: the viewer looks at the origin from the direction
 //   view = (cos el cos az, cos el sin az, sin el)

@@ -1,6 +1,9 @@
 // sphtroch/work.hpp — what a computation did, counted exactly where it is done: the counters of
 // one Analysis stage (analysis.hpp) and of a whole classification (classification.hpp) are one
 // struct, summed with +=.
+//
+//   sphtroch::Work w = sphtroch::Analysis(train).work(sphtroch::Stage::crossings);
+//   w.ran, w.points_evaluated, w.predicates, w.seconds;   // did it run, what it cost
 #pragma once
 
 #include <cstddef>
