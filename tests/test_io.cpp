@@ -118,8 +118,26 @@ TEST_CASE("number_text: parse_number accepts numbers only, whole, finite", "[io]
   CHECK(parse_number("2.5e-3") == 2.5e-3);
   CHECK(parse_number("+1") == 1.0);
   CHECK(parse_number(".5") == 0.5);
-  for (const char* bad : {"", " 1", "1 ", "1,", "nan", "inf", "-inf", "1e999", "1e-400", "0x10", "+-1", "--1", "1e", "e1", "abc"})
+  for (const char* bad : {"", " 1", "1 ", "1,", "nan", "inf", "-inf", "1e999", "-1e999", "0.1e310", "0x10", "+-1", "--1",
+                          "1e", "e1", "abc"})
     CHECK_FALSE(parse_number(bad).has_value());
+}
+
+TEST_CASE("number_text: a magnitude below the smallest subnormal reads as a signed zero", "[io][numbers]") {
+  // Below 2^-1075 (half the smallest subnormal, 4.9e-324) the nearest double is zero, as strtod
+  // and JSON readers (scene files) give it; above the largest double there is none.
+  for (const char* tiny : {"1e-400", "0.000001e-320", "123456e-330", "100000000000000000000e-420", "1e-99999999999"}) {
+    const auto v = parse_number(tiny);
+    REQUIRE(v.has_value());
+    CHECK(*v == 0.0);
+    CHECK_FALSE(std::signbit(*v));
+  }
+  const auto negative = parse_number("-1e-400");
+  REQUIRE(negative.has_value());
+  CHECK(*negative == 0.0);
+  CHECK(std::signbit(*negative));
+  CHECK(parse_number("4.9406564584124654e-324") == std::numeric_limits<double>::denorm_min());
+  CHECK(parse_number("0e-99999") == 0.0);
 }
 
 TEST_CASE("npy: the header is the documented dict, padded to 64 bytes, and parses back", "[io][npy]") {

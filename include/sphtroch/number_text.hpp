@@ -13,6 +13,7 @@
 // Parsing is std::from_chars (general format, round-to-nearest): exact inverse of the above.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -37,8 +38,41 @@ inline std::string number_text(double v) {
   return std::string(buf, write_number(buf, v));
 }
 
+namespace detail {
+
+/// For a decimal [-]digits[.digits][e[+-]digits] that from_chars found out of range: whether its
+/// magnitude is below 1 (so it underflowed) rather than above (overflowed). The decimal exponent
+/// of the first nonzero digit decides; a value with no nonzero digit is not out of range.
+inline bool decimal_underflows(const char* first, const char* last) noexcept {
+  const char* p = first;
+  if (p != last && *p == '-') ++p;
+  const char* digits_end = p;
+  while (digits_end != last && (*digits_end == '.' || (*digits_end >= '0' && *digits_end <= '9'))) ++digits_end;
+  const char* point = std::find(p, digits_end, '.');
+  const char* nonzero = std::find_if(p, digits_end, [](char c) { return c >= '1' && c <= '9'; });
+  if (nonzero == digits_end) return false;
+  // Decimal exponent of the first nonzero digit: 10^(digits up to the point - 1) ... 10^-1, 10^-2, ...
+  const long long lead = nonzero < point ? static_cast<long long>(point - nonzero) - 1
+                                         : -static_cast<long long>(nonzero - point);
+  long long exponent = 0;
+  p = digits_end;
+  if (p != last && (*p == 'e' || *p == 'E')) {
+    ++p;
+    const bool negative = p != last && *p == '-';
+    if (p != last && (*p == '-' || *p == '+')) ++p;
+    for (; p != last && *p >= '0' && *p <= '9'; ++p)
+      if (exponent < 1000000000LL) exponent = exponent * 10 + (*p - '0');
+    if (negative) exponent = -exponent;
+  }
+  return lead + exponent < 0;
+}
+
+}  // namespace detail
+
 /// Parses a number at [first, last): an optional '+' or '-', digits with an optional point and
 /// exponent ("1", "-0.5", "2.5e-3", "+1e10"; also "inf", "nan" — callers reject non-finite values).
+/// A magnitude beyond the largest double (1e999) is not a number here; one below the smallest
+/// subnormal (1e-400) is a signed zero.
 /// Returns the end of the number, or nullptr when no number starts at first. No space skipping.
 inline const char* parse_number_prefix(const char* first, const char* last, double& value) noexcept {
   if (first != last && *first == '+') {
@@ -46,8 +80,13 @@ inline const char* parse_number_prefix(const char* first, const char* last, doub
     if (first == last || *first == '-' || *first == '+') return nullptr;
   }
   const auto [end, ec] = std::from_chars(first, last, value);
-  if (ec == std::errc::result_out_of_range) return nullptr;  // e.g. 1e999: not a double
-  return ec == std::errc() ? end : nullptr;
+  if (ec == std::errc::result_out_of_range) {
+    // Too large (1e999: not a double, refused) or too small (1e-400: rounds to zero, read as
+    // a signed zero, as strtod and JSON readers do).
+    if (!detail::decimal_underflows(first, end)) return nullptr;
+    value = *first == '-' ? -0.0 : 0.0;
+  }
+  return ec == std::errc() || ec == std::errc::result_out_of_range ? end : nullptr;
 }
 
 /// The whole of `text` as a finite double, or nullopt (empty, trailing characters, out of range,
