@@ -16,6 +16,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,14 @@ inline char* write_number(char* out, double v) noexcept {
 inline std::string number_text(double v) {
   char buf[kMaxNumberChars];
   return std::string(buf, write_number(buf, v));
+}
+
+/// A measured time in seconds for text reports: 3 significant digits, printf "%.3g" (timings are
+/// noisy; JSON reports keep every digit with number_text / the JSON writer).
+inline std::string seconds_text(double seconds) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.3g", seconds);
+  return buf;
 }
 
 /// Parses a number at [first, last): an optional '+' or '-', digits with an optional point and

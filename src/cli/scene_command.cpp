@@ -11,9 +11,10 @@
 // Every problem is one line on stderr naming the file and the field (or line and column), the
 // value and the valid range, exit status 2.
 #include "cli_common.hpp"
-#include "reports.hpp"
 
 #include "sphtroch/analysis.hpp"
+#include "sphtroch/csv_io.hpp"
+#include "sphtroch/report.hpp"
 #include "sphtroch/input_file.hpp"
 #include "sphtroch/parse.hpp"
 #include "sphtroch/trace_output.hpp"
@@ -353,14 +354,7 @@ void write_effect(std::ostream& out, const SceneTrain& st, const Analysis& a, co
       else out << classification_json(st.text, a.classification()).dump(2) << "\n";
       return;
     case Effect::extrema: out << z_extremes_json(a.extremes()).dump(2) << "\n"; return;
-    case Effect::screw_axis: {
-      const ScrewAxisSamples& s = a.screw_axis();
-      out << "t,wx,wy,wz\n";
-      for (std::size_t i = 0; i < s.t.size(); ++i)
-        out << number(s.t[i]) << ',' << number(s.omega[i].x()) << ',' << number(s.omega[i].y()) << ','
-            << number(s.omega[i].z()) << '\n';
-      return;
-    }
+    case Effect::screw_axis: write_screw_axis_csv(out, a.screw_axis().t, a.screw_axis().omega); return;
     case Effect::plot: out << plot_svg(st.text, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps()); return;
   }
 }
