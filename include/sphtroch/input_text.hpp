@@ -19,8 +19,9 @@ namespace sphtroch {
 struct InputText {
   std::string a2, a3, n, phase = "0";
 
-  /// Parses and validates, in the order a2, a3, n, phase (the first bad field is reported).
-  /// Throws InvalidInput whose field is "a2", "a3", "n" or "phase".
+  /// Parses the four texts in the order a2, a3, n, phase (the first that is not a value is
+  /// reported), then validates the train (ranges: GearTrain). Throws InvalidInput whose field is
+  /// "a2", "a3", "n" or "phase".
   GearTrain train() const {
     const double a2v = parse_angle(a2, "a2");
     const A3Spec a3v = parse_a3(a3, "a3");
