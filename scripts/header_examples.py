@@ -31,6 +31,8 @@ PRELUDE = r'''
 #include <sphtroch/polyline_crossings.hpp>
 
 #include <cstdio>
+#include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -56,6 +58,15 @@ const sphtroch::AtlasCsv part1, part2;
 const std::vector<sphtroch::EdgePair> crossings;
 const std::size_t blocks = 4;
 std::string format_rows(std::size_t block) { return std::to_string(block) + "\n"; }
+const double seconds = 1.0;
+const sphtroch::Analysis analysis(train);
+const sphtroch::ScrewAxisSamples samples;
+sphtroch::OutputFile& standard_output() {
+  static sphtroch::OutputFile f = sphtroch::OutputFile::open("-", "output");
+  return f;
+}
+sphtroch::OutputFile& file = standard_output();
+const sphtroch::SelfCrossings sc;
 struct Sink {
   void write(const std::string&) {}
 } out;

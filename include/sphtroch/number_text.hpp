@@ -17,6 +17,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -68,6 +69,14 @@ inline bool decimal_underflows(const char* first, const char* last) noexcept {
 }
 
 }  // namespace detail
+
+/// A measured time in seconds for text reports: 3 significant digits, printf "%.3g" (timings are
+/// noisy; JSON reports keep every digit with number_text / the JSON writer).
+inline std::string seconds_text(double seconds) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.3g", seconds);
+  return buf;
+}
 
 /// Parses a number at [first, last): an optional '+' or '-', digits with an optional point and
 /// exponent ("1", "-0.5", "2.5e-3", "+1e10"; also "inf", "nan" — callers reject non-finite values).

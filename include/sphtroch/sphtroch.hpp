@@ -1,8 +1,9 @@
 // sphtroch/sphtroch.hpp — umbrella header: what the linked CMake components provide.
 //   sphtroch::sphtroch (Eigen only): curves, sampling, parsing, the root census, the report's
 //     criteria, the atlas, SVG, and the I/O headers (CSV/.npy readers and writers; POSIX).
-//   sphtroch::exact (CGAL, GMP, MPFR; defines SPHTROCH_HAVE_EXACT): adds the exact crossing
-//     search, the polyline census, classify() and the lazy Analysis.
+//   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT): adds the exact
+//     crossing search, the polyline census, classify(), the lazy Analysis, the reports
+//     (text/JSON) and scenes.
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (mpreal_support.hpp).
 #pragma once
 
@@ -14,14 +15,17 @@
 #include "sphtroch/arc_crossing_point.hpp"
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"
+#include "sphtroch/atlas_report.hpp"
 #include "sphtroch/atlas_svg.hpp"
 #include "sphtroch/boundaries.hpp"
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/cost_bounds.hpp"
+#include "sphtroch/csv_io.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/errors.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/input_file.hpp"
+#include "sphtroch/input_text.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
 #include "sphtroch/npy.hpp"
@@ -49,4 +53,6 @@
 #include "sphtroch/classify.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/polyline_crossings.hpp"
+#include "sphtroch/report.hpp"
+#include "sphtroch/scene.hpp"
 #endif

@@ -5,6 +5,7 @@
 
 #include "sphtroch/atlas.hpp"
 #include "sphtroch/atlas_csv.hpp"
+#include "sphtroch/atlas_report.hpp"
 #include "sphtroch/atlas_svg.hpp"
 #include "sphtroch/input_file.hpp"
 #include "sphtroch/parse.hpp"
@@ -24,9 +25,6 @@
 namespace sphtroch::cli {
 
 namespace {
-
-/// Disagreeing cells listed one per line in the summary; the rest are counted (the CSV has all).
-constexpr std::size_t kMaxListedDisagreements = 200;
 
 struct AtlasOptions {
   std::string n, grid, a2 = "0:pi", a3 = "0:pi", threads, shard, output, svg;
@@ -122,60 +120,6 @@ void write_atlas_outputs(const std::string& csv, const std::string& svg_path, co
   }
 }
 
-/// The summary: what was computed, counts per class, and every disagreement with its nearest
-/// boundary (see kMaxListedDisagreements).
-/// `listed`: the first disagreeing cells (at most kMaxListedDisagreements), in order.
-void print_summary(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s, const std::vector<AtlasCell>& listed,
-                   AtlasRows rows, const std::optional<AtlasShard>& shard, std::optional<double> seconds,
-                   std::size_t threads) {
-  out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
-      << number(spec.a2.lo) << ", " << number(spec.a2.hi) << "], a3 in [" << number(spec.a3.lo) << ", "
-      << number(spec.a3.hi) << "], cell centres; "
-      << (spec.literal ? "literal reading (tolerances 0)"
-                       : "default reading (boundary tolerance " + number(spec.boundary_tolerance) +
-                             " rad, tangency " + number(kTangencyTolerance) + ")")
-      << "; cusp resolution " << number(kCuspResolution) << " rad"
-      << "\n";
-  out << "cells: " << s.cells << " (";
-  if (shard) out << "shard " << shard->index << "/" << shard->count << ": ";
-  out << "a2 rows " << rows.begin << " .. " << (rows.end == 0 ? 0 : rows.end - 1) << " of " << spec.grid << ")\n";
-  out << "classes (root-count census): simple curve " << s.by_class[0] << ", nodes " << s.by_class[1] << ", cusps "
-      << s.by_class[2] << ", nodes and cusps " << s.by_class[3] << "\n";
-  out << "node counts:";
-  bool first = true;
-  for (const auto& [n, c] : s.by_nodes) {
-    out << (first ? " " : ", ") << n << ": " << c;
-    first = false;
-  }
-  out << " cells; " << s.with_tangencies << " with a tangency node\n";
-  const bool n1 = spec.ratio == Ratio(1), n2 = spec.ratio == Ratio(2);
-  if (n1 || n2)
-    out << "report's criteria: " << (n1 ? "Eq. 24" : "Eqs. 43, 46") << " and the pitch-cone criterion, predicted for "
-        << s.predicted << " cells\n";
-  else
-    out << "report's criteria: the pitch-cone criterion (cusps) only; no node criterion for n = " << spec.ratio.str()
-        << " (analytic_nodes, agree = NA)\n";
-  out << "disagreements (census vs report): " << s.disagreement_count << " ("
-      << s.disagreement_count - s.disagreements_off_boundaries << " within " << kAtlasBoundaryBand
-      << " rad of a boundary, " << s.disagreements_off_boundaries << " elsewhere)\n";
-  for (const AtlasCell& c : listed) {
-    const NearestBoundary b = nearest_boundary(c.a2, c.a3, spec.ratio);
-    out << "  i=" << c.i << " j=" << c.j << " a2=" << number(c.a2) << " a3=" << number(c.a3) << ": census " << c.nodes
-        << " node(s), " << c.cusps << " cusp(s); report "
-        << (c.analytic_nodes ? std::to_string(*c.analytic_nodes) : std::string("NA")) << " node(s), "
-        << c.analytic_cusps << " cusp(s); nearest boundary " << b.name << " at " << number(b.distance) << " rad\n";
-  }
-  if (s.disagreement_count > listed.size())
-    out << "  ... and " << s.disagreement_count - listed.size() << " more (agree = 0 in the CSV)\n";
-  if (seconds) {
-    const double per_cell = s.cells ? *seconds * static_cast<double>(threads) / static_cast<double>(s.cells) : 0.0;
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "time: %.3f s on %zu thread(s), %.4f ms per cell per thread\n", *seconds, threads,
-                  per_cell * 1e3);
-    out << buf;
-  }
-}
-
 /// "\ratlas  37% (6062/16384 cells)" on stderr when it is a terminal; nothing otherwise.
 AtlasProgress progress_bar() {
   if (!::isatty(STDERR_FILENO)) return {};
@@ -219,10 +163,7 @@ void run_atlas(const AtlasOptions& o) {
       o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); },
       [&](std::ostream& out) {
         const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
-        std::vector<AtlasCell> listed;
-        for (std::size_t k : summary.disagreements)
-          if (listed.size() < kMaxListedDisagreements) listed.push_back(cells[k]);
-        print_summary(out, spec, summary, listed, rows, shard, seconds, threads);
+        write_atlas_summary(out, spec, summary, listed_disagreements(summary, cells), AtlasRun{rows, shard, seconds, threads});
       });
 }
 
@@ -377,7 +318,7 @@ void run_merge(const MergeOptions& o) {
     if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << render_atlas_svg(spec, all); });
     outputs.commit();
     auto write_summary = [&](std::ostream& out) {
-      print_summary(out, spec, summary, listed, AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1);
+      write_atlas_summary(out, spec, summary, listed, AtlasRun{AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1});
     };
     if (o.output == "-") {
       write_summary(std::cerr);

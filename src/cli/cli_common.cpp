@@ -24,14 +24,6 @@ void TrainOptions::add_to(CLI::App& command) {
   command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
 }
 
-GearTrain TrainOptions::train() const {
-  const double a2v = parse_angle(a2, "a2");
-  const A3Spec a3v = parse_a3(a3, "a3");
-  const Ratio nv = parse_ratio(n, "n");
-  const double ph = parse_angle(phase, "phase");
-  return make_gear_train(a2v, a3v, nv, ph);
-}
-
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {
   command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)");
 }
@@ -39,12 +31,6 @@ void add_output_option(CLI::App& command, std::string& path, const std::string& 
 std::string number(double v) { return number_text(v); }
 
 std::string shortest_number(double v) { return number_text(v); }
-
-std::string seconds_text(double seconds) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.3g", seconds);
-  return buf;
-}
 
 std::size_t parse_threads(const std::string& text) {
   if (!text.empty()) return parse_count(text, "threads", 1, kMaxThreads);

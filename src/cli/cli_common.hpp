@@ -5,6 +5,8 @@
 #pragma once
 
 #include "sphtroch/gear_train.hpp"
+#include "sphtroch/input_text.hpp"
+#include "sphtroch/number_text.hpp"
 #include "sphtroch/output_file.hpp"
 #include "sphtroch/sampling.hpp"
 
@@ -28,13 +30,11 @@ struct UsageError {
   std::string message;  // one line, already naming the option, the value and the valid range
 };
 
-/// The gear-train options every analysis command shares (values kept as text, parsed later
-/// so that errors name the option exactly as typed).
-struct TrainOptions {
-  std::string a2, a3, n, phase = "0";
+/// The gear-train options every analysis command shares: the library's InputText (values kept
+/// as text, parsed by train() so that errors name the option exactly as typed; InvalidInput's
+/// field is the option name without "--").
+struct TrainOptions : InputText {
   void add_to(CLI::App& command);
-  /// Parses and validates; throws InvalidInput whose field is the option name without "--".
-  GearTrain train() const;
 };
 
 /// Adds "-o,--output FILE" to a command.
@@ -80,9 +80,8 @@ std::size_t parse_count(const std::string& text, const std::string& field, std::
 /// tool prints, in data and in reports.
 std::string number(double v);
 
-/// A measured time in seconds for text reports: 3 significant digits (timings are noisy; the
-/// JSON reports keep every digit).
-std::string seconds_text(double seconds);
+/// A measured time in seconds for text reports (number_text.hpp: 3 significant digits).
+using sphtroch::seconds_text;
 
 /// The same as number() (kept for the named constants of text reports).
 std::string shortest_number(double v);

@@ -1,36 +1,21 @@
-// src/cli/reports.hpp — the printers of the analysis commands, shared by `sphtroch classify`,
-// `nodes`, `plot` and `sphtroch scene` so that a scene's outputs are the commands' bytes.
-// Defined in analysis_commands.cpp; the declarations need no CGAL.
+// src/cli/reports.hpp — compatibility only: the printers of the analysis commands moved to the
+// library (sphtroch/report.hpp: classification text and JSON, z extremes JSON, the plot caption
+// and SVG; sphtroch/csv_io.hpp: the nodes CSV). Code that included this header and called
+// sphtroch::cli::classification_json(options, c) still compiles: TrainOptions is an InputText.
+// New code: include the library headers and call sphtroch::classification_json(InputText, c).
 #pragma once
 
 #include "cli_common.hpp"
 
-#include "sphtroch/node.hpp"
-#include "sphtroch/sampling.hpp"
-
-#include <nlohmann/json.hpp>
-
-#include <ostream>
-#include <string>
-#include <vector>
-
-namespace sphtroch {
-struct Classification;
-struct ZExtremes;
-}  // namespace sphtroch
+#include "sphtroch/csv_io.hpp"
+#include "sphtroch/report.hpp"
 
 namespace sphtroch::cli {
 
-/// `classify --json`; `text` holds the angles as the user wrote them (a2_text, a3_text).
-nlohmann::json classification_json(const TrainOptions& text, const Classification& c);
-/// `classify` (text report).
-void write_classification_text(std::ostream& out, const TrainOptions& text, const Classification& c);
-/// `nodes`: kind,x,y,z,t1,t2,branches — node rows, then cusp rows.
-void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps);
-/// The "z_extremes" object of `classify --json`.
-nlohmann::json z_extremes_json(const ZExtremes& z);
-/// `plot`: the SVG of the analysed train's plot trajectory with nodes, cusps and the caption.
-std::string plot_svg(const TrainOptions& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
-                     const std::vector<Node>& nodes, const std::vector<Cusp>& cusps);
+using sphtroch::classification_json;
+using sphtroch::plot_svg;
+using sphtroch::write_classification_text;
+using sphtroch::write_nodes_csv;
+using sphtroch::z_extremes_json;
 
 }  // namespace sphtroch::cli
