@@ -18,7 +18,7 @@ import time
 import numpy as np
 import sphtroch
 
-TRAIN = ("pi/3", "pi/2", "7/3")  # a2, a3, n: 14 crossing nodes, a curve of 10 lobes
+TRAIN = ("pi/3", "pi/2", "7/3")  # a2, a3, n: 63 nodes (63 polyline crossings at 1e6 samples)
 
 
 def median_seconds(reps, call):
