@@ -72,13 +72,7 @@ class GearTrain:
         """(a2, a3, n, phase) as text: as given, or the shortest round-trip form of a float."""
     @overload
     def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
-              velocity: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
-    @overload
-    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
-              velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
-                                                  npt.NDArray[np.float64]]: ...
-    def trace(self, *, samples: Optional[int] = None, turns: Optional[float] = None,
-              velocity: bool = False) -> Tuple[npt.NDArray[np.float64], ...]:
+              velocity: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """The trajectory P(theta2) (Eq. 4): t (N,), P (N, 3) unit vectors, and with
         velocity=True V = dP/dtheta2 (N, 3) (Eq. 47a); float64, owned by the arrays (no copy).
 
@@ -87,6 +81,10 @@ class GearTrain:
         samples: 3 .. 10**7; default 360 (q + |p|) closed, 360 (1 + |n|) K + 1 open (as
         `sphtroch trace`). The same numbers as `sphtroch trace` prints.
         """
+    @overload
+    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
+              velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
+                                                npt.NDArray[np.float64]]: ...
     def classify(self, *, literal: bool = False, samples: Optional[int] = None) -> Dict[str, Any]:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
