@@ -23,11 +23,12 @@ build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
 
 # What the library and the tool need; the tests add python3-numpy (numpy.load/numpy.save round
-# trips of the .npy files) and libbenchmark-dev (bench/, built by bench/run).
+# trips of the .npy files), libbenchmark-dev (bench/, built by bench/run) and the Python module's
+# build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example).
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
           libcli11-dev nlohmann-json3-dev)
 if [[ $mode == test ]]; then
-  packages+=(libbenchmark-dev python3-numpy)
+  packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib)
 fi
 
 install_missing_packages() {
@@ -57,7 +58,13 @@ install_missing_packages() {
 configure_and_build() {
   # Configuring an existing build directory again is cheap and picks up new files. `run` builds
   # only the tool (a newcomer's first command stays short); `test` builds everything.
-  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release
+  # `test` builds the Python module for Debian's python3 (the interpreter the python3-* packages
+  # serve), and asks for it explicitly: a module that cannot be built fails here, never skipped.
+  local python=()
+  if [[ $mode == test ]]; then
+    python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3)
+  fi
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${python[@]}"
   if [[ $mode == run ]]; then
     cmake --build "$build_dir" -j "$jobs" --target sphtroch_cli
   else

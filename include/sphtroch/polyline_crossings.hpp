@@ -17,7 +17,8 @@
 //     ...; return true;   // false stops the visit
 //   });
 //
-// The polyline: vertices v_0 .. v_{n-1} (directions: need not be normalised); edge e joins v_e to
+// The polyline: vertices v_0 .. v_{n-1} (directions: need not be normalised; find_self_crossings also
+// takes a VertexSpan, a pointer and a count viewing packed x,y,z doubles without a copy); edge e joins v_e to
 // v_{e+1}, and when `closed` edge n-1 joins v_{n-1} to v_0. Edges i and j are adjacent when they
 // share a polyline vertex: |i - j| = 1, or {0, n-1} when closed. Adjacent pairs are never reported.
 //
@@ -143,6 +144,25 @@ constexpr double kDefaultMaxRunExtent = 1.0 / 64;
 /// vertices on sparse-crossing curves and did not change it measurably on dense ones.
 constexpr std::size_t kMinRunEdges = 8;
 
+/// The vertices of a polyline, not owned: a std::vector<Eigen::Vector3d> converts implicitly;
+/// (data, size) views any contiguous array of x,y,z doubles (e.g. a NumPy (N, 3) float64 array
+/// through Eigen::Vector3d, which is three packed doubles). REQUIRES the array outlives the view.
+class VertexSpan {
+ public:
+  VertexSpan(const std::vector<Eigen::Vector3d>& v) : data_(v.data()), size_(v.size()) {}  // NOLINT: implicit
+  VertexSpan(const Eigen::Vector3d* data, std::size_t size) : data_(data), size_(size) {}
+  std::size_t size() const noexcept { return size_; }
+  const Eigen::Vector3d* data() const noexcept { return data_; }
+  const Eigen::Vector3d& operator[](std::size_t i) const { return data_[i]; }
+  const Eigen::Vector3d* begin() const noexcept { return data_; }
+  const Eigen::Vector3d* end() const noexcept { return data_ + size_; }
+
+ private:
+  const Eigen::Vector3d* data_;
+  std::size_t size_;
+};
+static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "VertexSpan views packed x,y,z doubles");
+
 /// Two edges of a polyline, i < j, and how their arcs meet.
 struct EdgePair {
   std::size_t i = 0;
@@ -203,7 +223,7 @@ inline Eigen::Vector3d normalised_direction(const Eigen::Vector3d& v) {
 /// Upper bound c^2/4 on the sagitta of the arc between unit vectors u and v.
 inline double sagitta_bound(const Eigen::Vector3d& u, const Eigen::Vector3d& v) { return 0.25 * (u - v).squaredNorm(); }
 
-inline std::string vertex_text(const std::vector<Eigen::Vector3d>& vs, std::size_t i) {
+inline std::string vertex_text(VertexSpan vs, std::size_t i) {
   const Eigen::Vector3d& v = vs[i];
   return "index " + std::to_string(i) + ": (" + to_text(v.x()) + ", " + to_text(v.y()) + ", " + to_text(v.z()) + ")";
 }
@@ -215,7 +235,7 @@ inline void validate_margin(double margin) {
 
 /// Validates (see validate_spherical_polyline) and returns whether every vertex is already a
 /// unit vector within kUnitNormTolerance, so that the boxes may use it without normalising.
-inline bool validate_polyline(const std::vector<Eigen::Vector3d>& vertices, bool closed) {
+inline bool validate_polyline(VertexSpan vertices, bool closed) {
   const std::size_t min_n = closed ? 3 : 2;
   if (vertices.size() < min_n)
     throw InvalidInput("vertices", std::to_string(vertices.size()) + " vertices", "too few vertices",
@@ -253,7 +273,7 @@ inline bool validate_polyline(const std::vector<Eigen::Vector3d>& vertices, bool
 /// at the caller's vertices when they are unit within kUnitNormTolerance, else at normalised copies.
 class PreparedPolyline {
  public:
-  PreparedPolyline(const std::vector<Eigen::Vector3d>& vertices, bool closed, bool all_unit)
+  PreparedPolyline(VertexSpan vertices, bool closed, bool all_unit)
       : n(vertices.size()), edges(closed ? vertices.size() : vertices.size() - 1), closed(closed) {
     if (all_unit) {
       pts_ = vertices.data();
@@ -707,8 +727,9 @@ bool visit_close_edge_pairs(const std::vector<Eigen::Vector3d>& vertices, bool c
   return detail::visit_prepared(p, margin, search, kDefaultMaxRunEdges, kDefaultMaxRunExtent, visitor).completed;
 }
 
-/// Every crossing and touching pair of non-adjacent edges, exactly (see top).
-inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& vertices, bool closed,
+/// Every crossing and touching pair of non-adjacent edges, exactly (see top). The vertices are
+/// read in place (a VertexSpan: no copy of a caller's array).
+inline SelfCrossings find_self_crossings(VertexSpan vertices, bool closed,
                                          const CrossingSearchOptions& options = {}) {
   detail::validate_margin(options.margin);
   const detail::PreparedPolyline p(vertices, closed, detail::validate_polyline(vertices, closed));
@@ -728,6 +749,12 @@ inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& ver
   std::sort(out.crossings.begin(), out.crossings.end());
   std::sort(out.touchings.begin(), out.touchings.end());
   return out;
+}
+
+/// The same for a std::vector (and a braced list of vertices in a call).
+inline SelfCrossings find_self_crossings(const std::vector<Eigen::Vector3d>& vertices, bool closed,
+                                         const CrossingSearchOptions& options = {}) {
+  return find_self_crossings(VertexSpan(vertices), closed, options);
 }
 
 /// The O(N^2) reference: every pair of non-adjacent edges classified exactly.

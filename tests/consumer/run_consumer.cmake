@@ -37,7 +37,7 @@ set(part_flags -DSPHTROCH_CONSUMER_PART=${PART})
 if(PART STREQUAL "eigen")
   list(APPEND part_flags -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE)
 endif()
-set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF)
+set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF -DSPHTROCH_BUILD_PYTHON=OFF)
 if(MODE STREQUAL "find_package")
   step("configure sphtroch" ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${work}/sphtroch-build"
        -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=${prefix} ${off})
@@ -51,8 +51,8 @@ else()
   step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
        -DCMAKE_BUILD_TYPE=Release -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR}
        ${part_flags})
-  # As a subproject sphtroch must not build its tests, CLI or benchmarks by default.
-  foreach(dir tests src/cli bench)
+  # As a subproject sphtroch must not build its tests, CLI, benchmarks or Python module by default.
+  foreach(dir tests src/cli bench python)
     if(EXISTS "${consumer_build}/sphtroch/${dir}/Makefile" OR EXISTS "${consumer_build}/sphtroch/${dir}/build.ninja")
       message(FATAL_ERROR "consumer (${MODE}): sphtroch built ${dir} as a subproject")
     endif()

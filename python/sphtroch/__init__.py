@@ -1,0 +1,20 @@
+"""sphtroch: trajectories of a point on the planet of a spherical planetary (bevel) gear train.
+
+The C++ library (Lin & Tsai 1990) as a Python module: NumPy arrays in and out, the GIL released
+during every computation. The API with its contracts is in __init__.pyi (and README, "Python").
+
+    import sphtroch
+    tr = sphtroch.GearTrain(a2="pi/3", a3="pi/2", n="2")
+    t, P = tr.trace(samples=720)          # float64 (N,), (N, 3)
+    tr.classify()["class"]                # "nodes": the dict of `sphtroch classify --json`
+"""
+from ._sphtroch import (  # noqa: F401
+    GearTrain,
+    InvalidInput,
+    __version__,
+    atlas,
+    classify_a3_range,
+    crossings,
+)
+
+__all__ = ["GearTrain", "InvalidInput", "atlas", "classify_a3_range", "crossings", "__version__"]

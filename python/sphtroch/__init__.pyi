@@ -1,0 +1,138 @@
+"""sphtroch: trajectories of a point on the planet of a spherical planetary (bevel) gear train.
+
+Angles are radians (float) or the command-line tool's text: "1.25", "pi/2", "2pi/3", "0.75pi",
+"90deg"; a3 also "ap", "pi-ap", "a2", "pi-a2" with an optional offset ("ap+1e-6"). Gear ratios
+n = p/q: int, fractions.Fraction, text ("5/2", "2.5") or a float that is a decimal of at most 9
+places (2.5). Every bad argument raises InvalidInput naming it. Every computation runs with the
+GIL released; GearTrain objects are immutable and may be shared between threads.
+"""
+from fractions import Fraction
+from typing import Any, Dict, List, Literal, Optional, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+Angle = Union[float, int, str]
+RatioLike = Union[int, str, float, Fraction]
+AngleRange = Tuple[Angle, Angle]
+
+class InvalidInput(ValueError):
+    """Bad input. str(e) reads "<field> = <value>: <problem>; valid: <valid>"."""
+
+    field: str
+    """The argument: "a2", "a3", "n", "phase", "samples", "turns", "points", "grid", "a3_range", ..."""
+    value: str
+    """The offending value as text."""
+    problem: str
+    """What is wrong with it."""
+    valid: str
+    """The valid range or forms."""
+
+class GearTrain:
+    """One spherical planetary gear train (Lin & Tsai 1990, Sec. 2): carrier twist a2, tracer
+    twist a3 (both in (0, pi)), gear ratio n = p/q (p != 0), phase theta_p (Eq. 3).
+
+    Immutable; picklable (the inputs are kept as exact text: pickling round-trips bit for bit).
+    Raises InvalidInput (field "a2", "a3", "n" or "phase") for a value out of range or malformed.
+    """
+
+    def __init__(self, a2: Angle, a3: Angle, n: RatioLike, phase: Angle = 0.0) -> None: ...
+    @property
+    def a2(self) -> float:
+        """Carrier twist, radians."""
+    @property
+    def a3(self) -> float:
+        """Tracer twist, radians (a cone reference plus its offset, rounded once)."""
+    @property
+    def n(self) -> float:
+        """The gear ratio p/q as a float."""
+    @property
+    def ratio(self) -> str:
+        """The gear ratio in lowest terms, "p/q" or "p"."""
+    @property
+    def p(self) -> int: ...
+    @property
+    def q(self) -> int: ...
+    @property
+    def phase(self) -> float:
+        """The phase reduced to [-pi, pi], radians."""
+    @property
+    def planet_cone(self) -> float:
+        """a_p = atan2(sin a2, cos a2 + n), radians."""
+    @property
+    def sun_cone(self) -> float:
+        """a_s = a2 - a_p, radians."""
+    @property
+    def period(self) -> float:
+        """2 pi q: the theta2 span after which the curve closes, radians."""
+    @property
+    def texts(self) -> Tuple[str, str, str, str]:
+        """(a2, a3, n, phase) as text: as given, or the shortest round-trip form of a float."""
+    @overload
+    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
+              velocity: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+        """The trajectory P(theta2) (Eq. 4): t (N,), P (N, 3) unit vectors, and with
+        velocity=True V = dP/dtheta2 (N, 3) (Eq. 47a); float64, owned by the arrays (no copy).
+
+        Closed curve (turns=None): t_i = 2 pi q i / N, i < N (the last point joins the first).
+        Open curve: t_i = 2 pi K i / (N - 1), both ends included, K = turns in (0, 1e6].
+        samples: 3 .. 10**7; default 360 (q + |p|) closed, 360 (1 + |n|) K + 1 open (as
+        `sphtroch trace`). The same numbers as `sphtroch trace` prints.
+        """
+    @overload
+    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
+              velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
+                                                npt.NDArray[np.float64]]: ...
+    def classify(self, *, literal: bool = False, samples: Optional[int] = None) -> Dict[str, Any]:
+        """Nodes, cusps and the report's criteria: a dict with the keys and values of
+        `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
+        boundaries, z_extremes, symmetry, criteria, censuses, agreement, tolerances, work).
+        literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
+        samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
+        """
+    def nodes(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
+        """The "nodes" list of classify() (position, longitude, latitude, params, branches, kind,
+        angle, crossing_pairs, tangency_pairs), from the node stages only (no root-count census)."""
+    def cusps(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
+        """The "cusps" list of classify() (position, param, speed)."""
+    def classify_roots(self, *, literal: bool = False) -> Dict[str, Any]:
+        """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
+        a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
+        analytic_nodes (the report's count for n = 1, 2, else None), analytic_cusps,
+        agrees_with_report, node_points (position, params, branches, kind, angle, ...)."""
+    def __reduce__(self) -> Any: ...
+
+def crossings(points: npt.ArrayLike, closed: bool = True) -> Dict[str, Any]:
+    """The exact self-crossings of a spherical polyline (edges are great-circle arcs; edge e
+    joins row e to row e+1, and the last row to the first when closed), as `sphtroch crossings`.
+
+    points: (N, 3) x, y, z rows (directions; need not be unit). C-contiguous float64 is read in
+    place without a copy (do not modify it during the call); anything else is converted once
+    (input_converted is then True). Wrong shape, N too small, zero or non-finite rows, equal or
+    antipodal consecutive rows: InvalidInput with field "points".
+
+    Returns: vertices, closed, crossings (count), touchings (count), pairs (k, 2) int64 edge
+    pairs i < j of both kinds sorted by (i, j) (the rows of `--pairs`), kinds (k strings:
+    "crossing", "touching", "overlap"), candidate_pairs, predicates, input_converted,
+    timings {"seconds_search"}.
+    """
+
+def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.141592653589793),
+          a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[int] = None,
+          literal: bool = False) -> Dict[str, Any]:
+    """The classification map over (a2, a3) for one gear ratio, as `sphtroch atlas`: G x G cells
+    sampled at their centres (row i: a2, column j: a3). Arrays of shape (G, G): a2, a3 (float64,
+    radians), nodes, crossings, tangencies, cusps, analytic_nodes (-1 where the report gives no
+    count, n != 1, 2), analytic_cusps (int64), agree (int8: 1 agree, 0 disagree, -1 no
+    prediction), cusps_agree (bool); plus n (str) and threads (int).
+    grid: 1 .. 4096; ranges 0 <= lo < hi <= pi; threads: 1 .. 1024 (default: all cores).
+    """
+
+def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
+                      literal: bool = False) -> List[Dict[str, Any]]:
+    """classify_roots at `count` evenly spaced a3 in [lo, hi] (both ends included), runs of equal
+    (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
+    (radians). The class changes between the last sample of a run and the first of the next.
+    Raises InvalidInput: "a3_range" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""

@@ -1,0 +1,74 @@
+// python/src/exact_calls.cpp — see exact_calls.hpp. The module's one CGAL translation unit of its
+// own (the other is the CLI's analysis_commands.cpp, compiled in for its printers).
+#include "exact_calls.hpp"
+
+#include "reports.hpp"
+
+#include "sphtroch/analysis.hpp"
+#include "sphtroch/polyline_crossings.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace sphtroch::python {
+
+namespace {
+
+AnalysisSettings settings_of(bool literal, std::size_t census_samples) {
+  AnalysisSettings s;
+  s.literal = literal;
+  s.census_samples = census_samples;
+  return s;
+}
+
+}  // namespace
+
+std::string classification_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+                                      std::size_t census_samples) {
+  const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
+  return cli::classification_json(text, a.classification()).dump();
+}
+
+std::string nodes_and_cusps_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+                                      std::size_t census_samples) {
+  const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch nodes` runs it
+  // The printer of `classify --json` on a classification holding only these two stages: the
+  // node and cusp objects are then exactly those of the full report.
+  Classification c(train, a.snapped());
+  c.literal = literal;
+  c.nodes = a.nodes();
+  c.cusps = a.cusps();
+  const nlohmann::json j = cli::classification_json(text, c);
+  return nlohmann::json{{"nodes", j["nodes"]}, {"cusps", j["cusps"]}}.dump();
+}
+
+CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed) {
+  const VertexSpan vertices(reinterpret_cast<const Eigen::Vector3d*>(xyz), n);
+  SelfCrossings sc;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    sc = find_self_crossings(vertices, closed);
+  } catch (const InvalidInput& e) {  // the library names its argument "vertices"; Python's is "points"
+    throw InvalidInput("points", e.value(), e.problem(), e.valid_range());
+  }
+  CrossingsResult r;
+  r.seconds_search = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.vertices = n;
+  r.crossings = sc.crossings.size();
+  r.touchings = sc.touchings.size();
+  r.candidate_pairs = sc.candidate_pairs;
+  r.predicates = sc.predicates;
+  std::vector<EdgePair> all = sc.crossings;  // as `sphtroch crossings --pairs` lists them
+  all.insert(all.end(), sc.touchings.begin(), sc.touchings.end());
+  std::sort(all.begin(), all.end());
+  r.pairs.reserve(2 * all.size());
+  r.kinds.reserve(all.size());
+  for (const EdgePair& e : all) {
+    r.pairs.push_back(static_cast<std::int64_t>(e.i));
+    r.pairs.push_back(static_cast<std::int64_t>(e.j));
+    r.kinds.emplace_back(to_string(e.kind));
+  }
+  return r;
+}
+
+}  // namespace sphtroch::python

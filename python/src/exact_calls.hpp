@@ -1,0 +1,40 @@
+// python/src/exact_calls.hpp — the module's calls into the CGAL part of the library (compiled
+// in exact_calls.cpp only, so that module.cpp, the bindings, parse no CGAL). Plain C++: no
+// Python objects here, so every call may run with the GIL released. Errors: InvalidInput.
+#pragma once
+
+#include "cli_common.hpp"  // cli::TrainOptions: the angles as text, as `classify --json` reports them
+
+#include "sphtroch/gear_train.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sphtroch::python {
+
+/// `sphtroch classify --json` of `train` (the CLI's printer, cli::classification_json), as JSON
+/// text. literal: analyse the doubles as given; census_samples: 0 = the default count.
+std::string classification_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+                                      std::size_t census_samples);
+
+/// {"nodes": [...], "cusps": [...]} as in that JSON, from the node and cusp stages only (what
+/// `sphtroch nodes` computes; no root-count census).
+std::string nodes_and_cusps_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+                                      std::size_t census_samples);
+
+/// The exact self-crossings of a polyline (find_self_crossings), as `sphtroch crossings` reports them.
+struct CrossingsResult {
+  std::size_t vertices = 0, crossings = 0, touchings = 0, candidate_pairs = 0, predicates = 0;
+  std::vector<std::int64_t> pairs;  // k rows (i, j), i < j edge indices, crossings and touchings merged, sorted
+  std::vector<std::string> kinds;   // per row: "crossing", "touching" or "overlap"
+  double seconds_search = 0.0;      // wall time of find_self_crossings (validation included)
+};
+
+/// REQUIRES: xyz holds n packed rows x,y,z (read in place, not copied). Throws InvalidInput
+/// with field "points" for an invalid polyline (fewer than 3 / 2 vertices, a zero or non-finite
+/// row, consecutive rows equal or antipodal).
+CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed);
+
+}  // namespace sphtroch::python

@@ -1,0 +1,446 @@
+// python/src/module.cpp — the extension module sphtroch._sphtroch (pybind11): GearTrain, trace,
+// classify, nodes, cusps, classify_roots, classify_a3_range, crossings, atlas, InvalidInput.
+// The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
+//
+// Decisions
+//  * Every computation runs with the GIL released, on C++ values only (a GearTrain is an
+//    immutable value; no state is shared between calls): Python threads run in parallel.
+//  * Arrays go out without a copy: the C++ vectors move to the heap and a py::capsule owns them
+//    (the array's base); the (N, 3) arrays view std::vector<Eigen::Vector3d> (3 packed doubles).
+//  * Points come in without a copy when C-contiguous float64 (else converted once by NumPy).
+//  * Every bad argument raises sphtroch.InvalidInput (a ValueError) with .field, .value, .valid
+//    (and .problem): the library's own InvalidInput, or one raised here with the same contract.
+//  * Angles are stored with their text (the CLI's strings, or the shortest round-trip text of a
+//    float) so that classify() reports a2_text/a3_text as the CLI does and pickling is exact.
+#include "exact_calls.hpp"
+
+#include "sphtroch/atlas.hpp"
+#include "sphtroch/curve.hpp"
+#include "sphtroch/parse.hpp"
+#include "sphtroch/polyline_census_result.hpp"
+#include "sphtroch/root_classification.hpp"
+#include "sphtroch/sampling.hpp"
+#include "sphtroch/version.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace sphtroch::python {
+namespace {
+
+/// The Python class sphtroch.InvalidInput (the module object keeps it alive).
+py::handle g_invalid_input;
+
+constexpr const char* kPointsValid = "an (N, 3) array of x, y, z rows (float64; other real dtypes are converted)";
+
+std::string repr_of(py::handle v) { return py::repr(v).cast<std::string>(); }
+
+/// A real number (anything float() accepts, except bool, None and str), else InvalidInput.
+double real_arg(py::handle v, const std::string& field, const std::string& valid) {
+  if (v.is_none() || py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v))
+    throw InvalidInput(field, repr_of(v), "not a real number", valid);
+  PyObject* f = PyNumber_Float(v.ptr());
+  if (f == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not a real number", valid);
+  }
+  const double x = PyFloat_AsDouble(f);
+  Py_DECREF(f);
+  return x;
+}
+
+/// A whole number in [lo, hi] (int or any integer type with __index__; not bool), else InvalidInput.
+std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
+  const std::string valid = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
+  if (py::isinstance<py::bool_>(v) || !PyIndex_Check(v.ptr())) throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+  PyObject* i = PyNumber_Index(v.ptr());
+  if (i == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+  }
+  int overflow = 0;
+  const long long x = PyLong_AsLongLongAndOverflow(i, &overflow);
+  Py_DECREF(i);
+  if (overflow != 0 || x < 0 || static_cast<unsigned long long>(x) < lo || static_cast<unsigned long long>(x) > hi)
+    throw InvalidInput(field, repr_of(v), "outside the valid range", valid);
+  return static_cast<std::size_t>(x);
+}
+
+/// An angle: radians as a real number, or the CLI's text ("2pi/3", "90deg"). `text` receives
+/// the text kept for reports (the shortest round-trip form of a real number).
+double angle_arg(py::handle v, const std::string& field, std::string& text) {
+  if (py::isinstance<py::str>(v)) {
+    text = v.cast<std::string>();
+    return parse_angle(text, field);
+  }
+  const double x = real_arg(v, field, kAngleForms);
+  text = detail::to_text(x);
+  return x;
+}
+
+/// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
+A3Spec a3_arg(py::handle v, std::string& text) {
+  if (py::isinstance<py::str>(v)) {
+    text = v.cast<std::string>();
+    return parse_a3(text, "a3");
+  }
+  const double x = real_arg(v, "a3", kAngleForms);
+  text = detail::to_text(x);
+  return {A3Reference::given, x};
+}
+
+/// n: int (or any integer type), fractions.Fraction (anything with integer numerator and
+/// denominator), the CLI's text ("5/2", "2.5"), or a float read as its shortest decimal text
+/// (2.5 -> 5/2; a float that is no decimal of at most 9 places, e.g. 1/3, is refused: give "1/3").
+Ratio ratio_arg(py::handle v) {
+  if (py::isinstance<py::str>(v)) return parse_ratio(v.cast<std::string>(), "n");
+  if (v.is_none() || py::isinstance<py::bool_>(v)) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
+    const py::object p = v.attr("numerator"), q = v.attr("denominator");
+    if (!PyIndex_Check(p.ptr()) || !PyIndex_Check(q.ptr())) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
+    int op = 0, oq = 0;
+    const long long pv = PyLong_AsLongLongAndOverflow(py::int_(p).ptr(), &op);
+    const long long qv = PyLong_AsLongLongAndOverflow(py::int_(q).ptr(), &oq);
+    if (op != 0 || oq != 0) throw InvalidInput("n", repr_of(v), "numerator or denominator too large (max 1000000)", kRatioForms);
+    if (pv == 0) throw InvalidInput("n", repr_of(v), "the gear ratio must not be zero", kRatioForms);
+    return Ratio(pv, qv);  // range-checked (InvalidInput "n")
+  }
+  return parse_ratio(detail::to_text(real_arg(v, "n", kRatioForms)), "n");
+}
+
+/// A gear train and the text of its inputs (the CLI's TrainOptions: a2, a3, n, phase).
+struct Train {
+  GearTrain train;
+  cli::TrainOptions text;
+};
+
+Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
+  Train t;
+  const double a2v = angle_arg(a2, "a2", t.text.a2);
+  const A3Spec a3v = a3_arg(a3, t.text.a3);
+  const Ratio nv = ratio_arg(n);
+  t.text.n = nv.str();
+  const double phv = angle_arg(phase, "phase", t.text.phase);
+  t.train = make_gear_train(a2v, a3v, nv, phv);
+  return t;
+}
+
+/// The four texts re-parse to the same train (exact: shortest round-trip numbers, p/q).
+Train train_from_texts(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase) {
+  return make_train(py::str(a2), py::str(a3), py::str(n), py::str(phase));
+}
+
+/// A capsule owning `owner`: the base of arrays viewing its data, deleting it with the last of them.
+template <typename Owner>
+py::capsule capsule_of(std::unique_ptr<Owner> owner) {
+  return py::capsule(owner.release(), [](void* p) { delete static_cast<Owner*>(p); });
+}
+
+/// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
+py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::tuple trace(const Train& self, py::handle samples, py::handle turns, bool velocity) {
+  std::optional<double> k;
+  if (!turns.is_none()) {
+    k = real_arg(turns, "turns", "(0, 1e6] carrier turns");
+    if (!(*k > 0.0 && *k <= kMaxTurns))
+      throw InvalidInput("turns", detail::to_text(*k), "outside the valid range", "(0, 1e6] carrier turns");
+  }
+  const std::size_t n = samples.is_none() ? trace_sample_count(self.train, k)
+                                           : count_arg(samples, "samples", kMinSamples, kMaxSamples);
+  const TracerCurve<double> curve(self.train);
+  const UniformSampling<double> sampling = k ? turns_sampling(curve, *k, n) : period_sampling(curve, n);
+  auto tr = std::make_unique<Trajectory<double>>();
+  {
+    py::gil_scoped_release release;
+    *tr = sample(curve, sampling, velocity);
+  }
+  const Trajectory<double>& v = *tr;
+  const py::capsule owner = capsule_of(std::move(tr));
+  const auto rows = static_cast<py::ssize_t>(v.size());
+  py::array_t<double> t(std::vector<py::ssize_t>{rows}, v.t.data(), owner);
+  py::array_t<double> p(std::vector<py::ssize_t>{rows, 3}, v.points.front().data(), owner);
+  if (!velocity) return py::make_tuple(t, p);
+  py::array_t<double> vel(std::vector<py::ssize_t>{rows, 3}, v.velocities.front().data(), owner);
+  return py::make_tuple(t, p, vel);
+}
+
+std::size_t census_samples_arg(py::handle samples) {
+  return samples.is_none() ? 0 : count_arg(samples, "samples", kMinCensusSamples, kMaxSamples);
+}
+
+py::object classify(const Train& self, bool literal, py::handle samples) {
+  const std::size_t s = census_samples_arg(samples);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = classification_json_text(self.text, self.train, literal, s);
+  }
+  return from_json(text);
+}
+
+py::object nodes_and_cusps(const Train& self, bool literal, py::handle samples, const char* key) {
+  const std::size_t s = census_samples_arg(samples);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = nodes_and_cusps_json_text(self.text, self.train, literal, s);
+  }
+  return from_json(text)[key];
+}
+
+py::dict node_dict(const Node& n) {
+  py::dict d;
+  d["position"] = py::make_tuple(n.position.x(), n.position.y(), n.position.z());
+  d["params"] = n.params;
+  d["branches"] = n.branches;
+  d["kind"] = to_string(n.kind);
+  d["angle"] = n.angle;
+  d["crossing_pairs"] = n.crossing_pairs;
+  d["tangency_pairs"] = n.tangency_pairs;
+  return d;
+}
+
+py::dict classify_roots_dict(const Train& self, bool literal) {
+  RootClassification c;
+  {
+    py::gil_scoped_release release;
+    c = classify_roots(self.train, Reading{literal});
+  }
+  py::dict d;
+  d["a2"] = c.a2;
+  d["a3"] = c.a3;
+  d["boundaries"] = c.boundaries;
+  d["class"] = to_string(c.curve_class);
+  d["nodes"] = c.nodes;
+  d["crossings"] = c.crossings;
+  d["tangencies"] = c.tangencies;
+  d["cusps"] = c.cusps;
+  d["analytic_nodes"] = c.analytic_nodes ? py::object(py::int_(*c.analytic_nodes)) : py::object(py::none());
+  d["analytic_cusps"] = c.analytic_cusps;
+  d["agrees_with_report"] = c.agrees_with_report();
+  py::list points;
+  for (const Node& n : c.node_points) points.append(node_dict(n));
+  d["node_points"] = points;
+  return d;
+}
+
+/// (lo, hi) of angles (radians or the CLI's text), field `field`.
+std::pair<double, double> range_arg(py::handle v, const std::string& field) {
+  const std::string valid = "(lo, hi) with angles as numbers (radians) or text (\"pi/3\")";
+  if (py::isinstance<py::str>(v) || !py::isinstance<py::sequence>(v) || py::len(v) != 2)
+    throw InvalidInput(field, repr_of(v), "not a pair (lo, hi)", valid);
+  const py::sequence s = py::reinterpret_borrow<py::sequence>(v);
+  std::string ignored;
+  return {angle_arg(s[0], field, ignored), angle_arg(s[1], field, ignored)};
+}
+
+py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::handle count, bool literal) {
+  std::string ignored;
+  const double a2v = angle_arg(a2, "a2", ignored);
+  const Ratio nv = ratio_arg(n);
+  const auto [lo, hi] = range_arg(a3, "a3_range");
+  const std::size_t k = count_arg(count, "count", 2, 1000000);
+  std::vector<A3Interval> runs;
+  {
+    py::gil_scoped_release release;
+    runs = classify_a3_range(a2v, nv, lo, hi, k, Reading{literal});
+  }
+  py::list out;
+  for (const A3Interval& r : runs) {
+    py::dict d;
+    d["a3_first"] = r.a3_first;
+    d["a3_last"] = r.a3_last;
+    d["samples"] = r.samples;
+    d["class"] = to_string(r.curve_class);
+    d["nodes"] = r.nodes;
+    d["cusps"] = r.cusps;
+    out.append(d);
+  }
+  return out;
+}
+
+/// A std::vector<T> handed to NumPy as a (G, G) array (no copy).
+template <typename T>
+py::array square(std::vector<T> values, std::size_t g) {
+  auto owner = std::make_unique<std::vector<T>>(std::move(values));
+  const T* data = owner->data();
+  const auto side = static_cast<py::ssize_t>(g);
+  return py::array_t<T>(std::vector<py::ssize_t>{side, side}, data, capsule_of(std::move(owner)));
+}
+
+py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, bool literal) {
+  AtlasSpec spec;
+  spec.ratio = ratio_arg(n);
+  spec.grid = count_arg(grid, "grid", 1, kAtlasMaxGrid);
+  const auto r2 = range_arg(a2, "a2"), r3 = range_arg(a3, "a3");
+  spec.a2 = AngleRange{r2.first, r2.second};
+  spec.a3 = AngleRange{r3.first, r3.second};
+  spec.literal = literal;
+  const std::size_t workers =
+      threads.is_none() ? std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kAtlasMaxThreads)
+                        : count_arg(threads, "threads", 1, kAtlasMaxThreads);
+  std::vector<AtlasCell> cells;
+  {
+    py::gil_scoped_release release;
+    spec.validate();
+    cells = compute_atlas(spec, AtlasRows{0, spec.grid}, workers);
+  }
+  const std::size_t m = cells.size();
+  std::vector<double> a2s(m), a3s(m);
+  std::vector<std::int64_t> nodes(m), crossings(m), tangencies(m), cusps(m), analytic_nodes(m), analytic_cusps(m);
+  std::vector<std::int8_t> agree(m);
+  std::vector<std::uint8_t> cusps_agree(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const AtlasCell& c = cells[k];
+    a2s[k] = c.a2;
+    a3s[k] = c.a3;
+    nodes[k] = c.nodes;
+    crossings[k] = c.crossings;
+    tangencies[k] = c.tangencies;
+    cusps[k] = c.cusps;
+    analytic_nodes[k] = c.analytic_nodes ? static_cast<std::int64_t>(*c.analytic_nodes) : -1;
+    analytic_cusps[k] = c.analytic_cusps;
+    agree[k] = c.agree ? static_cast<std::int8_t>(*c.agree) : std::int8_t{-1};
+    cusps_agree[k] = c.cusps_agree ? 1 : 0;
+  }
+  py::dict d;
+  d["a2"] = square(std::move(a2s), spec.grid);
+  d["a3"] = square(std::move(a3s), spec.grid);
+  d["nodes"] = square(std::move(nodes), spec.grid);
+  d["crossings"] = square(std::move(crossings), spec.grid);
+  d["tangencies"] = square(std::move(tangencies), spec.grid);
+  d["cusps"] = square(std::move(cusps), spec.grid);
+  d["analytic_nodes"] = square(std::move(analytic_nodes), spec.grid);
+  d["analytic_cusps"] = square(std::move(analytic_cusps), spec.grid);
+  d["agree"] = square(std::move(agree), spec.grid);
+  d["cusps_agree"] = square(std::move(cusps_agree), spec.grid).attr("astype")("bool");
+  d["n"] = spec.ratio.str();
+  d["threads"] = workers;
+  return d;
+}
+
+std::string shape_text(const py::array& a) {
+  std::string s = "array of shape (";
+  for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+py::dict crossings(py::handle points, bool closed) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  Array a = Array::ensure(points);  // the same object when already C-contiguous float64
+  if (!a) throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))), "not convertible to a float64 array", kPointsValid);
+  if (a.ndim() != 2 || a.shape(1) != 3) throw InvalidInput("points", shape_text(a), "not an (N, 3) array", kPointsValid);
+  const bool converted = !a.is(points);
+  CrossingsResult r;
+  {
+    py::gil_scoped_release release;
+    r = self_crossings(a.data(), static_cast<std::size_t>(a.shape(0)), closed);
+  }
+  auto pairs = std::make_unique<std::vector<std::int64_t>>(std::move(r.pairs));
+  const std::int64_t* data = pairs->data();
+  const auto k = static_cast<py::ssize_t>(pairs->size() / 2);
+  py::dict d;
+  d["vertices"] = r.vertices;
+  d["closed"] = closed;
+  d["crossings"] = r.crossings;
+  d["touchings"] = r.touchings;
+  d["pairs"] = py::array_t<std::int64_t>(std::vector<py::ssize_t>{k, 2}, data, capsule_of(std::move(pairs)));
+  d["kinds"] = r.kinds;
+  d["candidate_pairs"] = r.candidate_pairs;
+  d["predicates"] = r.predicates;
+  d["input_converted"] = converted;
+  py::dict timings;
+  timings["seconds_search"] = r.seconds_search;
+  d["timings"] = timings;
+  return d;
+}
+
+void translate_invalid_input(std::exception_ptr p) {
+  try {
+    if (p) std::rethrow_exception(p);
+  } catch (const InvalidInput& e) {
+    py::object err = py::reinterpret_borrow<py::object>(g_invalid_input)(e.what());
+    err.attr("field") = e.field();
+    err.attr("value") = e.value();
+    err.attr("problem") = e.problem();
+    err.attr("valid") = e.valid_range();
+    PyErr_SetObject(g_invalid_input.ptr(), err.ptr());
+  }
+}
+
+std::string train_repr(const Train& t) {
+  return "GearTrain(a2=" + repr_of(py::str(t.text.a2)) + ", a3=" + repr_of(py::str(t.text.a3)) + ", n=" +
+         repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
+}
+
+}  // namespace
+}  // namespace sphtroch::python
+
+PYBIND11_MODULE(_sphtroch, m) {
+  using namespace sphtroch::python;
+  using sphtroch::python::Train;
+  m.doc() = "sphtroch: trajectories of spherical planetary gear trains (Lin & Tsai 1990); see __init__.pyi";
+  m.attr("__version__") = SPHTROCH_VERSION_STRING;
+
+  static py::exception<sphtroch::InvalidInput> invalid_input(m, "InvalidInput", PyExc_ValueError);
+  g_invalid_input = invalid_input;
+  invalid_input.attr("__doc__") = "Bad input: .field (the argument), .value (as given), .valid (the valid range), .problem.";
+  invalid_input.attr("__module__") = "sphtroch";
+  for (const char* a : {"field", "value", "problem", "valid"}) invalid_input.attr(a) = py::none();
+  py::register_exception_translator(&translate_invalid_input);
+
+  py::class_<Train>(m, "GearTrain")
+      .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),
+           py::arg("a2"), py::arg("a3"), py::arg("n"), py::arg("phase") = 0.0)
+      .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); })
+      .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); })
+      .def_property_readonly("n", [](const Train& t) { return t.train.n(); })
+      .def_property_readonly("ratio", [](const Train& t) { return t.train.ratio().str(); })
+      .def_property_readonly("p", [](const Train& t) { return t.train.ratio().p(); })
+      .def_property_readonly("q", [](const Train& t) { return t.train.ratio().q(); })
+      .def_property_readonly("phase", [](const Train& t) { return t.train.phase(); })
+      .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); })
+      .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); })
+      .def_property_readonly("period", [](const Train& t) { return t.train.period(); })
+      .def_property_readonly("texts", [](const Train& t) {
+        return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase);
+      })
+      .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
+           py::arg("velocity") = false)
+      .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("nodes", [](const Train& t, bool literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("cusps", [](const Train& t, bool literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("classify_roots", &classify_roots_dict, py::kw_only(), py::arg("literal") = false)
+      .def("__repr__", &train_repr)
+      .def("__eq__", [](const Train& a, const Train& b) {
+        return a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n && a.text.phase == b.text.phase;
+      })
+      .def(py::pickle([](const Train& t) { return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase); },
+                      [](const py::tuple& s) {
+                        if (py::len(s) != 4) throw std::runtime_error("GearTrain pickle: expected 4 texts");
+                        return train_from_texts(s[0].cast<std::string>(), s[1].cast<std::string>(),
+                                                s[2].cast<std::string>(), s[3].cast<std::string>());
+                      }));
+
+  m.def("crossings", &crossings, py::arg("points"), py::arg("closed") = true);
+  m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
+        py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
+        py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),
+        py::arg("literal") = false);
+  m.def("classify_a3_range", &classify_a3_range_list, py::arg("a2"), py::arg("n"), py::arg("a3"),
+        py::arg("count") = 721, py::arg("literal") = false);
+}

@@ -1,0 +1,52 @@
+"""atlas(): (G, G) arrays; the census against the report's criteria for n = 2 (Eqs. 43, 46) and
+n = 1 (Eq. 24) evaluated here; the same cells as `sphtroch atlas --csv`."""
+import csv
+import io
+import math
+
+import numpy as np
+import sphtroch
+from conftest import run_cli
+
+
+def test_shapes_dtypes_and_cell_centres():
+    g = 16
+    a = sphtroch.atlas(2, grid=g, a2=(0.2, 3.0), a3=("0", "pi"), threads=2)
+    for k in ("a2", "a3", "nodes", "crossings", "tangencies", "cusps", "analytic_nodes", "analytic_cusps", "agree",
+              "cusps_agree"):
+        assert a[k].shape == (g, g), k
+        assert not a[k].flags.owndata or k == "cusps_agree"
+    centres2 = 0.2 + (np.arange(g) + 0.5) * (3.0 - 0.2) / g
+    centres3 = (np.arange(g) + 0.5) * math.pi / g
+    np.testing.assert_allclose(a["a2"], np.repeat(centres2[:, None], g, axis=1), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(a["a3"], np.repeat(centres3[None, :], g, axis=0), rtol=0, atol=1e-15)
+    assert np.array_equal(a["nodes"], a["crossings"] + a["tangencies"])
+    assert a["cusps_agree"].dtype == np.bool_ and a["cusps_agree"].all()
+
+
+def test_n1_node_counts_follow_eq24():
+    g = 20
+    a = sphtroch.atlas(1, grid=g)
+    a2, a3 = a["a2"], a["a3"]
+    inside = (a2 / 2 < a3) & (a3 < math.pi - a2 / 2)  # Eq. 24: one node inside, none outside
+    far = np.abs(a3 - a2 / 2) > 1e-6
+    far &= np.abs(a3 - (math.pi - a2 / 2)) > 1e-6
+    assert np.array_equal(a["nodes"][far], inside[far].astype(np.int64))
+    assert (a["agree"] == 1).all()
+
+
+def test_other_n_has_no_prediction():
+    a = sphtroch.atlas("5/2", grid=6)
+    assert (a["analytic_nodes"] == -1).all() and (a["agree"] == -1).all()
+
+
+def test_same_cells_as_the_tool(tmp_path):
+    out = tmp_path / "atlas.csv"
+    run_cli("atlas", "--n", "2", "--grid", "12", "--threads", "1", "-o", str(out))
+    text = "".join(line for line in out.read_text().splitlines(True) if not line.startswith("#"))
+    rows = list(csv.DictReader(io.StringIO(text)))
+    a = sphtroch.atlas(2, grid=12, threads=1)
+    assert len(rows) == 144
+    for row in rows:
+        i, j = int(row["i"]), int(row["j"])
+        assert int(row["nodes"]) == a["nodes"][i, j] and int(row["cusps"]) == a["cusps"][i, j]

@@ -1,0 +1,78 @@
+"""classify(), nodes(), cusps(), classify_roots(), classify_a3_range(): the report's cases of
+data/reference/paper_cases.csv (expected counts from the report), and the same dict as
+`sphtroch classify --json` (the tool's output, not the module's, is the reference)."""
+import math
+
+import pytest
+import sphtroch
+from conftest import cli_angle, cli_json, paper_cases
+
+CASES = paper_cases()
+
+
+def without_timing(report):
+    report = dict(report)
+    report["work"] = {k: v for k, v in report["work"].items() if k != "seconds"}
+    return report
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
+def test_paper_case_counts(case):
+    n = f'{case["n_num"]}/{case["n_den"]}'
+    tr = sphtroch.GearTrain(case["a2_symbolic"], cli_angle(case["a3_symbolic"]), n)
+    rep = tr.classify()
+    assert rep["counts"]["nodes"] == int(case["nodes"])
+    assert rep["counts"]["cusps"] == int(case["cusps"])
+    assert len(tr.nodes()) == int(case["nodes"])
+    assert len(tr.cusps()) == int(case["cusps"])
+    roots = tr.classify_roots()
+    assert (roots["nodes"], roots["cusps"]) == (int(case["nodes"]), int(case["cusps"]))
+    # The CSV's radians (rounded decimals) read onto the same boundaries by default.
+    by_value = sphtroch.GearTrain(float(case["a2_rad"]), float(case["a3_rad"]), int(case["n_num"]) / int(case["n_den"]))
+    assert by_value.classify_roots()["nodes"] == int(case["nodes"])
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
+def test_classify_equals_the_tools_json(case):
+    a2, a3, n = case["a2_symbolic"], cli_angle(case["a3_symbolic"]), f'{case["n_num"]}/{case["n_den"]}'
+    cli = cli_json("classify", "--a2", a2, "--a3", a3, "--n", n, "--json")
+    mine = sphtroch.GearTrain(a2, a3, n).classify()
+    assert without_timing(mine) == without_timing(cli)
+
+
+def test_literal_and_samples_reach_the_census():
+    args = ("--a2", "pi/2", "--a3", "pi/4", "--n", "1")
+    cli = cli_json("classify", *args, "--literal", "--samples", "4096", "--json")
+    mine = sphtroch.GearTrain("pi/2", "pi/4", 1).classify(literal=True, samples=4096)
+    assert without_timing(mine) == without_timing(cli)
+    assert mine["inputs"]["literal"] is True
+
+
+def test_nodes_and_cusps_are_the_reports_lists():
+    tr = sphtroch.GearTrain("pi/3", "pi/2", 2)  # Fig. 5(f): four crossing nodes (Eqs. 43, 46)
+    rep = tr.classify()
+    assert tr.nodes() == rep["nodes"] and len(rep["nodes"]) == 4
+    for node in tr.nodes():
+        x, y, z = node["position"]
+        assert math.isclose(x * x + y * y + z * z, 1.0, abs_tol=1e-12)
+        assert node["kind"] == "crossing" and node["branches"] == 2
+    cusp_train = sphtroch.GearTrain("2pi/3", "pi-ap", 2)  # Fig. 5(e): spherical nephroid, 2 cusps
+    assert cusp_train.cusps() == cusp_train.classify()["cusps"] and len(cusp_train.cusps()) == 2
+
+
+def test_classify_roots_against_the_report_n1():
+    # Eq. 24 (n = 1): a node iff a2/2 < a3 < pi - a2/2.
+    a2 = math.pi / 2
+    for a3, nodes in [(0.6, 0), (0.9, 1), (2.0, 1), (2.5, 0)]:
+        r = sphtroch.GearTrain(a2, a3, 1).classify_roots()
+        assert r["nodes"] == nodes and r["analytic_nodes"] == nodes and r["agrees_with_report"]
+
+
+def test_classify_a3_range_intervals_follow_eq24():
+    runs = sphtroch.classify_a3_range("pi/2", 1, (0.1, math.pi - 0.1), count=281)
+    assert [r["class"] for r in runs] == ["simple curve", "nodes", "simple curve"]
+    assert sum(r["samples"] for r in runs) == 281
+    # The class changes between neighbouring samples around a3 = a2/2 and pi - a2/2 (Eq. 24).
+    step = (math.pi - 0.2) / 280
+    assert runs[0]["a3_last"] < math.pi / 4 < runs[1]["a3_first"] <= runs[0]["a3_last"] + step + 1e-12
+    assert runs[1]["a3_last"] < 3 * math.pi / 4 < runs[2]["a3_first"]

@@ -1,0 +1,101 @@
+"""Every bad argument raises sphtroch.InvalidInput (a ValueError) naming it: .field, .value, .valid."""
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+import sphtroch
+
+GOOD = dict(a2="pi/3", a3="pi/2", n="2")
+
+
+def check(call, field, *in_value):
+    with pytest.raises(sphtroch.InvalidInput) as info:
+        call()
+    e = info.value
+    assert isinstance(e, ValueError)
+    assert e.field == field, str(e)
+    assert e.valid, str(e)
+    for part in in_value:
+        assert part in e.value, str(e)
+    assert str(e).startswith(field + " = ")
+    return e
+
+
+@pytest.mark.parametrize("field,value", [
+    ("a2", 0.0), ("a2", math.pi), ("a2", -1.0), ("a2", float("nan")), ("a2", "abc"), ("a2", "4"), ("a2", None),
+    ("a2", True), ("a2", [1.0]),
+    ("a3", 0.0), ("a3", "pi"), ("a3", "ap+4"), ("a3", float("inf")), ("a3", "nonsense"), ("a3", {}),
+    ("n", 0), ("n", "0"), ("n", "1/0"), ("n", "x"), ("n", 1 / 3), ("n", 10**7), ("n", 10**30), ("n", Fraction(1, 10**7)),
+    ("n", float("nan")), ("n", None), ("n", False), ("n", "2.5.1"),
+    ("phase", float("inf")), ("phase", "pi/"), ("phase", None),
+])
+def test_gear_train_arguments(field, value):
+    args = dict(GOOD, phase=0.0)
+    args[field] = value
+    check(lambda: sphtroch.GearTrain(**args), field)
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(samples=2), "samples"), (dict(samples=10**7 + 1), "samples"), (dict(samples=-5), "samples"),
+    (dict(samples=2.5), "samples"), (dict(samples="720"), "samples"), (dict(samples=True), "samples"),
+    (dict(turns=0), "turns"), (dict(turns=-1), "turns"), (dict(turns=float("nan")), "turns"),
+    (dict(turns=2e6), "turns"), (dict(turns="2"), "turns"),
+])
+def test_trace_arguments(kwargs, field):
+    tr = sphtroch.GearTrain(**GOOD)
+    check(lambda: tr.trace(**kwargs), field)
+
+
+def test_default_sample_count_too_large():
+    check(lambda: sphtroch.GearTrain(1, 1, "999999/1000000").trace(), "samples")
+
+
+def test_classify_arguments():
+    tr = sphtroch.GearTrain(**GOOD)
+    check(lambda: tr.classify(samples=10), "samples", "10")
+    check(lambda: tr.nodes(samples=10**8), "samples")
+    check(lambda: tr.cusps(samples=1.5), "samples")
+
+
+@pytest.mark.parametrize("points,what", [
+    (np.zeros((10, 2)), "(10, 2)"), (np.zeros((10,)), "(10,)"), (np.zeros((4, 3, 1)), "(4, 3, 1)"),
+    (np.zeros((0, 3)), ""), ([[1, 0, 0], [0, 1, 0]], ""), ("abc", ""), (None, ""), ([[1, 0, 0], [1, 0, 0], [0, 1, 0]], "index 0"),
+    ([[1, 0, 0], [0, 1, 0], [0, 0, 0]], "index 2"), ([[1, 0, 0], [0, 1, 0], [0, 0, float("nan")]], "index 2"),
+    ([[1, 0, 0], [-1, 0, 0], [0, 0, 1]], "index 0"), ([["a", "b", "c"]] * 3, ""),
+])
+def test_crossings_points_refused(points, what):
+    e = check(lambda: sphtroch.crossings(points), "points", what)
+    if isinstance(points, np.ndarray) and points.ndim != 2:
+        assert "shape" in e.value
+
+
+def test_crossings_open_needs_two_points():
+    check(lambda: sphtroch.crossings(np.array([[1.0, 0, 0]]), closed=False), "points")
+    assert sphtroch.crossings(np.array([[1.0, 0, 0], [0, 1.0, 0]]), closed=False)["crossings"] == 0
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(n=0), "n"), (dict(n="2", grid=0), "grid"), (dict(n="2", grid=5000), "grid"), (dict(n=2, grid=8.5), "grid"),
+    (dict(n=2, grid=8, a2=(1.0, 0.5)), "a2"), (dict(n=2, grid=8, a2=(0, 4)), "a2"), (dict(n=2, grid=8, a2="0:pi"), "a2"),
+    (dict(n=2, grid=8, a3=(0, "x")), "a3"), (dict(n=2, grid=8, a3=(0, 1, 2)), "a3"),
+    (dict(n=2, grid=8, threads=0), "threads"), (dict(n=2, grid=8, threads=5000), "threads"),
+])
+def test_atlas_arguments(kwargs, field):
+    check(lambda: sphtroch.atlas(**kwargs), field)
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(a2=0, n=2, a3=(0.1, 1)), "a2"), (dict(a2=1, n="q", a3=(0.1, 1)), "n"),
+    (dict(a2=1, n=2, a3=(1, 0.1)), "a3_range"), (dict(a2=1, n=2, a3=(0, 1)), "a3_range"),
+    (dict(a2=1, n=2, a3=(0.1, 1), count=1), "count"), (dict(a2=1, n=2, a3=5), "a3_range"),
+])
+def test_classify_a3_range_arguments(kwargs, field):
+    check(lambda: sphtroch.classify_a3_range(**kwargs), field)
+
+
+def test_invalid_input_is_catchable_as_value_error_and_reports_the_tools_range():
+    with pytest.raises(ValueError):
+        sphtroch.GearTrain(4.0, 1.0, 2)
+    e = check(lambda: sphtroch.GearTrain(4.0, 1.0, 2), "a2", "4")
+    assert e.valid == "(0, pi) radians"

@@ -1,0 +1,37 @@
+"""The typing stub (__init__.pyi, next to the module) names exactly what the module defines, and
+py.typed marks the package as typed."""
+import ast
+import os
+
+import sphtroch
+
+
+def stub_tree():
+    path = os.path.join(os.path.dirname(sphtroch.__file__), "__init__.pyi")
+    with open(path) as f:
+        return ast.parse(f.read())
+
+
+def test_py_typed_marker_is_installed_with_the_package():
+    assert os.path.exists(os.path.join(os.path.dirname(sphtroch.__file__), "py.typed"))
+
+
+def test_every_stub_name_exists_and_every_public_name_is_in_the_stub():
+    tree = stub_tree()
+    top = {n.name for n in tree.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    assert top <= set(dir(sphtroch)), top - set(dir(sphtroch))
+    assert set(sphtroch.__all__) - {"__version__"} == top
+    train = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "GearTrain")
+    members = {n.name for n in train.body if isinstance(n, ast.FunctionDef)} - {"__init__", "__reduce__"}
+    public = {m for m in dir(sphtroch.GearTrain) if not m.startswith("_")}
+    assert members == public, members ^ public
+
+
+def test_stub_documents_every_function():
+    documented, seen = set(), set()
+    for node in ast.walk(stub_tree()):
+        if isinstance(node, ast.FunctionDef) and not node.name.startswith("_") and node.name not in ("p", "q"):
+            seen.add(node.name)
+            if ast.get_docstring(node):
+                documented.add(node.name)  # an overloaded function: on one of its overloads
+    assert seen == documented, seen - documented
