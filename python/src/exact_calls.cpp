@@ -2,7 +2,7 @@
 // own (the other is the CLI's analysis_commands.cpp, compiled in for its printers).
 #include "exact_calls.hpp"
 
-#include "reports.hpp"
+#include "sphtroch/report.hpp"
 
 #include "sphtroch/analysis.hpp"
 #include "sphtroch/polyline_crossings.hpp"
@@ -23,13 +23,13 @@ AnalysisSettings settings_of(bool literal, std::size_t census_samples) {
 
 }  // namespace
 
-std::string classification_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+std::string classification_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
-  return cli::classification_json(text, a.classification()).dump();
+  return classification_json(text, a.classification()).dump();
 }
 
-std::string nodes_and_cusps_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch nodes` runs it
   // The printer of `classify --json` on a classification holding only these two stages: the
@@ -38,7 +38,7 @@ std::string nodes_and_cusps_json_text(const cli::TrainOptions& text, const GearT
   c.literal = literal;
   c.nodes = a.nodes();
   c.cusps = a.cusps();
-  const nlohmann::json j = cli::classification_json(text, c);
+  const nlohmann::json j = classification_json(text, c);
   return nlohmann::json{{"nodes", j["nodes"]}, {"cusps", j["cusps"]}}.dump();
 }
 

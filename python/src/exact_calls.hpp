@@ -3,7 +3,7 @@
 // Python objects here, so every call may run with the GIL released. Errors: InvalidInput.
 #pragma once
 
-#include "cli_common.hpp"  // cli::TrainOptions: the angles as text, as `classify --json` reports them
+#include "sphtroch/input_text.hpp"  // InputText: the angles as text, as `classify --json` reports them
 
 #include "sphtroch/gear_train.hpp"
 
@@ -14,14 +14,14 @@
 
 namespace sphtroch::python {
 
-/// `sphtroch classify --json` of `train` (the CLI's printer, cli::classification_json), as JSON
+/// `sphtroch classify --json` of `train` (report.hpp, the printer the CLI uses), as JSON
 /// text. literal: analyse the doubles as given; census_samples: 0 = the default count.
-std::string classification_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+std::string classification_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
 /// {"nodes": [...], "cusps": [...]} as in that JSON, from the node and cusp stages only (what
 /// `sphtroch nodes` computes; no root-count census).
-std::string nodes_and_cusps_json_text(const cli::TrainOptions& text, const GearTrain& train, bool literal,
+std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
 /// The exact self-crossings of a polyline (find_self_crossings), as `sphtroch crossings` reports them.

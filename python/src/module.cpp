@@ -119,10 +119,10 @@ Ratio ratio_arg(py::handle v) {
   return parse_ratio(detail::to_text(real_arg(v, "n", kRatioForms)), "n");
 }
 
-/// A gear train and the text of its inputs (the CLI's TrainOptions: a2, a3, n, phase).
+/// A gear train and the text of its inputs (InputText: a2, a3, n, phase, as classify --json reports them).
 struct Train {
   GearTrain train;
-  cli::TrainOptions text;
+  InputText text;
 };
 
 Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
