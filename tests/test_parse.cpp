@@ -143,3 +143,11 @@ TEST_CASE("parse_angle accepts a pi term plus or minus radians (pi-1e-6, pi/2+0.
     CHECK_THROWS_AS(parse_angle(bad, "a2"), InvalidInput);
   }
 }
+
+TEST_CASE("an angle below the smallest subnormal reads as zero, like every number (fuzz finding)", "[parse]") {
+  // fuzz_parse: "+1e-906" was a number (parse_number: 0) but not an angle; both read it as 0 now.
+  CHECK(sphtroch::parse_angle("+1e-906", "phase") == 0.0);
+  CHECK(std::signbit(sphtroch::parse_angle("-1e-906", "phase")));
+  CHECK(sphtroch::parse_angle("1e-906deg", "phase") == 0.0);
+  sphtroch::test::expect_invalid([] { sphtroch::parse_angle("1e906", "phase"); });
+}

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "sphtroch/errors.hpp"
+#include "sphtroch/number_text.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/ratio.hpp"
 #include "sphtroch/types.hpp"
@@ -47,7 +48,7 @@ inline std::string_view trim(std::string_view s) {
   return s;
 }
 
-/// A whole string as a finite double, or nothing (no sign handling beyond a leading '-').
+/// A whole string as a finite double, or nothing (one leading sign; the number as parse_number reads it).
 inline std::optional<double> strict_double(std::string_view s) {
   if (s.empty()) return std::nullopt;
   bool negative = false;
@@ -56,10 +57,9 @@ inline std::optional<double> strict_double(std::string_view s) {
     s.remove_prefix(1);
   }
   if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s.front())) || s.front() == '.')) return std::nullopt;
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return negative ? -v : v;
+  const std::optional<double> v = parse_number(s);  // number_text.hpp: 1e999 refused, 1e-400 is 0
+  if (!v) return std::nullopt;
+  return negative ? -*v : *v;
 }
 
 /// A whole string as an integer of at most 18 digits ("+-3", "--3" and overflow refused), so
