@@ -58,6 +58,8 @@ long double extreme_value(long double b0, long double a2, long double a3, long d
   return g_direct((lo + hi) / 2, a2, a3, p, q);
 }
 
+double l_first_a2(const std::vector<Locus>& loci) { return loci.front().points.front().a2; }
+
 }  // namespace
 
 TEST_CASE("boundary set: n = 3, a2 = pi/2 has tangencies at atan(3 sqrt 3) and its mirror, 3 <-> 9 nodes",
@@ -171,12 +173,12 @@ TEST_CASE("boundary set: classify just below and above every event gives nodes_b
 
 TEST_CASE("boundary set: loci over a2 are continuous runs of the events at each a2", "[boundary_set]") {
   const Ratio n(5, 2);
-  const std::vector<Locus> loci = boundary_loci(n, 0.3, 2.8, 50);
+  const std::vector<Locus> loci = boundary_loci(n, 0.3, 2.8, 50, 2);
   std::size_t tangency_loci = 0;
   for (const Locus& l : loci) {
     REQUIRE(!l.points.empty());
     if (l.kind != BoundaryEventKind::tangency) {
-      CHECK(l.points.size() == 51);
+      CHECK(l.points.size() == 50);
       continue;
     }
     ++tangency_loci;
@@ -191,7 +193,9 @@ TEST_CASE("boundary set: loci over a2 are continuous runs of the events at each 
     }
   }
   CHECK(tangency_loci >= 4);  // at a2 = pi/2 alone there are four tangencies
+  CHECK(l_first_a2(loci) == Approx(0.3 + 0.025).epsilon(1e-14));
   CHECK(test::expect_invalid([&] { boundary_loci(n, 2.0, 1.0, 10); }).field() == "a2");
+  CHECK(test::expect_invalid([&] { boundary_loci(n, 0.0, 3.5, 10); }).field() == "a2");
   CHECK(test::expect_invalid([&] { boundary_loci(n, 0.1, 1.0, 0); }).field() == "steps");
 }
 

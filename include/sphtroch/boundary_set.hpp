@@ -49,6 +49,7 @@
 #pragma once
 
 #include "sphtroch/boundaries.hpp"
+#include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/errors.hpp"
 #include "sphtroch/half_turn.hpp"
 #include "sphtroch/ratio.hpp"
@@ -59,6 +60,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace sphtroch {
@@ -67,6 +69,11 @@ namespace sphtroch {
 constexpr double kEventAccuracy = 1e-12;
 /// Events closer than this in a3 are one group: they share the counts on either side.
 constexpr double kEventCoincidence = 1e-12;
+/// The most a2 samples boundary_loci takes.
+constexpr std::size_t kMaxLocusSteps = 100000;
+/// Two events of one (label, m) at consecutive a2 samples belong to one locus when closer than
+/// this in a3 (radians).
+constexpr double kLocusJump = 0.25;
 
 enum class BoundaryEventKind { pitch_cone, pole, tangency };
 inline const char* to_string(BoundaryEventKind k) {
@@ -98,7 +105,7 @@ struct BoundarySet {
 };
 
 /// Every event in a3 in (0, pi) at this a2 (see header). Throws InvalidInput("a2") unless
-/// a2 is finite in (0, pi).
+/// a2 is finite in (0, pi), InvalidInput("n") beyond the census cost bound (cost_bounds.hpp).
 inline BoundarySet boundary_set(double a2, const Ratio& n);
 
 /// A tangency locus (or a closed-form boundary) as a polyline over a2.
@@ -113,13 +120,17 @@ struct Locus {
   std::vector<LocusPoint> points;  // ascending a2, consecutive samples of the a2 grid
 };
 
-/// Every boundary curve over a2 in [a2_lo, a2_hi] (subset of (0, pi)), sampled at `steps` + 1
-/// evenly spaced a2 (each point refined as boundary_set does): pitch cones, poles (|p| >= 2) and
-/// tangency loci, a locus being the run of events of one (label, m) continued from one a2 sample
-/// to the next (a locus ends where its stationary point leaves (0, pi) — on a pitch cone — or
-/// merges with the other one — a triple root — or at the range's edge). Throws
-/// InvalidInput("a2") for a bad range and InvalidInput("steps") unless 1 <= steps <= 100000.
-inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps = 720);
+/// Every boundary curve over a2 in [a2_lo, a2_hi] (0 <= lo < hi <= pi), sampled at the centres
+/// a2_k = lo + (hi - lo)(k + 1/2)/steps, k = 0 .. steps - 1, each point refined as boundary_set
+/// does: pitch cones, poles (|p| >= 2) and tangency loci, a tangency locus being the run of
+/// events of one (label, m) continued from one sample to the next, the nearest in a3 within
+/// kLocusJump. A locus ends where its stationary point leaves (0, pi) (on a pitch cone), merges
+/// with the other one (a triple root) or at the range's edge; it is then resolved to the a2 step.
+/// The samples are computed on `threads` threads. Throws InvalidInput("a2") for a bad range,
+/// InvalidInput("steps") unless 1 <= steps <= kMaxLocusSteps, InvalidInput("n") beyond the
+/// census cost bound (cost_bounds.hpp).
+inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps = 720,
+                                        std::size_t threads = 1);
 
 /// A tangency locus within `tolerance` (radians, in a3) of (a2, a3), the nearest, or nothing.
 struct TangencyHit {
@@ -277,6 +288,7 @@ inline void check_a2(double a2) {
 inline BoundarySet boundary_set(double a2, const Ratio& n) {
   using namespace boundary_set_detail;
   check_a2(a2);
+  check_census_cost(n);
   const Real A2 = a2;
   const Real sa2 = std::sin(A2), ca2 = std::cos(A2);
   const Real pi = HalfTurn<Real>::pi();
@@ -331,40 +343,56 @@ inline BoundarySet boundary_set(double a2, const Ratio& n) {
   return s;
 }
 
-inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps) {
+inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps,
+                                        std::size_t threads) {
   using namespace boundary_set_detail;
-  check_a2(a2_lo);
-  check_a2(a2_hi);
-  if (!(a2_lo < a2_hi))
-    throw InvalidInput("a2", detail::to_text(a2_lo) + ":" + detail::to_text(a2_hi), "empty range", "LO:HI with 0 < LO < HI < pi");
-  if (steps < 1 || steps > 100000)
-    throw InvalidInput("steps", std::to_string(steps), "outside the valid range", "1 .. 100000");
   const double pi = Constants<double>::pi();
+  const std::string range = detail::to_text(a2_lo) + ":" + detail::to_text(a2_hi);
+  if (!(a2_lo >= 0 && a2_lo < a2_hi && a2_hi <= pi))
+    throw InvalidInput("a2", range, "not a valid range", "LO:HI with 0 <= LO < HI <= pi");
+  if (steps < 1 || steps > kMaxLocusSteps)
+    throw InvalidInput("steps", std::to_string(steps), "outside the valid range", "integer 1 .. 100000");
+  check_census_cost(n);
+  std::vector<double> a2s(steps);
+  for (std::size_t k = 0; k < steps; ++k)
+    a2s[k] = a2_lo + (a2_hi - a2_lo) * (static_cast<double>(k) + 0.5) / static_cast<double>(steps);
+  for (std::size_t k = 0; k < steps; ++k)
+    if (!(a2s[k] > 0 && a2s[k] < pi && (k == 0 || a2s[k] > a2s[k - 1])))
+      throw InvalidInput("a2", range, "too narrow for the steps: the sample a2 are not distinct angles in (0, pi)",
+                         "a wider range or fewer steps");
   std::vector<Locus> out;
   auto closed = [&](BoundaryKind which) {
     Locus l;
     l.kind = which == BoundaryKind::pitch_cone || which == BoundaryKind::mirror_pitch_cone ? BoundaryEventKind::pitch_cone
                                                                                           : BoundaryEventKind::pole;
     l.name = boundary_name(which);
-    for (std::size_t k = 0; k <= steps; ++k) {
-      const double a2 = a2_lo + (a2_hi - a2_lo) * static_cast<double>(k) / static_cast<double>(steps);
-      const double b = which == BoundaryKind::pitch_cone || which == BoundaryKind::a2 ? pi : 0.0;
-      l.points.push_back({a2, atlas_boundary_a3(which, a2, n), b});
-    }
+    const double b = which == BoundaryKind::pitch_cone || which == BoundaryKind::a2 ? pi : 0.0;
+    for (double a2 : a2s) l.points.push_back({a2, atlas_boundary_a3(which, a2, n), b});
     return l;
   };
   for (BoundaryKind k : atlas_boundary_kinds(n)) out.push_back(closed(k));
+  // The tangencies of every sample (independent: spread over the threads), then linked.
+  std::vector<std::vector<BoundaryEvent>> events(steps);
+  const std::size_t workers = std::max<std::size_t>(1, std::min(threads, steps));
+  auto work = [&](std::size_t w) {
+    for (std::size_t k = w; k < steps; k += workers) {
+      events[k] = tangencies(a2s[k], n);
+      std::sort(events[k].begin(), events[k].end(),
+                [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
+  work(0);
+  for (auto& t : pool) t.join();
   // Tangency loci: events of one (label, m) continued from sample to sample (nearest in a3).
   std::vector<std::size_t> open;  // indices into out of loci that reached the previous sample
-  for (std::size_t k = 0; k <= steps; ++k) {
-    const double a2 = a2_lo + (a2_hi - a2_lo) * static_cast<double>(k) / static_cast<double>(steps);
-    std::vector<BoundaryEvent> ev = tangencies(a2, n);
-    std::sort(ev.begin(), ev.end(), [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
+  for (std::size_t k = 0; k < steps; ++k) {
     std::vector<std::size_t> next_open;
     std::vector<bool> taken(out.size(), false);
-    for (const BoundaryEvent& e : ev) {
+    for (const BoundaryEvent& e : events[k]) {
       std::size_t best = out.size();
-      double best_d = 0.25;  // a locus does not jump further than this between samples
+      double best_d = kLocusJump;
       for (std::size_t idx : open) {
         const Locus& l = out[idx];
         if (taken[idx] || l.m != e.m || l.label != e.label) continue;
@@ -382,10 +410,9 @@ inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_
         l.label = e.label;
         out.push_back(l);
         taken.push_back(false);
-        best = out.size() - 1;
       }
       taken[best] = true;
-      out[best].points.push_back({a2, e.a3, e.b});
+      out[best].points.push_back({a2s[k], e.a3, e.b});
       next_open.push_back(best);
     }
     open = std::move(next_open);
