@@ -217,3 +217,47 @@ TEST_CASE("boundary set: nearest_tangency finds the locus within the tolerance o
   const double a_p = GearTrain::planet_cone_of(1.0, Ratio(3));
   CHECK(!nearest_tangency(1.0, a_p + 1e-12, Ratio(3), 1e-10).has_value());
 }
+
+TEST_CASE("classify reads a self-tangency like the other boundaries: both censuses agree on it",
+          "[boundary_set][classify]") {
+  // The issue's case, typed as a double.
+  {
+    const Classification c = classify(GearTrain(kPi / 2, 1.0938177365904715, Ratio(5, 2)));
+    CHECK(c.agreement.ok());
+    CHECK(c.crossings == 10);
+    CHECK(c.tangencies == 5);
+    REQUIRE(c.snapped.hits.size() == 1);
+    CHECK(c.snapped.hits[0].kind == BoundaryKind::tangency);
+    CHECK(std::abs(c.snapped.hits[0].margin) <= 1e-15);
+  }
+  // Tangency values of other ratios, at several a2 and phases: the tangency count is |p| per
+  // event (a double root of g stands for |p| node points), the node count lies halfway between
+  // the two sides (two crossings merge into one touching point), and the censuses agree.
+  std::size_t checked = 0;
+  for (const Ratio n : {Ratio(5), Ratio(3, 2), Ratio(3), Ratio(-5, 2), Ratio(7, 3), Ratio(-4, 3)}) {
+    for (double a2 : {0.7, kPi / 2, 2.2}) {
+      for (const auto& e : of_kind(boundary_set(a2, n), BoundaryEventKind::tangency)) {
+        const double phase = 0.3 * static_cast<double>(checked % 3);
+        INFO("n = " << n.p() << "/" << n.q() << " a2 = " << a2 << " a3 = " << e.a3 << " phase " << phase);
+        const Classification c = classify(GearTrain(a2, e.a3, n, phase));
+        CHECK(c.agreement.ok());
+        for (const auto& note : c.agreement.notes) INFO(note);
+        CHECK(c.tangencies == static_cast<std::size_t>(n.abs_p()));
+        CHECK(2 * c.nodes.size() == static_cast<std::size_t>(e.nodes_below + e.nodes_above));
+        // Within the boundary tolerance the input is read on the locus, and the report says so.
+        const Classification off = classify(GearTrain(a2, e.a3 + 5e-11, n, phase));
+        REQUIRE(off.snapped.hits.size() == 1);
+        CHECK(off.snapped.hits[0].kind == BoundaryKind::tangency);
+        CHECK(off.snapped.train.a3() == e.a3);
+        CHECK(off.tangencies == c.tangencies);
+        CHECK(off.agreement.ok());
+        // --literal reads the doubles as given: no snapping.
+        ClassifySettings literal;
+        literal.literal = true;
+        CHECK(classify(GearTrain(a2, e.a3 + 5e-11, n, phase), literal).snapped.hits.empty());
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked >= 15);
+}

@@ -140,6 +140,7 @@ inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio) {
       return n2 ? "α3 = α2: Eq. 46, lower end (north pole)" : "α3 = α2: north pole on the curve";
     case BoundaryKind::pi_minus_a2:
       return n2 ? "α3 = π − α2: Eq. 43, upper end (south pole)" : "α3 = π − α2: south pole on the curve";
+    case BoundaryKind::tangency: return "self-tangency (two branches touch)";
   }
   return "?";
 }
@@ -154,6 +155,7 @@ inline const char* boundary_style(BoundaryKind kind) {
     case BoundaryKind::pi_minus_half_a2: return "fill:none;stroke:#e6550d;stroke-width:2;stroke-dasharray:7 4";
     case BoundaryKind::a2: return "fill:none;stroke:#238b45;stroke-width:2";
     case BoundaryKind::pi_minus_a2: return "fill:none;stroke:#238b45;stroke-width:2;stroke-dasharray:7 4";
+    case BoundaryKind::tangency: return "fill:none;stroke:#d62728;stroke-width:1.5;stroke-dasharray:2 2";
   }
   return "fill:none;stroke:#000";
 }

@@ -39,6 +39,7 @@
 #include "sphtroch/polyline_crossings.hpp"
 #include "sphtroch/refinement.hpp"
 #include "sphtroch/sampling.hpp"
+#include "sphtroch/tangency_refinement.hpp"
 #include "sphtroch/types.hpp"
 
 #include <algorithm>
@@ -340,7 +341,11 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
     if (std::abs(gap_min) <= gap_tol) {
       LD t1s;
       detail::branch_gap(curve_ld, r.t1, r.t2, s_star, out.work, &t1s);
-      if (distinct_branches(t1s, r.t2 + s_star)) meetings.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
+      if (distinct_branches(t1s, r.t2 + s_star)) {
+        // Onto the tangency conditions (well conditioned; tangency_refinement.hpp).
+        const auto tp = refine_tangency_pair(train, t1s, r.t2 + s_star);
+        meetings.push_back({tp.first, tp.second, NodeKind::tangency});
+      }
       continue;
     }
     const LD disc = c1 * c1 - 4 * c0 * c2;
