@@ -3,6 +3,7 @@
 // loci over a2 and the tangency reading of nearest_tangency.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
+#include "sphtroch/atlas_boundary_check.hpp"
 #include "sphtroch/boundary_set.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/criteria.hpp"
@@ -260,4 +261,38 @@ TEST_CASE("classify reads a self-tangency like the other boundaries: both census
     }
   }
   CHECK(checked >= 15);
+}
+
+TEST_CASE("boundary set: the atlas's root-census counts lie between the events, and every class change is crossed",
+          "[boundary_set][atlas]") {
+  for (const Ratio n : {Ratio(3), Ratio(5, 2), Ratio(-5, 2), Ratio(7, 3), Ratio(3, 2), Ratio(-1, 3)}) {
+    AtlasSpec spec;
+    spec.ratio = n;
+    spec.grid = 48;
+    const std::vector<AtlasCell> cells = compute_atlas(spec, {0, spec.grid}, 2);
+    // Each cell off the events has the count of its interval (the root census at the cell centre,
+    // root_census.hpp, against the counts boundary_set derives between events).
+    std::size_t compared = 0;
+    for (std::size_t i = 0; i < spec.grid; ++i) {
+      const BoundarySet s = boundary_set(spec.a2_at(i), n);
+      for (std::size_t j = 0; j < spec.grid; ++j) {
+        const AtlasCell& c = cells[i * spec.grid + j];
+        bool near = false;
+        std::int64_t expected = -1;
+        for (const auto& e : s.events) {
+          near = near || std::abs(e.a3 - c.a3) < 1e-6;
+          if (expected < 0 && e.a3 > c.a3) expected = e.nodes_below;
+        }
+        if (expected < 0) expected = s.events.empty() ? 0 : s.events.back().nodes_above;
+        if (near) continue;
+        INFO("n = " << n.p() << "/" << n.q() << " cell a2 = " << c.a2 << " a3 = " << c.a3);
+        CHECK(static_cast<std::int64_t>(c.nodes) == expected);
+        ++compared;
+      }
+    }
+    CHECK(compared > spec.grid * spec.grid / 2);
+    const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, 2);
+    CHECK(check.class_changes > 0);
+    CHECK(check.uncrossed.empty());
+  }
 }

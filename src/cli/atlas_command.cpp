@@ -4,6 +4,7 @@
 #include "cli_common.hpp"
 
 #include "sphtroch/atlas.hpp"
+#include "sphtroch/atlas_boundary_check.hpp"
 #include "sphtroch/atlas_csv.hpp"
 #include "sphtroch/atlas_svg.hpp"
 #include "sphtroch/input_file.hpp"
@@ -223,6 +224,7 @@ void run_atlas(const AtlasOptions& o) {
         for (std::size_t k : summary.disagreements)
           if (listed.size() < kMaxListedDisagreements) listed.push_back(cells[k]);
         print_summary(out, spec, summary, listed, rows, shard, seconds, threads);
+        write_atlas_boundary_check(out, check_atlas_boundaries(spec, cells, threads), cells);
       });
 }
 
