@@ -107,3 +107,25 @@ TEST_CASE("boundaries: bad input is exit 2, one stderr line naming the option, n
     CHECK(dir.entries().empty());
   }
 }
+
+TEST_CASE("classify at a self-tangency typed as a double: crossings + tangencies, censuses agree, boundary named",
+          "[cli][boundaries][classify]") {
+  TempDir dir;
+  const Result r = run("classify --n 5/2 --a2 pi/2 --a3 1.0938177365904715 --json", dir);
+  REQUIRE(r.status == 0);
+  const json j = json::parse(r.out);
+  CHECK(j["agreement"]["ok"] == true);
+  CHECK(j["counts"]["crossings"] == 10);
+  CHECK(j["counts"]["tangencies"] == 5);
+  REQUIRE(j["boundaries"]["on"].size() == 1);
+  CHECK(contains(j["boundaries"]["on"][0]["boundary"].get<std::string>(), "self-tangency locus"));
+  CHECK(std::abs(j["boundaries"]["on"][0]["margin"].get<double>()) <= 1e-15);
+  const Result text = run("classify --n 5/2 --a2 pi/2 --a3 1.0938177365904715", dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "on self-tangency locus g = -2"));
+  CHECK(contains(text.out, "agreement: yes"));
+  // --literal reads the doubles as given: no boundary named.
+  const Result lit = run("classify --n 5/2 --a2 pi/2 --a3 1.0938177365904715 --json --literal", dir);
+  REQUIRE(lit.status == 0);
+  CHECK(json::parse(lit.out)["boundaries"]["on"].empty());
+}

@@ -343,8 +343,9 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
       detail::branch_gap(curve_ld, r.t1, r.t2, s_star, out.work, &t1s);
       if (distinct_branches(t1s, r.t2 + s_star)) {
         // Onto the tangency conditions (well conditioned; tangency_refinement.hpp).
-        const auto tp = refine_tangency_pair(train, t1s, r.t2 + s_star);
-        meetings.push_back({tp.first, tp.second, NodeKind::tangency});
+        const TangencyPair tp = refine_tangency_pair(train, t1s, r.t2 + s_star);
+        out.work.points_evaluated += tp.points_evaluated;
+        meetings.push_back({tp.t1, tp.t2, NodeKind::tangency});
       }
       continue;
     }

@@ -1,7 +1,8 @@
 // sphtroch/tangency_refinement.hpp — a tangency node (two branches that touch) put on the
 // tangency conditions instead of the closest approach of the branches. Eigen only.
 //
-//   auto [t1, t2] = sphtroch::refine_tangency_pair(train, t1_seed, t2_seed);  // long double
+//   sphtroch::TangencyPair r = sphtroch::refine_tangency_pair(train, t1_seed, t2_seed);  // long double
+//   r.t1, r.t2;  r.points_evaluated;   // TracerCurve::point calls made (0 or 4)
 //
 // Why: where two branches touch, P(t1) = P(t2) has a double root; Newton on it (refinement.hpp)
 // is ill conditioned and from double input the position is only fixed to ~sqrt(eps) ~ 1e-8
@@ -13,23 +14,31 @@
 // by (its planet-angle error) / n, with theta3 = n theta2 + theta_p (Eq. 3). The result is the
 // position of the root census's tangency node (Rz(t1) C(b*)) to rounding.
 // A seed whose planet angles are not (b, -b) with b within kTangencySeedReach of a stationary
-// point (a touching pair at a pole, where b1 = b2) is returned unchanged.
+// point (a touching pair at a pole, where b1 = b2), or whose moved pair would meet less closely
+// than the seed (|P(t1) - P(t2)| larger; 4 curve evaluations), is returned unchanged.
 #pragma once
 
+#include "sphtroch/curve.hpp"
 #include "sphtroch/gear_train.hpp"
 #include "sphtroch/half_turn.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <utility>
+#include <cstddef>
 
 namespace sphtroch {
 
-/// How far (radians of planet angle) a seed may be from the tangency conditions to be moved.
-constexpr double kTangencySeedReach = 1e-4;
+/// How far (radians of planet angle) a seed may be from the tangency conditions to be moved (the
+/// quadratic gap model of polyline_census.hpp puts its seed within ~1e-3 of it on small curves).
+constexpr double kTangencySeedReach = 0.05;
+
+struct TangencyPair {
+  long double t1 = 0, t2 = 0;        // branch parameters theta2
+  std::size_t points_evaluated = 0;  // TracerCurve::point calls made (for the work counters)
+};
 
 /// (t1, t2) moved onto the tangency conditions (see header); unchanged when out of reach.
-inline std::pair<long double, long double> refine_tangency_pair(const GearTrain& train, long double t1,
-                                                                 long double t2) {
+inline TangencyPair refine_tangency_pair(const GearTrain& train, long double t1, long double t2) {
   using Real = long double;
   const Real pi = HalfTurn<Real>::pi();
   const auto t = train.trig<Real>();
@@ -51,10 +60,15 @@ inline std::pair<long double, long double> refine_tangency_pair(const GearTrain&
         found = true;
       }
     }
-  if (!found) return {t1, t2};
+  if (!found) return {t1, t2, 0};
   const Real d2 = std::remainder(-s * best - b2, 2 * pi);
-  if (!(std::abs(d2) < static_cast<Real>(kTangencySeedReach))) return {t1, t2};
-  return {t1 + (s * best - b1) / n, t2 + d2 / n};
+  if (!(std::abs(d2) < static_cast<Real>(kTangencySeedReach))) return {t1, t2, 0};
+  const Real r1 = t1 + (s * best - b1) / n, r2 = t2 + d2 / n;
+  // Accept only a pair that meets at least as closely as the seed (it should, to rounding).
+  const TracerCurve<Real> curve(train);
+  const Real before = (curve.point(t1) - curve.point(t2)).norm(), after = (curve.point(r1) - curve.point(r2)).norm();
+  if (!(after <= std::max(before, static_cast<Real>(1e-13L)))) return {t1, t2, 4};
+  return {r1, r2, 4};
 }
 
 }  // namespace sphtroch
