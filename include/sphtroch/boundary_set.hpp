@@ -89,7 +89,8 @@ inline const char* to_string(BoundaryEventKind k) {
 struct BoundaryEvent {
   BoundaryEventKind kind = BoundaryEventKind::pitch_cone;
   std::string name;          // "a3 = a_p (pitch cone)", "tangency g = 2 (stationary point 0)", ...
-  double a3 = 0.0;           // radians, the long double root rounded
+  double a3 = 0.0;           // radians: tangency, the long double root rounded; closed forms, their
+                             // double value as boundaries.hpp computes it (atlas_boundary_a3)
   long double a3_precise = 0.0L;
   double b = 0.0;            // witness: planet angle (pitch cone / north pole: pi, mirror / south: 0)
   std::int64_t m = 0;        // tangency: the integer g(b*); otherwise 0
@@ -301,7 +302,8 @@ inline BoundarySet boundary_set(double a2, const Ratio& n) {
     e.kind = kind;
     e.name = boundary_name(which);
     e.a3_precise = a3;
-    e.a3 = static_cast<double>(a3);
+    // The double of the closed form as boundaries.hpp evaluates it: the value classify snaps.
+    e.a3 = atlas_boundary_a3(which, a2, n);
     e.b = static_cast<double>(b);
     return e;
   };
