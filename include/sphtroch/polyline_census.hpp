@@ -16,7 +16,8 @@
 //  3. Refinement: each seed runs refine_branch_pair in long double; converged pairs with a residual
 //     below kNodeResidual are meeting points.
 //  4. Kind: a meeting point whose branches cross at an angle >= kTransversalAngle is a crossing.
-//     Otherwise the gap between the branches is modelled locally as a quadratic in the arc
+//     Otherwise, if the pair put on the tangency conditions (tangency_refinement.hpp) meets within
+//     the tangency tolerance, it is a tangency there. Otherwise the gap between the branches is modelled locally as a quadratic in the arc
 //     parameter of one branch, gap(s) = c0 + c1 s + c2 s^2 (long double, sampled at s = 0, +-h):
 //     its minimum |c0 - c1^2 / 4 c2| below the tangency tolerance makes one tangency (the two
 //     crossings of a rounding-split tangency merge back into it); otherwise its real roots are
@@ -325,7 +326,18 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
       }
       continue;
     }
-    // Near-tangent branches: quadratic model of the gap along branch 2.
+    // Near-tangent branches. First the tangency conditions (tangency_refinement.hpp): branches
+    // that meet within the tangency tolerance on them touch. This decides tiny curves (a2, a3 ~
+    // 1e-2 near a pole), where the quadratic model below is too coarse to see the touching.
+    {
+      const TangencyPair tp = refine_tangency_pair(train, r.t1, r.t2);
+      out.work.points_evaluated += tp.points_evaluated;
+      if (tp.moved && tp.gap <= gap_tol && distinct_branches(tp.t1, tp.t2)) {
+        meetings.push_back({tp.t1, tp.t2, NodeKind::tangency});
+        continue;
+      }
+    }
+    // Otherwise a quadratic model of the gap along branch 2.
     const LD speed2 = v2.norm();
     const LD hs = 1e-3L / std::max<LD>(speed2, 1e-3L);
     const LD g0 = detail::branch_gap(curve_ld, r.t1, r.t2, 0, out.work);

@@ -34,6 +34,8 @@ constexpr double kTangencySeedReach = 0.05;
 
 struct TangencyPair {
   long double t1 = 0, t2 = 0;        // branch parameters theta2
+  bool moved = false;                // put on the tangency conditions (else the seed, unchanged)
+  long double gap = -1;              // moved: |P(t1) - P(t2)| of the result (chord); else -1
   std::size_t points_evaluated = 0;  // TracerCurve::point calls made (for the work counters)
 };
 
@@ -60,15 +62,15 @@ inline TangencyPair refine_tangency_pair(const GearTrain& train, long double t1,
         found = true;
       }
     }
-  if (!found) return {t1, t2, 0};
+  if (!found) return {t1, t2, false, -1, 0};
   const Real d2 = std::remainder(-s * best - b2, 2 * pi);
-  if (!(std::abs(d2) < static_cast<Real>(kTangencySeedReach))) return {t1, t2, 0};
+  if (!(std::abs(d2) < static_cast<Real>(kTangencySeedReach))) return {t1, t2, false, -1, 0};
   const Real r1 = t1 + (s * best - b1) / n, r2 = t2 + d2 / n;
   // Accept only a pair that meets at least as closely as the seed (it should, to rounding).
   const TracerCurve<Real> curve(train);
   const Real before = (curve.point(t1) - curve.point(t2)).norm(), after = (curve.point(r1) - curve.point(r2)).norm();
-  if (!(after <= std::max(before, static_cast<Real>(1e-13L)))) return {t1, t2, 4};
-  return {r1, r2, 4};
+  if (!(after <= std::max(before, static_cast<Real>(1e-13L)))) return {t1, t2, false, -1, 4};
+  return {r1, r2, true, after, 4};
 }
 
 }  // namespace sphtroch
