@@ -296,3 +296,20 @@ TEST_CASE("boundary set: the atlas's root-census counts lie between the events, 
     CHECK(check.uncrossed.empty());
   }
 }
+
+TEST_CASE("classify at a tangency of a tiny curve next to a pole (n = 3/5, a2 = 0.02): both censuses agree",
+          "[boundary_set][classify]") {
+  // The curve is ~0.04 rad across and the touching points lie ~0.0025 rad from the north pole:
+  // the polyline census's quadratic gap model alone split each tangency into two crossings.
+  const double a2 = 0.020555332447993083;
+  std::size_t checked = 0;
+  for (const auto& e : of_kind(boundary_set(a2, Ratio(3, 5)), BoundaryEventKind::tangency)) {
+    INFO("a3 = " << e.a3);
+    const Classification c = classify(GearTrain(a2, e.a3, Ratio(3, 5), 4.067605497286147));
+    CHECK(c.agreement.ok());
+    CHECK(c.tangencies == 3);
+    CHECK(2 * c.nodes.size() == static_cast<std::size_t>(e.nodes_below + e.nodes_above));
+    ++checked;
+  }
+  CHECK(checked == 2);
+}
