@@ -44,7 +44,7 @@ const sphtroch::GearTrain train(kPi / 3, kPi / 2, sphtroch::Ratio(5, 2));
 const double a2 = train.a2(), a3 = train.a3();
 const double pi = kPi;
 const std::vector<Eigen::Vector3d> v = sphtroch::sample_period(sphtroch::TracerCurve<double>(train), 64).points;
-const std::size_t n = v.size();
+const sphtroch::Ratio n(5, 2);
 char buffer[64];
 const std::size_t size = sizeof buffer;
 const std::string text;

@@ -335,8 +335,12 @@ TEST_CASE("SVG map: well formed, boundary curves, legend, disagreements outlined
     CHECK(svg.size() >= 7);
     CHECK(svg.substr(svg.size() - 7) == "</svg>\n");
     CHECK(count_of(svg, "<g") == count_of(svg, "</g>"));
-    const std::size_t boundaries = n == 1 ? 2 : 4;
+    // n = 3 also has its two self-tangency loci (a3 = atan(3 sqrt 3) and its mirror at a2 = pi/2,
+    // issue 13); n = 1, 2 have none (the report's criteria are complete there).
+    const std::size_t tangency_loci = n == 3 ? 2 : 0;
+    const std::size_t boundaries = (n == 1 ? 2 : 4) + tangency_loci;
     CHECK(count_of(svg, "class=\"boundary\"") == boundaries);
+    CHECK(count_of(svg, "data-kind=\"tangency\"") == tangency_loci);
     CHECK(count_of(svg, "data-kind=\"pitch_cone\"") == 1);
     CHECK(count_of(svg, "data-kind=\"mirror_pitch_cone\"") == 1);
     CHECK(count_of(svg, "data-kind=\"a2\"") == (n == 1 ? 0u : 1u));

@@ -3,7 +3,7 @@
 // exactly THAT they cross; this computes WHERE, approximately.
 //
 //   for (const sphtroch::EdgePair& e : crossings)   // find_self_crossings(v, true).crossings
-//     Eigen::Vector3d x = sphtroch::arc_crossing_point(v[e.i], v[e.i + 1], v[e.j], v[(e.j + 1) % n]);
+//     Eigen::Vector3d x = sphtroch::arc_crossing_point(v[e.i], v[e.i + 1], v[e.j], v[(e.j + 1) % v.size()]);
 //
 // The two great circles meet at +-m, m = (a x b) x (c x d); the point returned is the one of the
 // two that lies on arc ab (the side of a and b), normalised. Error bound: about 4 eps / sin(phi)

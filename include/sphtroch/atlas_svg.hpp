@@ -16,6 +16,9 @@
 //     a3 = f(a2) over the a2 range, clipped to the map: a3 = a_p(a2) = atan2(sin a2, cos a2 + n),
 //     pi - a_p(a2), and for |p| >= 2 also a2 and pi - a2. The legend names each with the
 //     report's equation (Eq. 24 for n = 1; Eqs. 43, 46 for n = 2).
+//  2b. Every self-tangency locus of boundary_set.hpp (boundary_loci over the a2 range, the same
+//     kAtlasBoundarySteps samples) is one <path> in <g class="boundary" data-kind="tangency"
+//     data-m="M">; the legend names them (none for n = 1, 2, which have no such locus).
 //  3. Every disagreeing cell (agree == false, or cusp counts differ) is outlined by one <rect>
 //     in <g class="disagreements">; the legend gives their number.
 //  4. The legend lists the classes present (node counts present), in <g class="legend">.
@@ -23,6 +26,7 @@
 #pragma once
 
 #include "sphtroch/atlas.hpp"
+#include "sphtroch/boundary_set.hpp"
 #include "sphtroch/svg.hpp"
 
 #include <algorithm>
@@ -82,6 +86,14 @@ namespace atlas_svg_detail {
 // Light to medium-dark, so that the boundary curves stay visible over every shade.
 inline const char* const kBlues[8] = {"#e3eef9", "#cfe1f2", "#b5d4e9", "#93c3df",
                                       "#6daed5", "#4b97c9", "#2f7ebc", "#1864aa"};
+/// The self-tangency loci over the map's a2 range, at kAtlasBoundarySteps samples (2 threads).
+inline std::vector<Locus> tangency_loci(const AtlasSpec& spec) {
+  std::vector<Locus> out;
+  for (Locus& l : boundary_loci(spec.ratio, spec.a2.lo, spec.a2.hi, kAtlasBoundarySteps, 2))
+    if (l.kind == BoundaryEventKind::tangency) out.push_back(std::move(l));
+  return out;
+}
+
 }  // namespace atlas_svg_detail
 
 inline const char* atlas_class_colour(AtlasClass c) {
@@ -140,6 +152,7 @@ inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio) {
       return n2 ? "α3 = α2: Eq. 46, lower end (north pole)" : "α3 = α2: north pole on the curve";
     case BoundaryKind::pi_minus_a2:
       return n2 ? "α3 = π − α2: Eq. 43, upper end (south pole)" : "α3 = π − α2: south pole on the curve";
+    case BoundaryKind::tangency: return "self-tangency (two branches touch)";
   }
   return "?";
 }
@@ -154,6 +167,7 @@ inline const char* boundary_style(BoundaryKind kind) {
     case BoundaryKind::pi_minus_half_a2: return "fill:none;stroke:#e6550d;stroke-width:2;stroke-dasharray:7 4";
     case BoundaryKind::a2: return "fill:none;stroke:#238b45;stroke-width:2";
     case BoundaryKind::pi_minus_a2: return "fill:none;stroke:#238b45;stroke-width:2;stroke-dasharray:7 4";
+    case BoundaryKind::tangency: return "fill:none;stroke:#d62728;stroke-width:1.5;stroke-dasharray:2 2";
   }
   return "fill:none;stroke:#000";
 }
@@ -260,6 +274,22 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
     svg.path(d, "");
     svg.end_group();
   }
+  // The self-tangency loci (contract 2b), one path per locus.
+  std::size_t tangency_loci = 0;
+  for (const Locus& l : atlas_svg_detail::tangency_loci(spec)) {
+    if (l.points.size() < 2) continue;
+    SvgPath d(2);
+    for (std::size_t s = 0; s < l.points.size(); ++s) {
+      const double y = std::clamp(y_of(l.points[s].a3), -10 * map, 10 * map);
+      if (s == 0) d.move_to(x_of(l.points[s].a2), y);
+      else d.line_to(x_of(l.points[s].a2), y);
+    }
+    svg.begin_group(boundary_style(BoundaryKind::tangency),
+                    "class=\"boundary\" data-kind=\"tangency\" data-m=\"" + std::to_string(l.m) + "\"");
+    svg.path(d, "");
+    svg.end_group();
+    ++tangency_loci;
+  }
   svg.end_group();
 
   // Disagreeing cells (contract 3).
@@ -326,6 +356,11 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   for (BoundaryKind kind : kinds) {
     svg.line(lx, y - 4, lx + 28, y - 4, boundary_style(kind));
     svg.text(lx + 36, y, atlas_boundary_label(kind, spec.ratio), body);
+    y += 18;
+  }
+  if (tangency_loci > 0) {
+    svg.line(lx, y - 4, lx + 28, y - 4, boundary_style(BoundaryKind::tangency));
+    svg.text(lx + 36, y, "self-tangency loci (" + std::to_string(tangency_loci) + "): two branches touch", body);
     y += 18;
   }
   y += 10;

@@ -71,6 +71,7 @@ enum class BoundaryKind {
   pi_minus_a2,        // a3 = pi - a2: the south pole is on the curve (z_min = cos(a2 + a3) = -1)
   half_a2,            // a3 = a2/2 (n = 1 only, Eq. 24; equals a_p there)
   pi_minus_half_a2,   // a3 = pi - a2/2 (n = 1 only, Eq. 24; equals pi - a_p there)
+  tangency,           // a self-tangency locus (boundary_set.hpp): no closed form; never in boundaries()
 };
 
 inline const char* to_string(BoundaryKind kind);
@@ -98,7 +99,8 @@ inline std::vector<Boundary> boundaries_hit(const GearTrain& train, double toler
 /// half_a2 and pi_minus_half_a2 are plain a3 - a2/2 and a3 - (pi - a2/2)).
 inline double boundary_margin(const GearTrain& train, BoundaryKind kind);
 
-/// The boundary's a3 for this train: a_p, pi - a_p, a2, pi - a2, a2/2, pi - a2/2 (radians).
+/// The boundary's a3 for this train: a_p, pi - a_p, a2, pi - a2, a2/2, pi - a2/2 (radians); NaN
+/// for `tangency`, which has no closed form (boundary_set.hpp's nearest_tangency gives it).
 inline double boundary_value(const GearTrain& train, BoundaryKind kind);
 
 /// Whether the GearTrain reference `ref` measures a3 from this boundary exactly.
@@ -109,7 +111,7 @@ inline bool reference_matches(A3Reference ref, BoundaryKind kind);
 /// a3 = a2 and pi - a2 when |p| >= 2 (a pole on the curve is a node; for n = 2 the other ends of
 /// Eqs. 43 and 46). For n other than 1, 2 the class can also change where two branches touch
 /// away from the poles (a stationary value of the root census's g is an integer); those curves
-/// are not in the report and not listed here.
+/// are not in the report and not listed here: boundary_set.hpp computes them.
 inline std::vector<BoundaryKind> atlas_boundary_kinds(const Ratio& ratio);
 
 /// a3 on a boundary at a2: a_p, pi - a_p, a2 or pi - a2.
@@ -135,6 +137,7 @@ inline const char* boundary_name(BoundaryKind kind) {
     case BoundaryKind::pi_minus_a2: return "a3 = pi - a2 (south pole on the curve)";
     case BoundaryKind::half_a2: return "a3 = a2/2 (Eq. 24 lower end; = a_p for n = 1)";
     case BoundaryKind::pi_minus_half_a2: return "a3 = pi - a2/2 (Eq. 24 upper end; = pi - a_p for n = 1)";
+    case BoundaryKind::tangency: return "self-tangency locus (two branches touch off the poles)";
   }
   return "?";
 }
@@ -147,6 +150,7 @@ inline const char* to_string(BoundaryKind kind) {
     case BoundaryKind::pi_minus_a2: return "pi_minus_a2";
     case BoundaryKind::half_a2: return "half_a2";
     case BoundaryKind::pi_minus_half_a2: return "pi_minus_half_a2";
+    case BoundaryKind::tangency: return "tangency";
   }
   return "?";
 }
@@ -159,6 +163,7 @@ inline double boundary_value(const GearTrain& train, BoundaryKind kind) {
     case BoundaryKind::pi_minus_a2: return Constants<double>::pi() - train.a2();
     case BoundaryKind::half_a2: return 0.5 * train.a2();
     case BoundaryKind::pi_minus_half_a2: return Constants<double>::pi() - 0.5 * train.a2();
+    case BoundaryKind::tangency: return std::numeric_limits<double>::quiet_NaN();  // boundary_set.hpp
   }
   return 0.0;
 }
@@ -222,6 +227,7 @@ inline double atlas_boundary_a3(BoundaryKind kind, double a2, const Ratio& ratio
     case BoundaryKind::pi_minus_half_a2: return pi - a_p;
     case BoundaryKind::a2: return a2;
     case BoundaryKind::pi_minus_a2: return pi - a2;
+    case BoundaryKind::tangency: return std::numeric_limits<double>::quiet_NaN();
   }
   return a_p;
 }

@@ -10,9 +10,12 @@
 // report's touching point at the pole. Snapping re-expresses a3 as "reference + 0" (GearTrain keeps
 // the reference symbolically, so sin/cos a3 are exact identities of sin/cos a2 in every Scalar) and
 // a2 within tolerance of pi/2 as exactly pi/2 (sin 1, cos 0: the case a2 = pi - a2 of rows d and
-// Fig. 3). A tolerance of 0 (the `--literal` reading) changes nothing.
+// Fig. 3). An a3 within tolerance of a self-tangency locus (and of no closed-form boundary) is
+// put on the double nearest the locus (boundary_set.hpp, nearest_tangency), named as a hit of
+// kind `tangency`. A tolerance of 0 (the `--literal` reading) changes nothing.
 #pragma once
 
+#include "sphtroch/boundary_set.hpp"
 #include "sphtroch/criteria.hpp"
 #include "sphtroch/gear_train.hpp"
 
@@ -38,6 +41,7 @@ inline A3Reference reference_of(BoundaryKind kind) {
     case BoundaryKind::pi_minus_half_a2: return A3Reference::mirror_pitch_cone;
     case BoundaryKind::a2: return A3Reference::a2;
     case BoundaryKind::pi_minus_a2: return A3Reference::pi_minus_a2;
+    case BoundaryKind::tangency: return A3Reference::given;
   }
   return A3Reference::given;
 }
@@ -59,6 +63,12 @@ inline SnappedTrain snap_to_boundaries(const GearTrain& input, double tolerance 
       return std::abs(a.margin) < std::abs(b.margin);
     });
     train = train.with_a3_reference(reference_of(nearest->kind), 0.0);
+  } else if (const auto t = nearest_tangency(train.a2(), input.a3(), input.ratio(), tolerance)) {
+    // A self-tangency locus (boundary_set.hpp): a3 becomes the double nearest the locus.
+    out.hits.push_back(Boundary{BoundaryKind::tangency,
+                                "self-tangency locus g = " + std::to_string(t->m) + " (two branches touch off the poles)",
+                                t->a3, t->margin});
+    train = train.with_a3_reference(A3Reference::given, t->a3);
   }
   out.train = train;
   return out;

@@ -16,7 +16,9 @@
 //  3. Refinement: each seed runs refine_branch_pair in long double; converged pairs with a residual
 //     below kNodeResidual are meeting points.
 //  4. Kind: a meeting point whose branches cross at an angle >= kTransversalAngle is a crossing.
-//     Otherwise the gap between the branches is modelled locally as a quadratic in the arc
+//     Otherwise, if the pair put on the tangency conditions (tangency_refinement.hpp) meets within
+//     the tangency tolerance, it is a tangency there. Otherwise the gap between the branches is
+//     modelled locally as a quadratic in the arc
 //     parameter of one branch, gap(s) = c0 + c1 s + c2 s^2 (long double, sampled at s = 0, +-h):
 //     its minimum |c0 - c1^2 / 4 c2| below the tangency tolerance makes one tangency (the two
 //     crossings of a rounding-split tangency merge back into it); otherwise its real roots are
@@ -43,6 +45,7 @@
 #include "sphtroch/polyline_crossings.hpp"
 #include "sphtroch/refinement.hpp"
 #include "sphtroch/sampling.hpp"
+#include "sphtroch/tangency_refinement.hpp"
 #include "sphtroch/types.hpp"
 
 #include <algorithm>
@@ -356,6 +359,11 @@ class MeetingFinder {
     out_.work.points_evaluated += r.evaluations;
     return r;
   }
+  TangencyPair to_tangency_conditions(LD t1, LD t2) {
+    const TangencyPair tp = refine_tangency_pair(curve_.train(), t1, t2);
+    out_.work.points_evaluated += tp.points_evaluated;
+    return tp;
+  }
   LD gap(LD t1, LD t2, LD s, LD* t1_out = nullptr) { return branch_gap(curve_, t1, t2, s, out_.work, t1_out); }
 
   /// Refine a crossing guessed at s along branch 2 from (t1, t2); keep it if it converges.
@@ -388,8 +396,16 @@ class MeetingFinder {
     }
   }
 
-  // Near-tangent branches: the gap along branch 2 as a quadratic c0 + c1 s + c2 s^2 (see header).
+  // Near-tangent branches. First the tangency conditions (tangency_refinement.hpp): branches
+  // that meet within the tangency tolerance on them touch. This decides tiny curves (a2, a3 ~
+  // 1e-2 near a pole), where the quadratic model below is too coarse to see the touching.
+  // Otherwise the gap along branch 2 as a quadratic c0 + c1 s + c2 s^2 (see header).
   void split_near_tangency(const RefinedPair<LD>& r, LD speed2) {
+    const TangencyPair on_conditions = to_tangency_conditions(r.t1, r.t2);
+    if (on_conditions.moved && on_conditions.gap <= gap_tolerance_ && distinct_branches(on_conditions.t1, on_conditions.t2)) {
+      meetings_.push_back({on_conditions.t1, on_conditions.t2, NodeKind::tangency});
+      return;
+    }
     const LD hs = kGapModelArc / std::max<LD>(speed2, kGapModelArc);
     const LD g0 = gap(r.t1, r.t2, 0);
     const LD gp = gap(r.t1, r.t2, hs);
@@ -404,7 +420,11 @@ class MeetingFinder {
     if (std::abs(gap_min) <= gap_tolerance_) {
       LD t1s;
       gap(r.t1, r.t2, s_star, &t1s);
-      if (distinct_branches(t1s, r.t2 + s_star)) meetings_.push_back({t1s, r.t2 + s_star, NodeKind::tangency});
+      if (distinct_branches(t1s, r.t2 + s_star)) {
+        // Onto the tangency conditions (well conditioned; tangency_refinement.hpp).
+        const TangencyPair tp = to_tangency_conditions(t1s, r.t2 + s_star);
+        meetings_.push_back({tp.t1, tp.t2, NodeKind::tangency});
+      }
       return;
     }
     const LD disc = c1 * c1 - 4 * c0 * c2;

@@ -4,6 +4,7 @@
 #include "cli_common.hpp"
 
 #include "sphtroch/atlas.hpp"
+#include "sphtroch/atlas_boundary_check.hpp"
 #include "sphtroch/atlas_csv.hpp"
 #include "sphtroch/atlas_report.hpp"
 #include "sphtroch/atlas_svg.hpp"
@@ -164,6 +165,7 @@ void run_atlas(const AtlasOptions& o) {
       [&](std::ostream& out) {
         const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
         write_atlas_summary(out, spec, summary, listed_disagreements(summary, cells), AtlasRun{rows, shard, seconds, threads});
+        write_atlas_boundary_check(out, check_atlas_boundaries(spec, cells, threads), cells);
       });
 }
 

@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
   std::vector<std::pair<CLI::App*, Action>> actions;
   register_trace(app, actions);
   register_atlas(app, actions);
+  register_boundaries(app, actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS
   register_analysis(app, actions);
   register_scene(app, actions);

@@ -1,0 +1,69 @@
+// sphtroch boundaries — the boundary set of the (a2, a3) map (boundary_set.hpp): the events at
+// one a2 (text or JSON), or the boundary curves over an a2 range as CSV. Parsing and printing
+// only; the formats are boundary_report.hpp's.
+#include "cli_common.hpp"
+
+#include "sphtroch/boundary_report.hpp"
+#include "sphtroch/boundary_set.hpp"
+#include "sphtroch/parse.hpp"
+
+namespace sphtroch::cli {
+
+namespace {
+
+struct BoundariesOptions {
+  std::string n, a2 = "0:pi", steps, threads, output;
+  bool json = false;
+};
+
+const char* const kA2Forms = "one angle in (0, pi) (1.2, pi/2, 90deg) for the events, or LO:HI with 0 <= LO < HI <= pi for the curves";
+
+void run_boundaries(const BoundariesOptions& o) {
+  const Ratio n = parse_ratio(o.n, "n");
+  const auto colon = o.a2.find(':');
+  if (colon == std::string::npos) {  // one a2: the events
+    if (!o.steps.empty())
+      throw UsageError{"--steps = " + o.steps + ": only for the curves over an a2 range; valid: --a2 LO:HI with --steps"};
+    const double a2 = parse_angle(o.a2, "a2");
+    if (!(a2 > 0.0 && a2 < Constants<double>::pi())) throw InvalidInput("a2", o.a2, "outside the valid range", kA2Forms);
+    const BoundarySet s = boundary_set(a2, n);
+    write_output(o.output, [&](std::ostream& out) { o.json ? write_boundary_json(out, s) : write_boundary_text(out, s); });
+    return;
+  }
+  if (o.json)
+    throw UsageError{"--json: the curves over an a2 range are CSV; valid: --json with one --a2 angle, or leave it out"};
+  if (o.a2.find_first_of(" \t\r\n") != std::string::npos) throw InvalidInput("a2", o.a2, "spaces inside a range", kA2Forms);
+  const auto lo = detail::angle_value(o.a2.substr(0, colon));
+  const auto hi = detail::angle_value(o.a2.substr(colon + 1));
+  if (!lo || !hi) throw InvalidInput("a2", o.a2, "not two finite angles LO:HI", kA2Forms);
+  if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
+    throw InvalidInput("a2", o.a2, "outside the valid range", kA2Forms);
+  const std::size_t steps = o.steps.empty() ? 720 : parse_count(o.steps, "steps", 1, kMaxLocusSteps);
+  const std::size_t threads = parse_threads(o.threads);
+  const std::vector<Locus> loci = boundary_loci(n, *lo, *hi, steps, threads);
+  write_output(o.output, [&](std::ostream& out) { write_loci_csv(out, n, *lo, *hi, steps, loci); });
+}
+
+}  // namespace
+
+void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<BoundariesOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "boundaries", "where the node count changes in a3: pitch cones, poles, self-tangency loci (any n)");
+  cmd->footer(
+      "One a2 (--a2 A): every a3 in (0, pi) where the census changes, ascending, with its kind\n"
+      "(pitch_cone, pole, tangency), a3 to 1e-12 rad and the node points just below and above\n"
+      "(as classify counts them: crossings + tangencies). Text, or JSON with --json.\n"
+      "An a2 range (--a2 LO:HI, default 0:pi): the boundary curves as CSV\n"
+      "locus,kind,m,label,a2,a3,b at --steps a2 samples (cell centres; default 720, 1 .. 100000).\n"
+      "Example: sphtroch boundaries --n 3 --a2 pi/2");
+  cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2")->required();
+  cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)");
+  cmd->add_flag("--json", o->json, "the events as JSON (one a2 only)");
+  cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 100000; default 720)");
+  cmd->add_option("--threads", o->threads, "worker threads for the curves (1 .. 1024; default: cores)");
+  add_output_option(*cmd, o->output, "the events or the curves");
+  actions.emplace_back(cmd, [o] { run_boundaries(*o); });
+}
+
+}  // namespace sphtroch::cli
