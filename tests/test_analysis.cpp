@@ -63,7 +63,7 @@ TEST_CASE("analysis: trace only evaluates exactly the samples: no predicate, no 
   CHECK(total.predicates == 0);
   CHECK(total.newton_steps == 0);
   CHECK(total.root_evaluations == 0);
-  CHECK(!a.work(Stage::crossings).ran);
+  CHECK(!a.work(Stage::polyline_census).ran);
   CHECK(ran_stages(a) == std::set<Stage>{Stage::input, Stage::trajectory});
   // The samples are Eq. 5 at t_i = 2 pi i / 720 (q = 1).
   for (std::size_t i : {std::size_t{0}, std::size_t{97}, std::size_t{719}}) {
@@ -127,7 +127,7 @@ TEST_CASE("analysis: requesting an effect runs exactly the stages stages_for() l
   // Spot checks of the graph (DESIGN.md data flow).
   CHECK(Analysis::stages_for(Effect::trace) == std::vector<Stage>{Stage::input, Stage::trajectory});
   const auto cls = Analysis::stages_for(Effect::classification);
-  for (Stage s : {Stage::crossings, Stage::nodes, Stage::cusps, Stage::root_census, Stage::analytic, Stage::classification})
+  for (Stage s : {Stage::polyline_census, Stage::nodes, Stage::cusps, Stage::root_census, Stage::analytic, Stage::classification})
     CHECK(std::count(cls.begin(), cls.end(), s) == 1);
   CHECK(std::count(cls.begin(), cls.end(), Stage::trajectory) == 0);
   const auto ex = Analysis::stages_for(Effect::extrema);
@@ -139,7 +139,7 @@ TEST_CASE("analysis: memoized: nodes() twice does no more work, classification()
   const Analysis a(fig5f());
   const std::vector<Node>& first = a.nodes();
   CHECK(first.size() == 4);  // Table 1 row (f)
-  const StageWork crossings = a.work(Stage::crossings);
+  const StageWork crossings = a.work(Stage::polyline_census);
   CHECK(crossings.ran);
   CHECK(crossings.points_evaluated > 0);
   CHECK(crossings.predicates > 0);
@@ -151,8 +151,8 @@ TEST_CASE("analysis: memoized: nodes() twice does no more work, classification()
 
   const Classification& c = a.classification();
   CHECK(c.nodes.size() == 4);
-  CHECK(same_work(a.work(Stage::crossings), crossings));  // not run again
-  CHECK(std::count(a.stages_run().begin(), a.stages_run().end(), Stage::crossings) == 1);
+  CHECK(same_work(a.work(Stage::polyline_census), crossings));  // not run again
+  CHECK(std::count(a.stages_run().begin(), a.stages_run().end(), Stage::polyline_census) == 1);
   // Its work is the sum of the stages it needed, and a second call changes nothing.
   StageWork sum;
   for (Stage s : Analysis::stages_for(Effect::classification)) sum += a.work(s);
@@ -304,6 +304,6 @@ TEST_CASE("stage table: one row per stage in enum order, dependencies earlier, n
     for (Stage d : Analysis::dependencies(s)) CHECK(static_cast<std::size_t>(d) < i);
     if (s != Stage::input) CHECK_FALSE(Analysis::dependencies(s).empty());
   }
-  CHECK(Analysis::dependencies(Stage::nodes) == std::vector<Stage>{Stage::crossings});
+  CHECK(Analysis::dependencies(Stage::nodes) == std::vector<Stage>{Stage::polyline_census});
   CHECK(Analysis::dependencies(Stage::classification).size() == 6);
 }

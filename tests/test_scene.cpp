@@ -217,7 +217,7 @@ TEST_CASE("scene explanation: the effects' stages, the stages run in order, the 
   REQUIRE(j["work"]["stages_run"].size() == a.stages_run().size());
   for (std::size_t k = 0; k < a.stages_run().size(); ++k) CHECK(j["work"]["stages_run"][k] == to_string(a.stages_run()[k]));
   CHECK(j["stages"][to_string(Stage::root_census)]["ran"] == false);  // nodes need no root census
-  CHECK(j["stages"][to_string(Stage::crossings)]["ran"] == true);
+  CHECK(j["stages"][to_string(Stage::polyline_census)]["ran"] == true);
   CHECK(j["work"]["points_evaluated"].get<std::size_t>() == a.total_work().points_evaluated);
 
   std::ostringstream out;

@@ -6,7 +6,7 @@
 //   sphtroch::Analysis a(train);                  // settings: AnalysisSettings (defaults as on the CLI)
 //   a.analytic();                                 // closed forms only: evaluates no point
 //   a.trajectory();                               // samples the curve: runs no crossing search
-//   a.work(sphtroch::Stage::crossings).ran;       // false so far
+//   a.work(sphtroch::Stage::polyline_census).ran;       // false so far
 //   a.classification();                           // crossings, root census, cusps, ... then assembly
 //   a.total_work().points_evaluated;              // every TracerCurve call made so far
 //
@@ -78,7 +78,8 @@ enum class Stage {
   trajectory,       // P(t_i) of the given train (sampling.hpp)
   velocities,       // dP/dtheta2 (t_i) (Eq. 47a)
   screw_axis,       // omega(t_i) = Z1 + n Z2 (Eq. 47a)
-  crossings,        // polyline census: exact crossings + near misses, Newton refinement, assembly
+  polyline_census,  // exact polyline crossings + near misses, Newton refinement, assembly; named
+                    // "crossings" in reports and scenes (kept for compatibility)
   nodes,            // the node points of the crossing stage
   cusps,            // pitch-cone criterion, each verified by point and speed
   root_census,      // one-dimensional root count (root_census.hpp)
@@ -134,7 +135,7 @@ class Analysis {
   const Trajectory<double>& trajectory() const;
   const std::vector<Vector3d>& velocities() const;  // at trajectory().t
   const ScrewAxisSamples& screw_axis() const;
-  const PolylineCensus& crossings() const;
+  const PolylineCensus& polyline_census() const;
   const std::vector<Node>& nodes() const;
   const std::vector<Cusp>& cusps() const;
   const RootCensus& root_census() const;
@@ -173,7 +174,7 @@ class Analysis {
   mutable std::optional<Trajectory<double>> trajectory_, plot_trajectory_;
   mutable std::optional<std::vector<Vector3d>> velocities_;
   mutable std::optional<ScrewAxisSamples> screw_axis_;
-  mutable std::optional<PolylineCensus> crossings_;
+  mutable std::optional<PolylineCensus> polyline_census_;
   mutable std::optional<std::vector<Cusp>> cusps_;
   mutable std::optional<RootCensus> root_;
   mutable std::optional<AnalyticClassification> analytic_;
@@ -204,8 +205,8 @@ inline const std::array<StageRow, kStageCount>& stage_table() {
       {S::trajectory, "trajectory", {S::input}, 1},
       {S::velocities, "velocities", {S::input}, 1},
       {S::screw_axis, "screw_axis", {S::input}, 1},
-      {S::crossings, "crossings", {S::input}, 1},
-      {S::nodes, "nodes", {S::crossings}, 1},
+      {S::polyline_census, "crossings", {S::input}, 1},
+      {S::nodes, "nodes", {S::polyline_census}, 1},
       {S::cusps, "cusps", {S::input}, 1},
       {S::root_census, "root_census", {S::input}, 1},
       {S::analytic, "analytic", {S::input}, 1},
@@ -367,26 +368,26 @@ inline const ScrewAxisSamples& Analysis::screw_axis() const {
   return *screw_axis_;
 }
 
-inline const PolylineCensus& Analysis::crossings() const {
-  if (!crossings_)
-    run_stage(Stage::crossings, [&](StageWork& w) {
+inline const PolylineCensus& Analysis::polyline_census() const {
+  if (!polyline_census_)
+    run_stage(Stage::polyline_census, [&](StageWork& w) {
       PolylineCensusSettings ps;
       ps.samples = settings_.census_samples;
       ps.tangency_tolerance = settings_.reading().tangency();
-      crossings_ = polyline_census(analysed(), ps);
-      w.points_evaluated = crossings_->work.points_evaluated;
-      w.predicates = crossings_->work.predicates;
-      w.newton_steps = crossings_->work.newton_steps;
+      polyline_census_ = sphtroch::polyline_census(analysed(), ps);
+      w.points_evaluated = polyline_census_->work.points_evaluated;
+      w.predicates = polyline_census_->work.predicates;
+      w.newton_steps = polyline_census_->work.newton_steps;
     });
-  return *crossings_;
+  return *polyline_census_;
 }
 
 inline const std::vector<Node>& Analysis::nodes() const {
   if (!work(Stage::nodes).ran) {
-    crossings();
+    polyline_census();
     run_stage(Stage::nodes, [](StageWork&) {});  // the crossing stage's nodes, as they are
   }
-  return crossings_->nodes;
+  return polyline_census_->nodes;
 }
 
 inline const std::vector<Cusp>& Analysis::cusps() const {
@@ -454,7 +455,7 @@ inline const Classification& Analysis::classification() const {
   for (Stage d : dependencies(Stage::classification)) compute(d);
   run_stage(Stage::classification, [&](StageWork&) {
     classification_ = assemble_classification(
-        {input_, snapped_, settings_.literal, *crossings_, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
+        {input_, snapped_, settings_.literal, *polyline_census_, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
   });
   // The work of everything the classification needed (contract 4).
   StageWork sum;
@@ -469,7 +470,7 @@ inline void Analysis::compute(Stage stage) const {
     case Stage::trajectory: trajectory(); return;
     case Stage::velocities: velocities(); return;
     case Stage::screw_axis: screw_axis(); return;
-    case Stage::crossings: crossings(); return;
+    case Stage::polyline_census: polyline_census(); return;
     case Stage::nodes: nodes(); return;
     case Stage::cusps: cusps(); return;
     case Stage::root_census: root_census(); return;

@@ -372,7 +372,7 @@ inline void check_costs(const Errors& err, const SceneTrain& st) {
     const auto stages = Analysis::stages_for(e.effect);
     const auto needs = [&](Stage s) { return std::find(stages.begin(), stages.end(), s) != stages.end(); };
     try {
-      if (needs(Stage::crossings) || needs(Stage::root_census)) check_census_cost(st.train.ratio());
+      if (needs(Stage::polyline_census) || needs(Stage::root_census)) check_census_cost(st.train.ratio());
       if ((needs(Stage::trajectory) || needs(Stage::velocities) || needs(Stage::screw_axis)) && !st.settings.samples)
         (void)trace_sample_count(st.train, st.settings.turns);
     } catch (const InvalidInput& ex) {

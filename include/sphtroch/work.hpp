@@ -2,7 +2,7 @@
 // one Analysis stage (analysis.hpp) and of a whole classification (classification.hpp) are one
 // struct, summed with +=.
 //
-//   sphtroch::Work w = sphtroch::Analysis(train).work(sphtroch::Stage::crossings);
+//   sphtroch::Work w = sphtroch::Analysis(train).work(sphtroch::Stage::polyline_census);
 //   w.ran, w.points_evaluated, w.predicates, w.seconds;   // did it run, what it cost
 #pragma once
 
