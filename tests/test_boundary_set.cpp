@@ -297,6 +297,23 @@ TEST_CASE("boundary set: the atlas's root-census counts lie between the events, 
   }
 }
 
+TEST_CASE("atlas boundary check: coarse grids, where a locus begins or ends between columns, explain every change",
+          "[boundary_set][atlas]") {
+  // A hostile-input run found n = 7/6 at grid 7 reporting a change "not crossed" although a
+  // tangency locus crosses between the columns: every class change has a boundary (invariant).
+  for (const auto& [n, grid] : std::vector<std::pair<Ratio, std::size_t>>{
+           {Ratio(7, 6), 7}, {Ratio(-7, 6), 7}, {Ratio(7, 6), 6}, {Ratio(-7, 5), 11}}) {
+    AtlasSpec spec;
+    spec.ratio = n;
+    spec.grid = grid;
+    const std::vector<AtlasCell> cells = compute_atlas(spec, {0, spec.grid}, 2);
+    const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, 2);
+    INFO("n = " << n.str() << ", grid " << grid);
+    CHECK(check.class_changes > 0);
+    CHECK(check.uncrossed.empty());
+  }
+}
+
 TEST_CASE("classify at a tangency of a tiny curve next to a pole (n = 3/5, a2 = 0.02): both censuses agree",
           "[boundary_set][classify]") {
   // The curve is ~0.04 rad across and the touching points lie ~0.0025 rad from the north pole:

@@ -97,7 +97,10 @@ TEST_CASE("boundaries: bad input is exit 2, one stderr line naming the option, n
   TempDir dir;
   for (const std::string args : {"--n 3 --a2 4", "--n 3 --a2 0", "--n 0 --a2 1", "--n 3 --a2 nan", "--n 3 --a2 1:0",
                                  "--n 3 --a2 0:4", "--n 3 --a2 1 --steps 10", "--n 3 --a2 0:1 --json",
-                                 "--n 3 --a2 0:1 --steps 0", "--n 1001/400 --a2 1", "--n 3 --a2 x:1"}) {
+                                 "--n 3 --a2 0:1 --steps 0", "--n 1001/400 --a2 1", "--n 3 --a2 x:1",
+                                 // as classify: the curve degenerates within 1e-6 of 0 or pi
+                                 "--n 3 --a2 1e-300", "--n 3 --a2 pi-1e-15", "--n 3 --a2 0:1e-300",
+                                 "--n 3 --a2 1e-300:1e-299", "--n 3 --a2 0:1 --steps 10001"}) {
     const Result r = run("boundaries " + args + " -o out.txt", dir, true);
     INFO(args << ": " << r.err);
     CHECK(r.status == 2);
@@ -128,4 +131,25 @@ TEST_CASE("classify at a self-tangency typed as a double: crossings + tangencies
   const Result lit = run("classify --n 5/2 --a2 pi/2 --a3 1.0938177365904715 --json --literal", dir);
   REQUIRE(lit.status == 0);
   CHECK(json::parse(lit.out)["boundaries"]["on"].empty());
+}
+
+TEST_CASE("boundaries: events near the degenerate ends stay sorted and chained", "[cli][boundaries]") {
+  // a2 = pi - 1e-6: the pitch cone and the pole passage lie 1e-16 apart near a3 = 1e-6.
+  TempDir dir;
+  for (const std::string args : {"--n 2 --a2 pi-1e-6", "--n -2 --a2 1e-6", "--n 3 --a2 1e-6", "--n 7/3 --a2 pi-1e-6"}) {
+    const Result r = run("boundaries " + args + " --json", dir);
+    INFO(args);
+    REQUIRE(r.status == 0);
+    const json events = json::parse(r.out)["events"];
+    REQUIRE(!events.empty());
+    for (std::size_t k = 0; k < events.size(); ++k) {
+      const double a3 = events[k]["a3"].get<double>();
+      CHECK(a3 > 0.0);
+      CHECK(a3 < 3.141592653589793);
+      if (k == 0) continue;
+      const double prev = events[k - 1]["a3"].get<double>();
+      CHECK(prev <= a3);
+      if (a3 - prev > 1e-12) CHECK(events[k]["nodes_below"] == events[k - 1]["nodes_above"]);
+    }
+  }
 }

@@ -242,6 +242,16 @@ TEST_CASE("hostile: fifo_input_without_writer fails after a bounded wait instead
   check_refused(shell("timeout 30 " + kExe + " crossings --input ff", dir), "no writer opened within 10 s");
 }
 
+TEST_CASE("hostile: fifo_output_without_reader fails after a bounded wait; with a reader it is written", "[cli][hostile][fifo]") {
+  TempDir dir;
+  REQUIRE(::mkfifo((dir.path / "ff").c_str(), 0666) == 0);
+  check_refused(shell("timeout 30 " + kExe + " boundaries --n 3 --a2 1 -o ff", dir), "no reader opened within 10 s");
+  // A reader that opens it: the events arrive through the FIFO (cat waits for the writer).
+  const Result r = shell("(cat ff > got.txt &) ; timeout 30 " + kExe + " boundaries --n 3 --a2 pi/2 -o ff; sleep 0.2; cat got.txt", dir);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("tangency") != std::string::npos);
+}
+
 TEST_CASE("hostile: stdout_write_errors of every command give one line and status 2", "[cli][hostile][device]") {
   TempDir dir;
   REQUIRE(::mknod((dir.path / "full").c_str(), S_IFCHR | 0666, makedev(1, 7)) == 0);

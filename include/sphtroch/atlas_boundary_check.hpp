@@ -35,6 +35,30 @@
 
 namespace sphtroch {
 
+/// Walk from a2 = lo to hi at fixed a3 = h in steps of at most kAtlasWalkStep (at most
+/// kAtlasWalkSamples): true when the events below h (per boundary) change from one step to the
+/// next, i.e. a boundary crosses a3 = h between the columns. Used for the horizontal pairs whose
+/// end columns alone do not decide it (a coarse grid: a locus may begin or end between them).
+constexpr double kAtlasWalkStep = 1e-2;
+constexpr std::size_t kAtlasWalkSamples = 256;
+inline bool crossed_between(double lo, double hi, double h, const Ratio& n) {
+  const std::size_t steps =
+      std::min(kAtlasWalkSamples, std::max<std::size_t>(2, static_cast<std::size_t>(std::ceil((hi - lo) / kAtlasWalkStep))));
+  auto keyed_below = [&](double a2) {
+    std::map<std::string, int> k;
+    for (const BoundaryEvent& e : boundary_set(a2, n).events)
+      if (e.a3 < h) ++k[e.kind == BoundaryEventKind::tangency ? "t" + std::to_string(e.label) + ":" + std::to_string(e.m) : e.name];
+    return k;
+  };
+  std::map<std::string, int> previous = keyed_below(lo);
+  for (std::size_t s = 1; s <= steps; ++s) {
+    std::map<std::string, int> current = keyed_below(lo + (hi - lo) * static_cast<double>(s) / static_cast<double>(steps));
+    if (current != previous) return true;
+    previous = std::move(current);
+  }
+  return false;
+}
+
 struct AtlasBoundaryCheck {
   std::size_t class_changes = 0;                             // neighbouring pairs of different class
   std::vector<std::pair<std::size_t, std::size_t>> uncrossed;  // indices into cells of pairs not crossed
@@ -87,7 +111,9 @@ inline AtlasBoundaryCheck check_atlas_boundaries(const AtlasSpec& spec, const st
       if (c + 1 < columns && differ(cells[k], cells[k + g])) {
         ++out.class_changes;
         const double h = cells[k].a3;
-        if (!on(c, h) && !on(c + 1, h) && below(c, h) == below(c + 1, h)) out.uncrossed.emplace_back(k, k + g);
+        if (!on(c, h) && !on(c + 1, h) && below(c, h) == below(c + 1, h) &&
+            !crossed_between(spec.a2_at(i0 + c), spec.a2_at(i0 + c + 1), h, spec.ratio))
+          out.uncrossed.emplace_back(k, k + g);
       }
     }
   }

@@ -70,7 +70,7 @@ constexpr double kEventAccuracy = 1e-12;
 /// Events closer than this in a3 are one group: they share the counts on either side.
 constexpr double kEventCoincidence = 1e-12;
 /// The most a2 samples boundary_loci takes.
-constexpr std::size_t kMaxLocusSteps = 100000;
+constexpr std::size_t kMaxLocusSteps = 10000;  // ~2 ms per step and core for p, q <= 7: <= ~20 s
 /// Two events of one (label, m) at consecutive a2 samples belong to one locus when closer than
 /// this in a3 (radians).
 constexpr double kLocusJump = 0.25;
@@ -279,9 +279,19 @@ inline std::int64_t node_count(Real sa2, Real ca2, Real a3, const Ratio& n) {
   return n.abs_p() * h.node_roots();
 }
 
+/// a2 as GearTrain accepts it: in (0, pi) and not within kMinCarrierTwist of either end, where
+/// the curve degenerates (classify refuses the same values).
+inline bool a2_in_range(double a2) {
+  const double pi = Constants<double>::pi();
+  return std::isfinite(a2) && a2 > 0 && a2 < pi && a2 >= 0.99 * kMinCarrierTwist && pi - a2 >= 0.99 * kMinCarrierTwist;
+}
+
 inline void check_a2(double a2) {
   if (!(std::isfinite(a2) && a2 > 0 && a2 < Constants<double>::pi()))
     throw InvalidInput("a2", detail::to_text(a2), "outside the valid range", "(0, pi) radians");
+  if (!a2_in_range(a2))
+    throw InvalidInput("a2", detail::to_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
+                       "[1e-6, pi - 1e-6] radians");
 }
 
 }  // namespace boundary_set_detail
@@ -341,6 +351,9 @@ inline BoundarySet boundary_set(double a2, const Ratio& n) {
     prev_end = ev[j - 1].a3_precise;
     i = j;
   }
+  // Printed order: the doubles (a coincident group may round in another order; its members
+  // share the counts, so the chain of counts is the same).
+  std::stable_sort(ev.begin(), ev.end(), [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
   s.events = std::move(ev);
   return s;
 }
@@ -353,11 +366,14 @@ inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_
   if (!(a2_lo >= 0 && a2_lo < a2_hi && a2_hi <= pi))
     throw InvalidInput("a2", range, "not a valid range", "LO:HI with 0 <= LO < HI <= pi");
   if (steps < 1 || steps > kMaxLocusSteps)
-    throw InvalidInput("steps", std::to_string(steps), "outside the valid range", "integer 1 .. 100000");
+    throw InvalidInput("steps", std::to_string(steps), "outside the valid range", "integer 1 .. 10000");
   check_census_cost(n);
   std::vector<double> a2s(steps);
   for (std::size_t k = 0; k < steps; ++k)
     a2s[k] = a2_lo + (a2_hi - a2_lo) * (static_cast<double>(k) + 0.5) / static_cast<double>(steps);
+  if (!boundary_set_detail::a2_in_range(a2s.front()) || !boundary_set_detail::a2_in_range(a2s.back()))
+    throw InvalidInput("a2", range, "samples within 1e-6 rad of 0 or pi (the curve degenerates there)",
+                       "a range whose a2 samples lie in [1e-6, pi - 1e-6]");
   for (std::size_t k = 0; k < steps; ++k)
     if (!(a2s[k] > 0 && a2s[k] < pi && (k == 0 || a2s[k] > a2s[k - 1])))
       throw InvalidInput("a2", range, "too narrow for the steps: the sample a2 are not distinct angles in (0, pi)",

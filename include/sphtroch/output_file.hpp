@@ -42,6 +42,10 @@
 
 namespace sphtroch {
 
+/// Writing to a FIFO waits this long for a reader to open it (milliseconds), polling every kFifoPollMs.
+constexpr int kFifoReaderWaitMs = 10000;
+constexpr int kFifoPollMs = 10;
+
 /// A file or stream could not be written. what() reads "<field> = <path>: <problem> (<strerror>);
 /// valid: <what would work>" — one line.
 class OutputError : public std::runtime_error {
@@ -275,6 +279,24 @@ class OutputFile {
     return ::realpath(path.c_str(), resolved) != nullptr ? std::string(resolved) : path;
   }
 
+  /// A FIFO opens for writing only once a reader has it open; wait for one at most
+  /// kFifoReaderWaitMs instead of blocking forever (then fail naming the path).
+  int open_fifo_with_reader() {
+    for (int waited = 0;; waited += kFifoPollMs) {
+      const int fd = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+      if (fd >= 0) {
+        const int flags = ::fcntl(fd, F_GETFL);
+        if (flags >= 0) (void)::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);  // blocking writes from here
+        return fd;
+      }
+      if (errno != ENXIO) return -1;  // ENXIO: no reader yet
+      if (waited >= kFifoReaderWaitMs)
+        fail("is a FIFO that no reader opened within " + std::to_string(kFifoReaderWaitMs / 1000) + " s", 0,
+             "a FIFO with a reader, a file or a device");
+      ::usleep(kFifoPollMs * 1000);
+    }
+  }
+
   void open_path() {
     struct stat st {};
     const bool exists = ::stat(path_.c_str(), &st) == 0;
@@ -285,7 +307,7 @@ class OutputFile {
     }
     if (exists && !S_ISREG(st.st_mode)) {
       if (S_ISDIR(st.st_mode)) fail("is a directory", 0, "a file path");
-      fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
+      fd_ = S_ISFIFO(st.st_mode) ? open_fifo_with_reader() : ::open(path_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
       if (fd_ < 0) fail("cannot be opened for writing", errno, "a writable file, device or FIFO");
       kind_ = Kind::direct;
       return;

@@ -136,11 +136,6 @@ Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
   return t;
 }
 
-/// The four texts re-parse to the same train (exact: shortest round-trip numbers, p/q).
-Train train_from_texts(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase) {
-  return make_train(py::str(a2), py::str(a3), py::str(n), py::str(phase));
-}
-
 /// A capsule owning `owner`: the base of arrays viewing its data, deleting it with the last of them.
 template <typename Owner>
 py::capsule capsule_of(std::unique_ptr<Owner> owner) {
@@ -339,6 +334,9 @@ std::string shape_text(const py::array& a) {
 
 py::dict crossings(py::handle points, bool closed) {
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  // Complex numbers would be cast to their real part (NumPy only warns): refuse them.
+  if (py::isinstance<py::array>(points) && py::reinterpret_borrow<py::array>(points).dtype().kind() == 'c')
+    throw InvalidInput("points", "a complex array", "not real numbers", kPointsValid);
   Array a = Array::ensure(points);  // the same object when already C-contiguous float64
   if (!a) throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))), "not convertible to a float64 array", kPointsValid);
   if (a.ndim() != 2 || a.shape(1) != 3) throw InvalidInput("points", shape_text(a), "not an (N, 3) array", kPointsValid);
@@ -429,12 +427,12 @@ PYBIND11_MODULE(_sphtroch, m) {
       .def("__eq__", [](const Train& a, const Train& b) {
         return a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n && a.text.phase == b.text.phase;
       })
-      .def(py::pickle([](const Train& t) { return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase); },
-                      [](const py::tuple& s) {
-                        if (py::len(s) != 4) throw std::runtime_error("GearTrain pickle: expected 4 texts");
-                        return train_from_texts(s[0].cast<std::string>(), s[1].cast<std::string>(),
-                                                s[2].cast<std::string>(), s[3].cast<std::string>());
-                      }));
+      // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
+      // texts: a tampered pickle is validated like any other input (InvalidInput).
+      .def("__reduce__", [](py::object self) {
+        const Train& t = self.cast<const Train&>();
+        return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase));
+      });
 
   m.def("crossings", &crossings, py::arg("points"), py::arg("closed") = true);
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,

@@ -55,12 +55,12 @@ void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>
       "(pitch_cone, pole, tangency), a3 to 1e-12 rad and the node points just below and above\n"
       "(as classify counts them: crossings + tangencies). Text, or JSON with --json.\n"
       "An a2 range (--a2 LO:HI, default 0:pi): the boundary curves as CSV\n"
-      "locus,kind,m,label,a2,a3,b at --steps a2 samples (cell centres; default 720, 1 .. 100000).\n"
+      "locus,kind,m,label,a2,a3,b at --steps a2 samples (cell centres; default 720, 1 .. 10000).\n"
       "Example: sphtroch boundaries --n 3 --a2 pi/2");
   cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2")->required();
   cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)");
   cmd->add_flag("--json", o->json, "the events as JSON (one a2 only)");
-  cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 100000; default 720)");
+  cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 10000; default 720)");
   cmd->add_option("--threads", o->threads, "worker threads for the curves (1 .. 1024; default: cores)");
   add_output_option(*cmd, o->output, "the events or the curves");
   actions.emplace_back(cmd, [o] { run_boundaries(*o); });

@@ -63,6 +63,7 @@ def test_classify_arguments():
     (np.zeros((0, 3)), ""), ([[1, 0, 0], [0, 1, 0]], ""), ("abc", ""), (None, ""), ([[1, 0, 0], [1, 0, 0], [0, 1, 0]], "index 0"),
     ([[1, 0, 0], [0, 1, 0], [0, 0, 0]], "index 2"), ([[1, 0, 0], [0, 1, 0], [0, 0, float("nan")]], "index 2"),
     ([[1, 0, 0], [-1, 0, 0], [0, 0, 1]], "index 0"), ([["a", "b", "c"]] * 3, ""),
+    (np.eye(3, dtype=complex) + 1j, "complex"),  # not cast to the real part
 ])
 def test_crossings_points_refused(points, what):
     e = check(lambda: sphtroch.crossings(points), "points", what)

@@ -3,6 +3,8 @@ and GearTrain survives pickling bit for bit."""
 import pickle
 import threading
 
+import pytest
+
 import numpy as np
 import sphtroch
 
@@ -69,7 +71,17 @@ def test_atlas_threads_do_not_change_the_map():
 
 def test_pickle_round_trip_is_exact():
     for tr in TRAINS + [sphtroch.GearTrain(1.0471975511965976, 0.1 + 0.2, 2.5, phase=1e300)]:
-        back = pickle.loads(pickle.dumps(tr))
-        assert back == tr and repr(back) == repr(tr)
-        assert (back.a2, back.a3, back.n, back.phase) == (tr.a2, tr.a3, tr.n, tr.phase)
-        assert np.array_equal(back.trace(samples=500)[1], tr.trace(samples=500)[1])
+        for protocol in range(pickle.HIGHEST_PROTOCOL + 1):  # 0 and 1 too (they once aborted)
+            back = pickle.loads(pickle.dumps(tr, protocol=protocol))
+            assert back == tr and repr(back) == repr(tr)
+            assert (back.a2, back.a3, back.n, back.phase) == (tr.a2, tr.a3, tr.n, tr.phase)
+            assert np.array_equal(back.trace(samples=500)[1], tr.trace(samples=500)[1])
+
+
+def test_a_tampered_pickle_is_validated_like_any_input():
+    good = pickle.dumps(sphtroch.GearTrain("pi/3", "pi/2", "5/2"), protocol=2)
+    bad = good.replace(b"5/2", b"5/0")
+    assert bad != good
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        pickle.loads(bad)
+    assert e.value.field == "n"
