@@ -58,13 +58,10 @@ struct TempDir {
   }
 };
 
-/// Runs `sphtroch <args>` through the shell (args already shell-quoted where needed), capturing
-/// stdout, stderr and the exit status in files of `dir`. With `in_dir`, runs inside `dir` so that
-/// relative paths land there.
-inline Result run(const std::string& args, const TempDir& dir, bool in_dir = false) {
-  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
-  const std::string cd = in_dir ? "cd '" + dir.path.string() + "' && " : std::string();
-  const std::string cmd = cd + "'" + SPHTROCH_EXE + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+/// Runs `command` through the shell with stdout and stderr redirected to the files `out` and
+/// `err`; returns the exit status (-1 if it did not exit) and both texts, the files removed.
+inline Result capture(const std::string& command, const fs::path& out, const fs::path& err) {
+  const std::string cmd = command + " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int raw = std::system(cmd.c_str());
   Result r;
   r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
@@ -75,19 +72,21 @@ inline Result run(const std::string& args, const TempDir& dir, bool in_dir = fal
   return r;
 }
 
+/// Runs `sphtroch <args>` through the shell (args already shell-quoted where needed), capturing
+/// stdout, stderr and the exit status in files of `dir`. With `in_dir`, runs inside `dir` so that
+/// relative paths land there.
+inline Result run(const std::string& args, const TempDir& dir, bool in_dir = false) {
+  const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
+  const std::string cd = in_dir ? "cd '" + dir.path.string() + "' && " : std::string();
+  return capture(cd + "'" + SPHTROCH_EXE + "' " + args, out, err);
+}
+
 /// Runs a bash command line (with pipefail) inside `dir`, for pipes and redirections around the
 /// tool; captures stdout, stderr and the exit status as run() does.
 inline Result shell(const std::string& line, const TempDir& dir) {
   const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt", script = dir.path / "cmd.sh";
   std::ofstream(script) << "set -o pipefail\ncd '" << dir.path.string() << "'\n" << line << "\n";
-  const std::string cmd = "bash '" + script.string() + "' >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
+  const Result r = capture("bash '" + script.string() + "'", out, err);
   fs::remove(script);
   return r;
 }

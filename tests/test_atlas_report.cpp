@@ -13,13 +13,6 @@ using namespace sphtroch;
 
 namespace {
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string line;
-  while (std::getline(ss, line)) out.push_back(line);
-  return out;
-}
 
 bool has(const std::string& line, const std::string& part) { return line.find(part) != std::string::npos; }
 
@@ -51,7 +44,7 @@ TEST_CASE("atlas summary: every count of the summary, the listed cells, the rest
   const std::vector<AtlasCell> listed = {disagreeing_cell(1, 2, 0.25, 1.5), disagreeing_cell(3, 0, 1.0 / 3.0, 0.125)};
   std::ostringstream out;
   write_atlas_summary(out, spec, hand_summary(), listed, AtlasRun{AtlasRows{0, 4}, std::nullopt, std::nullopt, 1});
-  const auto l = lines(out.str());
+  const auto l = sphtroch::test::split_lines(out.str());
   REQUIRE(l.size() == 6 + listed.size() + 1);  // 6 fixed lines, the listed cells, "... and N more"
   CHECK(l[0].rfind("atlas: n = 2, grid 4 x 4", 0) == 0);
   CHECK(has(l[0], "default reading"));
@@ -83,7 +76,7 @@ TEST_CASE("atlas summary: a shard names itself; a timed run ends with its time; 
   s.disagreement_count = 0, s.disagreements_off_boundaries = 0;
   std::ostringstream out;
   write_atlas_summary(out, spec, s, {}, AtlasRun{AtlasRows{4, 6}, AtlasShard{3, 4}, 2.0, 4});
-  const auto l = lines(out.str());
+  const auto l = sphtroch::test::split_lines(out.str());
   REQUIRE(l.size() == 7);
   CHECK(has(l[0], "n = 5/2"));
   CHECK(has(l[0], "literal reading"));

@@ -25,13 +25,6 @@ namespace {
 
 const double kPi = Constants<double>::pi();
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string line;
-  while (std::getline(ss, line)) out.push_back(line);
-  return out;
-}
 
 std::size_t count_prefix(const std::vector<std::string>& l, const std::string& prefix) {
   std::size_t k = 0;
@@ -120,7 +113,7 @@ TEST_CASE("classification text: the inputs as typed with their values, one line 
   const Fig5f& f = fig5f();
   std::ostringstream out;
   write_classification_text(out, f.text, f.c);
-  const auto l = lines(out.str());
+  const auto l = sphtroch::test::split_lines(out.str());
   const std::string a2_line = "  a2 = pi/3 = " + number_text(kPi / 3) + " rad (" + number_text(kPi / 3 * 180.0 / kPi) + " deg)";
   CHECK(std::count(l.begin(), l.end(), a2_line) == 1);
   CHECK(count_prefix(l, "  node ") == 4);
@@ -143,7 +136,7 @@ TEST_CASE("classification: a cardioid (tracer on the pitch cone, n = 1) reports 
   CHECK(j["inputs"]["a3_text"] == "ap");
   std::ostringstream out;
   write_classification_text(out, text, c);
-  CHECK(count_prefix(lines(out.str()), "  cusp 1: at ") == 1);
+  CHECK(count_prefix(sphtroch::test::split_lines(out.str()), "  cusp 1: at ") == 1);
 }
 
 TEST_CASE("plot caption: the texts as typed, the phase only when not 0, the counts") {
@@ -183,7 +176,7 @@ TEST_CASE("crossings summary: the search's counts under their names, as JSON and
   CHECK(j["seconds_search"].get<double>() == 0.5);
   std::ostringstream out;
   write_crossings_summary_text(out, s);
-  const auto l = lines(out.str());
+  const auto l = sphtroch::test::split_lines(out.str());
   REQUIRE(l.size() == 6);
   CHECK(l[0] == "vertices 12 (open), read as npy <f8 (12, 3)");
   CHECK(l[1] == "crossings 2");

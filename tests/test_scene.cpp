@@ -35,13 +35,6 @@ std::string train_with(const std::string& extra) {
   return R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "n": 2, )" + extra + R"("effects": {"nodes": "n.csv"}}]})";
 }
 
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string line;
-  while (std::getline(ss, line)) out.push_back(line);
-  return out;
-}
 
 }  // namespace
 
@@ -168,8 +161,8 @@ TEST_CASE("scene effects: each output is what the stage gives, computed separate
   std::ostringstream nodes;
   write_nodes_csv(nodes, separate.nodes(), separate.cusps());
   CHECK(output(Effect::nodes) == nodes.str());
-  CHECK(lines(output(Effect::nodes)).size() == 1 + 4);  // Table 1 row (f): 4 nodes, no cusp
-  CHECK(lines(output(Effect::cusps)).size() == 1);      // no cusp: the header alone
+  CHECK(sphtroch::test::split_lines(output(Effect::nodes)).size() == 1 + 4);  // Table 1 row (f): 4 nodes, no cusp
+  CHECK(sphtroch::test::split_lines(output(Effect::cusps)).size() == 1);      // no cusp: the header alone
 
   const json c = json::parse(output(Effect::classification));
   CHECK(c["inputs"]["a2_text"] == "pi/3");
@@ -178,7 +171,7 @@ TEST_CASE("scene effects: each output is what the stage gives, computed separate
   CHECK(z["z_max"].get<double>() == Approx(std::cos(kPi / 3 - kPi / 2)).epsilon(1e-14));
 
   // Screw axis: |omega| = sqrt(1 + n^2 + 2 n cos a2) at every sample (Eq. 47a).
-  const auto w = lines(output(Effect::screw_axis));
+  const auto w = sphtroch::test::split_lines(output(Effect::screw_axis));
   REQUIRE(w.size() == 1 + 360);
   CHECK(w[0] == "t,wx,wy,wz");
   const double norm = std::sqrt(1.0 + 4.0 + 4.0 * std::cos(kPi / 3));
@@ -187,7 +180,7 @@ TEST_CASE("scene effects: each output is what the stage gives, computed separate
     REQUIRE(std::sscanf(w[i].c_str(), "%lf,%lf,%lf,%lf", &t, &x, &y, &zz) == 4);
     CHECK(std::sqrt(x * x + y * y + zz * zz) == Approx(norm).epsilon(1e-14));
   }
-  CHECK(lines(output(Effect::trace)).size() == 1 + 360);
+  CHECK(sphtroch::test::split_lines(output(Effect::trace)).size() == 1 + 360);
 }
 
 TEST_CASE("scene effects: a classification path ending in .txt is the text report") {
@@ -222,7 +215,7 @@ TEST_CASE("scene explanation: the effects' stages, the stages run in order, the 
 
   std::ostringstream out;
   write_scene_explanation(out, st, a);
-  const auto l = lines(out.str());
+  const auto l = sphtroch::test::split_lines(out.str());
   REQUIRE(!l.empty());
   CHECK(l[0] == "train only nodes: a2 = 1, a3 = 2, n = 2, phase = 0");
   bool root_not_run = false;

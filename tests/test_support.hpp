@@ -12,6 +12,15 @@
 
 namespace sphtroch::test {
 
+/// The lines of `text`, without their '\n'.
+inline std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string line;
+  while (std::getline(ss, line)) out.push_back(line);
+  return out;
+}
+
 /// Runs f, expects sphtroch::InvalidInput, and returns it for inspection (fails the test otherwise).
 template <typename F>
 InvalidInput expect_invalid(F&& f) {
