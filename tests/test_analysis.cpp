@@ -305,5 +305,7 @@ TEST_CASE("stage table: one row per stage in enum order, dependencies earlier, n
     if (s != Stage::input) CHECK_FALSE(Analysis::dependencies(s).empty());
   }
   CHECK(Analysis::dependencies(Stage::nodes) == std::vector<Stage>{Stage::polyline_census});
+  // The crossing stage is certified against the independent root census (certified_census.hpp).
+  CHECK(Analysis::dependencies(Stage::polyline_census) == std::vector<Stage>{Stage::root_census});
   CHECK(Analysis::dependencies(Stage::classification).size() == 6);
 }

@@ -55,6 +55,7 @@
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
 #include "sphtroch/pitch_cone.hpp"
+#include "sphtroch/certified_census.hpp"
 #include "sphtroch/polyline_census.hpp"
 #include "sphtroch/root_census.hpp"
 #include "sphtroch/root_classification.hpp"
@@ -78,11 +79,12 @@ enum class Stage {
   trajectory,       // P(t_i) of the given train (sampling.hpp)
   velocities,       // dP/dtheta2 (t_i) (Eq. 47a)
   screw_axis,       // omega(t_i) = Z1 + n Z2 (Eq. 47a)
-  polyline_census,  // exact polyline crossings + near misses, Newton refinement, assembly; named
+  root_census,      // one-dimensional root count (root_census.hpp)
+  polyline_census,  // exact polyline crossings + near misses, Newton refinement, assembly,
+                    // certified against the root census (certified_census.hpp); named
                     // "crossings" in reports and scenes (kept for compatibility)
   nodes,            // the node points of the crossing stage
   cusps,            // pitch-cone criterion, each verified by point and speed
-  root_census,      // one-dimensional root count (root_census.hpp)
   analytic,         // the report's criteria (Eqs. 20/24, 43/46, pitch cone): closed forms only
   extremes,         // z extremes (Eqs. 14/15, 32-35 generalised): closed forms only
   symmetry,         // mirror planes and rotation order: closed forms only
@@ -135,7 +137,9 @@ class Analysis {
   const Trajectory<double>& trajectory() const;
   const std::vector<Vector3d>& velocities() const;  // at trajectory().t
   const ScrewAxisSamples& screw_axis() const;
+  /// The certified polyline census (certified_census.hpp): the last run, and its certificate.
   const PolylineCensus& polyline_census() const;
+  const CensusCertificate& certificate() const;
   const std::vector<Node>& nodes() const;
   const std::vector<Cusp>& cusps() const;
   const RootCensus& root_census() const;
@@ -174,7 +178,7 @@ class Analysis {
   mutable std::optional<Trajectory<double>> trajectory_, plot_trajectory_;
   mutable std::optional<std::vector<Vector3d>> velocities_;
   mutable std::optional<ScrewAxisSamples> screw_axis_;
-  mutable std::optional<PolylineCensus> polyline_census_;
+  mutable std::optional<CertifiedCensus> polyline_census_;
   mutable std::optional<std::vector<Cusp>> cusps_;
   mutable std::optional<RootCensus> root_;
   mutable std::optional<AnalyticClassification> analytic_;
@@ -205,10 +209,10 @@ inline const std::array<StageRow, kStageCount>& stage_table() {
       {S::trajectory, "trajectory", {S::input}, 1},
       {S::velocities, "velocities", {S::input}, 1},
       {S::screw_axis, "screw_axis", {S::input}, 1},
-      {S::polyline_census, "crossings", {S::input}, 1},
+      {S::root_census, "root_census", {S::input}, 1},
+      {S::polyline_census, "crossings", {S::root_census}, 1},
       {S::nodes, "nodes", {S::polyline_census}, 1},
       {S::cusps, "cusps", {S::input}, 1},
-      {S::root_census, "root_census", {S::input}, 1},
       {S::analytic, "analytic", {S::input}, 1},
       {S::extremes, "extremes", {S::input}, 1},
       {S::symmetry, "symmetry", {S::input}, 1},
@@ -369,17 +373,29 @@ inline const ScrewAxisSamples& Analysis::screw_axis() const {
 }
 
 inline const PolylineCensus& Analysis::polyline_census() const {
-  if (!polyline_census_)
+  if (!polyline_census_) {
+    root_census();
     run_stage(Stage::polyline_census, [&](StageWork& w) {
       PolylineCensusSettings ps;
       ps.samples = settings_.census_samples;
       ps.tangency_tolerance = settings_.reading().tangency();
-      polyline_census_ = sphtroch::polyline_census(analysed(), ps);
-      w.points_evaluated = polyline_census_->work.points_evaluated;
-      w.predicates = polyline_census_->work.predicates;
-      w.newton_steps = polyline_census_->work.newton_steps;
+      polyline_census_ = certified_census(analysed(), ps, *root_);
+      // Every run of the escalation counts (its own counters hold the last run only).
+      const PolylineWork& last = polyline_census_->polyline.work;
+      w.points_evaluated = last.points_evaluated;
+      w.predicates = last.predicates;
+      w.newton_steps = last.newton_steps;
+      w.points_evaluated += polyline_census_->earlier_work.points_evaluated;
+      w.predicates += polyline_census_->earlier_work.predicates;
+      w.newton_steps += polyline_census_->earlier_work.newton_steps;
     });
-  return *polyline_census_;
+  }
+  return polyline_census_->polyline;
+}
+
+inline const CensusCertificate& Analysis::certificate() const {
+  polyline_census();
+  return polyline_census_->certificate;
 }
 
 inline const std::vector<Node>& Analysis::nodes() const {
@@ -387,7 +403,7 @@ inline const std::vector<Node>& Analysis::nodes() const {
     polyline_census();
     run_stage(Stage::nodes, [](StageWork&) {});  // the crossing stage's nodes, as they are
   }
-  return polyline_census_->nodes;
+  return polyline_census_->polyline.nodes;
 }
 
 inline const std::vector<Cusp>& Analysis::cusps() const {
@@ -455,7 +471,7 @@ inline const Classification& Analysis::classification() const {
   for (Stage d : dependencies(Stage::classification)) compute(d);
   run_stage(Stage::classification, [&](StageWork&) {
     classification_ = assemble_classification(
-        {input_, snapped_, settings_.literal, *polyline_census_, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
+        {input_, snapped_, settings_.literal, polyline_census_->polyline, polyline_census_->certificate, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
   });
   // The work of everything the classification needed (contract 4).
   StageWork sum;

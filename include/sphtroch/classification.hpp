@@ -34,6 +34,7 @@
 #include "sphtroch/boundary_snap.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/node.hpp"
+#include "sphtroch/node_sets.hpp"
 #include "sphtroch/pitch_cone.hpp"
 #include "sphtroch/polyline_census_result.hpp"
 #include "sphtroch/root_census.hpp"
@@ -47,9 +48,6 @@
 #include <vector>
 
 namespace sphtroch {
-
-/// Node points of the two censuses match when closer than this (chord).
-constexpr double kAgreementDistance = 1e-8;
 
 struct ClassifySettings {
   bool literal = false;                          // analyse the doubles as given
@@ -65,6 +63,9 @@ struct CensusAgreement {
   std::vector<std::string> notes;       // every disagreement, in words
   bool ok() const { return censuses_agree && analytic_agrees.value_or(true); }
 };
+
+/// Exit status of the tool when what it printed is not certified (README: Exit status).
+constexpr int kUncertifiedExitStatus = 3;
 
 /// The work of every stage a classification needed (work.hpp).
 using ClassificationWork = Work;
@@ -88,47 +89,14 @@ struct Classification {
   Symmetry symmetry_planes;
   ConeMargins cone;
   CensusAgreement agreement;
+  CensusCertificate certificate;   // the polyline census runs behind `nodes` (certified_census.hpp)
   ClassificationWork work;
+  /// Every count printed is one two independent methods agree on (and the report's criteria,
+  /// where they give one): agreement.ok().
+  bool certified() const { return agreement.ok(); }
   double tangency_tolerance = 0.0;
 };
 
-namespace detail {
-/// One-to-one agreement: every node of `a` is paired with the NEAREST unused node of `b` within
-/// kAgreementDistance, of the same kind and branch count (nearest, because crossings of a
-/// cluster near a pole can be closer to each other than kAgreementDistance).
-inline bool same_node_sets(const std::vector<Node>& a, const std::vector<Node>& b, std::string& why) {
-  if (a.size() != b.size()) {
-    why = std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " node points";
-    return false;
-  }
-  std::vector<std::size_t> order(b.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t i, std::size_t j) { return b[i].position.x() < b[j].position.x(); });
-  std::vector<bool> used(b.size(), false);
-  for (const Node& n : a) {
-    auto it = std::lower_bound(order.begin(), order.end(), n.position.x() - kAgreementDistance,
-                               [&](std::size_t j, double x) { return b[j].position.x() < x; });
-    std::size_t hit = b.size();
-    double best = kAgreementDistance;
-    for (; it != order.end() && b[*it].position.x() <= n.position.x() + kAgreementDistance; ++it) {
-      const Node& m = b[*it];
-      const double gap = (m.position - n.position).norm();
-      if (!used[*it] && gap <= best && m.kind == n.kind && m.branches == n.branches) {
-        hit = *it;
-        best = gap;
-      }
-    }
-    if (hit == b.size()) {
-      why = "no match for the " + std::string(to_string(n.kind)) + " node at (" + to_text(n.position.x()) + ", " +
-            to_text(n.position.y()) + ", " + to_text(n.position.z()) + ")";
-      return false;
-    }
-    used[hit] = true;
-  }
-  return true;
-}
-}  // namespace detail
 
 /// The stage results a classification is assembled from (Analysis::classification() passes its
 /// memoized stages; every reference must outlive the call).
@@ -137,6 +105,7 @@ struct ClassificationInputs {
   const SnappedTrain& snapped;           // the train analysed
   bool literal;
   const PolylineCensus& polyline;
+  const CensusCertificate& certificate;
   const RootCensus& root;
   const std::vector<Cusp>& cusps;
   const AnalyticClassification& analytic;
@@ -145,13 +114,14 @@ struct ClassificationInputs {
 };
 
 /// The classification of those results: counts, class, cone margins, and the agreement of the
-/// two censuses (same node sets, detail::same_node_sets) and of the report's criteria (n = 1, 2),
+/// two censuses (same node sets, same_node_sets) and of the report's criteria (n = 1, 2),
 /// every disagreement in words. `work` is left zero (the caller sums its stages).
 inline Classification assemble_classification(const ClassificationInputs& in) {
   Classification c(in.input, in.snapped);
   c.literal = in.literal;
   c.tangency_tolerance = Reading{in.literal}.tangency();
   c.polyline = in.polyline;
+  c.certificate = in.certificate;
   c.root = in.root;
   c.nodes = c.polyline.nodes;
   for (const Node& n : c.nodes) (n.kind == NodeKind::crossing ? c.crossings : c.tangencies)++;
@@ -164,9 +134,10 @@ inline Classification assemble_classification(const ClassificationInputs& in) {
   c.curve_class = curve_class(c.nodes.size(), c.cusps.size());
 
   std::string why;
-  if (!detail::same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
+  if (!same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
     c.agreement.censuses_agree = false;
     c.agreement.notes.push_back("polyline census vs root-count census: " + why);
+    if (!c.certificate.stopped.empty()) c.agreement.notes.push_back("escalation stopped: " + c.certificate.stopped);
   }
   if (c.analytic.predicted_nodes) {
     const bool nodes_ok = *c.analytic.predicted_nodes == c.nodes.size();

@@ -65,9 +65,12 @@ inline double tangent_line_angle(const Vector3d& u, const Vector3d& v) {
   return std::atan2(cross, dot);
 }
 
-/// Groups pairs into nodes. REQUIRES: pair params in [0, period).
+/// Groups pairs into nodes. A group whose pairs name fewer than two distinct branches (a pair
+/// with t1, t2 within kBranchParamTolerance) is not a node: it is dropped and counted in
+/// *single_branch_groups when given. REQUIRES: pair params in [0, period).
 inline std::vector<Node> assemble_nodes(const std::vector<BranchPair>& pairs, const TracerCurve<double>& curve,
-                                        double merge_distance = kNodeMergeDistance) {
+                                        double merge_distance = kNodeMergeDistance,
+                                        std::size_t* single_branch_groups = nullptr) {
   const double period = curve.period();
   const std::size_t m = pairs.size();
   // Union-find over pairs whose points are close; candidates from a sweep in x.
@@ -106,6 +109,10 @@ inline std::vector<Node> assemble_nodes(const std::vector<BranchPair>& pairs, co
       else ++node.tangency_pairs;
     }
     node.params = distinct_branches(std::move(params), period);
+    if (node.params.size() < 2) {  // a node has two branches at least
+      if (single_branch_groups) ++*single_branch_groups;
+      continue;
+    }
     node.position = sum.normalized();
     node.branches = node.params.size();
     node.kind = node.crossing_pairs > 0 ? NodeKind::crossing : NodeKind::tangency;

@@ -109,12 +109,19 @@ constexpr double kGapModelReachSpacings = 4;
 constexpr int kProjectionSteps = 8;
 /// Meetings closer than this in both parameters (radians of theta2) are one.
 constexpr long double kSameMeetingParam = 1e-10L;
+/// A meeting of branches closer in parameter than kCuspLoopParam is a loop only if the curve
+/// leaves the meeting point: its residual must be below this fraction of the chords from
+/// P(t1) and P(t2) to the point between them, P(t_mid). Near a cusp the curve barely moves, so
+/// two parameters 1e-7 apart can have |P(t1) - P(t2)| ~ 1e-16 < kNodeResidual without any loop
+/// (issue 17, D1: 13 one-branch "nodes" at n = 52/35); there the chords equal the residual.
+/// A genuine loop of size ~d (d >= kCuspResolution = 1e-10) has chords ~d and residual ~1e-18.
+constexpr long double kLoopResidualFraction = 1e-3L;
 
 namespace census {
 
 /// Stage 1. Uniform parameters over the period plus graded refinement around near-cusp
 /// parameters (see header), ascending, distinct.
-inline std::vector<double> census_parameters(const GearTrain& train, std::size_t n) {
+inline std::vector<double> census_parameters(const GearTrain& train, std::size_t n, unsigned escalation = 0) {
   const double period = train.period();
   const double h = period / static_cast<double>(n);
   std::vector<double> ts(n);
@@ -131,10 +138,11 @@ inline std::vector<double> census_parameters(const GearTrain& train, std::size_t
     if (c.distance > kDenseConeDistance) continue;
     // Loop parameter half-length ~ sqrt(6 d) in theta3, i.e. / |n| in theta2; cover 4x that.
     const double w = std::min(kDenseMaxSpacings * h, 4.0 * std::sqrt(6.0 * std::max(c.distance, kDenseMinConeDistance)) / abs_n);
-    const double fine = w / kDenseFineSamples;
+    const int fine_samples = kDenseFineSamples << escalation;
+    const double fine = w / fine_samples;
     for (std::int64_t k = 0; k < r.abs_p(); ++k) {
       const double tc = reduce_to_period(theta2_at_planet_angle(r, train.phase(), c.theta3, k), period);
-      for (int j = -kDenseFineSamples; j <= kDenseFineSamples; ++j) ts.push_back(reduce_to_period(tc + fine * j, period));
+      for (int j = -fine_samples; j <= fine_samples; ++j) ts.push_back(reduce_to_period(tc + fine * j, period));
       for (double off = w * kDenseGrowth; off < 2 * h; off *= kDenseGrowth) {
         ts.push_back(reduce_to_period(tc + off, period));
         ts.push_back(reduce_to_period(tc - off, period));
@@ -165,11 +173,12 @@ struct SampledPolyline {
 
 /// Stage 1. The census polyline of n uniform samples (plus dense ones); vertices closer than
 /// kMinVertexSeparation to the previous one are dropped.
-inline SampledPolyline sample_polyline(const GearTrain& train, std::size_t n, PolylineWork& work) {
+inline SampledPolyline sample_polyline(const GearTrain& train, std::size_t n, PolylineWork& work,
+                                       unsigned escalation = 0) {
   const TracerCurve<double> curve(train);
   SampledPolyline poly;
   poly.period = train.period();
-  for (double t : census_parameters(train, n)) {
+  for (double t : census_parameters(train, n, escalation)) {
     const Vector3d p = curve.point(t);
     ++work.points_evaluated;
     // Refined samples at a (near-)cusp move by less than rounding: keep distinct vertices only.
@@ -334,6 +343,10 @@ class MeetingFinder {
       ++out_.newton_failures;
       return;
     }
+    if (dt < kCuspLoopParam && !leaves_meeting_point(r)) {
+      ++out_.newton_failures;
+      return;
+    }
     if (dt < kCuspLoopParam || angle >= kTransversalAngle) {
       if (r.residual <= kNodeResidual) {
         meetings_.push_back({r.t1, r.t2, NodeKind::crossing});
@@ -352,6 +365,14 @@ class MeetingFinder {
   LD separation(LD a, LD b) const { return periodic_distance<LD>(a, b, period_); }
   /// Every meeting must join two different branches (not t1 = t2 modulo the period).
   bool distinct_branches(LD a, LD b) const { return separation(a, b) >= kMinBranchSeparation; }
+
+  /// The curve between the branches of a short meeting goes somewhere (see kLoopResidualFraction).
+  bool leaves_meeting_point(const RefinedPair<LD>& r) {
+    const LD a = r.t1, b = a + std::remainder(r.t2 - r.t1, static_cast<LD>(period_));  // the short way round
+    const Vector3<LD> p1 = curve_.point(a), p2 = curve_.point(b), mid = curve_.point((a + b) / 2);
+    out_.work.points_evaluated += 3;
+    return r.residual <= kLoopResidualFraction * ((mid - p1).norm() + (mid - p2).norm());
+  }
 
   RefinedPair<LD> refine(LD a, LD b) {
     const auto r = refine_branch_pair(curve_, a, b, settings_);
@@ -510,8 +531,10 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
   const bool literal = settings.tangency_tolerance <= 0;
   const long double gap_tolerance = literal ? kLiteralGapTolerance : settings.tangency_tolerance;
 
-  const std::size_t n = settings.samples ? settings.samples : census_sample_count(train);
-  const census::SampledPolyline poly = census::sample_polyline(train, n, out.work);
+  const std::size_t n = escalated_samples(settings.samples ? settings.samples : census_sample_count(train),
+                                          settings.escalation);
+  out.escalation = settings.escalation;
+  const census::SampledPolyline poly = census::sample_polyline(train, n, out.work, settings.escalation);
   out.samples = poly.size();
   const double h = train.period() / static_cast<double>(n);
 
@@ -528,7 +551,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
   const auto unique = census::unique_meetings(finder.meetings(), static_cast<long double>(train.period()));
 
   out.pairs = census::branch_pairs(train, unique, out.work);
-  out.nodes = assemble_nodes(out.pairs, TracerCurve<double>(train));
+  out.nodes = assemble_nodes(out.pairs, TracerCurve<double>(train), kNodeMergeDistance, &out.single_branch_groups);
   out.work.points_evaluated += assembly_evaluations(out.nodes);
   return out;
 }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace sphtroch {
@@ -22,6 +23,9 @@ struct PolylineCensusSettings {
   std::size_t samples = 0;  // uniform samples per period; 0 = census_sample_count(train)
   /// Branches whose closest approach is within this (radians) are one tangency (default mode).
   double tangency_tolerance = 1e-10;
+  /// Escalation level k (certified_census.hpp): 4^k times the uniform samples and 2^k times the
+  /// dense samples around near-cusp parameters.
+  unsigned escalation = 0;
 };
 
 /// Work of one census, counted exactly where it is done.
@@ -39,13 +43,32 @@ struct PolylineCensus {
   std::size_t polyline_touchings = 0;  // exact touching/overlap contacts of the polyline
   std::size_t near_misses = 0;         // near-miss seeds
   std::size_t newton_failures = 0;     // seeds whose refinement did not converge to a meeting
+  std::size_t single_branch_groups = 0;  // meeting groups with < 2 distinct branches: not nodes, dropped
+  unsigned escalation = 0;             // the settings' escalation level
   std::vector<BranchPair> pairs;
   std::vector<Node> nodes;
   PolylineWork work;
 };
 
+/// Whether a node count is certified: the polyline census and the independent root-count census
+/// found the same node points (node_sets.hpp), possibly after escalation (certified_census.hpp).
+struct CensusCertificate {
+  bool certified = false;
+  std::vector<std::size_t> samples;         // uniform samples of each polyline census run, in order
+  std::vector<std::size_t> polyline_nodes;  // its node count, per run
+  std::size_t root_nodes = 0;               // the root-count census's node count
+  std::string disagreement;                 // the last run's first difference ("" when certified)
+  std::string stopped;                      // why escalation stopped without agreement ("" otherwise)
+  std::size_t runs() const { return samples.size(); }
+};
+
 /// Fewest uniform samples a user may ask of the census (the CLI's --samples, a scene's census_samples).
 constexpr std::size_t kMinCensusSamples = 1024;
+
+/// Uniform samples at escalation level k: 4^k times `samples` (k <= 8).
+inline std::size_t escalated_samples(std::size_t samples, unsigned escalation) {
+  return samples << (2 * std::min(escalation, 8u));
+}
 
 /// Default uniform sample count: 256 per unit of (q + |p|), at least 1024.
 inline std::size_t census_sample_count(const GearTrain& train) {

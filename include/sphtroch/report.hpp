@@ -62,12 +62,14 @@ inline void write_classification_text(std::ostream& out, const InputText& text, 
 inline nlohmann::json z_extremes_json(const ZExtremes& z);
 
 /// The caption of `plot` (contract 4); `analysed` is the train the nodes belong to.
+/// With a certificate that is not certified, the caption ends " — UNCERTIFIED (root-count census: N)".
 inline std::string plot_caption(const InputText& text, const GearTrain& analysed, const std::vector<Node>& nodes,
-                                const std::vector<Cusp>& cusps);
+                                const std::vector<Cusp>& cusps, const CensusCertificate* certificate = nullptr);
 
 /// `plot`: the sphere picture of `trajectory` with nodes, cusps and plot_caption (svg_plot.hpp).
 inline std::string plot_svg(const InputText& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
-                            const std::vector<Node>& nodes, const std::vector<Cusp>& cusps);
+                            const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                            const CensusCertificate* certificate = nullptr);
 
 /// What `sphtroch crossings` reports about one search.
 struct CrossingsSummary {
@@ -197,6 +199,23 @@ inline nlohmann::json agreement_json(const CensusAgreement& a) {
           {"notes", a.notes}};
 }
 
+inline nlohmann::json certificate_json(const Classification& c) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (std::size_t k = 0; k < c.certificate.runs(); ++k)
+    runs.push_back({{"samples", c.certificate.samples[k]}, {"nodes", c.certificate.polyline_nodes[k]}});
+  return {{"certified", c.certified()},
+          {"polyline_runs", runs},
+          {"root_count_nodes", c.certificate.root_nodes},
+          {"stopped", c.certificate.stopped}};
+}
+
+/// The words for an uncertified result: both counts (README: Certified counts).
+inline std::string uncertified_text(const Classification& c) {
+  return "UNCERTIFIED: the polyline census finds " + std::to_string(c.polyline.nodes.size()) +
+         " node(s), the root-count census " + std::to_string(c.root.nodes.size()) +
+         (c.agreement.analytic_agrees.value_or(true) ? std::string() : std::string(", the report's criteria disagree"));
+}
+
 inline nlohmann::json tolerances_json(const Classification& c) {
   return {{"boundary", c.snapped.tolerance},          {"cusp_resolution", kCuspResolution},
           {"tangency", c.tangency_tolerance},         {"node_residual", kNodeResidual},
@@ -242,6 +261,7 @@ inline void text_nodes_and_cusps(std::ostream& out, const Classification& c) {
   out << "class: " << to_string(c.curve_class) << " — " << c.nodes.size() << " node(s) (" << c.crossings
       << " crossing, " << c.tangencies << " tangency), " << c.cusps.size() << " cusp(s)"
       << (c.cusp_within_resolution ? " [cusp within resolution " + number_text(kCuspResolution) + " rad]" : "") << "\n";
+  out << "certified: " << (c.certified() ? "yes (two independent censuses agree)" : "NO — " + uncertified_text(c)) << "\n";
   std::size_t i = 0;
   for (const Node& n : c.nodes) {
     out << "  node " << ++i << ": " << to_string(n.kind) << ", " << n.branches << " branches, at " << vec_text(n.position)
@@ -285,6 +305,12 @@ inline void text_censuses(std::ostream& out, const Classification& c) {
   out << "  root count (1D, interval of b in (0, pi)): " << c.root.nodes.size() << " node(s) from "
       << c.root.roots.size() << " root(s)" << (c.root.north_pole_node ? " + north pole" : "")
       << (c.root.south_pole_node ? " + south pole" : "") << "\n";
+  if (c.certificate.runs() > 1) {
+    out << "  escalation: polyline census runs of";
+    for (std::size_t k = 0; k < c.certificate.runs(); ++k)
+      out << (k ? ", " : " ") << c.certificate.samples[k] << " samples (" << c.certificate.polyline_nodes[k] << " nodes)";
+    out << "\n";
+  }
   out << "  agreement: " << (c.agreement.ok() ? "yes" : "NO") << "\n";
   for (const auto& note : c.agreement.notes) out << "    DISAGREEMENT: " << note << "\n";
 }
@@ -318,6 +344,8 @@ inline nlohmann::json classification_json(const InputText& text, const Classific
   j["cone_angles"] = {{"a_p", tr.planet_cone()}, {"a_s", tr.sun_cone()}};
   j["period"] = tr.period();
   j["class"] = to_string(c.curve_class);
+  j["certified"] = c.certified();
+  j["certificate"] = d::certificate_json(c);
   j["counts"] = {{"nodes", c.nodes.size()}, {"cusps", c.cusps.size()}, {"crossings", c.crossings},
                  {"tangencies", c.tangencies}};
   j["nodes"] = d::nodes_json(c.nodes);
@@ -347,7 +375,7 @@ inline void write_classification_text(std::ostream& out, const InputText& text, 
 }
 
 inline std::string plot_caption(const InputText& text, const GearTrain& analysed, const std::vector<Node>& nodes,
-                                const std::vector<Cusp>& cusps) {
+                                const std::vector<Cusp>& cusps, const CensusCertificate* certificate) {
   std::size_t crossings = 0, tangencies = 0;
   for (const Node& n : nodes) (n.kind == NodeKind::crossing ? crossings : tangencies)++;
   std::ostringstream caption;
@@ -356,13 +384,16 @@ inline std::string plot_caption(const InputText& text, const GearTrain& analysed
   caption << " — " << nodes.size() << " node(s)";
   if (!nodes.empty()) caption << " (" << crossings << " crossing, " << tangencies << " tangency)";
   caption << ", " << cusps.size() << " cusp(s)";
+  if (certificate && !certificate->certified)
+    caption << " — UNCERTIFIED (root-count census: " << certificate->root_nodes << ")";
   return caption.str();
 }
 
 inline std::string plot_svg(const InputText& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
-                            const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
+                            const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                            const CensusCertificate* certificate) {
   PlotOptions options;
-  options.caption = plot_caption(text, analysed, nodes, cusps);
+  options.caption = plot_caption(text, analysed, nodes, cusps, certificate);
   return render_sphere_svg(trajectory, nodes, cusps, options);
 }
 

@@ -456,8 +456,22 @@ inline void write_scene_effect(std::ostream& out, const SceneTrain& st, const An
       return;
     case Effect::extrema: out << z_extremes_json(a.extremes()).dump(2) << "\n"; return;
     case Effect::screw_axis: write_screw_axis_csv(out, a.screw_axis().t, a.screw_axis().omega); return;
-    case Effect::plot: out << plot_svg(st.text, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps()); return;
+    case Effect::plot:
+      out << plot_svg(st.text, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate());
+      return;
   }
+}
+
+/// Why what the effects of one train report is not certified, or "" (the node census was not run,
+/// or it is certified): nodes, plot and classification print the certified census only.
+inline std::string scene_uncertified(const SceneTrain& st, const Analysis& a) {
+  if (!a.work(Stage::polyline_census).ran) return "";
+  const CensusCertificate& cert = a.certificate();
+  const bool analytic_ok = !a.work(Stage::classification).ran || a.classification().agreement.analytic_agrees.value_or(true);
+  if (cert.certified && analytic_ok) return "";
+  return "train " + st.name + ": the node count is not certified (polyline census " +
+         std::to_string(cert.polyline_nodes.back()) + " node(s), root-count census " + std::to_string(cert.root_nodes) +
+         (analytic_ok ? "" : ", the report's criteria disagree") + ")";
 }
 
 inline void write_scene_explanation(std::ostream& out, const SceneTrain& st, const Analysis& a) {

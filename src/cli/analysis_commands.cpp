@@ -39,6 +39,16 @@ AnalysisSettings analysis_settings(const AnalysisOptions& o) {
   return s;
 }
 
+/// After the outputs are complete: an uncertified count ends the tool with kUncertified.
+void check_certified(const CensusCertificate& cert, bool analytic_agrees = true) {
+  if (cert.certified && analytic_agrees) return;
+  std::string counts = cert.certified ? "the censuses agree but the report's criteria do not"
+                                      : "polyline census " + std::to_string(cert.polyline_nodes.back()) +
+                                            " node(s), root-count census " + std::to_string(cert.root_nodes);
+  throw UncertifiedResult{"the node count is not certified: " + counts + (cert.stopped.empty() ? "" : "; " + cert.stopped) +
+                          " (exit status 3; see README: Certified counts)"};
+}
+
 void run_classify(const AnalysisOptions& o) {
   const GearTrain train = o.train.train();  // first: its errors come before those of --samples
   const Analysis a(train, analysis_settings(o));  // a.classification() is classify(train, settings)
@@ -47,20 +57,23 @@ void run_classify(const AnalysisOptions& o) {
     if (o.json) out << classification_json(o.train, c).dump(2) << "\n";
     else write_classification_text(out, o.train, c);
   });
+  check_certified(c.certificate, c.agreement.analytic_agrees.value_or(true));
 }
 
-// nodes and plot need the crossing and cusp stages only: no root-count census.
+// nodes and plot need the (certified) crossing stage and the cusps, not the whole classification.
 void run_nodes(const AnalysisOptions& o) {
   const GearTrain train = o.train.train();
   const Analysis a(train, analysis_settings(o));
   write_output(o.output, [&](std::ostream& out) { write_nodes_csv(out, a.nodes(), a.cusps()); });
+  check_certified(a.certificate());
 }
 
 void run_plot(const AnalysisOptions& o) {
   const GearTrain train = o.train.train();
   const Analysis a(train, analysis_settings(o));
-  const std::string svg = plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps());
+  const std::string svg = plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate());
   write_output(o.output, [&](std::ostream& out) { out << svg; });
+  check_certified(a.certificate());
 }
 
 struct CrossingsOptions {

@@ -25,6 +25,15 @@ namespace sphtroch::cli {
 /// Exit status for every kind of bad input.
 constexpr int kBadInput = 2;
 
+/// Exit status when a count, position or class printed is not certified (the outputs are
+/// complete and say so; sphtroch::kUncertifiedExitStatus).
+constexpr int kUncertified = 3;
+
+/// Raised by a command after its outputs are complete when what they report is not certified.
+struct UncertifiedResult {
+  std::string message;  // one line: what is not certified, both counts
+};
+
 /// Raised by commands for bad input not covered by InvalidInput (e.g. an unwritable path).
 struct UsageError {
   std::string message;  // one line, already naming the option, the value and the valid range

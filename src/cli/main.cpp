@@ -1,5 +1,6 @@
 // sphtroch — command-line tool. Parsing and printing only; the work is in the library.
 // Exit status: 0 success; 2 bad input or an output that cannot be written (one line on stderr);
+// 3 the outputs are complete but a count they report is not certified (one line on stderr);
 // killed by SIGPIPE (shell status 141) when the reader of stdout goes away; 1 only for an
 // internal error (a bug).
 #include "cli_common.hpp"
@@ -126,6 +127,9 @@ int main(int argc, char** argv) {
     return fail(std::string("--") + e.what());
   } catch (const UsageError& e) {
     return fail(e.message);
+  } catch (const UncertifiedResult& e) {
+    std::cerr << "sphtroch: " << one_line(e.message) << "\n";
+    return kUncertified;
   } catch (const std::bad_alloc&) {
     std::cerr << "sphtroch: out of memory; valid: a smaller problem (see README: Errors, cost bounds)\n";
     return 1;

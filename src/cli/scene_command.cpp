@@ -10,7 +10,9 @@
 //     nothing;
 //  2. per train, build one Analysis, request each effect in the order written, and write its
 //     output to a temporary file next to the target (StagedOutputs);
-//  3. rename every temporary into place; only then print the explanation (if asked).
+//  3. rename every temporary into place; only then print the explanation (if asked);
+//  4. if a train's node count is not certified (certified_census.hpp), one line on stderr and
+//     exit status 3 (the outputs are complete and say so).
 // Every problem is one line on stderr naming the file and the field (or line and column), the
 // value and the valid range, exit status 2.
 #include "cli_common.hpp"
@@ -83,12 +85,14 @@ void run_scene(const SceneOptions& o) {
   StagedOutputs outputs;
   std::ostringstream text;
   nlohmann::ordered_json trains = nlohmann::ordered_json::array();
+  std::vector<std::string> uncertified;
   for (const SceneTrain& st : scene) {  // 2. compute what is asked, into temporaries
     const Analysis a(st.train, st.settings);
     for (const SceneEffect& e : st.effects) {
       a.request(e.effect);
       outputs.stage(e.path, e.field, [&](std::ostream& out) { write_scene_effect(out, st, a, e); });
     }
+    if (std::string why = scene_uncertified(st, a); !why.empty()) uncertified.push_back(std::move(why));
     if (o.json) trains.push_back(scene_explanation_json(st, a));
     else if (o.explain) write_scene_explanation(text, st, a);
   }
@@ -97,6 +101,10 @@ void run_scene(const SceneOptions& o) {
     if (o.json) out << nlohmann::ordered_json{{"trains", trains}}.dump(2) << "\n";
     else out << text.str();
   });
+  if (!uncertified.empty())  // 4. the outputs say so (classification, plot caption); so does the status
+    throw UncertifiedResult{uncertified.front() + (uncertified.size() > 1 ? " (and " + std::to_string(uncertified.size() - 1) +
+                                                                               " more train(s))" : "") +
+                            " (exit status 3; see README: Certified counts)"};
 }
 
 }  // namespace
