@@ -57,7 +57,12 @@ TEST_CASE("classification json: the documented keys, inputs as typed, values of 
   for (const auto& [k, v] : j.items()) keys.insert(k);
   CHECK(keys == std::set<std::string>{"inputs", "cone_angles", "period", "class", "counts", "nodes", "cusps",
                                       "cusp_within_resolution", "boundaries", "z_extremes", "symmetry", "analytic",
-                                      "censuses", "agreement", "tolerances", "work"});
+                                      "censuses", "agreement", "certified", "certificate", "tolerances", "work"});
+  CHECK(j["certified"] == true);  // both censuses find Table 1 row (f)'s 4 nodes
+  CHECK(j["certificate"]["root_count_nodes"] == 4);
+  CHECK(j["certificate"]["polyline_runs"].size() >= 1);
+  CHECK(j["certificate"]["polyline_runs"].back()["nodes"] == 4);
+  CHECK(j["certificate"]["stopped"] == "");
   CHECK(j["inputs"]["a2_text"] == "pi/3");
   CHECK(j["inputs"]["a3_text"] == "pi/2");
   CHECK(j["inputs"]["a2"].get<double>() == kPi / 3);

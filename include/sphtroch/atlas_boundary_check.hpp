@@ -135,4 +135,28 @@ inline void write_atlas_boundary_check(std::ostream& out, const AtlasBoundaryChe
   if (c.uncrossed.size() > listed) out << "  ... and " << c.uncrossed.size() - listed << " more\n";
 }
 
+/// Whether the counts of an atlas are certified (the atlas's form of certified_census.hpp): each
+/// cell's root-count census agrees with the report's criteria where they give a count (n = 1, 2;
+/// the pitch-cone cusps for every n), and every class change between neighbouring cells is
+/// crossed by a curve of the independently computed boundary set (`check`; nullptr when it was
+/// not run, e.g. atlas-merge). Returns "" when certified, else why not, in words.
+inline std::string atlas_uncertified(const AtlasSummary& s, const AtlasBoundaryCheck* check) {
+  std::string why;
+  if (s.disagreement_count > 0) why = std::to_string(s.disagreement_count) + " cell(s) where census and report disagree";
+  if (check && !check->uncrossed.empty())
+    why += (why.empty() ? "" : "; ") + std::to_string(check->uncrossed.size()) +
+           " class change(s) not crossed by a boundary";
+  return why;
+}
+
+/// "certified: yes (...)" or "certified: NO — <why>", one line.
+inline void write_atlas_certificate(std::ostream& out, const AtlasSummary& s, const AtlasBoundaryCheck* check) {
+  const std::string why = atlas_uncertified(s, check);
+  if (why.empty())
+    out << "certified: yes (census = report in every cell where it predicts"
+        << (check ? "; every class change crossed by a boundary" : "") << ")\n";
+  else
+    out << "certified: NO — " << why << "\n";
+}
+
 }  // namespace sphtroch

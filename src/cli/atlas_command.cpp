@@ -100,6 +100,13 @@ void check_writable(const std::string& path, const std::string& option) {
                      "); valid: a path in an existing, writable directory"};
 }
 
+/// After every output: an atlas whose counts are not certified ends the tool with status 3.
+void check_atlas_certified(const AtlasSummary& summary, const AtlasBoundaryCheck* check) {
+  const std::string why = atlas_uncertified(summary, check);
+  if (!why.empty())
+    throw UncertifiedResult{"the atlas is not certified: " + why + " (exit status 3; see README: Certified counts)"};
+}
+
 std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& cells) {
   return render_atlas_svg(spec, cells);
 }
@@ -160,13 +167,16 @@ void run_atlas(const AtlasOptions& o) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells);
+  const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
+  const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, threads);
   write_atlas_outputs(
       o.output, o.svg, svg, [&](std::ostream& out) { write_atlas_csv(out, spec, shard, cells); },
       [&](std::ostream& out) {
-        const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
         write_atlas_summary(out, spec, summary, listed_disagreements(summary, cells), AtlasRun{rows, shard, seconds, threads});
-        write_atlas_boundary_check(out, check_atlas_boundaries(spec, cells, threads), cells);
+        write_atlas_boundary_check(out, check, cells);
+        write_atlas_certificate(out, summary, &check);
       });
+  check_atlas_certified(summary, &check);
 }
 
 /// One slice given to atlas-merge. A regular file is read twice or more (its head first, its rows
@@ -321,6 +331,7 @@ void run_merge(const MergeOptions& o) {
     outputs.commit();
     auto write_summary = [&](std::ostream& out) {
       write_atlas_summary(out, spec, summary, listed, AtlasRun{AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1});
+      write_atlas_certificate(out, summary, nullptr);
     };
     if (o.output == "-") {
       write_summary(std::cerr);
@@ -328,6 +339,7 @@ void run_merge(const MergeOptions& o) {
     } else {
       write_output("-", write_summary);
     }
+    check_atlas_certified(summary, nullptr);
   } catch (const InvalidInput& e) {
     throw UsageError{std::string("atlas-merge: ") + e.what()};
   }
