@@ -379,7 +379,16 @@ inline const PolylineCensus& Analysis::polyline_census() const {
       PolylineCensusSettings ps;
       ps.samples = settings_.census_samples;
       ps.tangency_tolerance = settings_.reading().tangency();
+#if defined(SPHTROCH_FAULT_INJECTION)
+      // Test seam, compiled only into tests' sphtroch_fault (tests/CMakeLists.txt), never into the
+      // tool or the library's users: a root census missing its last node stands for a disagreement
+      // that no escalation removes, so that the uncertified path is tested end to end.
+      RootCensus faulty = *root_;
+      if (!faulty.nodes.empty()) faulty.nodes.pop_back();
+      polyline_census_ = certified_census(analysed(), ps, faulty);
+#else
       polyline_census_ = certified_census(analysed(), ps, *root_);
+#endif
       // Every run of the escalation counts (its own counters hold the last run only).
       const PolylineWork& last = polyline_census_->polyline.work;
       w.points_evaluated = last.points_evaluated;

@@ -66,6 +66,7 @@ inline CertifiedCensus certified_census(const GearTrain& train, const PolylineCe
     cert.polyline_nodes.push_back(out.polyline.nodes.size());
     cert.disagreement.clear();
     cert.certified = same_node_sets(out.polyline.nodes, root.nodes, cert.disagreement);
+    cert.differences.push_back(cert.certified ? std::string() : cert.disagreement);
     if (cert.certified) return out;
     if (s.escalation - settings.escalation >= kMaxCensusEscalations) {
       cert.stopped = "the censuses still disagree after " + std::to_string(cert.runs()) + " polyline census runs";

@@ -134,9 +134,10 @@ inline Classification assemble_classification(const ClassificationInputs& in) {
   c.curve_class = curve_class(c.nodes.size(), c.cusps.size());
 
   std::string why;
-  if (!same_node_sets(c.polyline.nodes, c.root.nodes, why)) {
+  const bool same = same_node_sets(c.polyline.nodes, c.root.nodes, why);
+  if (!same || !c.certificate.certified) {  // the certificate is the census's own check of the same
     c.agreement.censuses_agree = false;
-    c.agreement.notes.push_back("polyline census vs root-count census: " + why);
+    c.agreement.notes.push_back("polyline census vs root-count census: " + (same ? c.certificate.disagreement : why));
     if (!c.certificate.stopped.empty()) c.agreement.notes.push_back("escalation stopped: " + c.certificate.stopped);
   }
   if (c.analytic.predicted_nodes) {

@@ -1,8 +1,9 @@
 // sphtroch/node_sets.hpp — whether two censuses found the same node points (the certificate of
 // a node count: two independent methods agree).
 //
+//   const std::vector<sphtroch::Node> a = sphtroch::root_census(train).nodes, b = a;
 //   std::string why;
-//   bool same = sphtroch::same_node_sets(polyline.nodes, root.nodes, why);  // why: the first difference
+//   bool same = sphtroch::same_node_sets(a, b, why);  // true; else why: the first difference
 //
 // Contract: one-to-one agreement. Every node of `a` is paired with the NEAREST unused node of
 // `b` within kAgreementDistance (chord) of the same kind and branch count (nearest, because

@@ -25,7 +25,7 @@
 //     the crossings (both refined). Tiny near-cusp loops (branches closer in parameter than
 //     kCuspLoopParam) are crossings.
 //  5. Deduplication: meetings found from several seeds (unordered pairs, modulo the period).
-//  6. Assembly into nodes (node_assembly.hpp).
+//  6. Assembly into nodes (node_assembly.hpp), pairs at a pole the curve passes exactly put on it.
 // Each stage is a function of namespace sphtroch::census below (tested in test_polyline_census.cpp);
 // polyline_census() runs them in order.
 #pragma once
@@ -116,6 +116,11 @@ constexpr long double kSameMeetingParam = 1e-10L;
 /// (issue 17, D1: 13 one-branch "nodes" at n = 52/35); there the chords equal the residual.
 /// A genuine loop of size ~d (d >= kCuspResolution = 1e-10) has chords ~d and residual ~1e-18.
 constexpr long double kLoopResidualFraction = 1e-3L;
+/// A short meeting must also be a crossing: the gap between the branches changes sign between
+/// +-kLoopGapFraction times their parameter separation along branch 2 (census::MeetingFinder).
+/// Measured on a loop 1e-9 rad from a cone (n = 45/46): gaps of +-6.5e-16 against a long
+/// double noise of ~1e-19; a false meeting on the two sides of a near-cusp keeps one sign.
+constexpr long double kLoopGapFraction = 1e-2L;
 
 namespace census {
 
@@ -343,7 +348,7 @@ class MeetingFinder {
       ++out_.newton_failures;
       return;
     }
-    if (dt < kCuspLoopParam && !leaves_meeting_point(r)) {
+    if (dt < kCuspLoopParam && (!leaves_meeting_point(r) || !gap_changes_sign(r.t1, r.t2, dt))) {
       ++out_.newton_failures;
       return;
     }
@@ -372,6 +377,16 @@ class MeetingFinder {
     const Vector3<LD> p1 = curve_.point(a), p2 = curve_.point(b), mid = curve_.point((a + b) / 2);
     out_.work.points_evaluated += 3;
     return r.residual <= kLoopResidualFraction * ((mid - p1).norm() + (mid - p2).norm());
+  }
+
+  /// The branches cross: the signed gap of branch 2 from branch 1 changes sign across the meeting,
+  /// sampled kLoopGapFraction of the branch separation away on either side. Near a cusp its two
+  /// sides run within ~1e-14 of each other without crossing, and Newton stalls there with a
+  /// residual below kNodeResidual (issue 17: 45/46 next to the mirror cone).
+  bool gap_changes_sign(LD t1, LD t2, LD dt) {
+    const LD s = kLoopGapFraction * dt;
+    const LD plus = gap(t1, t2, s), minus = gap(t1, t2, -s);
+    return (plus < 0 && minus > 0) || (plus > 0 && minus < 0);
   }
 
   RefinedPair<LD> refine(LD a, LD b) {
@@ -522,6 +537,50 @@ inline std::vector<BranchPair> branch_pairs(const GearTrain& train, const std::v
   return out;
 }
 
+/// The planet angles b at which the tracer's circle passes EXACTLY through a pole, as the root
+/// census decides it (root_census.hpp: y of C(0) = -sin(a2 + a3), of C(pi) = sin(a3 - a2), in long
+/// double from the train's exact sines and cosines): b = 0 (south pole, a3 = pi - a2) and b = pi
+/// (north pole, a3 = a2).
+struct PoleCrossing {
+  long double planet_angle;
+  double z;  // -1 south, +1 north
+};
+inline std::vector<PoleCrossing> poles_on_curve(const GearTrain& train) {
+  const auto t = train.trig<long double>();
+  std::vector<PoleCrossing> out;
+  if (t.sin_a3 * t.cos_a2 + t.cos_a3 * t.sin_a2 == 0) out.push_back({0.0L, -1.0});
+  if (t.sin_a3 * t.cos_a2 - t.cos_a3 * t.sin_a2 == 0) out.push_back({Constants<long double>::pi(), 1.0});
+  return out;
+}
+
+/// Stage 6 (between the halves). On a train through a pole, branch pairs whose both parameters
+/// lie within kBranchParamTolerance of pole parameters ARE the pole pair: put exactly on it
+/// (parameters theta2 where theta3 = b_pole, Eq. 3; position the pole). Touching branches at a
+/// pole are refined on the tangency conditions, whose solution is ill conditioned there and may
+/// stop ~1e-9 of parameter (1e-11 rad) away: without the snap that pair is a second node.
+inline void snap_pairs_to_poles(const GearTrain& train, std::vector<BranchPair>& pairs) {
+  const double period = train.period();
+  for (const PoleCrossing& pole : poles_on_curve(train)) {
+    std::vector<double> ts;
+    for (std::int64_t k = 0; k < train.ratio().abs_p(); ++k)
+      ts.push_back(reduce_to_period(
+          static_cast<double>(theta2_at_planet_angle(train.ratio(), static_cast<long double>(train.phase()), pole.planet_angle, k)),
+          period));
+    auto nearest = [&](double t) -> const double* {
+      for (const double& tp : ts)
+        if (periodic_distance(t, tp, period) <= kBranchParamTolerance) return &tp;
+      return nullptr;
+    };
+    for (BranchPair& bp : pairs) {
+      const double *a = nearest(bp.t1), *b = nearest(bp.t2);
+      if (!a || !b || a == b) continue;
+      bp.t1 = std::min(*a, *b);
+      bp.t2 = std::max(*a, *b);
+      bp.position = Vector3d(0, 0, pole.z);
+    }
+  }
+}
+
 }  // namespace census
 
 /// The polyline node census of one gear train (see header). The train is analysed as given.
@@ -551,6 +610,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
   const auto unique = census::unique_meetings(finder.meetings(), static_cast<long double>(train.period()));
 
   out.pairs = census::branch_pairs(train, unique, out.work);
+  census::snap_pairs_to_poles(train, out.pairs);
   out.nodes = assemble_nodes(out.pairs, TracerCurve<double>(train), kNodeMergeDistance, &out.single_branch_groups);
   out.work.points_evaluated += assembly_evaluations(out.nodes);
   return out;

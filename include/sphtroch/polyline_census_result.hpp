@@ -57,6 +57,7 @@ struct CensusCertificate {
   std::vector<std::size_t> samples;         // uniform samples of each polyline census run, in order
   std::vector<std::size_t> polyline_nodes;  // its node count, per run
   std::size_t root_nodes = 0;               // the root-count census's node count
+  std::vector<std::string> differences;     // each run's first difference from the root census ("" = agreed)
   std::string disagreement;                 // the last run's first difference ("" when certified)
   std::string stopped;                      // why escalation stopped without agreement ("" otherwise)
   std::size_t runs() const { return samples.size(); }

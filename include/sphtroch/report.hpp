@@ -202,7 +202,9 @@ inline nlohmann::json agreement_json(const CensusAgreement& a) {
 inline nlohmann::json certificate_json(const Classification& c) {
   nlohmann::json runs = nlohmann::json::array();
   for (std::size_t k = 0; k < c.certificate.runs(); ++k)
-    runs.push_back({{"samples", c.certificate.samples[k]}, {"nodes", c.certificate.polyline_nodes[k]}});
+    runs.push_back({{"samples", c.certificate.samples[k]},
+                    {"nodes", c.certificate.polyline_nodes[k]},
+                    {"difference", c.certificate.differences[k]}});
   return {{"certified", c.certified()},
           {"polyline_runs", runs},
           {"root_count_nodes", c.certificate.root_nodes},
@@ -212,7 +214,7 @@ inline nlohmann::json certificate_json(const Classification& c) {
 /// The words for an uncertified result: both counts (README: Certified counts).
 inline std::string uncertified_text(const Classification& c) {
   return "UNCERTIFIED: the polyline census finds " + std::to_string(c.polyline.nodes.size()) +
-         " node(s), the root-count census " + std::to_string(c.root.nodes.size()) +
+         " node(s), the root-count census " + std::to_string(c.certificate.root_nodes) +
          (c.agreement.analytic_agrees.value_or(true) ? std::string() : std::string(", the report's criteria disagree"));
 }
 

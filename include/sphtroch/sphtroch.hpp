@@ -33,6 +33,7 @@
 #include "sphtroch/input_text.hpp"
 #include "sphtroch/node.hpp"
 #include "sphtroch/node_assembly.hpp"
+#include "sphtroch/node_sets.hpp"
 #include "sphtroch/npy.hpp"
 #include "sphtroch/number_text.hpp"
 #include "sphtroch/output_file.hpp"
@@ -54,6 +55,7 @@
 #if defined(SPHTROCH_HAVE_EXACT)
 #include "sphtroch/analysis.hpp"
 #include "sphtroch/arc_predicates.hpp"
+#include "sphtroch/certified_census.hpp"
 #include "sphtroch/classification.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/polyline_census.hpp"
