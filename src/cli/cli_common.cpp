@@ -118,7 +118,7 @@ void StagedOutputs::stage(const std::string& path, const std::string& field,
     OutputStream out(file);
     write(out);
   }
-  file.finish_writing();  // no descriptor or buffer held until commit (scenes of thousands of outputs)
+  file.finish_writing(false);  // no descriptor or buffer held until commit, which syncs (scenes of thousands of outputs)
 }
 
 void StagedOutputs::commit() {
