@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <sstream>
 #include <fstream>
+#include <regex>
+#include <algorithm>
 
 using namespace sphtroch::test;
 namespace fs = std::filesystem;
@@ -257,8 +259,9 @@ TEST_CASE("hostile: stdout_write_errors of every command give one line and statu
   REQUIRE(::mknod((dir.path / "full").c_str(), S_IFCHR | 0666, makedev(1, 7)) == 0);
   REQUIRE(shell(kExe + " trace --a2 1 --a3 2 --n 7/3 -o c.csv", dir).status == 0);
   write_file(dir.path / "s.json", "{\"trains\":[{" + kTrain + ",\"effects\":{\"trace\":\"o.csv\"}}]}");
-  for (const std::string& cmd : {std::string("crossings --input c.csv"), std::string("scene s.json --explain"),
-                                 std::string("nodes --a2 1 --a3 2 --n 2"), std::string("--help"), std::string("--version")}) {
+  // (scene --explain, with its output written before stdout fails: status 4, see D8 below)
+  for (const std::string& cmd : {std::string("crossings --input c.csv"), std::string("nodes --a2 1 --a3 2 --n 2"),
+                                 std::string("--help"), std::string("--version")}) {
     INFO(cmd);
     const Result r = shell(kExe + " " + cmd + " > full", dir);
     CHECK(r.status == 2);
@@ -283,4 +286,200 @@ TEST_CASE("hostile: second_output_fails: atlas -o A --svg S leaves no A when S c
   CHECK(r.status == 2);
   CHECK(contains(r.err, "--svg"));
   CHECK(slurp(dir.path / "A.csv") == "previous\n");
+}
+
+namespace {
+
+/// A scene of `trains` trains, each asking the five cheap effects (3 samples) into `dir`/.
+std::string cheap_scene(int trains, const std::string& dir, const std::string& extra_train = "") {
+  std::string s = "{\"trains\":[";
+  for (int i = 0; i < trains; ++i) {
+    const std::string k = std::to_string(i);
+    s += std::string(i ? "," : "") + "{\"name\":\"t" + k + "\",\"a2\":\"1\",\"a3\":\"2\",\"n\":\"2\",\"samples\":3,\"effects\":{" +
+         "\"trace\":\"" + dir + "/trace" + k + ".csv\",\"velocity\":\"" + dir + "/velocity" + k + ".csv\",\"extrema\":\"" +
+         dir + "/extrema" + k + ".json\",\"cusps\":\"" + dir + "/cusps" + k + ".csv\",\"screw_axis\":\"" + dir + "/screw" + k +
+         ".csv\"}}";
+  }
+  return s + extra_train + "]}";
+}
+
+std::size_t count_entries(const fs::path& dir, const std::string& prefix) {
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().rfind(prefix, 0) == 0;
+  return n;
+}
+
+/// A .npy header by hand (numpy.lib.format 1.0): magic, version, length, dict padded to 64 bytes.
+std::string npy_header_by_hand(const std::string& dict) {
+  std::string d = dict;
+  while ((10 + d.size() + 1) % 64) d += ' ';
+  d += '\n';
+  return std::string("\x93NUMPY\x01\x00", 8) + static_cast<char>(d.size() & 0xff) + static_cast<char>(d.size() >> 8) + d;
+}
+
+}  // namespace
+
+TEST_CASE("hostile: D4 nul_in_scene_output_path is refused naming the field (no colliding outputs)", "[cli][hostile][scene]") {
+  TempDir dir;
+  // "o.csv\u0000x" would reach o.csv, the trace's path: two outputs colliding.
+  write_file(dir.path / "z.json",
+             "{\"trains\":[{" + kTrain + ",\"effects\":{\"trace\":\"o.csv\",\"velocity\":\"o.csv\\u0000x\"}}]}");
+  check_refused(shell(kExe + " scene z.json", dir), "z.json: trains[0].effects.velocity = \"o.csv\\u0000x\": an output path with a NUL byte");
+  write_file(dir.path / "z2.json", "{\"trains\":[{" + kTrain + ",\"effects\":{\"trace\":\"\\u0000\"}}]}");
+  check_refused(shell(kExe + " scene z2.json --output-dir .", dir), "trains[0].effects.trace");
+  std::vector<std::string> left = dir.entries();
+  std::sort(left.begin(), left.end());
+  CHECK(left == std::vector<std::string>{"z.json", "z2.json"});
+}
+
+TEST_CASE("hostile: D5 sigterm_with_100_staged_outputs leaves no temporary and no output", "[cli][hostile][scene][signals]") {
+  TempDir dir;
+  fs::create_directory(dir.path / "out");
+  // 100 cheap outputs first, then a node census that takes seconds (n = 301/100: 1.2e5 nodes).
+  write_file(dir.path / "s.json",
+             cheap_scene(20, "out", ",{\"name\":\"slow\",\"a2\":\"1\",\"a3\":\"2\",\"n\":\"301/100\",\"effects\":{\"nodes\":\"out/slow.csv\"}}"));
+  const Result r = shell(kExe + " scene s.json & pid=$!\n"
+                                "for i in $(seq 400); do [ $(ls -A out | grep -c '^.sphtroch-') -ge 100 ] && break; sleep 0.05; done\n"
+                                "echo staged $(ls -A out | grep -c '^.sphtroch-')\n"
+                                "kill -TERM $pid; wait $pid; echo status $?",
+                         dir);
+  INFO(r.out << r.err);
+  CHECK(contains(r.out, "staged 100\n"));  // more than the 64 slots the registry used to have
+  CHECK(contains(r.out, "status 143"));    // killed by SIGTERM (128 + 15), mid-run
+  CHECK(count_entries(dir.path / "out", "") == 0);  // no temporary, no output
+}
+
+TEST_CASE("hostile: D6 scene_with_1100_outputs succeeds under ulimit -n 256; above 100000 outputs refused up front",
+          "[cli][hostile][scene]") {
+  TempDir dir;
+  fs::create_directory(dir.path / "out");
+  write_file(dir.path / "s.json", cheap_scene(220, "out"));
+  const Result r = shell("ulimit -n 256 && " + kExe + " scene s.json", dir);
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK(count_entries(dir.path / "out", "") == 1100);
+  CHECK(count_entries(dir.path / "out", ".sphtroch-") == 0);
+  CHECK(count_lines(slurp(dir.path / "out" / "trace219.csv")) == 4);  // header + 3 samples
+  // 20001 trains x 5 = 100005 outputs: refused while parsing, nothing computed or written.
+  fs::remove_all(dir.path / "out");
+  fs::create_directory(dir.path / "out");
+  write_file(dir.path / "big.json", cheap_scene(20001, "out"));
+  check_refused(shell(kExe + " scene big.json", dir), "big.json: trains[20000].effects: output 100005 of the scene: more than 100000");
+  CHECK(count_entries(dir.path / "out", "") == 0);
+}
+
+TEST_CASE("hostile: D7 fifo_input_with_silent_writer is read like cat, past the 10 s wait for a writer", "[cli][hostile][fifo]") {
+  TempDir dir;
+  REQUIRE(::mkfifo((dir.path / "ff").c_str(), 0666) == 0);
+  write_file(dir.path / "tri.csv", "1,0,0\n0,1,0\n0,0,1\n");
+  // The writer opens the FIFO at once (the redirection), then stays silent 11 s (> 10 s).
+  const Result r = shell("{ sleep 11; cat tri.csv; } > ff &\n" + kExe + " crossings --input ff --json", dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(nlohmann::json::parse(r.out)["vertices"] == 3);
+}
+
+TEST_CASE("hostile: D8 stdout_fails_after_outputs: exit 4 naming the files written, which stay complete", "[cli][hostile][device]") {
+  TempDir dir;
+  REQUIRE(::mknod((dir.path / "full").c_str(), S_IFCHR | 0666, makedev(1, 7)) == 0);  // a copy of /dev/full
+  const auto check_status_4 = [](const Result& r, const std::string& files) {
+    INFO(r.err);
+    CHECK(r.status == 4);
+    CHECK(r.err.find('\n') == r.err.size() - 1);
+    CHECK(contains(r.err, "outputs written: " + files + "; stdout failed: stdout = -: write failed"));
+  };
+  check_status_4(shell(kExe + " atlas --n 2 --grid 4 -o A.csv --svg S.svg > full", dir), "A.csv, S.svg");
+  CHECK(count_lines(slurp(dir.path / "A.csv")) == 2 + 16);  // comment, header, 4 x 4 cells
+  CHECK(contains(slurp(dir.path / "S.svg"), "</svg>"));
+  REQUIRE(shell(kExe + " atlas --n 2 --grid 4 --shard 1/2 -o s1.csv", dir).status == 0);
+  REQUIRE(shell(kExe + " atlas --n 2 --grid 4 --shard 2/2 -o s2.csv", dir).status == 0);
+  check_status_4(shell(kExe + " atlas-merge -o M.csv s1.csv s2.csv > full", dir), "M.csv");
+  CHECK(slurp(dir.path / "M.csv") == slurp(dir.path / "A.csv"));
+  write_file(dir.path / "s.json", "{\"trains\":[{" + kTrain + ",\"effects\":{\"trace\":\"o.csv\"}}]}");
+  check_status_4(shell(kExe + " scene s.json --explain > full", dir), "o.csv");
+  CHECK(count_lines(slurp(dir.path / "o.csv")) > 1);
+  // Without an output file the failed stdout is bad output as before: status 2.
+  const Result plain = shell(kExe + " atlas --n 2 --grid 4 > full", dir);
+  CHECK(plain.status == 2);
+}
+
+TEST_CASE("hostile: D9 stdin_aliasing_the_output and output_symlink_loops are refused", "[cli][hostile][output]") {
+  TempDir dir;
+  REQUIRE(shell(kExe + " trace --a2 1 --a3 2 --n 7/3 -o in.csv", dir).status == 0);
+  const std::string before = slurp(dir.path / "in.csv");
+  check_refused(shell(kExe + " crossings --input - -o in.csv < in.csv", dir), "--output = in.csv: is the same file as --input = -");
+  check_refused(shell(kExe + " crossings --input - --pairs ./in.csv < in.csv", dir), "--input = -");
+  CHECK(slurp(dir.path / "in.csv") == before);
+  // From a pipe, standard input is no file: the same output is legal.
+  CHECK(shell("cat in.csv | " + kExe + " crossings --input - -o other.csv", dir).status == 0);
+  // A symlink loop: a shell's > fails with ELOOP; so does -o, naming it, and the links stay.
+  fs::create_symlink("loop", dir.path / "loop");
+  fs::create_symlink("b", dir.path / "a");
+  fs::create_symlink("a", dir.path / "b");
+  check_refused(shell(kExe + " crossings --input in.csv -o loop", dir), "--output = loop: is a loop of symbolic links");
+  check_refused(shell(kExe + " trace --a2 1 --a3 2 --n 2 -o a", dir), "--output = a: is a loop of symbolic links");
+  CHECK(fs::is_symlink(dir.path / "loop"));
+  CHECK(fs::is_symlink(dir.path / "a"));
+  CHECK(fs::is_symlink(dir.path / "b"));
+  CHECK(count_entries(dir.path, ".sphtroch-") == 0);
+}
+
+TEST_CASE("hostile: D10 sparse_inputs report their first bad row (exit 2), never out of memory", "[cli][hostile][input]") {
+  TempDir dir;
+  write_file(dir.path / "big.csv", "1,0,0\n0,1,0\n");
+  fs::resize_file(dir.path / "big.csv", std::uintmax_t(64) << 30);  // 64 GiB, sparse: NUL bytes, no disk
+  check_refused(shell("ulimit -v 4000000 && " + kExe + " crossings --input big.csv", dir), "--input = big.csv: line 3 ");
+  const std::string header = npy_header_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (3000000000, 3), }");
+  write_file(dir.path / "big.npy", header);
+  fs::resize_file(dir.path / "big.npy", header.size() + std::uintmax_t(3000000000) * 24);
+  check_refused(shell("ulimit -v 4000000 && " + kExe + " crossings --input big.npy", dir),
+                "--input = big.npy: row 0 (0, 0, 0) is not a finite nonzero vector");
+}
+
+TEST_CASE("hostile: D12 messages: a NUL in a .npy descr escaped, the CSV field that is not a number, the real --turns bound",
+          "[cli][hostile][input]") {
+  TempDir dir;
+  const char dict[] = "{'descr': '<f\0" "8', 'fortran_order': False, 'shape': (3, 3), }";
+  write_file(dir.path / "n.npy", npy_header_by_hand(std::string(dict, sizeof dict - 1)) + std::string(72, '\x01'));
+  check_refused(shell(kExe + " crossings --input n.npy", dir), "dtype <f\\x008 is not float64 or float32; valid: a NumPy");
+  write_file(dir.path / "e1.csv", "1,0,0\n1e,0.5,1\n0,0,1\n");
+  check_refused(shell(kExe + " crossings --input e1.csv", dir), "line 2 column 1 is not a finite number: \"1e\"");
+  write_file(dir.path / "e2.csv", "1,0,0\n0.5,0x1p3,1\n0,0,1\n");
+  check_refused(shell(kExe + " crossings --input e2.csv", dir), "line 2 column 2 is not a finite number: \"0x1p3\"");
+  // n = 1000000/3: K <= (1e6 - 1) / (360 (1 + n)) = 0.0083333000000999..., not "K <= 0".
+  const Result r = shell(kExe + " trace --a2 1 --a3 2 --n 1000000/3 --turns 1", dir);
+  check_refused(r, "K <= 0.00833");
+  std::smatch m;
+  REQUIRE(std::regex_search(r.err, m, std::regex("K <= ([0-9.e+-]+) carrier turns")));
+  const double k = std::stod(m[1]);
+  const double bound = 999999.0 / (360.0 * (1.0 + 1000000.0 / 3.0));
+  CHECK(k <= bound * (1 + 1e-15));
+  CHECK(k >= bound * (1 - 1e-12));
+  const Result ok = shell(kExe + " trace --a2 1 --a3 2 --n 1000000/3 --turns " + m[1].str() + " | wc -l", dir);
+  CHECK(ok.status == 0);
+  CHECK(ok.out == "1000001\n");  // header + ceil(360 (1 + n) K + 1) = 1000000 samples
+}
+
+TEST_CASE("hostile: D13 the a2 bound 1e-6 is inclusive and nothing below passes; a JSON float n is refused", "[cli][hostile][twist]") {
+  TempDir dir;
+  const std::string t = kExe + " trace --n 2 --a3 1 --samples 3 --a2 ";
+  CHECK(shell(t + "1e-6", dir).status == 0);
+  CHECK(shell(t + "pi-1e-6", dir).status == 0);
+  check_refused(shell(t + "9.9e-7", dir), "--a2 = 9.9e-07: within 1e-6 rad of 0 or pi");
+  check_refused(shell(t + "9.99999e-7", dir), "--a2 = 9.99999e-07");
+  check_refused(shell(t + "pi-9.9e-7", dir), "within 1e-6 rad of 0 or pi");
+  write_file(dir.path / "a.json", "{\"trains\":[{\"name\":\"a\",\"a2\":9.9e-7,\"a3\":\"1\",\"n\":\"2\",\"effects\":{\"trace\":\"o.csv\"}}]}");
+  check_refused(shell(kExe + " scene a.json", dir), "a.json: trains[0].a2 = 9.9e-07");
+  for (const char* n : {"2.5", "2.0", "2e0"}) {
+    INFO(n);
+    write_file(dir.path / "n.json", std::string("{\"trains\":[{\"name\":\"a\",\"a2\":\"1\",\"a3\":\"1\",\"n\":") + n +
+                                        ",\"effects\":{\"trace\":\"o.csv\"}}]}");
+    check_refused(shell(kExe + " scene n.json", dir), "trains[0].n = ");
+  }
+  CHECK_FALSE(fs::exists(dir.path / "o.csv"));
+  write_file(dir.path / "n.json", "{\"trains\":[{\"name\":\"a\",\"a2\":\"1\",\"a3\":\"1\",\"n\":2,\"effects\":{\"trace\":\"o.csv\"}}]}");
+  CHECK(shell(kExe + " scene n.json", dir).status == 0);
+  write_file(dir.path / "n.json", "{\"trains\":[{\"name\":\"a\",\"a2\":\"1\",\"a3\":\"1\",\"n\":\"2.5\",\"effects\":{\"trace\":\"p.csv\"}}]}");
+  CHECK(shell(kExe + " scene n.json", dir).status == 0);
 }

@@ -1,6 +1,7 @@
 // Tests of the I/O headers: number_text.hpp (round-trip), npy.hpp (header written and parsed),
 // polyline_input.hpp (CSV by header or headerless, .npy, errors with line numbers),
-// output_file.hpp (staged files, devices and FIFOs written directly, all-or-nothing commits),
+// output_file.hpp (staged files, devices and FIFOs written directly, all-or-nothing commits, every
+// system call and allocation failing in turn through the SPHTROCH_OUTPUT_FAULT_INJECTION seam),
 // parallel_blocks.hpp (order, errors) and trace_output.hpp (same bytes for any thread count).
 // Expected values come from the formats' definitions and from invariants, not from the code.
 #include "catch2/catch.hpp"
@@ -18,12 +19,16 @@
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <functional>
+#include <memory>
 #include <random>
+#include <set>
 
 using namespace sphtroch;
 using sphtroch::test::expect_invalid;
@@ -451,4 +456,189 @@ TEST_CASE("trace_output: the same bytes for 1, 2 and 5 threads, CSV rows = the c
   REQUIRE(back.vertices.size() == 40000);
   CHECK(first_csv.rfind("t,x,y,z,vx,vy,vz\n", 0) == 0);
   for (std::size_t i = 0; i < 40000; i += 777) CHECK(back.vertices[i] == curve.point(s.parameter(i)));
+}
+
+namespace {
+
+/// The fault-injection hook (output_file.hpp's test seam): fails the fail_at-th call, counting
+/// from 1, and records which operation it failed.
+struct FaultPlan {
+  static inline int calls = 0, fail_at = 0;
+  static inline std::string failed;
+  static int hook(const char* operation) {
+    if (++calls != fail_at) return 0;
+    failed = operation;
+    return std::string(operation) == "alloc" ? ENOMEM : EIO;
+  }
+};
+
+std::vector<std::string> sorted_entries(const TempDir& dir) {
+  std::vector<std::string> e = dir.entries();
+  std::sort(e.begin(), e.end());
+  return e;
+}
+
+/// Runs `scenario` with the k-th system call or allocation of the writer failing, k = 1, 2, ...
+/// until it runs without a fault. After each failure: an OutputError naming `field_hint`,
+/// `untouched()` holds (no target changed) and the directory holds exactly `before` (no
+/// temporary). Returns the operations failed along the way.
+std::set<std::string> fail_each_call(const TempDir& dir, const std::function<void()>& scenario,
+                                     const std::function<void()>& untouched, const std::string& field_hint) {
+  std::set<std::string> failed;
+  const std::vector<std::string> before = sorted_entries(dir);
+  detail::output_fault_hook = &FaultPlan::hook;
+  for (int k = 1;; ++k) {
+    FaultPlan::calls = 0;
+    FaultPlan::fail_at = k;
+    FaultPlan::failed.clear();
+    try {
+      scenario();
+    } catch (const OutputError& e) {
+      INFO("call " << k << " (" << FaultPlan::failed << "): " << e.what());
+      CHECK_FALSE(FaultPlan::failed.empty());
+      CHECK(std::string(e.what()).find(field_hint) != std::string::npos);
+      CHECK(std::string(e.what()).find("; valid: ") != std::string::npos);
+      failed.insert(FaultPlan::failed);
+      untouched();
+      CHECK(sorted_entries(dir) == before);
+      continue;
+    }
+    CHECK(FaultPlan::failed.empty());  // no exception: no fault was injected
+    break;
+  }
+  detail::output_fault_hook = nullptr;
+  return failed;
+}
+
+}  // namespace
+
+TEST_CASE("output_file: fault injection: each write, fsync, close, link, rename and allocation failing in turn leaves nothing partial",
+          "[io][output][faults]") {
+  TempDir dir;
+  const fs::path a = dir.path / "a.csv", b = dir.path / "b.csv", c = dir.path / "c.csv";
+  put(a, "old a\n");
+  put(c, "old c\n");
+  const std::string big(OutputFile::kBufferBytes + 12345, 'x');  // several write(2) calls
+  // One file: commit() (fsync, close, rename).
+  const std::set<std::string> single = fail_each_call(
+      dir,
+      [&] {
+        OutputFile f = OutputFile::open(c.string(), "--output");
+        f.write("new c\n");
+        f.write(big);
+        f.commit();
+      },
+      [&] { CHECK(slurp(c) == "old c\n"); }, "--output = " + c.string());
+  CHECK(slurp(c) == "new c\n" + big);
+  // Two files together: one replacing a.csv (backup link), one new; b finished early (syncfs).
+  const std::set<std::string> together = fail_each_call(
+      dir,
+      [&] {
+        OutputFile fa = OutputFile::open(a.string(), "--output");
+        fa.write(big);
+        OutputFile fb = OutputFile::open(b.string(), "--pairs");
+        fb.write("new b\n");
+        fb.finish_writing(false);
+        commit_together({&fa, &fb});
+      },
+      [&] {
+        CHECK(slurp(a) == "old a\n");
+        CHECK_FALSE(fs::exists(b));
+      },
+      " = " + dir.path.string());
+  CHECK(slurp(a) == big);
+  CHECK(slurp(b) == "new b\n");
+  std::set<std::string> all = single;
+  all.insert(together.begin(), together.end());
+  CHECK(all == std::set<std::string>{"alloc", "close", "fsync", "link", "mkostemp", "rename", "write"});
+}
+
+TEST_CASE("output_file: D4 a path with a NUL byte is refused by the writer and the reader, never cut", "[io][output]") {
+  TempDir dir;
+  const std::string path = (dir.path / "o.csv").string() + std::string("\0x", 2);
+  try {
+    OutputFile::open(path, "--output");
+    FAIL("a path with a NUL byte was opened");
+  } catch (const OutputError& e) {
+    CHECK(std::string(e.what()).find("o.csv\\0x: contains a NUL byte") != std::string::npos);
+  }
+  CHECK(dir.entries().empty());  // not o.csv, nor a temporary
+  put(dir.path / "o.csv", "1,0,0\n");
+  const InvalidInput e = expect_invalid([&] { read_polyline(path, "input"); });
+  CHECK(e.problem() == "contains a NUL byte");
+  CHECK(e.value().find("\\0x") != std::string::npos);
+}
+
+TEST_CASE("output_file: D5 more than 64 live temporaries are all removable by the signal handler", "[io][output][signals]") {
+  TempDir dir;
+  std::vector<OutputFile> files;
+  for (int i = 0; i < 200; ++i) {
+    files.push_back(OutputFile::open((dir.path / ("f" + std::to_string(i))).string(), "--output"));
+    files.back().write("x");
+    files.back().finish_writing(false);
+  }
+  REQUIRE(dir.entries().size() == 200);  // 200 temporaries, no target yet
+  detail::TempRegistry::instance().unlink_all();  // what the SIGINT/SIGTERM/SIGHUP handler runs
+  CHECK(dir.entries().empty());
+  files.clear();
+  // Nodes are reused: a new file after those 200 is registered and removed again.
+  OutputFile g = OutputFile::open((dir.path / "g").string(), "--output");
+  detail::TempRegistry::instance().unlink_all();
+  CHECK(dir.entries().empty());
+}
+
+TEST_CASE("output_file: D6 finished staged outputs hold no descriptor until their common commit", "[io][output]") {
+  TempDir dir;
+  const auto open_descriptors = [] {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator("/proc/self/fd"), fs::directory_iterator()));
+  };
+  const std::size_t before = open_descriptors();
+  std::vector<std::unique_ptr<OutputFile>> files;
+  for (int i = 0; i < 1100; ++i) {
+    files.push_back(std::make_unique<OutputFile>(OutputFile::open((dir.path / ("f" + std::to_string(i))).string(), "--output")));
+    files.back()->write(std::to_string(i));
+    files.back()->finish_writing(false);
+  }
+  CHECK(open_descriptors() == before);
+  std::vector<OutputFile*> all;
+  for (auto& f : files) all.push_back(f.get());
+  commit_together(all);
+  CHECK(dir.entries().size() == 1100);
+  CHECK(slurp(dir.path / "f1099") == "1099");
+  CHECK_THROWS_AS(files.front()->write("late"), OutputError);  // closed: no write after commit
+}
+
+TEST_CASE("polyline_input: D10 declared sizes are hints: a sparse 64 GB CSV or (3e9, 3) .npy reports its first bad row",
+          "[io][csv][npy]") {
+  TempDir dir;
+  const fs::path csv = dir.path / "sparse.csv", npy = dir.path / "sparse.npy";
+  std::string rows;
+  for (int i = 0; i < 800000; ++i) rows += i % 2 ? "1,0,0\n" : "0,1,0\n";  // 4.8 MB: the first block is all rows
+  put(csv, rows);
+  fs::resize_file(csv, std::uintmax_t(64) << 30);  // a hole of NUL bytes: no disk used
+  const InvalidInput e = expect_invalid([&] { read_polyline(csv.string()); });
+  CHECK(e.problem().find("line 800001 ") == 0);
+  const std::string header = npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (3000000000, 3), }\n", "");
+  put(npy, header + doubles({1, 0, 0, 0, 1, 0}));  // two good rows, then zeros
+  fs::resize_file(npy, header.size() + std::uintmax_t(3000000000) * 24);
+  const InvalidInput n = expect_invalid([&] { read_polyline(npy.string()); });
+  CHECK(n.problem() == "row 2 (0, 0, 0) is not a finite nonzero vector");
+}
+
+TEST_CASE("npy and csv: D12 a NUL in a descr is escaped; a CSV field that is not a number is quoted", "[io][npy][csv]") {
+  const InvalidInput e = expect_invalid([] {
+    const char dict[] = "{'descr': '<f\0" "8', 'fortran_order': False, 'shape': (2, 3), }";
+    parse_npy_header(npy_by_hand(std::string(dict, sizeof dict - 1), ""), "input", "n.npy");
+  });
+  CHECK(e.problem() == "dtype <f\\x008 is not float64 or float32");
+  TempDir dir;
+  for (const auto& [text, problem] : std::vector<std::pair<std::string, std::string>>{
+           {"1,0,0\n1e,0.5,1\n", "line 2 column 1 is not a finite number: \"1e\""},
+           {"1,0,0\n0.5,0x1p3,1\n", "line 2 column 2 is not a finite number: \"0x1p3\""},
+           {"x,y,z\n1,0,0\n0,1,1e\n", "line 3 column 3 is not a finite number: \"1e\""},
+           {"1,0,0\n0,1\n", "line 2 has 2 fields, not 3"}}) {
+    INFO(text);
+    put(dir.path / "e.csv", text);
+    CHECK(expect_invalid([&] { read_polyline((dir.path / "e.csv").string()); }).problem() == problem);
+  }
 }

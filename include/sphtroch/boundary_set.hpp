@@ -283,7 +283,7 @@ inline std::int64_t node_count(Real sa2, Real ca2, Real a3, const Ratio& n) {
 /// the curve degenerates (classify refuses the same values).
 inline bool a2_in_range(double a2) {
   const double pi = Constants<double>::pi();
-  return std::isfinite(a2) && a2 > 0 && a2 < pi && a2 >= 0.99 * kMinCarrierTwist && pi - a2 >= 0.99 * kMinCarrierTwist;
+  return std::isfinite(a2) && a2 > 0 && a2 < pi && carrier_twist_in_range(a2);
 }
 
 inline void check_a2(double a2) {

@@ -41,11 +41,20 @@ inline const char* to_string(A3Reference r) {
   return "?";
 }
 
-/// The carrier twist must stay this far from 0 and pi (radians; checked with 1% slack so that
-/// inputs written 1e-6 or pi-1e-6 pass after rounding). Closer, the curve is nearly a multiply
-/// covered circle whose nodes lie within the censuses' merge distances (1e-9) of each other:
-/// both censuses lose nodes below ~1e-9 (measured), so the bound keeps a factor 1000.
+/// The carrier twist must stay this far from 0 and pi (radians, bounds included; see
+/// carrier_twist_in_range). Closer, the curve is nearly a multiply covered circle whose nodes lie
+/// within the censuses' merge distances (1e-9) of each other: both censuses lose nodes below
+/// ~1e-9 (measured), so the bound keeps a factor 1000.
 constexpr double kMinCarrierTwist = 1e-6;
+
+/// True when kMinCarrierTwist <= a2 <= pi - kMinCarrierTwist. The upper bound allows 2 ulp(pi)
+/// (8.9e-16) for the rounding of a typed "pi-1e-6"; nothing else is rounded in the caller's favour
+/// (9.9e-7 and pi-9.9e-7 are refused).
+inline bool carrier_twist_in_range(double a2) {
+  const double pi = Constants<double>::pi();
+  const double two_ulp_pi = 8.881784197001252e-16;
+  return a2 >= kMinCarrierTwist && a2 < pi && pi - a2 >= kMinCarrierTwist - two_ulp_pi;
+}
 /// |omega| = |Z1 + n Z2| = sqrt(1 + n^2 + 2 n cos a2), the planet's angular speed per unit carrier
 /// speed. Below this (n = -1 with a2 near 0, n = 1 with a2 near pi) the pitch cone a_p is
 /// ill-conditioned (da_p/da2 ~ 1/|omega|^2): a tracer within kPitchConeGuard of it, or given
@@ -189,7 +198,7 @@ class GearTrain {
       : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(0.0), phase_given_(phase) {
     const double pi = Constants<double>::pi();
     if (!(a2 > 0.0 && a2 < pi)) throw InvalidInput("a2", detail::to_text(a2), "outside the valid range", "(0, pi) radians");
-    if (!(a2 >= 0.99 * kMinCarrierTwist && pi - a2 >= 0.99 * kMinCarrierTwist))
+    if (!carrier_twist_in_range(a2))
       throw InvalidInput("a2", detail::to_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
                          "[1e-6, pi - 1e-6] radians");
     const double nv = n.value(), speed = std::sqrt(std::max(0.0, 1.0 + nv * nv + 2.0 * nv * std::cos(a2)));

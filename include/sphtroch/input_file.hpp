@@ -6,9 +6,10 @@
 //   for (std::string_view line; lines.next(line);) { }   // each line without its '\n'
 //
 // Errors throw InvalidInput(field, path, problem, "a readable file, or - for standard input"):
-// a path that does not exist, cannot be opened, is a directory, or fails while being read, and a
-// FIFO that no writer opens within kFifoWriterWaitMs (a named pipe with no writer would otherwise
-// block forever).
+// a path that does not exist, cannot be opened, is a directory, has a NUL byte, or fails while
+// being read, and a FIFO that no writer opens within kFifoWriterWaitMs (a named pipe with no
+// writer would otherwise block forever). Once a writer has opened the FIFO, reading blocks like
+// cat until the end of the input, however long the writer stays silent.
 #pragma once
 
 #include "sphtroch/errors.hpp"
@@ -34,6 +35,8 @@ namespace sphtroch {
 
 /// How long open() waits for a writer to open a FIFO given as input, in milliseconds.
 constexpr int kFifoWriterWaitMs = 10000;
+/// How often it looks for the writer meanwhile, in milliseconds.
+constexpr int kFifoWriterPollMs = 10;
 
 class InputFile {
  public:
@@ -41,6 +44,10 @@ class InputFile {
     InputFile f;
     f.path_ = path;
     f.field_ = field;
+    if (const auto nul = path.find('\0'); nul != std::string::npos) {
+      f.path_.replace(nul, 1, "\\0");  // shown, not cut
+      f.fail("contains a NUL byte", 0);
+    }
     if (path == "-") {
       f.fd_ = STDIN_FILENO;
     } else {
@@ -66,7 +73,7 @@ class InputFile {
   InputFile() = default;
   InputFile(InputFile&& o) noexcept
       : path_(std::move(o.path_)), field_(std::move(o.field_)), fd_(std::exchange(o.fd_, -1)),
-        owned_(std::exchange(o.owned_, false)), size_(o.size_) {}
+        owned_(std::exchange(o.owned_, false)), size_(o.size_), pending_(o.pending_) {}
   InputFile& operator=(InputFile&&) = delete;
   InputFile(const InputFile&) = delete;
   ~InputFile() {
@@ -81,6 +88,10 @@ class InputFile {
   /// Reads up to n bytes; fewer only at the end of the input.
   std::size_t read(char* out, std::size_t n) {
     std::size_t got = 0;
+    if (pending_ && n > 0) {  // the byte wait_for_writer() read
+      out[got++] = *pending_;
+      pending_.reset();
+    }
     while (got < n) {
       const ssize_t k = ::read(fd_, out + got, n - got);
       if (k < 0) {
@@ -94,15 +105,23 @@ class InputFile {
   }
 
  private:
-  void wait_for_writer() const {
-    struct pollfd p {fd_, POLLIN, 0};
-    int r;
-    do r = ::poll(&p, 1, kFifoWriterWaitMs);
-    while (r < 0 && errno == EINTR);
-    if (r == 0)
-      throw InvalidInput(field_, path_,
-                         "a FIFO that no writer opened within " + std::to_string(kFifoWriterWaitMs / 1000) + " s",
-                         "a readable file, or a FIFO or pipe with a writer");
+  /// Returns once a writer has opened the FIFO (fd_ is O_NONBLOCK): it sent data or closed
+  /// (poll), or it is open and silent (a 1-byte read gives EAGAIN, not the 0 of "no writer";
+  /// a byte read there is kept in pending_). Throws after kFifoWriterWaitMs without a writer.
+  void wait_for_writer() {
+    for (int waited = 0;; waited += kFifoWriterPollMs) {
+      struct pollfd p {fd_, POLLIN, 0};
+      if (::poll(&p, 1, 0) > 0) return;
+      char c;
+      const ssize_t k = ::read(fd_, &c, 1);
+      if (k == 1) pending_ = c;
+      if (k == 1 || (k < 0 && errno == EAGAIN)) return;
+      if (waited >= kFifoWriterWaitMs)
+        throw InvalidInput(field_, path_,
+                           "a FIFO that no writer opened within " + std::to_string(kFifoWriterWaitMs / 1000) + " s",
+                           "a readable file, or a FIFO or pipe with a writer");
+      ::usleep(kFifoWriterPollMs * 1000);
+    }
   }
 
   [[noreturn]] void fail(const std::string& problem, int error_number) const {
@@ -114,6 +133,7 @@ class InputFile {
   int fd_ = -1;
   bool owned_ = false;
   std::optional<std::uint64_t> size_;
+  std::optional<char> pending_;
 };
 
 /// The whole of a file or standard input as bytes; InvalidInput when it holds more than max_bytes.

@@ -71,6 +71,19 @@ namespace npy_detail {
   throw InvalidInput(field, name, problem, kNpyValid);
 }
 
+/// Text from the header as shown in a message: control bytes (NUL included) as \xNN, so that the
+/// message is one line and never cut at a NUL; at most 40 bytes.
+inline std::string shown(std::string_view s) {
+  static const char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : s.substr(0, 40)) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    else out += ch;
+  }
+  return s.size() > 40 ? out + "..." : out;
+}
+
 /// A cursor over the header dict: just enough of Python's literal syntax for numpy.save's output.
 struct DictReader {
   std::string_view s;
@@ -183,7 +196,7 @@ inline NpyHeader parse_npy_header(std::string_view preamble, const std::string& 
       h.shape = r.tuple();
       have_shape = true;
     } else {
-      bad(field, name, "malformed header: unexpected or repeated key '" + key + "'");
+      bad(field, name, "malformed header: unexpected or repeated key '" + npy_detail::shown(key) + "'");
     }
     if (r.eat('}')) break;
     r.expect(',', "',' between entries");
@@ -193,10 +206,10 @@ inline NpyHeader parse_npy_header(std::string_view preamble, const std::string& 
   if (!have_descr || !have_order || !have_shape)
     bad(field, name, "malformed header: needs the keys descr, fortran_order and shape");
   if (descr.size() == 3 && descr[0] == '>' && descr[1] == 'f')
-    bad(field, name, "big-endian data (dtype " + descr + ")");
+    bad(field, name, "big-endian data (dtype " + npy_detail::shown(descr) + ")");
   if (descr == "<f8" || descr == "=f8") h.item_bytes = 8;
   else if (descr == "<f4" || descr == "=f4") h.item_bytes = 4;
-  else bad(field, name, "dtype " + descr + " is not float64 or float32");
+  else bad(field, name, "dtype " + npy_detail::shown(descr) + " is not float64 or float32");
   if (fortran) bad(field, name, "Fortran order (fortran_order: True)");
   h.data_offset = len;
   return h;

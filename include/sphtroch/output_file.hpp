@@ -12,13 +12,19 @@
 //     standard output already writes to (/dev/stdout): written directly, never renamed over.
 //   - anything else (a new file, a regular file, a symlink to one): a temporary file with a short
 //     name (".sphtroch-XXXXXX") in the target's directory, given the mode of the file it
-//     replaces (new files 0666 & ~umask), renamed onto the target by commit(). Until then the
-//     target is untouched; an OutputFile destroyed without commit() removes its temporary, and
-//     install_output_signal_cleanup() removes it on SIGINT, SIGTERM, SIGHUP too.
+//     replaces (new files 0666 & ~umask), fsynced and renamed onto the target by commit(). Until
+//     then the target is untouched; an OutputFile destroyed without commit() removes its
+//     temporary, and install_output_signal_cleanup() removes it on SIGINT, SIGTERM, SIGHUP too
+//     (any number of live temporaries). finish_writing() closes a staged temporary early (no
+//     descriptor, no buffer held until commit: thousands of outputs can wait for one commit,
+//     whose single syncfs replaces their fsyncs). Renames are not followed by a directory fsync.
+//   - refused (OutputError): a path with a NUL byte, a loop of symbolic links (ELOOP), a directory.
 // Errors throw OutputError (field, path, errno); a reader that went away (EPIPE, with SIGPIPE
 // ignored) throws BrokenPipe, an OutputError that a command-line filter ends on quietly.
 // Several outputs that must appear together: commit_together() (all or none; see there).
 // Not thread-safe: one OutputFile per thread.
+// Tests: compiled with SPHTROCH_OUTPUT_FAULT_INJECTION, detail::output_fault_hook makes any system
+// call or allocation of the writer fail (tests/test_io.cpp checks that nothing partial is left).
 #pragma once
 
 #include <fcntl.h>
@@ -26,12 +32,16 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <mutex>
+#include <new>
 #include <ostream>
 #include <stdexcept>
 #include <streambuf>
@@ -75,37 +85,102 @@ class BrokenPipe : public OutputError {
 
 namespace detail {
 
-/// Temporary files alive in this process, removable from a signal handler (fixed storage, no
-/// allocation; a slot is published by setting `used` last).
-struct TempRegistry {
-  static constexpr int kSlots = 64;
-  struct Slot {
-    volatile sig_atomic_t used = 0;
-    char path[PATH_MAX] = {};
+#ifdef SPHTROCH_OUTPUT_FAULT_INJECTION
+/// Test seam, compiled only with SPHTROCH_OUTPUT_FAULT_INJECTION: called before each system call
+/// and allocation of OutputFile with its name ("mkostemp", "write", "fsync", "close", "link",
+/// "rename", "alloc"); a nonzero return makes that call fail with it as errno ("alloc": as
+/// std::bad_alloc).
+inline int (*output_fault_hook)(const char* operation) = nullptr;
+inline int injected_fault(const char* operation) { return output_fault_hook ? output_fault_hook(operation) : 0; }
+#else
+constexpr int injected_fault(const char*) { return 0; }
+#endif
+
+/// The system calls of OutputFile, each failing as the test seam says (else the call itself).
+inline int sys_mkostemp(char* tmpl, int flags) {
+  if (const int e = injected_fault("mkostemp")) return errno = e, -1;
+  return ::mkostemp(tmpl, flags);
+}
+inline ssize_t sys_write(int fd, const void* p, std::size_t n) {
+  if (const int e = injected_fault("write")) return errno = e, -1;
+  return ::write(fd, p, n);
+}
+inline int sys_fsync(int fd) {
+  if (const int e = injected_fault("fsync")) return errno = e, -1;
+  return ::fsync(fd);
+}
+inline int sys_close(int fd) {  // the descriptor is released in every case
+  const int e = injected_fault("close");
+  const int r = ::close(fd);
+  return e ? (errno = e, -1) : r;
+}
+inline int sys_link(const char* from, const char* to) {
+  if (const int e = injected_fault("link")) return errno = e, -1;
+  return ::link(from, to);
+}
+inline int sys_rename(const char* from, const char* to) {
+  if (const int e = injected_fault("rename")) return errno = e, -1;
+  return ::rename(from, to);
+}
+/// new T / new char[n], failing as the seam says; throw std::bad_alloc.
+template <class T>
+T* sys_new() {
+  if (injected_fault("alloc")) throw std::bad_alloc();
+  return new T();
+}
+inline char* sys_new_chars(std::size_t n) {
+  if (injected_fault("alloc")) throw std::bad_alloc();
+  return new char[n];
+}
+
+/// Temporary files alive in this process, removable from a signal handler. Unbounded: a list of
+/// nodes that only grows (a node is reused once free, never freed), so that the handler walks it
+/// without locks or allocation. A node's path is written while it is unused and published by
+/// setting `used` last; `next` is set before the node is published and never changes. add() and
+/// remove() may be called from any thread (a mutex), never from the handler.
+class TempRegistry {
+ public:
+  struct Node {
+    std::atomic<int> used{0};
+    std::unique_ptr<char[]> path;
+    std::size_t capacity = 0;
+    Node* next = nullptr;
   };
-  Slot slots[kSlots];
+  static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads `used` without a lock");
 
   static TempRegistry& instance() {
-    static TempRegistry registry;
-    return registry;
+    static TempRegistry* registry = new TempRegistry;  // never destroyed: a handler may run at exit
+    return *registry;
   }
-  int add(const std::string& path) {
-    if (path.size() >= PATH_MAX) return -1;
-    for (int i = 0; i < kSlots; ++i)
-      if (!slots[i].used) {
-        std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
-        slots[i].used = 1;
-        return i;
-      }
-    return -1;  // full: the file is still removed by its owner, just not on a signal
+  /// Registers `path`; throws std::bad_alloc (then nothing is registered).
+  Node* add(const std::string& path) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Node* node = nullptr;
+    for (Node* n = head_.load(); n && !node; n = n->next)
+      if (!n->used.load() && n->capacity > path.size()) node = n;
+    if (!node) {
+      std::unique_ptr<Node> fresh(sys_new<Node>());
+      fresh->path.reset(sys_new_chars(path.size() + 1));
+      fresh->capacity = path.size() + 1;
+      fresh->next = head_.load();
+      node = fresh.release();
+      head_.store(node);  // published with used == 0: the handler skips it
+    }
+    std::memcpy(node->path.get(), path.c_str(), path.size() + 1);
+    node->used.store(1);
+    return node;
   }
-  void remove(int slot) {
-    if (slot >= 0) slots[slot].used = 0;
+  void remove(Node* node) noexcept {
+    if (node) node->used.store(0);
   }
   void unlink_all() noexcept {  // async-signal-safe
-    for (Slot& s : slots)
-      if (s.used) ::unlink(s.path);
+    for (Node* n = head_.load(); n; n = n->next)
+      if (n->used.load()) ::unlink(n->path.get());
   }
+
+ private:
+  std::mutex mutex_;
+  std::atomic<Node*> head_{nullptr};
 };
 
 inline void remove_temporaries_and_reraise(int sig) {
@@ -150,14 +225,20 @@ inline void install_output_signal_cleanup() {
 
 class OutputFile {
  public:
-  /// Bytes buffered before a write(2); large blocks bypass the buffer.
+  /// Bytes buffered before a write(2); large blocks bypass the buffer. The buffer lives from
+  /// open() to finish_writing()/commit(): a finished staged file holds no buffer and no descriptor.
   static constexpr std::size_t kBufferBytes = std::size_t(1) << 20;
 
   /// Opens `path` ("" or "-": stdout) as described at the top. `field` names the option in errors.
+  /// A path with a NUL byte is refused (OutputError), never cut at the NUL.
   static OutputFile open(const std::string& path, const std::string& field) {
     OutputFile f;
     f.field_ = field;
     f.path_ = path.empty() ? "-" : path;
+    if (const auto nul = f.path_.find('\0'); nul != std::string::npos) {
+      f.path_.replace(nul, 1, "\\0");  // shown, not cut
+      f.fail("contains a NUL byte", 0, "a path without NUL bytes");
+    }
     if (f.path_ == "-") {
       f.field_ = "stdout";  // errors name what failed, also when no option named it ("stdout = -: ...")
       f.fd_ = STDOUT_FILENO;
@@ -165,7 +246,7 @@ class OutputFile {
     } else {
       f.open_path();
     }
-    f.buffer_.reset(new char[kBufferBytes]);
+    f.allocate_buffer();
     return f;
   }
 
@@ -178,12 +259,12 @@ class OutputFile {
       path_ = std::move(o.path_);
       target_ = std::move(o.target_);
       tmp_ = std::move(o.tmp_);
-      kind_ = o.kind_;
+      kind_ = std::exchange(o.kind_, Kind::closed);
+      needs_sync_ = o.needs_sync_;
       fd_ = std::exchange(o.fd_, -1);
-      slot_ = std::exchange(o.slot_, -1);
+      slot_ = std::exchange(o.slot_, nullptr);
       buffer_ = std::move(o.buffer_);
       used_ = std::exchange(o.used_, 0);
-      o.kind_ = Kind::closed;
     }
     return *this;
   }
@@ -194,9 +275,12 @@ class OutputFile {
   const std::string& path() const noexcept { return path_; }
   const std::string& field() const noexcept { return field_; }
   bool is_stdout() const noexcept { return path_ == "-"; }
+  /// True for a file written to a temporary and renamed onto its target by commit().
+  bool is_staged() const noexcept { return kind_ == Kind::staged; }
 
   /// Room for n <= kBufferBytes bytes at the returned pointer; advance(end) keeps them.
   char* reserve(std::size_t n) {
+    if (!buffer_) fail("written after it was finished", 0, "write before finish_writing() or commit()");
     if (used_ + n > kBufferBytes) flush();
     return buffer_.get() + used_;
   }
@@ -220,11 +304,29 @@ class OutputFile {
     write_all(buffer_.get(), n);
   }
 
-  /// Flushes and closes; a staged file is renamed onto its target. Throws OutputError.
+  /// Ends the writing: flushes; a staged file is closed (it keeps its temporary name until
+  /// commit()) after an fsync, or with `sync_now` false marked for one sync of its file system
+  /// by commit_together() (thousands of outputs: one syncfs instead of thousands of fsyncs); a
+  /// device or FIFO is closed; frees the buffer. No write may follow. Idempotent. Throws
+  /// OutputError (the temporary is then removed by discard() or the destructor).
+  void finish_writing(bool sync_now = true) {
+    if (kind_ == Kind::closed) fail("already closed", 0, "one commit per output");
+    if (!buffer_) return;  // already finished
+    flush();
+    buffer_.reset();
+    if (kind_ == Kind::stream) return;  // stdout or stderr: never closed here
+    if (kind_ == Kind::staged && sync_now && detail::sys_fsync(fd_) != 0)
+      fail("could not be written to disk (fsync)", errno, "a writable target with free space");
+    needs_sync_ = kind_ == Kind::staged && !sync_now;
+    const int fd = std::exchange(fd_, -1);
+    if (detail::sys_close(fd) != 0 && errno != EINTR) fail("write failed", errno, "a writable target with free space");
+  }
+
+  /// Finishes and, for a staged file, renames it onto its target. Throws OutputError.
   void commit() {
-    finish();
+    finish_writing();
     if (kind_ == Kind::staged) {
-      if (::rename(tmp_.c_str(), target_.c_str()) != 0)
+      if (detail::sys_rename(tmp_.c_str(), target_.c_str()) != 0)
         fail("cannot be replaced", errno, "a writable file path");
       unregister();
     }
@@ -236,6 +338,7 @@ class OutputFile {
     if (kind_ == Kind::closed) return;
     if (fd_ >= 0 && kind_ != Kind::stream) ::close(fd_);
     fd_ = -1;
+    buffer_.reset();
     if (kind_ == Kind::staged) {
       ::unlink(tmp_.c_str());
       unregister();
@@ -252,6 +355,16 @@ class OutputFile {
     throw OutputError(field_, path_, problem, error_number, valid);
   }
 
+  /// The write buffer; OutputError (ENOMEM) when it cannot be allocated (the destructor then
+  /// removes the temporary).
+  void allocate_buffer() {
+    try {
+      buffer_.reset(detail::sys_new_chars(kBufferBytes));
+    } catch (const std::bad_alloc&) {
+      fail("no memory for the write buffer", ENOMEM, "more free memory");
+    }
+  }
+
   /// True when `st` is the file this process's standard output or error already writes to
   /// (`-o /dev/stdout` with stdout redirected to a file): it must be written, not replaced.
   /// Returns that descriptor, or -1.
@@ -264,11 +377,13 @@ class OutputFile {
   }
 
   /// `path` with the symbolic links of its last component followed (at most 40), also to a target
-  /// that does not exist yet; canonical (realpath) when the target exists.
+  /// that does not exist yet; canonical (realpath) when the target exists. Empty for a loop (still
+  /// a link after 40 hops: a shell's > fails with ELOOP there).
   static std::string follow_links(std::string path) {
-    for (int hop = 0; hop < 40; ++hop) {
+    for (int hop = 0;; ++hop) {
       struct stat st {};
       if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) break;
+      if (hop == 40) return {};
       std::string link(PATH_MAX, '\0');
       const ssize_t n = ::readlink(path.c_str(), link.data(), link.size());
       if (n <= 0) break;
@@ -312,16 +427,25 @@ class OutputFile {
       kind_ = Kind::direct;
       return;
     }
-    // A regular file, possibly through symlinks: replace the file itself. A symlink whose target
-    // does not exist yet gets that target created (as a shell's > does), the link kept.
+    open_staged();
+  }
+
+  /// A regular file, possibly through symlinks: replace the file itself. A symlink whose target
+  /// does not exist yet gets that target created (as a shell's > does), the link kept.
+  void open_staged() {
     target_ = follow_links(path_);
-    const std::string dir = detail::split_path(target_).first;
-    std::string tmpl = dir + "/.sphtroch-XXXXXX";
-    fd_ = ::mkostemp(tmpl.data(), O_CLOEXEC);
+    if (target_.empty()) fail("is a loop of symbolic links", ELOOP, "a file path, or a symlink that reaches one");
+    std::string tmpl = detail::split_path(target_).first + "/.sphtroch-XXXXXX";
+    fd_ = detail::sys_mkostemp(tmpl.data(), O_CLOEXEC);
     if (fd_ < 0) fail("cannot be written", errno, "a path in an existing, writable directory");
     tmp_ = tmpl;
-    kind_ = Kind::staged;
-    slot_ = detail::TempRegistry::instance().add(tmp_);
+    kind_ = Kind::staged;  // from here discard() removes the temporary
+    try {
+      slot_ = detail::TempRegistry::instance().add(tmp_);
+    } catch (const std::bad_alloc&) {
+      discard();
+      fail("no memory to register the temporary file", ENOMEM, "more free memory");
+    }
     struct stat old {};
     if (::stat(target_.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
       ::fchmod(fd_, old.st_mode & 07777);
@@ -332,8 +456,9 @@ class OutputFile {
   }
 
   void write_all(const char* p, std::size_t n) {
+    if (fd_ < 0) fail("written after it was finished", 0, "write before finish_writing() or commit()");
     while (n > 0) {
-      const ssize_t k = ::write(fd_, p, n);
+      const ssize_t k = detail::sys_write(fd_, p, n);
       if (k < 0) {
         if (errno == EINTR) continue;
         fail("write failed", errno, "a writable target with free space");
@@ -343,39 +468,56 @@ class OutputFile {
     }
   }
 
-  void finish() {
-    if (kind_ == Kind::closed) fail("already closed", 0, "one commit per output");
-    flush();
-    if (kind_ == Kind::stream) return;  // stdout or stderr: never closed here
-    const int fd = std::exchange(fd_, -1);
-    if (::close(fd) != 0 && errno != EINTR) fail("write failed", errno, "a writable target with free space");
+  /// Syncs the file system of the staged temporary (Linux: syncfs; elsewhere sync), once per
+  /// directory in `synced`. Throws OutputError.
+  void sync_file_system(std::vector<std::string>& synced) const {
+    const std::string dir = detail::split_path(tmp_).first;
+    if (std::find(synced.begin(), synced.end(), dir) != synced.end()) return;
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_CLOEXEC | O_DIRECTORY);
+    int err = fd < 0 ? errno : 0;
+    if (fd >= 0) {
+      if (const int e = detail::injected_fault("fsync")) err = e;
+#ifdef __linux__
+      else if (::syncfs(fd) != 0) err = errno;
+#else
+      else ::sync();
+#endif
+      ::close(fd);
+    }
+    if (err) fail("could not be written to disk (syncfs)", err, "a writable target with free space");
+    synced.push_back(dir);
   }
 
   void unregister() noexcept {
     detail::TempRegistry::instance().remove(slot_);
-    slot_ = -1;
+    slot_ = nullptr;
   }
 
   std::string field_, path_, target_, tmp_;
   Kind kind_ = Kind::closed;
   int fd_ = -1;
-  int slot_ = -1;
+  bool needs_sync_ = false;  // finished without fsync: commit_together syncs its file system
+  detail::TempRegistry::Node* slot_ = nullptr;
   std::unique_ptr<char[]> buffer_;
   std::size_t used_ = 0;
 };
 
-/// Commits several outputs so that they appear together or not at all: every output is flushed
-/// and closed first (a write error leaves every target untouched); then the staged files are
+/// Commits several outputs so that they appear together or not at all: every output is finished
+/// and its contents synced to disk first (a write or sync error leaves every target untouched); then the staged files are
 /// renamed one by one, each existing target kept under a hard-linked backup name until all are in
-/// place. If a rename fails, the targets already replaced get their previous file back (or are
-/// removed if they did not exist) and OutputError is thrown. Outputs written directly (stdout,
-/// devices, FIFOs) cannot be taken back: they are written as the bytes come.
+/// place. If a backup or a rename fails, the targets already replaced get their previous file back
+/// (or are removed if they did not exist) and OutputError is thrown. Outputs written directly
+/// (stdout, devices, FIFOs) cannot be taken back: they are written as the bytes come.
 inline void commit_together(std::vector<OutputFile*> outputs) {
-  for (OutputFile* o : outputs) o->finish();
+  std::vector<std::string> synced;
+  for (OutputFile* o : outputs) {
+    o->finish_writing();  // no-op for those already finished
+    if (o->needs_sync_) o->sync_file_system(synced);
+  }
   struct Done {
     OutputFile* output;
-    std::string backup;
-    int slot;
+    std::string backup;  // empty: the target did not exist
+    detail::TempRegistry::Node* slot;
   };
   std::vector<Done> done;
   auto forget_backups = [&done] {
@@ -384,31 +526,42 @@ inline void commit_together(std::vector<OutputFile*> outputs) {
       detail::TempRegistry::instance().remove(d.slot);
     }
   };
+  auto roll_back = [&](OutputFile* o, const std::string& problem, int err) {
+    for (auto d = done.rbegin(); d != done.rend(); ++d) {
+      if (!d->backup.empty()) ::rename(d->backup.c_str(), d->output->target_.c_str());
+      else ::unlink(d->output->target_.c_str());
+      d->backup.clear();
+    }
+    forget_backups();
+    o->fail(problem + " (no output of this run was kept)", err, "a writable file path");
+  };
+  done.reserve(outputs.size());
   for (OutputFile* o : outputs) {
     if (o->kind_ != OutputFile::Kind::staged) continue;
-    std::string backup;
-    int slot = -1;
+    Done d{o, {}, nullptr};
     struct stat st {};
     if (::lstat(o->target_.c_str(), &st) == 0) {
-      backup = o->tmp_ + "b";
-      if (::link(o->target_.c_str(), backup.c_str()) != 0) backup.clear();  // cannot restore; go on
-      else slot = detail::TempRegistry::instance().add(backup);
-    }
-    if (::rename(o->tmp_.c_str(), o->target_.c_str()) != 0) {
-      const int err = errno;
-      for (auto d = done.rbegin(); d != done.rend(); ++d) {
-        if (!d->backup.empty()) ::rename(d->backup.c_str(), d->output->target_.c_str());
-        else ::unlink(d->output->target_.c_str());
-        d->backup.clear();
+      d.backup = o->tmp_ + "b";
+      try {
+        d.slot = detail::TempRegistry::instance().add(d.backup);
+      } catch (const std::bad_alloc&) {
+        roll_back(o, "no memory to keep a backup of the previous file", ENOMEM);
       }
-      if (!backup.empty()) ::unlink(backup.c_str());
-      detail::TempRegistry::instance().remove(slot);
-      forget_backups();
-      o->fail("cannot be replaced (no output of this run was kept)", err, "a writable file path");
+      if (detail::sys_link(o->target_.c_str(), d.backup.c_str()) != 0) {
+        const int err = errno;
+        detail::TempRegistry::instance().remove(d.slot);
+        roll_back(o, "cannot keep a backup of the previous file", err);
+      }
+    }
+    if (detail::sys_rename(o->tmp_.c_str(), o->target_.c_str()) != 0) {
+      const int err = errno;
+      if (!d.backup.empty()) ::unlink(d.backup.c_str());
+      detail::TempRegistry::instance().remove(d.slot);
+      roll_back(o, "cannot be replaced", err);
     }
     o->unregister();
     o->kind_ = OutputFile::Kind::closed;
-    done.push_back({o, backup, slot});
+    done.push_back(d);
   }
   forget_backups();
   for (OutputFile* o : outputs) o->kind_ = OutputFile::Kind::closed;

@@ -12,7 +12,9 @@
 // 3 numbers x,y,z. Every row has as many fields as the first. Numbers are parsed with
 // std::from_chars and must be finite.
 // NumPy: float64 or float32, C order, shape (N, 3) = x,y,z, or (N, 4) / (N, 7) = the arrays that
-// `sphtroch trace` writes (t,x,y,z[,vx,vy,vz]): columns 1..3 are taken (see npy.hpp).
+// `sphtroch trace` writes (t,x,y,z[,vx,vy,vz]): columns 1..3 are taken (see npy.hpp); each row
+// is checked as it is read (finite, not all zero), so a bad row is named before memory grows.
+// Sizes (a regular file's, a shape) only hint how much to reserve (kMaxReservedVertices at most).
 // Errors: InvalidInput(field, path, problem naming the line or what is wrong, the valid form).
 // Cost: one pass over the bytes in 4 MiB blocks, CSV rows parsed on `threads` threads (default 2);
 // memory: the vertices (24 bytes each) plus two blocks.
@@ -31,6 +33,7 @@
 #include <cstring>
 #include <optional>
 #include <memory>
+#include <new>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -78,11 +81,11 @@ inline std::string_view trim(std::string_view s) {
   return s;
 }
 
-/// Escapes a header name for a one-line message.
+/// Text of the input for a one-line message: control bytes as '?', at most 40 bytes.
 inline std::string printable(std::string_view s) {
   std::string out;
   for (char c : s.substr(0, 40)) out += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
-  return out;
+  return s.size() > 40 ? out + "..." : out;
 }
 
 /// Decides the layout from the first non-blank line. Throws InvalidInput.
@@ -117,6 +120,19 @@ inline CsvLayout layout_from_first_line(std::string_view line, const std::string
                          "line 1 is a header (" + printable(line) + ") without a column " + std::string(1, char('x' + a)),
                          kPolylineCsvValid);
   return layout;
+}
+
+/// Vertices reserved ahead from a declared or estimated count, at most: a size is a hint (a
+/// sparse 64 GB file declares a lot and holds nothing), so the vector grows past it as rows are
+/// actually read and checked, and a reservation that fails is skipped.
+constexpr std::size_t kMaxReservedVertices = std::size_t(1) << 22;  // 96 MiB
+
+inline void reserve_hint(std::vector<Vector3d>& v, double estimate) {
+  const double n = std::min(std::max(estimate, 0.0), static_cast<double>(kMaxReservedVertices));
+  try {
+    v.reserve(static_cast<std::size_t>(n) + 1024);
+  } catch (const std::bad_alloc&) {  // only a hint
+  }
 }
 
 /// Where a row failed: its line index within the parsed range and what was wrong.
@@ -155,33 +171,26 @@ inline std::size_t parse_rows(const char* first, const char* last, const CsvLayo
     double xyz[3] = {0, 0, 0};
     q = p;
     for (std::size_t k = 0; k < layout.fields; ++k) {
-      const int r = role_of(k);
-      if (r == 0) {
-        const char* c = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)));
-        q = c ? c : end;
-      } else {
-        while (q < end && (*q == ' ' || *q == '\t')) ++q;
-        double v = 0;
-        const char* after = parse_number_prefix(q, end, v);
-        if (!after || !std::isfinite(v)) {
-          error = RowError{line, "column " + std::to_string(k + 1) + " is not a finite number"};
+      const char* comma = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)));
+      const char* field_end = comma ? comma : end;
+      if (const int r = role_of(k); r != 0) {
+        const std::string_view text = trim(std::string_view(q, static_cast<std::size_t>(field_end - q)));
+        const std::optional<double> v = parse_number(text);  // the whole field: "1e" and "0x1p3" are not numbers
+        if (!v) {
+          error = RowError{line, "column " + std::to_string(k + 1) + " is not a finite number: \"" + printable(text) + "\""};
           return lines;
         }
-        q = after;
-        while (q < end && is_blank(*q)) ++q;
-        xyz[r - 1] = v;
+        xyz[r - 1] = *v;
       }
-      if (k + 1 < layout.fields) {
-        if (q == end || *q != ',') {
-          error = RowError{line, "has " + std::to_string(k + 1) + " fields, not " + std::to_string(layout.fields)};
-          return lines;
-        }
-        ++q;
-      } else if (q != end) {
-        error = RowError{line, *q == ',' ? "has more than " + std::to_string(layout.fields) + " fields"
-                                         : "column " + std::to_string(k + 1) + " is not a finite number"};
+      if (k + 1 < layout.fields && !comma) {
+        error = RowError{line, "has " + std::to_string(k + 1) + " fields, not " + std::to_string(layout.fields)};
         return lines;
       }
+      if (k + 1 == layout.fields && comma) {
+        error = RowError{line, "has more than " + std::to_string(layout.fields) + " fields"};
+        return lines;
+      }
+      q = field_end + (comma ? 1 : 0);
     }
     out.emplace_back(xyz[0], xyz[1], xyz[2]);
     p = nl ? nl + 1 : last;
@@ -261,15 +270,19 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
                   path, lines);
       line_base += lines;
     }
-    if (consumed == 0 && complete > 0 && in.size() && *in.size() > complete) {  // reserve from the first block's row density
-      const double rows_per_byte = static_cast<double>(result.vertices.size()) / static_cast<double>(complete);
-      result.vertices.reserve(static_cast<std::size_t>(rows_per_byte * 1.05 * static_cast<double>(*in.size())) + 1024);
-    }
+    if (consumed == 0 && complete > 0 && in.size() && *in.size() > complete)  // from the first block's row density
+      reserve_hint(result.vertices, static_cast<double>(result.vertices.size()) / static_cast<double>(complete) * 1.05 *
+                                        static_cast<double>(*in.size()));
     consumed += complete;
     block.erase(0, complete);
     if (eof && block.empty()) break;
   }
   result.format = layout && layout->header ? "csv with header" : "csv";
+}
+
+inline bool finite_nonzero_row(const double (&xyz)[3]) {
+  return std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2]) &&
+         (xyz[0] != 0.0 || xyz[1] != 0.0 || xyz[2] != 0.0);
 }
 
 inline std::string shape_text(const NpyHeader& h) {
@@ -302,7 +315,7 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
     const std::uint64_t have = *in.size() - std::min<std::uint64_t>(*in.size(), h.data_offset);
     if (have < bytes) throw truncated(have);
     if (have > bytes) throw InvalidInput(field, path, std::to_string(have - bytes) + " bytes after the array's data", kNpyValid);
-    result.vertices.reserve(static_cast<std::size_t>(h.rows()));
+    reserve_hint(result.vertices, static_cast<double>(h.rows()));
   }
   const std::size_t first = cols == 3 ? 0 : 1;  // x,y,z, or t,x,y,z[,vx,vy,vz]
   const std::size_t row_bytes = static_cast<std::size_t>(cols) * h.item_bytes;
@@ -321,6 +334,11 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
         std::memcpy(f, row, sizeof f);
         for (int a = 0; a < 3; ++a) xyz[a] = f[a];
       }
+      if (!finite_nonzero_row(xyz))  // refused as it is read: a sparse (3e9, 3) file fails at its first row
+        throw InvalidInput(field, path,
+                           "row " + std::to_string(h.rows() - rows_left + r) + " (" + detail::to_text(xyz[0]) + ", " +
+                               detail::to_text(xyz[1]) + ", " + detail::to_text(xyz[2]) + ") is not a finite nonzero vector",
+                           kNpyValid);
       result.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
     rows_left -= whole;

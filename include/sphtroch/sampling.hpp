@@ -53,6 +53,15 @@ inline void check_sample_count(std::size_t n, const char* field = "samples") {
 /// The largest default sample count; above it the caller must choose N (see trace_sample_count).
 constexpr std::size_t kMaxDefaultSamples = 1000000;
 
+/// The largest K whose default open-curve count 360 (1 + |n|) K + 1 stays within
+/// kMaxDefaultSamples, as a double that reads back as itself (the bound printed is the bound used).
+inline double max_default_turns(const GearTrain& train) {
+  const double per_turn = 360.0 * (1.0 + std::abs(train.ratio().value()));
+  double k = (static_cast<double>(kMaxDefaultSamples) - 1.0) / per_turn;
+  while (k > 0.0 && per_turn * k + 1.0 > static_cast<double>(kMaxDefaultSamples)) k = std::nextafter(k, 0.0);
+  return k;
+}
+
 /// Default sample count of a trajectory (`sphtroch trace`, the analysis object): 360 per unit
 /// of (q + |p|) for a closed curve (about 0.5 degree of planet or carrier motion per step),
 /// 360*(1 + |n|)*K + 1 for an open one over K carrier turns; at least kMinSamples. Throws
@@ -66,8 +75,7 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
     if (turns)
       throw InvalidInput("turns", detail::to_text(*turns),
                          "needs 360 (1 + |n|) K + 1 = " + detail::to_text(std::ceil(n)) + " samples, more than 1000000",
-                         "K <= " + detail::to_text(std::floor((kMaxDefaultSamples - 1) / (360.0 * (1.0 + std::abs(r.value())))) ) +
-                             " carrier turns for this n");
+                         "K <= " + detail::to_text(max_default_turns(train)) + " carrier turns for this n");
     throw InvalidInput("samples", "(default) " + detail::to_text(std::ceil(n)),
                        "the default 360 (q + |p|) exceeds 1000000", "give the number of samples explicitly (3 .. 10000000)");
   }

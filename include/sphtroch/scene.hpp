@@ -17,9 +17,10 @@
 // a train is an object with
 //   name (non-empty string, distinct per train), description? (string, ignored),
 //   a2, a3 (angle strings in the CLI forms of parse.hpp, or numbers in radians), n (a ratio
-//   string, an integer or a number), phase? (angle, default "0"), samples? | turns? (trajectory
+//   string or an integer; a JSON number 2.5 or 2e0 is refused: write "2.5"), phase? (angle, default "0"), samples? | turns? (trajectory
 //   samples per period | open curve over K turns), census_samples?, literal? (bool), and
-//   effects: a non-empty object {effect name: output path}, run in the order written.
+//   effects: a non-empty object {effect name: output path without NUL bytes}, run in the order
+//   written; at most kMaxSceneOutputs outputs in all.
 // Contracts:
 //  1. parse_scene validates everything (JSON syntax with line and column, no key written twice,
 //     at most kMaxSceneDepth levels, every key known, every value in range, the cost bounds of
@@ -73,6 +74,9 @@ namespace sphtroch {
 constexpr int kMaxSceneDepth = 16;
 /// Scene files are a few kilobytes; a larger file is refused before it is parsed (by the reader).
 constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
+/// Outputs of one scene (each a file renamed into place at the end); more are refused while
+/// parsing, before anything is computed.
+constexpr std::size_t kMaxSceneOutputs = 100000;
 
 /// A problem in a scene (contract 2). field() is "FILE[: PATH]", value() the JSON value as
 /// written (empty when the problem has none, e.g. a missing key), problem() and valid_range() as
@@ -315,7 +319,7 @@ inline void read_gear_train(const TrainObject& t, SceneTrain& st) {
   st.text.a3 = angle_text(err, t.at("a3"), a3);
   if (n.is_string()) st.text.n = n.get<std::string>();
   else if (n.is_number_integer()) st.text.n = n.dump();
-  else if (n.is_number()) st.text.n = number_text(n.get<double>());
+  else if (n.is_number()) err.field(t.at("n"), &n, "a JSON number with a fraction or exponent, not a string or an integer", n_valid + " (write \"2.5\" or \"5/2\")");
   else err.field(t.at("n"), &n, "not a gear ratio", n_valid);
   const Json* phase = t.optional("phase");
   st.text.phase = phase ? angle_text(err, t.at("phase"), *phase) : "0";
@@ -360,6 +364,8 @@ inline void read_effects(const TrainObject& t, SceneTrain& st, const std::string
     if (!effect) err.field(field, &value, "unknown effect", effect_names());
     if (!value.is_string() || value.get<std::string>().empty())
       err.field(field, &value, "not an output path", "a non-empty string (relative to the current directory or --output-dir)");
+    if (value.get<std::string>().find('\0') != std::string::npos)  // the file system would cut the path there
+      err.field(field, &value, "an output path with a NUL byte (\\u0000)", "a path without NUL bytes");
     std::filesystem::path path = value.get<std::string>();
     if (!output_dir.empty() && path.is_relative()) path = std::filesystem::path(output_dir) / path;
     st.effects.push_back({*effect, path.string(), field, shown(value)});
@@ -434,8 +440,14 @@ inline std::vector<SceneTrain> parse_scene(const std::string& text, const std::s
     err.field("trains", &*trains, "not a non-empty list", "a non-empty list of gear trains");
   std::vector<SceneTrain> out;
   std::map<std::string, std::string> names;  // name -> where first used
+  std::size_t outputs = 0;
   for (std::size_t i = 0; i < trains->size(); ++i) {
     SceneTrain st = scene_detail::read_train(err, (*trains)[i], i, output_dir);
+    outputs += st.effects.size();
+    if (outputs > kMaxSceneOutputs)
+      err.field("trains[" + std::to_string(i) + "].effects", nullptr,
+                "output " + std::to_string(outputs) + " of the scene: more than " + std::to_string(kMaxSceneOutputs),
+                "at most " + std::to_string(kMaxSceneOutputs) + " outputs per scene (split the scene)");
     const std::string at = "trains[" + std::to_string(i) + "].name";
     if (const auto [it, fresh] = names.emplace(st.name, at); !fresh)
       err.field(at, &(*trains)[i].at("name"), "used twice (also " + it->second + ")", "a distinct name per gear train");

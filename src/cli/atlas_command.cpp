@@ -111,6 +111,14 @@ std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& 
   return render_atlas_svg(spec, cells);
 }
 
+/// The paths of `paths` that name files (not empty, not stdout).
+std::vector<std::string> written_files(const std::vector<std::string>& paths) {
+  std::vector<std::string> out;
+  for (const std::string& p : paths)
+    if (!p.empty() && p != "-") out.push_back(p);
+  return out;
+}
+
 /// The atlas CSV (-o) and map (--svg): both appear or neither; then the summary (on stderr when the
 /// CSV goes to stdout).
 void write_atlas_outputs(const std::string& csv, const std::string& svg_path, const std::string& svg,
@@ -124,7 +132,7 @@ void write_atlas_outputs(const std::string& csv, const std::string& svg_path, co
     write_summary(std::cerr);
     std::cerr.flush();
   } else {
-    write_output("-", write_summary);
+    write_stdout_after_outputs(written_files({csv, svg_path}), write_summary);
   }
 }
 
@@ -337,7 +345,7 @@ void run_merge(const MergeOptions& o) {
       write_summary(std::cerr);
       std::cerr.flush();
     } else {
-      write_output("-", write_summary);
+      write_stdout_after_outputs(written_files({o.output, o.svg}), write_summary);
     }
     check_atlas_certified(summary, nullptr);
   } catch (const InvalidInput& e) {

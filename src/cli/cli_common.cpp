@@ -58,10 +58,17 @@ std::string file_key(const std::string& path) {
   return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + "/" + name;
 }
 
+std::string input_key(const std::string& path) {
+  if (path != "-") return file_key(path);
+  struct stat st {};
+  if (::fstat(STDIN_FILENO, &st) != 0 || !S_ISREG(st.st_mode)) return {};
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+}
+
 void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs) {
   std::vector<std::pair<std::string, const NamedFile*>> seen;
   for (const NamedFile& in : inputs)
-    if (const std::string k = file_key(in.path); !k.empty()) seen.emplace_back(k, &in);
+    if (const std::string k = input_key(in.path); !k.empty()) seen.emplace_back(k, &in);
   const std::size_t input_count = seen.size();
   for (const NamedFile& out : outputs) {
     const std::string k = file_key(out.path);
@@ -84,6 +91,21 @@ void write_output(const std::string& path, const std::function<void(std::ostream
   file.commit();
 }
 
+void write_stdout_after_outputs(const std::vector<std::string>& written, const std::function<void(std::ostream&)>& write) {
+  try {
+    write_output("-", write);
+  } catch (const BrokenPipe&) {
+    throw;
+  } catch (const OutputError& e) {
+    if (written.empty()) throw;
+    std::string files;
+    for (std::size_t i = 0; i < written.size() && i < 3; ++i) files += (i ? ", " : "") + written[i];
+    if (written.size() > 3) files += " (and " + std::to_string(written.size() - 3) + " more)";
+    throw StdoutFailedAfterOutputs{"outputs written: " + files + "; stdout failed: " + e.what() +
+                                   " (exit status 4: the files are complete)"};
+  }
+}
+
 OutputFile& StagedOutputs::open(const std::string& path, const std::string& field) {
   files_.push_back(std::make_unique<OutputFile>(OutputFile::open(path, field)));
   return *files_.back();
@@ -92,8 +114,11 @@ OutputFile& StagedOutputs::open(const std::string& path, const std::string& fiel
 void StagedOutputs::stage(const std::string& path, const std::string& field,
                           const std::function<void(std::ostream&)>& write) {
   OutputFile& file = open(path, field);
-  OutputStream out(file);
-  write(out);
+  {
+    OutputStream out(file);
+    write(out);
+  }
+  file.finish_writing(false);  // no descriptor or buffer held until commit, which syncs (scenes of thousands of outputs)
 }
 
 void StagedOutputs::commit() {

@@ -29,6 +29,20 @@ constexpr int kBadInput = 2;
 /// complete and say so; sphtroch::kUncertifiedExitStatus).
 constexpr int kUncertified = 3;
 
+/// Exit status when the output files (-o, --svg, a scene's) were written and committed, but
+/// standard output (the summary, the explanation) then failed: the files are complete and stay.
+constexpr int kStdoutFailedAfterOutputs = 4;
+
+/// Raised for kStdoutFailedAfterOutputs: one line "outputs written: A, B; stdout failed: ...".
+struct StdoutFailedAfterOutputs {
+  std::string message;
+};
+
+/// Writes to stdout after the files in `written` were committed: a failure of stdout (not a
+/// closed pipe, which ends quietly as before) throws StdoutFailedAfterOutputs naming them; with
+/// no file written it is the usual OutputError (exit 2).
+void write_stdout_after_outputs(const std::vector<std::string>& written, const std::function<void(std::ostream&)>& write);
+
 /// Raised by a command after its outputs are complete when what they report is not certified.
 struct UncertifiedResult {
   std::string message;  // one line: what is not certified, both counts
@@ -72,6 +86,10 @@ class StagedOutputs {
 /// hard links): "dev:ino" of an existing file, else "dev:ino/name" of its existing directory;
 /// empty for stdout ("-" or "") and for paths whose directory does not exist.
 std::string file_key(const std::string& path);
+
+/// file_key of an input; for "-" the identity of standard input when it is a regular file
+/// (`--input - -o in.csv < in.csv` must not replace what it reads), else empty.
+std::string input_key(const std::string& path);
 
 /// A file a command names on its command line or in a scene.
 struct NamedFile {

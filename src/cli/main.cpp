@@ -1,6 +1,8 @@
 // sphtroch — command-line tool. Parsing and printing only; the work is in the library.
 // Exit status: 0 success; 2 bad input or an output that cannot be written (one line on stderr);
 // 3 the outputs are complete but a count they report is not certified (one line on stderr);
+// 4 the output files (-o, --svg, a scene's) were written, then stdout failed (one line naming the
+// files and the stdout error; the files stay: they are complete);
 // killed by SIGPIPE (shell status 141) when the reader of stdout goes away; 1 only for an
 // internal error (a bug).
 #include "cli_common.hpp"
@@ -127,6 +129,9 @@ int main(int argc, char** argv) {
     return fail(std::string("--") + e.what());
   } catch (const UsageError& e) {
     return fail(e.message);
+  } catch (const StdoutFailedAfterOutputs& e) {
+    std::cerr << "sphtroch: " << one_line(e.message) << "\n";
+    return kStdoutFailedAfterOutputs;
   } catch (const UncertifiedResult& e) {
     std::cerr << "sphtroch: " << one_line(e.message) << "\n";
     return kUncertified;

@@ -60,7 +60,7 @@ std::vector<SceneTrain> read_scene(const SceneOptions& o) {
     throw UsageError{"--output-dir = " + o.output_dir + ": not a directory; valid: an existing, writable directory"};
   std::vector<SceneTrain> out = parse_scene_text(text, o.file, o.output_dir);
   std::map<std::string, std::string> paths;  // file identity -> where first used
-  paths.emplace(file_key(o.file), "the scene file itself");  // by identity: any alias of it is refused
+  paths.emplace(input_key(o.file), "the scene file itself");  // by identity: any alias of it is refused
   for (const SceneTrain& st : out) {
     for (const SceneEffect& e : st.effects) {
       const auto fail = [&](const std::string& problem, const std::string& valid) {
@@ -97,7 +97,10 @@ void run_scene(const SceneOptions& o) {
     else if (o.explain) write_scene_explanation(text, st, a);
   }
   outputs.commit();  // 3. every output appears, then the explanation
-  write_output("-", [&](std::ostream& out) {
+  std::vector<std::string> written;
+  for (const SceneTrain& st : scene)
+    for (const SceneEffect& e : st.effects) written.push_back(e.path);
+  write_stdout_after_outputs(written, [&](std::ostream& out) {
     if (o.json) out << nlohmann::ordered_json{{"trains", trains}}.dump(2) << "\n";
     else out << text.str();
   });
