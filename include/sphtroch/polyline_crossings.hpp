@@ -125,6 +125,7 @@
 #endif
 
 #include "sphtroch/arc_predicates.hpp"
+#include "sphtroch/cost_bounds.hpp"  // kDefaultMaxCrossings, kDefaultMaxCrossingWork
 #include "sphtroch/errors.hpp"
 
 #include <CGAL/box_intersection_d.h>
@@ -910,6 +911,33 @@ CrossingCounts visit_self_crossings(VertexSpan vertices, bool closed, Visitor&& 
   return out;
 }
 
+/// Throws InvalidInput naming the limit that stopped the search (contacts_field: the option of
+/// max_contacts, work_field: of max_work), with the cost found so far and how to raise it.
+/// Does nothing when c is complete or was stopped by the visitor.
+inline void check_search_complete(const CrossingCounts& c, const CrossingSearchOptions& o,
+                                  const std::string& contacts_field, const std::string& work_field) {
+  const std::string found = std::to_string(c.crossings) + " crossings and " + std::to_string(c.touchings) + " touchings";
+  const std::string raise = " (up to " + std::to_string(kMaxCrossingLimit) + "); memory stays O(N) without pairs, ";
+  if (c.stop == SearchStop::contacts)
+    throw InvalidInput(contacts_field, std::to_string(o.max_contacts),
+                       "the polyline has more than " + std::to_string(o.max_contacts) +
+                           " crossings + touchings (the search stopped at " + found + ", after " +
+                           std::to_string(c.work()) + " units of work)",
+                       "at least its crossings + touchings: raise it" + raise +
+                           "each pair listed costs a row");
+  if (c.stop == SearchStop::work || c.stop == SearchStop::estimate)
+    throw InvalidInput(
+        work_field, std::to_string(o.max_work),
+        c.stop == SearchStop::estimate
+            ? "the search would need about " + detail::to_text(std::round(c.estimated_box_pairs)) +
+                  " units of work (overlapping box pairs, estimated before searching), more than 2 x " +
+                  std::to_string(o.max_work)
+            : "the search needs more than " + std::to_string(o.max_work) +
+                  " units of work (candidate edge pairs + overlapping box pairs; stopped at " + found + ")",
+        "at least the work of the search: raise it" + raise +
+            "time about 0.1-0.2 s per 1e6 units (random vertices: about N^2 units)");
+}
+
 /// The counts of find_self_crossings without storing a pair: memory O(N), time as find_self_crossings.
 inline CrossingCounts count_self_crossings(VertexSpan vertices, bool closed, const CrossingSearchOptions& options = {}) {
   return visit_self_crossings(vertices, closed, [](const EdgePair&) {}, options);
@@ -963,8 +991,9 @@ inline SelfCrossings exact_brute_force_crossings(const std::vector<Eigen::Vector
 /// A box containing the arc from a/|a| to b/|b|, inflated by margin (see the sagitta bound above).
 /// REQUIRES a, b finite, nonzero, neither the same direction nor antipodal (else InvalidInput); margin >= 0.
 inline ArcBox arc_bounding_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double margin = 0.0) {
-  if (relate_vertices(a, b) != VertexRelation::distinct)
-    detail::throw_bad_arc("the same direction or antipodal");  // relate_vertices refuses zero / non-finite
+  if (relate_vertices(a, b) != VertexRelation::distinct)  // which refuses zero / non-finite vertices
+    throw InvalidInput("vertices", "an arc's endpoints", "the same direction or antipodal",
+                       "the two endpoints of an arc distinct and not antipodal");
   const Eigen::Vector3d u = detail::normalised_direction(a);
   const Eigen::Vector3d v = detail::normalised_direction(b);
   const double pad = detail::sagitta_bound(u, v) + kArcBoxRoundingMargin + margin;
