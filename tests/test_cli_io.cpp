@@ -212,3 +212,71 @@ TEST_CASE("cli io: trace streams: 1e7 samples run under a 64 MiB data limit that
   const Result whole = shell(kExe + " " + kTrain + " --samples 10000000 | " + limit + kExe + " crossings --input -", dir);
   CHECK(whole.status != 0);
 }
+
+TEST_CASE("cli io: crossings of random directions: counts in O(N) memory under a data limit, cost bounds refuse (D2)",
+          "[cli][io][memory][crossings]") {
+#if defined(__SANITIZE_ADDRESS__)
+  SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
+  return;
+#endif
+  TempDir dir;
+  // Random directions (long arcs): N = 1500 with a numpy O(N^2) sign-test count as the
+  // reference, N = 8000 (~4e6 crossings) and N = 60000 (~1e9). numpy writes the .npy files.
+  const Result py = shell(
+      "/usr/bin/python3 - <<'EOF'\n"
+      "import numpy as np\n"
+      "for n, seed in ((1500, 1), (8000, 2), (60000, 3)):\n"
+      "    np.save('r%d.npy' % n, np.random.default_rng(seed).normal(size=(n, 3)))\n"
+      "P = np.load('r1500.npy'); n = len(P); e = n\n"
+      "M = np.cross(P, np.roll(P, -1, axis=0)) @ P.T\n"
+      "sc = np.sign(M); sd = np.sign(np.roll(M, -1, axis=1)); sa = sc.T; sb = sd.T\n"
+      "c = np.triu((sc == -sd) & (sa == -sb) & (sa == sd) & (sc != 0) & (sa != 0), 2)\n"
+      "c[0, e - 1] = False\n"
+      "print(int(c.sum()))\n"
+      "EOF",
+      dir);
+  INFO(py.err);
+  REQUIRE(py.status == 0);
+  const long expected = std::stol(py.out);
+  REQUIRE(expected > 100000);
+  // 48 MiB of data: the count-only search of ~4e6 crossings fits; storing them (>= 16 bytes
+  // each, 64 MB) would not, so this fails if memory grows with the crossing count.
+  const std::string limit = "prlimit --data=" + std::to_string(48 << 20) + " ";
+  const auto j1500 = json_of(shell(limit + kExe + " crossings --input r1500.npy --json", dir));
+  CHECK(j1500["crossings"] == expected);
+  CHECK(j1500["touchings"] == 0);
+  const Result big = shell(limit + kExe + " crossings --input r8000.npy --max-work 1000000000 --json", dir);
+  INFO(big.err);
+  REQUIRE(big.status == 0);
+  const auto j8000 = nlohmann::json::parse(big.out);
+  CHECK(j8000["crossings"] > 3000000);
+  CHECK(j8000["vertices"] == 8000);
+  // The same with --pairs: streamed to the file under the same limit, one row per crossing.
+  const Result streamed = shell(limit + kExe + " crossings --input r8000.npy --max-work 1000000000 --pairs p.csv -o s.json && wc -l < p.csv", dir);
+  INFO(streamed.err);
+  REQUIRE(streamed.status == 0);
+  CHECK(std::stol(streamed.out) == j8000["crossings"].get<long>() + 1);
+  // Control: the limit is real (a process that allocates 64 MB fails under it).
+  CHECK(shell(limit + "/usr/bin/python3 -c 'b = bytearray(64 << 20)'", dir).status != 0);
+  // 60,000 vertices (~1e9 crossings): refused by the estimate before searching, one line, exit 2.
+  const Result r = shell(limit + kExe + " crossings --input r60000.npy --pairs p6.csv -o out.json", dir);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(one_line(r.err));
+  CHECK(contains(r.err, "--max-work = 50000000: "));
+  CHECK(contains(r.err, "estimated"));
+  CHECK_FALSE(fs::exists(dir.path / "p6.csv"));
+  CHECK_FALSE(fs::exists(dir.path / "out.json"));
+  // With the work bound lifted, the crossings bound stops the search (memory still O(N)).
+  const Result k = shell(limit + kExe + " crossings --input r60000.npy --max-work 1000000000000000 --max-crossings 200000 --pairs p6.csv", dir);
+  CHECK(k.status == 2);
+  CHECK(k.out.empty());
+  CHECK(one_line(k.err));
+  CHECK(contains(k.err, "--max-crossings = 200000: the polyline has more than 200000 crossings + touchings"));
+  CHECK_FALSE(fs::exists(dir.path / "p6.csv"));
+  for (const std::string bad : {"--max-crossings -1", "--max-work x", "--max-crossings 1e99"}) {
+    const Result b = shell(kExe + " crossings --input r1500.npy " + bad, dir);
+    CHECK(b.status == 2);
+    CHECK(one_line(b.err));
+  }
+}

@@ -709,3 +709,119 @@ TEST_CASE("arc_crossing_point: on both circles, on both arcs, either order; dege
   CHECK(sphtroch::test::expect_invalid([&] { sphtroch::arc_crossing_point(a, b, b, a); }).field() == "arcs");
   CHECK(sphtroch::test::expect_invalid([&] { sphtroch::arc_crossing_point(a, a, c, d); }).field() == "arcs");
 }
+
+namespace {
+// Independent random unit vectors: long arcs, Theta(N^2) crossings (issue 17, D2).
+Polyline random_directions(std::uint32_t seed, std::size_t n) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Polyline vs(n);
+  for (V& p : vs) p = V(g(rng), g(rng), g(rng)) * (1.0 + 0.1 * static_cast<double>(seed % 3));
+  return vs;
+}
+}  // namespace
+
+TEST_CASE("count_self_crossings and visit_self_crossings equal the brute force (D2)", "[polyline_crossings][count]") {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    for (bool closed : {true, false}) {
+      const Polyline vs = seed == 3 ? random_polyline(seed, 400, 0.3) : random_directions(seed, 300);
+      const SelfCrossings brute = sphtroch::exact_brute_force_crossings(vs, closed);
+      REQUIRE(brute.crossings.size() > (seed == 3 ? 0u : 1000u));  // the random directions cross a lot
+      for (CandidateSearch search : {CandidateSearch::runs, CandidateSearch::edges}) {
+        sphtroch::CrossingSearchOptions opt;
+        opt.search = search;
+        const sphtroch::CrossingCounts c = sphtroch::count_self_crossings(vs, closed, opt);
+        CHECK(c.complete());
+        CHECK(c.crossings == brute.crossings.size());
+        CHECK(c.touchings == brute.touchings.size());
+        CHECK(c.vertices == vs.size());
+        std::vector<EdgePair> seen;
+        const sphtroch::CrossingCounts v =
+            sphtroch::visit_self_crossings(vs, closed, [&](const EdgePair& e) { seen.push_back(e); }, opt);
+        std::sort(seen.begin(), seen.end());
+        std::vector<EdgePair> all = brute.crossings;
+        all.insert(all.end(), brute.touchings.begin(), brute.touchings.end());
+        std::sort(all.begin(), all.end());
+        CHECK(seen == all);
+        CHECK(v.candidate_pairs == c.candidate_pairs);
+      }
+    }
+  }
+}
+
+TEST_CASE("crossing search limits: max_contacts, max_work, the up-front estimate (D2)", "[polyline_crossings][count]") {
+  const Polyline vs = random_directions(7, 400);
+  const SelfCrossings brute = sphtroch::exact_brute_force_crossings(vs, true);
+  const std::size_t total = brute.crossings.size() + brute.touchings.size();
+  REQUIRE(total > 1000);
+  sphtroch::CrossingSearchOptions opt;
+  opt.max_contacts = total;  // exactly enough: complete
+  CHECK(sphtroch::count_self_crossings(vs, true, opt).complete());
+  opt.max_contacts = total - 1;  // one short: stops at the last one found
+  sphtroch::CrossingCounts c = sphtroch::count_self_crossings(vs, true, opt);
+  CHECK(c.stop == sphtroch::SearchStop::contacts);
+  CHECK(c.crossings + c.touchings == total);
+  opt.max_contacts = 100;
+  std::size_t visited = 0;
+  c = sphtroch::visit_self_crossings(vs, true, [&](const EdgePair&) { ++visited; }, opt);
+  CHECK(c.stop == sphtroch::SearchStop::contacts);
+  CHECK(c.crossings + c.touchings == 101);
+  CHECK(visited == 100);
+  CHECK_THROWS_AS(sphtroch::check_search_complete(c, opt, "max-crossings", "max-work"), sphtroch::InvalidInput);
+  // find_self_crossings keeps what it found before the limit, a subset of the brute force's.
+  const SelfCrossings partial = sphtroch::find_self_crossings(vs, true, opt);
+  CHECK(partial.stop == sphtroch::SearchStop::contacts);
+  CHECK(partial.crossings.size() + partial.touchings.size() == 100);
+  for (const EdgePair& e : partial.crossings)
+    CHECK(std::binary_search(brute.crossings.begin(), brute.crossings.end(), e));
+  // Work: the whole search's work is enough, one unit less is not.
+  sphtroch::CrossingSearchOptions w;
+  const sphtroch::CrossingCounts full = sphtroch::count_self_crossings(vs, true, w);
+  REQUIRE(full.complete());
+  w.max_work = full.work();
+  CHECK(sphtroch::count_self_crossings(vs, true, w).complete());
+  w.max_work = full.work() - 1;
+  c = sphtroch::count_self_crossings(vs, true, w);
+  CHECK((c.stop == sphtroch::SearchStop::work || c.stop == sphtroch::SearchStop::estimate));
+  CHECK(c.work() <= full.work());
+  // The up-front estimate (more than 2048 run boxes: the CGAL path) refuses a hopeless search
+  // before any box pair is examined; its estimate is within 20% of the exact box pair count.
+  const Polyline big = random_directions(8, 5000);
+  const sphtroch::CrossingCounts exact_big = sphtroch::count_self_crossings(big, true);
+  REQUIRE(exact_big.complete());
+  REQUIRE(exact_big.boxes > 2048);
+  sphtroch::CrossingSearchOptions e;
+  e.max_work = exact_big.box_pairs / 4;
+  c = sphtroch::count_self_crossings(big, true, e);
+  CHECK(c.stop == sphtroch::SearchStop::estimate);
+  CHECK(c.box_pairs == 0);
+  CHECK(c.candidate_pairs == 0);
+  CHECK(std::fabs(c.estimated_box_pairs - static_cast<double>(exact_big.box_pairs)) <
+        0.2 * static_cast<double>(exact_big.box_pairs));
+  // Near the limit the estimate does not refuse; the exact count then stops the search.
+  e.max_work = exact_big.box_pairs * 3 / 4;
+  c = sphtroch::count_self_crossings(big, true, e);
+  CHECK(c.stop == sphtroch::SearchStop::work);
+  CHECK(c.work() == e.max_work + 1);
+  try {
+    sphtroch::check_search_complete(c, e, "max-crossings", "max-work");
+    FAIL("not refused");
+  } catch (const sphtroch::InvalidInput& x) {
+    CHECK(x.field() == "max-work");
+    CHECK(x.value() == std::to_string(e.max_work));
+  }
+}
+
+TEST_CASE("arc predicates refuse degenerate arcs with InvalidInput instead of aborting (D3)", "[arc_predicates]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const V x(1, 0, 0), y(0, 1, 0), z(0, 0, 1), zero(0, 0, 0);
+  CHECK_THROWS_AS(sphtroch::relate_vertices(zero, x), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::relate_vertices(x, V(nan, 0, 1)), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::classify_arcs(x, V(2, 0, 0), y, z), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::classify_arcs(x, y, z, V(0, 0, -1)), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::point_on_arc(zero, x, y), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::point_on_arc(z, x, x), sphtroch::InvalidInput);
+  CHECK_THROWS_AS(sphtroch::arc_bounding_box(x, V(-1, 0, 0)), sphtroch::InvalidInput);
+  // Unchecked: where the degenerate arc is detected (no arc plane), an exception, not abort().
+  CHECK_THROWS_AS(sphtroch::classify_arcs_unchecked(x, V(3, 0, 0), V(1, 1, 0), V(1, -1, 0)), sphtroch::InvalidInput);
+}

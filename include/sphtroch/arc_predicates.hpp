@@ -24,7 +24,7 @@
 //
 //   VertexRelation relate_vertices(a, b)
 //     distinct, same_direction (a = lambda b, lambda > 0: the same point of the sphere) or
-//     antipodal (lambda < 0). Exact. REQUIRES a, b nonzero.
+//     antipodal (lambda < 0). Exact. REQUIRES a, b finite and nonzero (else InvalidInput).
 //
 //   bool point_on_arc(p, a, b)
 //     Whether the direction p lies on the closed arc AB (endpoints included). Exact.
@@ -41,7 +41,9 @@
 //     The answer is symmetric: classify(a,b,c,d) == classify(c,d,a,b) == classify(b,a,d,c).
 //     If predicates is not null, the number of exact predicates evaluated is added to it.
 //     REQUIRES: a, b, c, d nonzero and finite; a and b neither the same direction nor
-//     antipodal; likewise c and d (every arc shorter than pi). Checked with SPHTROCH_ASSERT.
+//     antipodal; likewise c and d (every arc shorter than pi). Checked: throws InvalidInput
+//     (field "vertices"), as do relate_vertices and point_on_arc; classify_arcs_unchecked skips
+//     the checks but throws the same instead of failing where a degenerate arc is detected.
 //     CAVEAT: two arcs that share an endpoint are `touching` (or `overlap` if one folds back
 //     along the other); a polyline search skips the pairs of adjacent edges for that reason.
 //
@@ -180,14 +182,19 @@ struct ArcPlaneAxis {
   int sign = 0;
 };
 
+/// The refusal of an arc whose endpoints are equal or antipodal (or a vertex zero / not finite).
+[[noreturn]] inline void throw_bad_arc(const char* problem) {
+  throw InvalidInput("vertices", "an arc's endpoints", problem,
+                     "finite nonzero vertices; the two endpoints of an arc distinct and not antipodal");
+}
+
 inline ArcPlaneAxis arc_plane_axis(const Eigen::Vector3d& a, const Eigen::Vector3d& b, std::size_t* predicates) {
   for (int k = 0; k < 3; ++k) {
     count_predicates(predicates, 1);
     const int s = cross_component_sign(a, b, k);
     if (s != 0) return {k, s};
   }
-  SPHTROCH_ASSERT(false, "arc endpoints are the same direction or antipodal");
-  return {};
+  throw_bad_arc("the same direction or antipodal (no arc plane)");
 }
 
 /// Locates p on arc AB. REQUIRES det[a, b, p] = 0, p nonzero, axis = arc_plane_axis(a, b).
@@ -255,7 +262,7 @@ inline ArcContact classify_arcs_unchecked(const Eigen::Vector3d& a, const Eigen:
   if (sc != 0 && sd != 0 && sa != 0 && sb != 0) return sa == sd ? ArcContact::crossing : ArcContact::none;
   // Step 3: one great circle.
   if (sc == 0 && sd == 0) {
-    SPHTROCH_ASSERT(sa == 0 && sb == 0, "coplanar arcs must have all four signs zero");
+    if (sa != 0 || sb != 0) throw_bad_arc("the same direction or antipodal (c x d = 0)");
     return classify_cocircular(a, b, c, d, predicates);
   }
   // Step 4: distinct circles, an endpoint on the other circle.
@@ -277,7 +284,7 @@ inline int orientation_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, 
 
 /// Exact relation of two directions. REQUIRES a, b nonzero (checked).
 inline VertexRelation relate_vertices(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  SPHTROCH_ASSERT(detail::finite_nonzero(a) && detail::finite_nonzero(b), "vertices must be finite and nonzero");
+  if (!detail::finite_nonzero(a) || !detail::finite_nonzero(b)) detail::throw_bad_arc("a vertex is zero or not finite");
   if (detail::surely_distinct(a, b)) return VertexRelation::distinct;
   static const detail::EpickKernel::Point_3 origin(0, 0, 0);
   if (!CGAL::collinear(origin, detail::epick_point(a), detail::epick_point(b))) return VertexRelation::distinct;
@@ -291,8 +298,8 @@ inline VertexRelation relate_vertices(const Eigen::Vector3d& a, const Eigen::Vec
 /// Whether direction p lies on the closed arc AB. Exact.
 /// REQUIRES p, a, b finite and nonzero; a, b neither the same direction nor antipodal (checked).
 inline bool point_on_arc(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  SPHTROCH_ASSERT(detail::finite_nonzero(p), "point must be finite and nonzero");
-  SPHTROCH_ASSERT(relate_vertices(a, b) == VertexRelation::distinct, "arc endpoints must be distinct and not antipodal");
+  if (!detail::finite_nonzero(p)) detail::throw_bad_arc("the point is zero or not finite");
+  if (relate_vertices(a, b) != VertexRelation::distinct) detail::throw_bad_arc("the same direction or antipodal");
   if (detail::det_sign(a, b, p) != 0) return false;
   return detail::locate_in_arc_plane(p, a, b, detail::arc_plane_axis(a, b, nullptr), nullptr) != detail::OnArc::outside;
 }
@@ -301,8 +308,8 @@ inline bool point_on_arc(const Eigen::Vector3d& p, const Eigen::Vector3d& a, con
 /// REQUIRES a, b, c, d finite, nonzero; a, b and c, d neither the same direction nor antipodal (checked).
 inline ArcContact classify_arcs(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                                 const Eigen::Vector3d& d, std::size_t* predicates = nullptr) {
-  SPHTROCH_ASSERT(relate_vertices(a, b) == VertexRelation::distinct, "arc AB: endpoints equal or antipodal");
-  SPHTROCH_ASSERT(relate_vertices(c, d) == VertexRelation::distinct, "arc CD: endpoints equal or antipodal");
+  if (relate_vertices(a, b) != VertexRelation::distinct || relate_vertices(c, d) != VertexRelation::distinct)
+    detail::throw_bad_arc("the same direction or antipodal");
   return detail::classify_arcs_unchecked(a, b, c, d, predicates);
 }
 

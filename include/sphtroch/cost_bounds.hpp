@@ -14,6 +14,7 @@
 #include "sphtroch/errors.hpp"
 #include "sphtroch/ratio.hpp"
 
+#include <cstddef>
 #include <string>
 
 namespace sphtroch {
@@ -27,6 +28,16 @@ inline double estimated_nodes(const Ratio& n) {
 /// The largest estimated_nodes a census (classify, nodes, plot, scene effects, atlas cells)
 /// accepts: 301/100 (1.2e5, ~6 s) passes, 1001/400 (1.4e6, hours) does not.
 constexpr double kMaxCensusNodes = 2e5;
+
+/// Defaults of the tool's (and the Python module's) limits on a polyline crossing search
+/// (polyline_crossings.hpp, CrossingSearchOptions::max_contacts, max_work): crossings +
+/// touchings (the rows --pairs may write, ~20 bytes each), and work (candidate edge pairs +
+/// overlapping box pairs), ~100-200 ns per unit on random vertices here (5e7: ~5-10 s; memory O(N)
+/// when only counting).
+constexpr std::size_t kDefaultMaxCrossings = 10'000'000;
+constexpr std::size_t kDefaultMaxCrossingWork = 50'000'000;
+/// The largest value either limit accepts.
+constexpr std::size_t kMaxCrossingLimit = 1'000'000'000'000'000;
 
 /// Throws InvalidInput(field, n, ...) when a census of this ratio would exceed kMaxCensusNodes.
 inline void check_census_cost(const Ratio& n, const std::string& field = "n") {

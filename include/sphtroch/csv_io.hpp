@@ -49,6 +49,11 @@ inline void write_screw_axis_csv(std::ostream& out, const std::vector<double>& t
 template <typename Pair>
 void write_edge_pairs_csv(OutputFile& out, const std::vector<Pair>& crossings, const std::vector<Pair>& touchings);
 
+/// The same table streamed: the header, then one row per pair as the search finds it.
+inline void write_edge_pairs_header(OutputFile& out);
+template <typename Pair>
+void write_edge_pair_row(OutputFile& out, const Pair& e);
+
 // ---------------------------------------------------------------------------------------------
 // Implementation details follow.
 
@@ -89,19 +94,26 @@ void write_edge_pairs_csv(OutputFile& out, const std::vector<Pair>& crossings, c
   std::vector<Pair> all = crossings;
   all.insert(all.end(), touchings.begin(), touchings.end());
   std::sort(all.begin(), all.end(), [](const Pair& x, const Pair& y) { return x.i != y.i ? x.i < y.i : x.j < y.j; });
+  write_edge_pairs_header(out);
+  for (const Pair& e : all) write_edge_pair_row(out, e);
+}
+
+inline void write_edge_pairs_header(OutputFile& out) {
   out.write(kEdgePairsCsvHeader);
   out.write("\n");
-  for (const Pair& e : all) {
-    const std::string_view kind = to_string(e.kind);
-    char* p = out.reserve(2 * 20 + 3 + kind.size());  // two 64-bit integers, two commas, newline
-    p = std::to_chars(p, p + 20, e.i).ptr;
-    *p++ = ',';
-    p = std::to_chars(p, p + 20, e.j).ptr;
-    *p++ = ',';
-    p = std::copy(kind.begin(), kind.end(), p);
-    *p++ = '\n';
-    out.advance(p);
-  }
+}
+
+template <typename Pair>
+void write_edge_pair_row(OutputFile& out, const Pair& e) {
+  const std::string_view kind = to_string(e.kind);
+  char* p = out.reserve(2 * 20 + 3 + kind.size());  // two 64-bit integers, two commas, newline
+  p = std::to_chars(p, p + 20, e.i).ptr;
+  *p++ = ',';
+  p = std::to_chars(p, p + 20, e.j).ptr;
+  *p++ = ',';
+  p = std::copy(kind.begin(), kind.end(), p);
+  *p++ = '\n';
+  out.advance(p);
 }
 
 }  // namespace sphtroch

@@ -46,6 +46,24 @@ class InvalidInput : public std::invalid_argument {
   std::string valid_range_;
 };
 
+/// `message` on one line: newline, carriage return, tab as \n, \r, \t, other control bytes as
+/// \xHH (what the tool prints to stderr, and str() of the Python module's InvalidInput).
+inline std::string one_line_text(const std::string& message) {
+  std::string out;
+  for (const char ch : message) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else out += ch;
+  }
+  return out;
+}
+
 namespace detail {
 /// A double as text that round-trips: the shortest such form ("0.1", "1e-300", "nan", "inf").
 inline std::string to_text(double v) {

@@ -36,8 +36,24 @@
 //     touchings: every pair that touches or overlaps (kind ArcContact::touching or ::overlap);
 //     both sorted by (i, j). Exactly equal to exact_brute_force_crossings (tested pair for pair).
 //     Work counters: candidate pairs tested exactly, exact predicates evaluated, boxes searched.
+//     Memory O(N + pairs found): random vertices have Theta(N^2) crossings; use the limits below,
+//     or count_self_crossings / visit_self_crossings.
 //     REQUIRES: validate_spherical_polyline passes (it is called; throws InvalidInput);
-//     options.margin finite and >= 0 (throws InvalidInput field "margin").
+//     options.margin finite and >= 0 (throws InvalidInput field "margin"); the vertices do not
+//     change during the call (they are read in place; validation does not hold otherwise).
+//
+//   CrossingCounts count_self_crossings(vertices, closed, options = {})
+//   CrossingCounts visit_self_crossings(vertices, closed, visitor, options = {})
+//     The same search without storing pairs: counts only, or visitor(const EdgePair&) per
+//     crossing / touching / overlap (in the search's deterministic order, not sorted). Memory
+//     O(N): boxes of runs, and overlapping box pairs in sorted chunks of kPairChunk.
+//     Limits (also for find_self_crossings): the search stops, with `stop` saying why, when the
+//     contacts found (crossings + touchings) would exceed options.max_contacts (then
+//     max_contacts + 1 are counted), or the work, candidate_pairs + box_pairs, options.max_work.
+//     Time: O(N log N + work) (each unit of work costs at most one exact arc test, or one
+//     box-pair test over at most 2 max_run_edges edges). With a finite max_work, a search
+//     whose run-box pairs alone are estimated (sampled, O(N log N + 2^24)) above 2 max_work is
+//     refused before it starts (stop = SearchStop::estimate, estimated_box_pairs).
 //
 //   bool visit_close_edge_pairs(vertices, closed, margin, visitor, search = CandidateSearch::runs)
 //     Calls visitor(i, j), i < j, once for every pair of non-adjacent edges whose axis-aligned
@@ -52,7 +68,8 @@
 //
 //   ArcBox arc_bounding_box(a, b, margin = 0)
 //     An axis-aligned box that provably contains the arc from a/|a| to b/|b| on the unit sphere,
-//     inflated by margin. REQUIRES a, b finite, nonzero, not the same direction, not antipodal.
+//     inflated by margin. REQUIRES a, b finite, nonzero, not the same direction, not antipodal
+//     (else InvalidInput, field "vertices").
 //
 // The box bound (the sagitta bound). Let u, v be unit vectors at angle theta < pi, h = theta/2,
 // c = |u - v| = 2 sin h the chord. In the plane of the arc take the unit bisector m and the unit
@@ -108,6 +125,7 @@
 #endif
 
 #include "sphtroch/arc_predicates.hpp"
+#include "sphtroch/cost_bounds.hpp"  // kDefaultMaxCrossings, kDefaultMaxCrossingWork
 #include "sphtroch/errors.hpp"
 
 #include <CGAL/box_intersection_d.h>
@@ -185,6 +203,35 @@ struct CrossingSearchOptions {
   CandidateSearch search = CandidateSearch::runs;
   std::size_t max_run_edges = kDefaultMaxRunEdges;  // >= 1 (runs search only)
   double max_run_extent = kDefaultMaxRunExtent;     // > 0; runs shorter than kMinRunEdges may exceed it
+  /// Limits (the search stops, result `stopped`, when one would be exceeded): contacts found
+  /// (crossings + touchings), and work (candidate_pairs + box_pairs, see CrossingCounts).
+  std::size_t max_contacts = std::numeric_limits<std::size_t>::max();
+  std::size_t max_work = std::numeric_limits<std::size_t>::max();
+};
+
+/// Why a search ended.
+enum class SearchStop {
+  complete,   // every pair was searched
+  contacts,   // more than max_contacts crossings + touchings (max_contacts + 1 were found)
+  work,       // more than max_work candidate pairs + box pairs
+  estimate,   // refused before the search: about estimated_box_pairs > 2 max_work (see below)
+  visitor,    // the visitor returned false
+};
+
+/// The counts of a search (count_self_crossings, visit_self_crossings): memory O(N).
+struct CrossingCounts {
+  std::size_t crossings = 0;
+  std::size_t touchings = 0;        // touching or overlap
+  std::size_t vertices = 0;
+  std::size_t edges = 0;
+  std::size_t boxes = 0;            // boxes given to the box search
+  std::size_t box_pairs = 0;        // pairs of overlapping run boxes examined (runs search)
+  std::size_t candidate_pairs = 0;  // non-adjacent edge pairs tested with exact predicates
+  std::size_t predicates = 0;       // exact predicates evaluated by those tests
+  SearchStop stop = SearchStop::complete;
+  double estimated_box_pairs = 0;   // the up-front estimate, when one was made (else 0)
+  bool complete() const { return stop == SearchStop::complete; }
+  std::size_t work() const { return candidate_pairs + box_pairs; }
 };
 
 struct SelfCrossings {
@@ -195,6 +242,8 @@ struct SelfCrossings {
   std::size_t boxes = 0;            // boxes given to box_self_intersection_d (0 for brute force)
   std::size_t candidate_pairs = 0;  // non-adjacent edge pairs tested with exact predicates
   std::size_t predicates = 0;       // exact predicates evaluated by those tests
+  std::size_t box_pairs = 0;        // as CrossingCounts
+  SearchStop stop = SearchStop::complete;  // not complete: the lists hold the pairs found before a limit
 };
 
 /// An axis-aligned box.
@@ -403,13 +452,13 @@ inline bool overlap_on_axis(const PreparedPolyline& p, std::uint32_t e, double p
 }
 
 /// Calls the visitor; converts a void visitor to "continue".
-template <typename Visitor>
-bool call_visitor(Visitor& visitor, std::size_t i, std::size_t j) {
-  if constexpr (std::is_void_v<decltype(visitor(i, j))>) {
-    visitor(i, j);
+template <typename Visitor, typename... Args>
+bool call_visitor(Visitor& visitor, const Args&... args) {
+  if constexpr (std::is_void_v<decltype(visitor(args...))>) {
+    visitor(args...);
     return true;
   } else {
-    return static_cast<bool>(visitor(i, j));
+    return static_cast<bool>(visitor(args...));
   }
 }
 
@@ -573,12 +622,12 @@ constexpr std::ptrdiff_t kBoxSearchCutoff = 512;
 /// here, a few milliseconds; beyond it the segment tree's O(R log^3 R + pairs) bound is kept.
 constexpr std::size_t kSweepMaxBoxes = 2048;
 
-/// Every pair (r < s) of runs whose closed boxes overlap, by a sweep along the axis where the
+/// Every pair (r < s) of runs whose closed boxes overlap, given to emit.push(r, s) (false stops), by a sweep along the axis where the
 /// boxes are thinnest relative to their spread: sort by lower end, scan forward while the lower
 /// end is within the current box, check the other two axes. O(R log R + pairs overlapping along
 /// that axis); meant for few boxes (see kSweepMaxBoxes), where that is no worse than the tree.
-inline void sweep_overlapping_runs(const std::vector<Run>& runs,
-                                   std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) {
+/// The axis along which the run boxes are thinnest relative to their spread.
+inline int sweep_axis(const std::vector<Run>& runs) {
   int axis = 0;
   double best = -1.0;
   for (int k = 0; k < 3; ++k) {
@@ -594,6 +643,12 @@ inline void sweep_overlapping_runs(const std::vector<Run>& runs,
       axis = k;
     }
   }
+  return axis;
+}
+
+template <typename Emit>
+bool sweep_overlapping_runs(const std::vector<Run>& runs, Emit& emit) {
+  const int axis = sweep_axis(runs);
   std::vector<std::uint32_t> order(runs.size());
   for (std::uint32_t r = 0; r < order.size(); ++r) order[r] = r;
   std::sort(order.begin(), order.end(), [&runs, axis](std::uint32_t x, std::uint32_t y) {
@@ -605,10 +660,12 @@ inline void sweep_overlapping_runs(const std::vector<Run>& runs,
     for (std::size_t b = a + 1; b < order.size(); ++b) {
       const Run& rb = runs[order[b]];
       if (rb.lo[axis] > ra.hi[axis]) break;
-      if (ra.lo[k1] <= rb.hi[k1] && rb.lo[k1] <= ra.hi[k1] && ra.lo[k2] <= rb.hi[k2] && rb.lo[k2] <= ra.hi[k2])
-        out.emplace_back(std::min(order[a], order[b]), std::max(order[a], order[b]));
+      if (ra.lo[k1] <= rb.hi[k1] && rb.lo[k1] <= ra.hi[k1] && ra.lo[k2] <= rb.hi[k2] && rb.lo[k2] <= ra.hi[k2] &&
+          !emit.push(order[a], order[b]))
+        return false;
     }
   }
+  return true;
 }
 
 struct VisitStats {
@@ -616,16 +673,132 @@ struct VisitStats {
   std::size_t boxes = 0;
 };
 
+/// The work of one search and its limit, shared by the box search (box pairs) and the visitor
+/// (candidate pairs): exceeded once box_pairs + candidate_pairs > limit.
+struct WorkBudget {
+  std::size_t limit = std::numeric_limits<std::size_t>::max();
+  std::size_t box_pairs = 0;
+  std::size_t candidate_pairs = 0;
+  double estimate = 0;  // box_pairs_may_fit's estimate of the box pairs (0: not estimated)
+  bool spend_box_pair() { return ++box_pairs <= limit - std::min(limit, candidate_pairs); }
+  bool spend_candidate() { return ++candidate_pairs <= limit - std::min(limit, box_pairs); }
+};
+
+/// Whether the run-box pairs may fit in budget.limit, decided before the box search so that a
+/// hopeless search (random vertices: Theta(N^2) pairs) is refused at once. Cost O(R log R + S R)
+/// with S <= 256, S R <= ~2^24: the pairs overlapping along one axis are counted exactly (an
+/// upper bound); only if they exceed the limit, S evenly spaced boxes are tested against all R
+/// and the estimate R/2 * mean overlaps is stored in budget.estimate; false when it exceeds
+/// 2 limit (the factor 2 leaves room for sampling error; the search's own count is exact).
+inline bool box_pairs_may_fit(const std::vector<Run>& runs, WorkBudget& budget) {
+  const double r = static_cast<double>(runs.size());
+  const double limit = static_cast<double>(budget.limit);
+  if (r * (r - 1) / 2 <= limit) return true;
+  const int k = sweep_axis(runs);
+  std::vector<double> lo, hi;
+  lo.reserve(runs.size());
+  hi.reserve(runs.size());
+  for (const Run& x : runs) {
+    lo.push_back(x.lo[k]);
+    hi.push_back(x.hi[k]);
+  }
+  std::sort(lo.begin(), lo.end());
+  std::sort(hi.begin(), hi.end());
+  double along_axis = 0;  // ordered pairs (a, b), a != b, overlapping along k
+  for (const Run& a : runs)
+    along_axis += static_cast<double>(std::upper_bound(lo.begin(), lo.end(), a.hi[k]) - lo.begin()) -
+                  static_cast<double>(std::lower_bound(hi.begin(), hi.end(), a.lo[k]) - hi.begin()) - 1;
+  if (along_axis / 2 <= limit) return true;
+  const std::size_t samples = std::clamp<std::size_t>((std::size_t(1) << 24) / runs.size(), 16, 256);
+  double hits = 0;
+  for (std::size_t s = 0; s < samples; ++s) {
+    const Run& a = runs[s * runs.size() / samples];
+    for (const Run& b : runs)
+      hits += static_cast<double>(a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] &&
+                                  b.lo[1] <= a.hi[1] && a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2]);
+    hits -= 1;  // a itself
+  }
+  budget.estimate = hits / static_cast<double>(samples) * r / 2;
+  return budget.estimate <= 2 * limit;
+}
+
+/// Thrown out of CGAL's callback to end box_self_intersection_d early (caught in this file only).
+struct StopSearch {};
+
+/// Overlapping box pairs are visited in sorted chunks of at most this many: the memory of a
+/// search stays O(N + kPairChunk) however many boxes overlap (Theta(N^2) for random vertices).
+constexpr std::size_t kPairChunk = std::size_t(1) << 16;
+
+/// Collects pairs (a, b) as (min, max) and hands each full chunk, sorted (locality, and a
+/// deterministic order: the box searches are deterministic), to visit(i, j) -> bool.
+template <typename Visit>
+class PairChunks {
+ public:
+  explicit PairChunks(Visit& visit) : visit_(visit) {}
+  bool push(std::uint32_t a, std::uint32_t b) {
+    buf_.emplace_back(std::min(a, b), std::max(a, b));
+    return buf_.size() < kPairChunk || flush();
+  }
+  bool flush() {
+    std::sort(buf_.begin(), buf_.end());
+    for (const auto& ij : buf_)
+      if (!visit_(ij.first, ij.second)) return false;
+    buf_.clear();
+    return true;
+  }
+
+ private:
+  Visit& visit_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> buf_;
+};
+
+/// Every overlapping pair of `boxes` (CLOSED) to chunks.push; false if a push stopped the search.
+template <typename Chunks>
+bool box_search(std::vector<SearchBox>& boxes, Chunks& chunks, const PreparedPolyline* skip_adjacent) {
+  try {
+    CGAL::box_self_intersection_d(
+        boxes.begin(), boxes.end(),
+        [&chunks, skip_adjacent](const SearchBox& a, const SearchBox& b) {
+          const std::uint32_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
+          if (skip_adjacent != nullptr && skip_adjacent->adjacent(i, j)) return;
+          if (!chunks.push(i, j)) throw StopSearch{};
+        },
+        kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
+  } catch (const StopSearch&) {
+    return false;
+  }
+  return true;
+}
+
+/// Within-run pairs first, then run pairs in sorted chunks. budget (may be null): one unit per
+/// run pair examined; the search stops when it is exceeded.
 template <typename Visitor>
 VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_run_edges, double max_run_extent,
-                      Visitor& visitor) {
+                      Visitor& visitor, WorkBudget* budget) {
   VisitStats stats;
   const std::vector<Run> runs = build_runs(p, margin, max_run_edges, max_run_extent);
   stats.boxes = runs.size();
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> run_pairs;
-  run_pairs.reserve(2 * runs.size());
+  if (budget != nullptr && !box_pairs_may_fit(runs, *budget)) return {false, stats.boxes};
+  RunPairScratch sc;
+  sc.la.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.lb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.ea.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  sc.eb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
+  for (const Run& r : runs)
+    if (!visit_within_run(p, r, sc.la, visitor)) return {false, stats.boxes};
+  const std::size_t last = runs.size() - 1;
+  // Closed with exactly 2 runs: they share two vertices; use the general merge for them.
+  const bool wrap_adjacent = p.closed && runs.size() >= 3;
+  auto visit_pair = [&](std::uint32_t r, std::uint32_t s) {
+    if (budget != nullptr && !budget->spend_box_pair()) return false;
+    if (s == r + 1 && !(p.closed && runs.size() == 2)) return visit_adjacent_runs(p, runs[r], runs[s], sc, visitor);
+    if (wrap_adjacent && r == 0 && s == last) return visit_adjacent_runs(p, runs[last], runs[0], sc, visitor);
+    return visit_between_runs(p, runs[r], runs[s], sc, visitor);
+  };
+  PairChunks<decltype(visit_pair)> chunks(visit_pair);
+  bool go = true;
   if (runs.size() <= kSweepMaxBoxes) {
-    sweep_overlapping_runs(runs, run_pairs);
+    go = sweep_overlapping_runs(runs, chunks);
   } else {
     std::vector<SearchBox> boxes;
     boxes.reserve(runs.size());
@@ -634,37 +807,9 @@ VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_
       double hi[3] = {runs[r].hi[0], runs[r].hi[1], runs[r].hi[2]};
       boxes.emplace_back(lo, hi, static_cast<std::uint32_t>(r));
     }
-    CGAL::box_self_intersection_d(
-        boxes.begin(), boxes.end(),
-        [&run_pairs](const SearchBox& a, const SearchBox& b) {
-          run_pairs.emplace_back(std::min(a.info(), b.info()), std::max(a.info(), b.info()));
-        },
-        kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
+    go = box_search(boxes, chunks, nullptr);
   }
-  std::sort(run_pairs.begin(), run_pairs.end());  // locality and a deterministic visiting order
-  RunPairScratch sc;
-  sc.la.reserve(std::min<std::size_t>(max_run_edges, p.edges));
-  sc.lb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
-  sc.ea.reserve(std::min<std::size_t>(max_run_edges, p.edges));
-  sc.eb.reserve(std::min<std::size_t>(max_run_edges, p.edges));
-  const std::size_t last = runs.size() - 1;
-  // Closed with exactly 2 runs: they share two vertices; use the general merge for them.
-  const bool wrap_adjacent = p.closed && runs.size() >= 3;
-  std::size_t next_pair = 0;
-  for (std::uint32_t r = 0; r < runs.size(); ++r) {
-    if (!visit_within_run(p, runs[r], sc.la, visitor)) return {false, stats.boxes};
-    for (; next_pair < run_pairs.size() && run_pairs[next_pair].first == r; ++next_pair) {
-      const std::uint32_t s = run_pairs[next_pair].second;
-      bool go = true;
-      if (s == r + 1 && !(p.closed && runs.size() == 2))
-        go = visit_adjacent_runs(p, runs[r], runs[s], sc, visitor);
-      else if (wrap_adjacent && r == 0 && s == last)
-        go = visit_adjacent_runs(p, runs[last], runs[0], sc, visitor);
-      else
-        go = visit_between_runs(p, runs[r], runs[s], sc, visitor);
-      if (!go) return {false, stats.boxes};
-    }
-  }
+  stats.completed = go && chunks.flush();
   return stats;
 }
 
@@ -685,25 +830,17 @@ VisitStats visit_edges(const PreparedPolyline& p, double margin, Visitor& visito
     boxes.emplace_back(lo, hi, static_cast<std::uint32_t>(e));
   }
   stats.boxes = boxes.size();
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  CGAL::box_self_intersection_d(
-      boxes.begin(), boxes.end(),
-      [&pairs, &p](const SearchBox& a, const SearchBox& b) {
-        const std::uint32_t i = std::min(a.info(), b.info()), j = std::max(a.info(), b.info());
-        if (!p.adjacent(i, j)) pairs.emplace_back(i, j);
-      },
-      kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
-  std::sort(pairs.begin(), pairs.end());
-  for (const auto& ij : pairs)
-    if (!call_visitor(visitor, ij.first, ij.second)) return {false, stats.boxes};
+  auto visit_pair = [&visitor](std::uint32_t i, std::uint32_t j) { return call_visitor(visitor, i, j); };
+  PairChunks<decltype(visit_pair)> chunks(visit_pair);
+  stats.completed = box_search(boxes, chunks, &p) && chunks.flush();
   return stats;
 }
 
 template <typename Visitor>
 VisitStats visit_prepared(const PreparedPolyline& p, double margin, CandidateSearch search, std::size_t max_run_edges,
-                          double max_run_extent, Visitor& visitor) {
+                          double max_run_extent, Visitor& visitor, WorkBudget* budget = nullptr) {
   if (search == CandidateSearch::edges) return visit_edges(p, margin, visitor);
-  return visit_runs(p, margin, std::max<std::size_t>(1, max_run_edges), max_run_extent, visitor);
+  return visit_runs(p, margin, std::max<std::size_t>(1, max_run_edges), max_run_extent, visitor, budget);
 }
 
 inline void record_contact(SelfCrossings& out, std::size_t i, std::size_t j, ArcContact kind) {
@@ -727,25 +864,99 @@ bool visit_close_edge_pairs(const std::vector<Eigen::Vector3d>& vertices, bool c
   return detail::visit_prepared(p, margin, search, kDefaultMaxRunEdges, kDefaultMaxRunExtent, visitor).completed;
 }
 
-/// Every crossing and touching pair of non-adjacent edges, exactly (see top). The vertices are
-/// read in place (a VertexSpan: no copy of a caller's array).
-inline SelfCrossings find_self_crossings(VertexSpan vertices, bool closed,
-                                         const CrossingSearchOptions& options = {}) {
+/// Calls visitor(const EdgePair&) (returning bool, false stops, or void) for every crossing,
+/// touching or overlapping pair of non-adjacent edges, in the search's order (deterministic, not
+/// sorted), and returns the counts. Stops early at options.max_contacts / max_work (see top).
+/// Memory O(N) (the pairs are not stored). The vertices are read in place: REQUIRES they do not
+/// change during the call (a caller sharing them with other threads must copy them first).
+template <typename Visitor>
+CrossingCounts visit_self_crossings(VertexSpan vertices, bool closed, Visitor&& visitor,
+                                    const CrossingSearchOptions& options = {}) {
   detail::validate_margin(options.margin);
   const detail::PreparedPolyline p(vertices, closed, detail::validate_polyline(vertices, closed));
-  SelfCrossings out;
+  CrossingCounts out;
   out.vertices = p.n;
   out.edges = p.edges;
-  auto visitor = [&](std::size_t i, std::size_t j) {
-    ++out.candidate_pairs;
-    const ArcContact kind = classify_arcs_unchecked(vertices[i], vertices[p.head(i)], vertices[j],
-                                                            vertices[p.head(j)], &out.predicates);
-    detail::record_contact(out, i, j, kind);
+  detail::WorkBudget budget;
+  budget.limit = options.max_work;
+  auto test = [&](std::size_t i, std::size_t j) {
+    if (!budget.spend_candidate()) {
+      out.stop = SearchStop::work;
+      return false;
+    }
+    const ArcContact kind =
+        classify_arcs_unchecked(vertices[i], vertices[p.head(i)], vertices[j], vertices[p.head(j)], &out.predicates);
+    if (kind == ArcContact::none) return true;
+    const bool over = out.crossings + out.touchings >= options.max_contacts;
+    ++(kind == ArcContact::crossing ? out.crossings : out.touchings);
+    if (over) {
+      out.stop = SearchStop::contacts;
+      return false;
+    }
+    const EdgePair e{i, j, kind};
+    if (!detail::call_visitor(visitor, e)) {
+      out.stop = SearchStop::visitor;
+      return false;
+    }
     return true;
   };
-  out.boxes = detail::visit_prepared(p, options.margin, options.search, options.max_run_edges, options.max_run_extent,
-                                     visitor)
-                  .boxes;
+  const detail::VisitStats stats = detail::visit_prepared(p, options.margin, options.search, options.max_run_edges,
+                                                          options.max_run_extent, test, &budget);
+  out.estimated_box_pairs = budget.estimate;
+  if (!stats.completed && out.stop == SearchStop::complete)  // stopped by the box search
+    out.stop = budget.box_pairs == 0 && budget.estimate > 0 ? SearchStop::estimate : SearchStop::work;
+  out.boxes = stats.boxes;
+  out.box_pairs = budget.box_pairs;
+  out.candidate_pairs = budget.candidate_pairs;
+  return out;
+}
+
+/// Throws InvalidInput naming the limit that stopped the search (contacts_field: the option of
+/// max_contacts, work_field: of max_work), with the cost found so far and how to raise it.
+/// Does nothing when c is complete or was stopped by the visitor.
+inline void check_search_complete(const CrossingCounts& c, const CrossingSearchOptions& o,
+                                  const std::string& contacts_field, const std::string& work_field) {
+  const std::string found = std::to_string(c.crossings) + " crossings and " + std::to_string(c.touchings) + " touchings";
+  const std::string raise = " (up to " + std::to_string(kMaxCrossingLimit) + "); memory stays O(N) without pairs, ";
+  if (c.stop == SearchStop::contacts)
+    throw InvalidInput(contacts_field, std::to_string(o.max_contacts),
+                       "the polyline has more than " + std::to_string(o.max_contacts) +
+                           " crossings + touchings (the search stopped at " + found + ", after " +
+                           std::to_string(c.work()) + " units of work)",
+                       "at least its crossings + touchings: raise it" + raise +
+                           "each pair listed costs a row");
+  if (c.stop == SearchStop::work || c.stop == SearchStop::estimate)
+    throw InvalidInput(
+        work_field, std::to_string(o.max_work),
+        c.stop == SearchStop::estimate
+            ? "the search would need about " + detail::to_text(std::round(c.estimated_box_pairs)) +
+                  " units of work (overlapping box pairs, estimated before searching), more than 2 x " +
+                  std::to_string(o.max_work)
+            : "the search needs more than " + std::to_string(o.max_work) +
+                  " units of work (candidate edge pairs + overlapping box pairs; stopped at " + found + ")",
+        "at least the work of the search: raise it" + raise +
+            "time about 0.1-0.2 s per 1e6 units (random vertices: about N^2 units)");
+}
+
+/// The counts of find_self_crossings without storing a pair: memory O(N), time as find_self_crossings.
+inline CrossingCounts count_self_crossings(VertexSpan vertices, bool closed, const CrossingSearchOptions& options = {}) {
+  return visit_self_crossings(vertices, closed, [](const EdgePair&) {}, options);
+}
+
+/// Every crossing and touching pair of non-adjacent edges, exactly (see top). The vertices are
+/// read in place (a VertexSpan: no copy of a caller's array). Memory O(N + pairs found).
+inline SelfCrossings find_self_crossings(VertexSpan vertices, bool closed,
+                                         const CrossingSearchOptions& options = {}) {
+  SelfCrossings out;
+  const CrossingCounts c = visit_self_crossings(
+      vertices, closed, [&out](const EdgePair& e) { detail::record_contact(out, e.i, e.j, e.kind); }, options);
+  out.vertices = c.vertices;
+  out.edges = c.edges;
+  out.boxes = c.boxes;
+  out.candidate_pairs = c.candidate_pairs;
+  out.predicates = c.predicates;
+  out.box_pairs = c.box_pairs;
+  out.stop = c.stop;
   std::sort(out.crossings.begin(), out.crossings.end());
   std::sort(out.touchings.begin(), out.touchings.end());
   return out;
@@ -778,9 +989,11 @@ inline SelfCrossings exact_brute_force_crossings(const std::vector<Eigen::Vector
 }
 
 /// A box containing the arc from a/|a| to b/|b|, inflated by margin (see the sagitta bound above).
-/// REQUIRES a, b finite, nonzero, neither the same direction nor antipodal (checked); margin >= 0.
+/// REQUIRES a, b finite, nonzero, neither the same direction nor antipodal (else InvalidInput); margin >= 0.
 inline ArcBox arc_bounding_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double margin = 0.0) {
-  SPHTROCH_ASSERT(relate_vertices(a, b) == VertexRelation::distinct, "arc endpoints equal or antipodal");
+  if (relate_vertices(a, b) != VertexRelation::distinct)  // which refuses zero / non-finite vertices
+    throw InvalidInput("vertices", "an arc's endpoints", "the same direction or antipodal",
+                       "the two endpoints of an arc distinct and not antipodal");
   const Eigen::Vector3d u = detail::normalised_direction(a);
   const Eigen::Vector3d v = detail::normalised_direction(b);
   const double pad = detail::sagitta_bound(u, v) + kArcBoxRoundingMargin + margin;

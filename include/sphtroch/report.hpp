@@ -88,6 +88,9 @@ struct CrossingsSummary {
 inline CrossingsSummary crossings_summary(const SelfCrossings& sc, std::size_t vertices, bool closed,
                                           const std::string& input_format, double seconds_read,
                                           double seconds_search);
+/// The same from the counts of count_self_crossings / visit_self_crossings.
+inline CrossingsSummary crossings_summary(const CrossingCounts& c, bool closed, const std::string& input_format,
+                                          double seconds_read, double seconds_search);
 
 /// `crossings --json`: the fields of CrossingsSummary under their own names ("closed", ...).
 inline nlohmann::json crossings_summary_json(const CrossingsSummary& s);
@@ -409,6 +412,21 @@ inline CrossingsSummary crossings_summary(const SelfCrossings& sc, std::size_t v
   s.touchings = sc.touchings.size();
   s.candidate_pairs = sc.candidate_pairs;
   s.predicates = sc.predicates;
+  s.input_format = input_format;
+  s.seconds_read = seconds_read;
+  s.seconds_search = seconds_search;
+  return s;
+}
+
+inline CrossingsSummary crossings_summary(const CrossingCounts& c, bool closed, const std::string& input_format,
+                                          double seconds_read, double seconds_search) {
+  CrossingsSummary s;
+  s.vertices = c.vertices;
+  s.closed = closed;
+  s.crossings = c.crossings;
+  s.touchings = c.touchings;
+  s.candidate_pairs = c.candidate_pairs;
+  s.predicates = c.predicates;
   s.input_format = input_format;
   s.seconds_read = seconds_read;
   s.seconds_search = seconds_search;

@@ -3,7 +3,8 @@
 Angles are radians (float) or the command-line tool's text: "1.25", "pi/2", "2pi/3", "0.75pi",
 "90deg"; a3 also "ap", "pi-ap", "a2", "pi-a2" with an optional offset ("ap+1e-6"). Gear ratios
 n = p/q: int, fractions.Fraction, text ("5/2", "2.5") or a float that is a decimal of at most 9
-places (2.5). Every bad argument raises InvalidInput naming it. Every computation runs with the
+places (2.5). Every bad argument raises InvalidInput naming it; flags (closed, pairs, literal,
+velocity) accept only True or False (also numpy.bool_). Every computation runs with the
 GIL released; GearTrain objects are immutable and may be shared between threads.
 """
 from fractions import Fraction
@@ -19,10 +20,11 @@ RatioLike = Union[int, str, float, Fraction]
 AngleRange = Tuple[Angle, Angle]
 
 class InvalidInput(ValueError):
-    """Bad input. str(e) reads "<field> = <value>: <problem>; valid: <valid>"."""
+    """Bad input. str(e) reads "<field> = <value>: <problem>; valid: <valid>", on one line
+    (newlines and other control characters escaped as the tool does: \\n, \\t, \\xHH)."""
 
     field: str
-    """The argument: "a2", "a3", "n", "phase", "samples", "turns", "points", "grid", "a3_range", ..."""
+    """The argument: "a2", "a3", "n", "phase", "samples", "turns", "points", "grid", "closed", "literal", "max_work", ..."""
     value: str
     """The offending value as text."""
     problem: str
@@ -104,19 +106,28 @@ class GearTrain:
         agrees_with_report, node_points (position, params, branches, kind, angle, ...)."""
     def __reduce__(self) -> Any: ...
 
-def crossings(points: npt.ArrayLike, closed: bool = True) -> Dict[str, Any]:
+def crossings(points: npt.ArrayLike, closed: bool = True, *, pairs: bool = False,
+              max_crossings: int = 10_000_000, max_work: int = 50_000_000) -> Dict[str, Any]:
     """The exact self-crossings of a spherical polyline (edges are great-circle arcs; edge e
     joins row e to row e+1, and the last row to the first when closed), as `sphtroch crossings`.
 
-    points: (N, 3) x, y, z rows (directions; need not be unit). C-contiguous float64 is read in
-    place without a copy (do not modify it during the call); anything else is converted once
-    (input_converted is then True). Wrong shape, N too small, zero or non-finite rows, equal or
-    antipodal consecutive rows: InvalidInput with field "points".
+    points: (N, 3) x, y, z rows (directions; need not be unit), of an integer or float dtype
+    (strings, bool, complex, objects: InvalidInput). A C-contiguous float64 array is copied once
+    (24 bytes per row) before it is validated, so another thread writing into it cannot change
+    what is searched; anything else is converted once (input_converted is then True). Wrong
+    shape, N too small, zero or non-finite rows, equal or antipodal consecutive rows:
+    InvalidInput with field "points".
 
-    Returns: vertices, closed, crossings (count), touchings (count), pairs (k, 2) int64 edge
-    pairs i < j of both kinds sorted by (i, j) (the rows of `--pairs`), kinds (k strings:
-    "crossing", "touching", "overlap"), candidate_pairs, predicates, input_converted,
-    timings {"seconds_search"}.
+    closed, pairs: True or False (anything else: InvalidInput naming it). Without pairs only
+    counts are kept (memory O(N)); pairs=True adds pairs (k, 2) int64 edge pairs i < j of both
+    kinds sorted by (i, j) (the rows of `--pairs`, sorted), and kinds (k strings: "crossing",
+    "touching", "overlap").
+    max_crossings, max_work (0 .. 10**15): as `--max-crossings` / `--max-work`: more crossings
+    + touchings, or more work (candidate edge pairs + overlapping box pairs, ~0.1 s per 10**6
+    here; random points need about N**2), raise InvalidInput with that field.
+
+    Returns: vertices, closed, crossings (count), touchings (count), [pairs, kinds],
+    candidate_pairs, predicates, input_converted, timings {"seconds_search"}.
     """
 
 def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.141592653589793),
@@ -135,4 +146,4 @@ def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
     """classify_roots at `count` evenly spaced a3 in [lo, hi] (both ends included), runs of equal
     (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
     (radians). The class changes between the last sample of a run and the first of the next.
-    Raises InvalidInput: "a3_range" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""
+    Raises InvalidInput: "a3" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""

@@ -42,31 +42,38 @@ std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& tr
   return nlohmann::json{{"nodes", j["nodes"]}, {"cusps", j["cusps"]}}.dump();
 }
 
-CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed) {
+std::string contact_name(std::uint8_t kind) { return std::string(to_string(static_cast<ArcContact>(kind))); }
+
+CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed, bool with_pairs, std::size_t max_crossings,
+                               std::size_t max_work) {
   const VertexSpan vertices(reinterpret_cast<const Eigen::Vector3d*>(xyz), n);
-  SelfCrossings sc;
+  CrossingSearchOptions options;
+  options.max_contacts = max_crossings;
+  options.max_work = max_work;
+  std::vector<EdgePair> all;
+  CrossingCounts c;
   const auto start = std::chrono::steady_clock::now();
   try {
-    sc = find_self_crossings(vertices, closed);
+    c = with_pairs ? visit_self_crossings(vertices, closed, [&all](const EdgePair& e) { all.push_back(e); }, options)
+                   : count_self_crossings(vertices, closed, options);
   } catch (const InvalidInput& e) {  // the library names its argument "vertices"; Python's is "points"
     throw InvalidInput("points", e.value(), e.problem(), e.valid_range());
   }
+  check_search_complete(c, options, "max_crossings", "max_work");
   CrossingsResult r;
   r.seconds_search = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.vertices = n;
-  r.crossings = sc.crossings.size();
-  r.touchings = sc.touchings.size();
-  r.candidate_pairs = sc.candidate_pairs;
-  r.predicates = sc.predicates;
-  std::vector<EdgePair> all = sc.crossings;  // as `sphtroch crossings --pairs` lists them
-  all.insert(all.end(), sc.touchings.begin(), sc.touchings.end());
-  std::sort(all.begin(), all.end());
+  r.crossings = c.crossings;
+  r.touchings = c.touchings;
+  r.candidate_pairs = c.candidate_pairs;
+  r.predicates = c.predicates;
+  std::sort(all.begin(), all.end());  // as `sphtroch crossings --pairs` lists them, sorted
   r.pairs.reserve(2 * all.size());
   r.kinds.reserve(all.size());
   for (const EdgePair& e : all) {
     r.pairs.push_back(static_cast<std::int64_t>(e.i));
     r.pairs.push_back(static_cast<std::int64_t>(e.j));
-    r.kinds.emplace_back(to_string(e.kind));
+    r.kinds.push_back(static_cast<std::uint8_t>(e.kind));
   }
   return r;
 }

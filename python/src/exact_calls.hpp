@@ -24,17 +24,22 @@ std::string classification_json_text(const InputText& text, const GearTrain& tra
 std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
-/// The exact self-crossings of a polyline (find_self_crossings), as `sphtroch crossings` reports them.
+/// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {
   std::size_t vertices = 0, crossings = 0, touchings = 0, candidate_pairs = 0, predicates = 0;
-  std::vector<std::int64_t> pairs;  // k rows (i, j), i < j edge indices, crossings and touchings merged, sorted
-  std::vector<std::string> kinds;   // per row: "crossing", "touching" or "overlap"
-  double seconds_search = 0.0;      // wall time of find_self_crossings (validation included)
+  std::vector<std::int64_t> pairs;  // with_pairs: k rows (i, j), i < j edge indices, both kinds, sorted
+  std::vector<std::uint8_t> kinds;  // per row: an ArcContact (crossing, touching or overlap)
+  double seconds_search = 0.0;      // wall time of the search (validation included)
 };
 
-/// REQUIRES: xyz holds n packed rows x,y,z (read in place, not copied). Throws InvalidInput
-/// with field "points" for an invalid polyline (fewer than 3 / 2 vertices, a zero or non-finite
-/// row, consecutive rows equal or antipodal).
-CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed);
+/// "crossing", "touching", "overlap" for the codes in CrossingsResult::kinds.
+std::string contact_name(std::uint8_t kind);
+
+/// REQUIRES: xyz holds n packed rows x,y,z that do not change during the call (read in place).
+/// Counts only (count_self_crossings, memory O(n)) unless with_pairs. Throws InvalidInput with
+/// field "points" for an invalid polyline (fewer than 3 / 2 vertices, a zero or non-finite row,
+/// consecutive rows equal or antipodal), "max_crossings" / "max_work" when a limit stops the search.
+CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed, bool with_pairs, std::size_t max_crossings,
+                               std::size_t max_work);
 
 }  // namespace sphtroch::python

@@ -15,6 +15,7 @@
 #include "exact_calls.hpp"
 
 #include "sphtroch/atlas.hpp"
+#include "sphtroch/cost_bounds.hpp"
 #include "sphtroch/curve.hpp"
 #include "sphtroch/parse.hpp"
 #include "sphtroch/polyline_census_result.hpp"
@@ -42,9 +43,31 @@ namespace {
 /// The Python class sphtroch.InvalidInput (the module object keeps it alive).
 py::handle g_invalid_input;
 
-constexpr const char* kPointsValid = "an (N, 3) array of x, y, z rows (float64; other real dtypes are converted)";
+constexpr const char* kPointsValid =
+    "an (N, 3) array of x, y, z rows (float64; other integer or float dtypes are converted)";
 
 std::string repr_of(py::handle v) { return py::repr(v).cast<std::string>(); }
+
+/// A str as UTF-8, else InvalidInput (a lone surrogate such as "\ud800" cannot be encoded).
+std::string text_arg(py::handle v, const std::string& field, const std::string& valid) {
+  Py_ssize_t size = 0;
+  const char* p = PyUnicode_AsUTF8AndSize(v.ptr(), &size);
+  if (p == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not valid Unicode text (not encodable as UTF-8)", valid);
+  }
+  return std::string(p, static_cast<std::size_t>(size));
+}
+
+/// A flag: True or False (also numpy.bool_), else InvalidInput. Truthy objects ("yes", 1, None)
+/// are refused, not read as bool.
+bool flag_arg(py::handle v, const std::string& field) {
+  if (v.ptr() == Py_True) return true;
+  if (v.ptr() == Py_False) return false;
+  const py::object np_bool = py::module_::import("numpy").attr("bool_");
+  if (py::isinstance(v, np_bool)) return v.ptr() == Py_True || PyObject_IsTrue(v.ptr()) == 1;
+  throw InvalidInput(field, repr_of(v), "not a flag", "True or False");
+}
 
 /// A real number (anything float() accepts, except bool, None and str), else InvalidInput.
 double real_arg(py::handle v, const std::string& field, const std::string& valid) {
@@ -81,7 +104,7 @@ std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, st
 /// the text kept for reports (the shortest round-trip form of a real number).
 double angle_arg(py::handle v, const std::string& field, std::string& text) {
   if (py::isinstance<py::str>(v)) {
-    text = v.cast<std::string>();
+    text = text_arg(v, field, kAngleForms);
     return parse_angle(text, field);
   }
   const double x = real_arg(v, field, kAngleForms);
@@ -92,7 +115,7 @@ double angle_arg(py::handle v, const std::string& field, std::string& text) {
 /// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
 A3Spec a3_arg(py::handle v, std::string& text) {
   if (py::isinstance<py::str>(v)) {
-    text = v.cast<std::string>();
+    text = text_arg(v, "a3", kAngleForms);
     return parse_a3(text, "a3");
   }
   const double x = real_arg(v, "a3", kAngleForms);
@@ -104,7 +127,7 @@ A3Spec a3_arg(py::handle v, std::string& text) {
 /// denominator), the CLI's text ("5/2", "2.5"), or a float read as its shortest decimal text
 /// (2.5 -> 5/2; a float that is no decimal of at most 9 places, e.g. 1/3, is refused: give "1/3").
 Ratio ratio_arg(py::handle v) {
-  if (py::isinstance<py::str>(v)) return parse_ratio(v.cast<std::string>(), "n");
+  if (py::isinstance<py::str>(v)) return parse_ratio(text_arg(v, "n", kRatioForms), "n");
   if (v.is_none() || py::isinstance<py::bool_>(v)) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
   if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
     const py::object p = v.attr("numerator"), q = v.attr("denominator");
@@ -145,7 +168,8 @@ py::capsule capsule_of(std::unique_ptr<Owner> owner) {
 /// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
 py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-py::tuple trace(const Train& self, py::handle samples, py::handle turns, bool velocity) {
+py::tuple trace(const Train& self, py::handle samples, py::handle turns, py::handle velocity_flag) {
+  const bool velocity = flag_arg(velocity_flag, "velocity");
   std::optional<double> k;
   if (!turns.is_none()) {
     k = real_arg(turns, "turns", "(0, 1e6] carrier turns");
@@ -175,7 +199,8 @@ std::size_t census_samples_arg(py::handle samples) {
   return samples.is_none() ? 0 : count_arg(samples, "samples", kMinCensusSamples, kMaxSamples);
 }
 
-py::object classify(const Train& self, bool literal, py::handle samples) {
+py::object classify(const Train& self, py::handle literal_flag, py::handle samples) {
+  const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
   std::string text;
   {
@@ -185,7 +210,8 @@ py::object classify(const Train& self, bool literal, py::handle samples) {
   return from_json(text);
 }
 
-py::object nodes_and_cusps(const Train& self, bool literal, py::handle samples, const char* key) {
+py::object nodes_and_cusps(const Train& self, py::handle literal_flag, py::handle samples, const char* key) {
+  const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
   std::string text;
   {
@@ -207,7 +233,8 @@ py::dict node_dict(const Node& n) {
   return d;
 }
 
-py::dict classify_roots_dict(const Train& self, bool literal) {
+py::dict classify_roots_dict(const Train& self, py::handle literal_flag) {
+  const bool literal = flag_arg(literal_flag, "literal");
   RootClassification c;
   {
     py::gil_scoped_release release;
@@ -241,16 +268,20 @@ std::pair<double, double> range_arg(py::handle v, const std::string& field) {
   return {angle_arg(s[0], field, ignored), angle_arg(s[1], field, ignored)};
 }
 
-py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::handle count, bool literal) {
+py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::handle count, py::handle literal_flag) {
   std::string ignored;
   const double a2v = angle_arg(a2, "a2", ignored);
   const Ratio nv = ratio_arg(n);
-  const auto [lo, hi] = range_arg(a3, "a3_range");
+  const auto [lo, hi] = range_arg(a3, "a3");
   const std::size_t k = count_arg(count, "count", 2, 1000000);
+  const bool literal = flag_arg(literal_flag, "literal");
   std::vector<A3Interval> runs;
-  {
+  try {
     py::gil_scoped_release release;
     runs = classify_a3_range(a2v, nv, lo, hi, k, Reading{literal});
+  } catch (const InvalidInput& e) {  // the library's "a3_range" is the argument a3 here
+    if (e.field() != "a3_range") throw;
+    throw InvalidInput("a3", e.value(), e.problem(), e.valid_range());
   }
   py::list out;
   for (const A3Interval& r : runs) {
@@ -275,7 +306,8 @@ py::array square(std::vector<T> values, std::size_t g) {
   return py::array_t<T>(std::vector<py::ssize_t>{side, side}, data, capsule_of(std::move(owner)));
 }
 
-py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, bool literal) {
+py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, py::handle literal_flag) {
+  const bool literal = flag_arg(literal_flag, "literal");
   AtlasSpec spec;
   spec.ratio = ratio_arg(n);
   spec.grid = count_arg(grid, "grid", 1, kAtlasMaxGrid);
@@ -332,30 +364,66 @@ std::string shape_text(const py::array& a) {
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
-py::dict crossings(py::handle points, bool closed) {
+/// A list of the kind names, sharing one str object per kind (not one per row).
+py::list kind_list(const std::vector<std::uint8_t>& kinds) {
+  py::list names;
+  for (std::uint8_t k = 0; k < 4; ++k) names.append(py::str(contact_name(k)));
+  py::list out(kinds.size());
+  for (std::size_t r = 0; r < kinds.size(); ++r) out[r] = names[kinds[r]];
+  return out;
+}
+
+py::dict crossings(py::handle points, py::handle closed_flag, py::handle pairs_flag, py::handle max_crossings,
+                   py::handle max_work) {
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-  // Complex numbers would be cast to their real part (NumPy only warns): refuse them.
-  if (py::isinstance<py::array>(points) && py::reinterpret_borrow<py::array>(points).dtype().kind() == 'c')
-    throw InvalidInput("points", "a complex array", "not real numbers", kPointsValid);
-  Array a = Array::ensure(points);  // the same object when already C-contiguous float64
+  const bool closed = flag_arg(closed_flag, "closed");
+  const bool with_pairs = flag_arg(pairs_flag, "pairs");
+  const std::size_t limit_contacts = count_arg(max_crossings, "max_crossings", 0, kMaxCrossingLimit);
+  const std::size_t limit_work = count_arg(max_work, "max_work", 0, kMaxCrossingLimit);
+  // Only integer and float dtypes: NumPy would parse strings ("1.5") and drop imaginary parts.
+  py::object arr = py::reinterpret_borrow<py::object>(points);
+  if (!py::isinstance<py::array>(points)) {
+    try {
+      arr = py::module_::import("numpy").attr("asarray")(points);
+    } catch (const py::error_already_set&) {
+      throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))),
+                         "not convertible to an array", kPointsValid);
+    }
+  }
+  const py::dtype dt = py::reinterpret_borrow<py::array>(arr).dtype();
+  if (dt.kind() != 'f' && dt.kind() != 'i' && dt.kind() != 'u')
+    throw InvalidInput("points", "an array of dtype " + std::string(py::str(py::handle(dt))), "not numeric real (integer or float)",
+                       kPointsValid);
+  Array a = Array::ensure(arr);  // the same object when already C-contiguous float64
   if (!a) throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))), "not convertible to a float64 array", kPointsValid);
   if (a.ndim() != 2 || a.shape(1) != 3) throw InvalidInput("points", shape_text(a), "not an (N, 3) array", kPointsValid);
   const bool converted = !a.is(points);
+  const auto n = static_cast<std::size_t>(a.shape(0));
+  // The caller's array may be written by another thread once the GIL is released: search a
+  // copy made now (under the GIL), so that what is validated is what is searched. A converted
+  // array is already private.
+  std::vector<Eigen::Vector3d> snapshot;
+  if (!converted) snapshot.assign(reinterpret_cast<const Eigen::Vector3d*>(a.data()),
+                                  reinterpret_cast<const Eigen::Vector3d*>(a.data()) + n);
+  const double* xyz = converted || n == 0 ? a.data() : snapshot.front().data();
   CrossingsResult r;
   {
     py::gil_scoped_release release;
-    r = self_crossings(a.data(), static_cast<std::size_t>(a.shape(0)), closed);
+    r = self_crossings(xyz, n, closed, with_pairs, limit_contacts, limit_work);
   }
-  auto pairs = std::make_unique<std::vector<std::int64_t>>(std::move(r.pairs));
-  const std::int64_t* data = pairs->data();
-  const auto k = static_cast<py::ssize_t>(pairs->size() / 2);
   py::dict d;
   d["vertices"] = r.vertices;
   d["closed"] = closed;
   d["crossings"] = r.crossings;
   d["touchings"] = r.touchings;
-  d["pairs"] = py::array_t<std::int64_t>(std::vector<py::ssize_t>{k, 2}, data, capsule_of(std::move(pairs)));
-  d["kinds"] = r.kinds;
+  if (with_pairs) {
+    py::list kinds = kind_list(r.kinds);
+    auto pairs = std::make_unique<std::vector<std::int64_t>>(std::move(r.pairs));
+    const std::int64_t* data = pairs->data();
+    const auto k = static_cast<py::ssize_t>(pairs->size() / 2);
+    d["pairs"] = py::array_t<std::int64_t>(std::vector<py::ssize_t>{k, 2}, data, capsule_of(std::move(pairs)));
+    d["kinds"] = kinds;
+  }
   d["candidate_pairs"] = r.candidate_pairs;
   d["predicates"] = r.predicates;
   d["input_converted"] = converted;
@@ -369,7 +437,7 @@ void translate_invalid_input(std::exception_ptr p) {
   try {
     if (p) std::rethrow_exception(p);
   } catch (const InvalidInput& e) {
-    py::object err = py::reinterpret_borrow<py::object>(g_invalid_input)(e.what());
+    py::object err = py::reinterpret_borrow<py::object>(g_invalid_input)(one_line_text(e.what()));  // one line
     err.attr("field") = e.field();
     err.attr("value") = e.value();
     err.attr("problem") = e.problem();
@@ -418,14 +486,18 @@ PYBIND11_MODULE(_sphtroch, m) {
       .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
            py::arg("velocity") = false)
       .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
-      .def("nodes", [](const Train& t, bool literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
+      .def("nodes", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
-      .def("cusps", [](const Train& t, bool literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
+      .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
       .def("classify_roots", &classify_roots_dict, py::kw_only(), py::arg("literal") = false)
       .def("__repr__", &train_repr)
-      .def("__eq__", [](const Train& a, const Train& b) {
-        return a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n && a.text.phase == b.text.phase;
+      // Another type: NotImplemented (so train == 5 is False, and the other operand may decide).
+      .def("__eq__", [](const Train& a, py::handle other) -> py::object {
+        if (!py::isinstance<Train>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        const Train& b = other.cast<const Train&>();
+        return py::bool_(a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n &&
+                         a.text.phase == b.text.phase);
       })
       // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
       // texts: a tampered pickle is validated like any other input (InvalidInput).
@@ -434,7 +506,8 @@ PYBIND11_MODULE(_sphtroch, m) {
         return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase));
       });
 
-  m.def("crossings", &crossings, py::arg("points"), py::arg("closed") = true);
+  m.def("crossings", &crossings, py::arg("points"), py::arg("closed") = true, py::kw_only(), py::arg("pairs") = false,
+        py::arg("max_crossings") = sphtroch::kDefaultMaxCrossings, py::arg("max_work") = sphtroch::kDefaultMaxCrossingWork);
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
         py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
         py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),

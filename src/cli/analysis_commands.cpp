@@ -77,32 +77,48 @@ void run_plot(const AnalysisOptions& o) {
 }
 
 struct CrossingsOptions {
-  std::string input, pairs, output, threads;
+  std::string input, pairs, output, threads, max_crossings, max_work;
   bool open = false;
   bool json = false;
 };
 
+// Counts only (memory O(N)), or pairs streamed into --pairs as found; bounded by --max-crossings
+// and --max-work (refused with exit 2, no file left, when a limit is reached).
 void run_crossings(const CrossingsOptions& o) {
   using clock = std::chrono::steady_clock;
   const std::size_t threads = parse_threads(o.threads);
+  CrossingSearchOptions search;
+  search.max_contacts = o.max_crossings.empty() ? kDefaultMaxCrossings
+                                                : parse_count(o.max_crossings, "max-crossings", 0, kMaxCrossingLimit);
+  search.max_work = o.max_work.empty() ? kDefaultMaxCrossingWork : parse_count(o.max_work, "max-work", 0, kMaxCrossingLimit);
   check_distinct_files({{o.output, "--output"}, {o.pairs, "--pairs"}}, {{o.input, "--input"}});
   const auto start_read = clock::now();
   const PolylineInput input = read_polyline(o.input, "input", std::min<std::size_t>(threads, 2));
   const double seconds_read = std::chrono::duration<double>(clock::now() - start_read).count();
   const std::vector<Vector3d>& vertices = input.vertices;
-  SelfCrossings sc;
-  double seconds = 0;
+  const auto bad_input = [&](const InvalidInput& e) {
+    return UsageError{"--input = " + o.input + ": " + e.value() + ": " + e.problem() + "; valid: " + e.valid_range()};
+  };
   try {
     validate_spherical_polyline(vertices, !o.open);
-    const auto start = clock::now();
-    sc = find_self_crossings(vertices, !o.open);
-    seconds = std::chrono::duration<double>(clock::now() - start).count();
   } catch (const InvalidInput& e) {
-    throw UsageError{"--input = " + o.input + ": " + e.value() + ": " + e.problem() + "; valid: " + e.valid_range()};
+    throw bad_input(e);
   }
   StagedOutputs outputs;  // --pairs and -o appear together or not at all
-  if (!o.pairs.empty()) write_edge_pairs_csv(outputs.open(o.pairs, "--pairs"), sc.crossings, sc.touchings);
-  const CrossingsSummary summary = crossings_summary(sc, vertices.size(), !o.open, input.format, seconds_read, seconds);
+  OutputFile* pairs = o.pairs.empty() ? nullptr : &outputs.open(o.pairs, "--pairs");
+  if (pairs != nullptr) write_edge_pairs_header(*pairs);
+  const auto start = clock::now();
+  CrossingCounts counts;
+  try {
+    counts = pairs != nullptr
+                 ? visit_self_crossings(vertices, !o.open, [pairs](const EdgePair& e) { write_edge_pair_row(*pairs, e); }, search)
+                 : count_self_crossings(vertices, !o.open, search);
+  } catch (const InvalidInput& e) {
+    throw bad_input(e);
+  }
+  const double seconds = std::chrono::duration<double>(clock::now() - start).count();
+  check_search_complete(counts, search, "max-crossings", "max-work");  // InvalidInput: exit 2, no file kept
+  const CrossingsSummary summary = crossings_summary(counts, !o.open, input.format, seconds_read, seconds);
   outputs.stage(o.output, "--output", [&](std::ostream& out) {
     if (o.json) out << crossings_summary_json(summary).dump(2) << "\n";
     else write_crossings_summary_text(out, summary);
@@ -142,7 +158,11 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
                     "the polyline: CSV (rows x,y,z, or a header naming x,y,z), NumPy .npy (N,3|4|7), - for stdin")
         ->required();
     cmd->add_flag("--open", o->open, "the polyline is open (default: closed, the last vertex joins the first)");
-    cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE");
+    cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE (in the search's order)");
+    cmd->add_option("--max-crossings", o->max_crossings,
+                    "refuse (exit 2) a polyline with more crossings + touchings (0 .. 1e15; default 1e7)");
+    cmd->add_option("--max-work", o->max_work,
+                    "refuse (exit 2) a search needing more candidate + box pairs (0 .. 1e15; default 5e7, ~5 s)");
     cmd->add_flag("--json", o->json, "one JSON object: vertices, crossings, touchings, seconds_read, seconds_search, ...");
     cmd->add_option("--threads", o->threads, "threads parsing CSV (1 .. 1024; default: all cores, at most 2 used)");
     add_output_option(*cmd, o->output, "the summary");

@@ -23,20 +23,7 @@ namespace {
 using namespace sphtroch::cli;
 
 /// The message as one line: control characters (a newline in a key, a path) escaped.
-std::string one_line(const std::string& message) {
-  std::string out;
-  for (unsigned char c : message) {
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
-    else if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", c);
-      out += buf;
-    } else out += static_cast<char>(c);
-  }
-  return out;
-}
+std::string one_line(const std::string& message) { return sphtroch::one_line_text(message); }
 
 int fail(const std::string& message) {
   std::cerr << "sphtroch: " << one_line(message) << "\n";

@@ -88,8 +88,8 @@ def test_atlas_arguments(kwargs, field):
 
 @pytest.mark.parametrize("kwargs,field", [
     (dict(a2=0, n=2, a3=(0.1, 1)), "a2"), (dict(a2=1, n="q", a3=(0.1, 1)), "n"),
-    (dict(a2=1, n=2, a3=(1, 0.1)), "a3_range"), (dict(a2=1, n=2, a3=(0, 1)), "a3_range"),
-    (dict(a2=1, n=2, a3=(0.1, 1), count=1), "count"), (dict(a2=1, n=2, a3=5), "a3_range"),
+    (dict(a2=1, n=2, a3=(1, 0.1)), "a3"), (dict(a2=1, n=2, a3=(0, 1)), "a3"),
+    (dict(a2=1, n=2, a3=(0.1, 1), count=1), "count"), (dict(a2=1, n=2, a3=5), "a3"),
 ])
 def test_classify_a3_range_arguments(kwargs, field):
     check(lambda: sphtroch.classify_a3_range(**kwargs), field)
@@ -100,3 +100,57 @@ def test_invalid_input_is_catchable_as_value_error_and_reports_the_tools_range()
         sphtroch.GearTrain(4.0, 1.0, 2)
     e = check(lambda: sphtroch.GearTrain(4.0, 1.0, 2), "a2", "4")
     assert e.valid == "(0, pi) radians"
+
+
+def test_d11_equality_with_another_type_is_false_not_type_error():
+    tr = sphtroch.GearTrain(**GOOD)
+    assert (tr == 5) is False and (tr != 5) is True and (tr == "pi/3") is False and (tr == None) is False  # noqa: E711
+    assert tr == sphtroch.GearTrain(**GOOD) and not (tr != sphtroch.GearTrain(**GOOD))
+
+
+@pytest.mark.parametrize("field", ["a2", "a3", "n", "phase"])
+def test_d11_lone_surrogate_text_is_invalid_input_naming_the_field(field):
+    args = dict(GOOD, phase=0.0)
+    args[field] = "\ud800"
+    e = check(lambda: sphtroch.GearTrain(**args), field)
+    assert "ud800" in e.value
+
+
+def test_d11_str_of_invalid_input_is_one_line():
+    e = check(lambda: sphtroch.GearTrain("1\n2\tx\r", 1.0, 2), "a2")
+    text = str(e)
+    assert "\n" not in text and "\r" not in text and "\t" not in text
+    assert "\\n" in text or "\\\\n" in text  # escaped as the tool escapes it (\n), inside the repr or the text
+    e = check(lambda: sphtroch.GearTrain("pi/3", "1\n2", 2), "a3")
+    assert "\n" not in str(e)
+
+
+def test_d11_classify_a3_range_names_its_argument_a3():
+    for a3 in ((1, 1), (1.0, 0.5), (0.0, 1.0), (1.0, 4.0)):
+        check(lambda: sphtroch.classify_a3_range(a2=1.0, n=2, a3=a3), "a3")
+
+
+@pytest.mark.parametrize("value", ["yes", 1, 0, None, 1.0, "True", [True]])
+def test_d11_flags_accept_only_true_or_false(value):
+    P = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+    tr = sphtroch.GearTrain(**GOOD)
+    for call, field in ((lambda: sphtroch.crossings(P, closed=value), "closed"),
+                        (lambda: sphtroch.crossings(P, pairs=value), "pairs"),
+                        (lambda: tr.trace(samples=10, velocity=value), "velocity"),
+                        (lambda: tr.classify_roots(literal=value), "literal"),
+                        (lambda: sphtroch.classify_a3_range(1.0, 2, (0.5, 1.0), count=2, literal=value), "literal")):
+        e = check(call, field)
+        assert e.valid == "True or False"
+    assert sphtroch.crossings(P, closed=np.bool_(False))["closed"] is False
+
+
+@pytest.mark.parametrize("points", [
+    np.array([["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]),
+    [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]],
+    np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=object),
+    np.ones((3, 3), dtype=bool),
+    np.array([[b"1", b"0", b"0"]] * 3),
+])
+def test_d11_string_and_non_numeric_arrays_are_refused(points):
+    e = check(lambda: sphtroch.crossings(points), "points")
+    assert "dtype" in e.value and "numeric" in e.problem

@@ -16,7 +16,7 @@ def work(tr):
     t, P, V = tr.trace(samples=20000, velocity=True)
     rep = tr.classify()
     rep["work"].pop("seconds")
-    c = sphtroch.crossings(P)
+    c = sphtroch.crossings(P, pairs=True)
     return dict(t=t, P=P, V=V, rep=rep, roots=tr.classify_roots(), pairs=c["pairs"], kinds=c["kinds"])
 
 
@@ -85,3 +85,48 @@ def test_a_tampered_pickle_is_validated_like_any_input():
     with pytest.raises(sphtroch.InvalidInput) as e:
         pickle.loads(bad)
     assert e.value.field == "n"
+
+
+D3_CHILD = r"""
+import threading, numpy as np, sphtroch
+_, P = sphtroch.GearTrain(1.0, 2.0, "7/3").trace(samples=200000)
+P = np.ascontiguousarray(P)
+ref = sphtroch.crossings(P.copy())["crossings"]
+stop = False
+saved = P.copy()
+def scribble():  # one row at a time made bad (NaN, zero, a repeat of its neighbour) and restored
+    k = 0
+    while not stop:
+        i = (k * 7919) % (len(P) - 1)
+        P[i] = (np.nan, 0.0, 0.0) if k % 3 == 0 else 0.0 if k % 3 == 1 else P[i + 1]
+        P[i] = saved[i]
+        k += 1
+th = threading.Thread(target=scribble)
+th.start()
+results, refused = 0, 0
+try:
+    for _ in range(400):
+        try:
+            r = sphtroch.crossings(P)
+            assert isinstance(r["crossings"], int)
+            results += 1
+        except sphtroch.InvalidInput as e:
+            assert e.field == "points", e
+            refused += 1
+finally:
+    stop = True
+    th.join()
+print("ok", results, refused)
+"""
+
+
+def test_d3_writing_points_from_another_thread_never_crashes():
+    # In a child process: an abort (the old SIGABRT in relate_vertices) fails this test instead
+    # of killing pytest. Each call must return a result or raise InvalidInput("points").
+    import subprocess
+    import sys
+    done = subprocess.run([sys.executable, "-c", D3_CHILD], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, (done.returncode, done.stderr[-2000:])
+    assert done.stdout.startswith("ok "), done.stdout
+    results, refused = map(int, done.stdout.split()[1:])
+    assert results + refused == 400
