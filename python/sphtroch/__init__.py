@@ -11,10 +11,11 @@ during every computation. The API with its contracts is in __init__.pyi (and REA
 from ._sphtroch import (  # noqa: F401
     GearTrain,
     InvalidInput,
+    UncertifiedResult,
     __version__,
     atlas,
     classify_a3_range,
     crossings,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "atlas", "classify_a3_range", "crossings", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "__version__"]

@@ -19,6 +19,18 @@ Angle = Union[float, int, str]
 RatioLike = Union[int, str, float, Fraction]
 AngleRange = Tuple[Angle, Angle]
 
+class UncertifiedResult(RuntimeError):
+    """A node count the polyline census and the independent root-count census do not agree on,
+    even after escalation (README: Certified counts; the tool's exit status 3). Raised by
+    GearTrain.nodes(); classify() returns its dict with "certified": False instead."""
+
+    nodes: List[Dict[str, Any]]
+    """The polyline census's node list, uncertified."""
+    polyline_nodes: int
+    """Its node count."""
+    root_nodes: int
+    """The root-count census's node count."""
+
 class InvalidInput(ValueError):
     """Bad input. str(e) reads "<field> = <value>: <problem>; valid: <valid>", on one line
     (newlines and other control characters escaped as the tool does: \\n, \\t, \\xHH)."""
@@ -90,13 +102,15 @@ class GearTrain:
     def classify(self, *, literal: bool = False, samples: Optional[int] = None) -> Dict[str, Any]:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
-        boundaries, z_extremes, symmetry, criteria, censuses, agreement, tolerances, work).
+        boundaries, z_extremes, symmetry, criteria, censuses, agreement, certified, certificate,
+        tolerances, work). "certified" is False when the censuses disagree (README: Certified counts).
         literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
         samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
         """
     def nodes(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
         """The "nodes" list of classify() (position, longitude, latitude, params, branches, kind,
-        angle, crossing_pairs, tangency_pairs), from the node stages only (no root-count census)."""
+        angle, crossing_pairs, tangency_pairs), from the certified node census (without the
+        criteria). Raises UncertifiedResult when the two censuses disagree after escalation."""
     def cusps(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
         """The "cusps" list of classify() (position, param, speed)."""
     def classify_roots(self, *, literal: bool = False) -> Dict[str, Any]:

@@ -39,7 +39,14 @@ std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& tr
   c.nodes = a.nodes();
   c.cusps = a.cusps();
   const nlohmann::json j = classification_json(text, c);
-  return nlohmann::json{{"nodes", j["nodes"]}, {"cusps", j["cusps"]}}.dump();
+  const CensusCertificate& cert = a.certificate();  // the nodes are certified or say so (issue 17)
+  return nlohmann::json{{"nodes", j["nodes"]},
+                        {"cusps", j["cusps"]},
+                        {"certified", cert.certified},
+                        {"polyline_nodes", cert.polyline_nodes.back()},
+                        {"root_nodes", cert.root_nodes},
+                        {"stopped", cert.stopped}}
+      .dump();
 }
 
 std::string contact_name(std::uint8_t kind) { return std::string(to_string(static_cast<ArcContact>(kind))); }

@@ -40,6 +40,9 @@ namespace py = pybind11;
 namespace sphtroch::python {
 namespace {
 
+/// The C++ type behind sphtroch.UncertifiedResult (never thrown: nodes() raises the Python class).
+struct UncertifiedMarker : std::exception {};
+
 /// The Python class sphtroch.InvalidInput (the module object keeps it alive).
 py::handle g_invalid_input;
 
@@ -210,6 +213,11 @@ py::object classify(const Train& self, py::handle literal_flag, py::handle sampl
   return from_json(text);
 }
 
+/// The Python class sphtroch.UncertifiedResult (a RuntimeError; the module object keeps it alive).
+py::handle g_uncertified;
+
+/// nodes(): the certified node list, or UncertifiedResult carrying the uncertified list and both
+/// counts (the CLI's exit status 3). cusps() need no node census certificate (pitch-cone criterion).
 py::object nodes_and_cusps(const Train& self, py::handle literal_flag, py::handle samples, const char* key) {
   const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
@@ -218,7 +226,20 @@ py::object nodes_and_cusps(const Train& self, py::handle literal_flag, py::handl
     py::gil_scoped_release release;
     text = nodes_and_cusps_json_text(self.text, self.train, literal, s);
   }
-  return from_json(text)[key];
+  const py::object all = from_json(text);
+  if (std::string(key) == "nodes" && !all["certified"].cast<bool>()) {
+    const std::string message = "the node count is not certified: polyline census " +
+                                py::str(all["polyline_nodes"]).cast<std::string>() + " node(s), root-count census " +
+                                py::str(all["root_nodes"]).cast<std::string>() + "; " +
+                                all["stopped"].cast<std::string>() + " (see README: Certified counts)";
+    py::object err = py::reinterpret_borrow<py::object>(g_uncertified)(message);
+    err.attr("nodes") = all["nodes"];
+    err.attr("polyline_nodes") = all["polyline_nodes"];
+    err.attr("root_nodes") = all["root_nodes"];
+    PyErr_SetObject(g_uncertified.ptr(), err.ptr());
+    throw py::error_already_set();
+  }
+  return all[key];
 }
 
 py::dict node_dict(const Node& n) {
@@ -466,6 +487,12 @@ PYBIND11_MODULE(_sphtroch, m) {
   invalid_input.attr("__module__") = "sphtroch";
   for (const char* a : {"field", "value", "problem", "valid"}) invalid_input.attr(a) = py::none();
   py::register_exception_translator(&translate_invalid_input);
+  static py::exception<UncertifiedMarker> uncertified(m, "UncertifiedResult", PyExc_RuntimeError);
+  g_uncertified = uncertified;
+  uncertified.attr("__doc__") =
+      "A node count the two censuses do not agree on (README: Certified counts): .nodes (the polyline census's "
+      "uncertified list), .polyline_nodes, .root_nodes.";
+  uncertified.attr("__module__") = "sphtroch";
 
   py::class_<Train>(m, "GearTrain")
       .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),

@@ -76,3 +76,21 @@ def test_classify_a3_range_intervals_follow_eq24():
     step = (math.pi - 0.2) / 280
     assert runs[0]["a3_last"] < math.pi / 4 < runs[1]["a3_first"] <= runs[0]["a3_last"] + step + 1e-12
     assert runs[1]["a3_last"] < 3 * math.pi / 4 < runs[2]["a3_first"]
+
+
+def test_d1_certified_nodes_near_the_mirror_cone():
+    """Issue 17, D1: 845 nodes (13 with one branch) were printed as certain; the root-count census,
+    and an independent computation, give 832 (16 roots x 52)."""
+    tr = sphtroch.GearTrain(a2="2.8907926475352435", a3="pi-ap-1e-9", n="52/35")
+    c = tr.classify()
+    assert c["certified"] is True and c["agreement"]["ok"] is True
+    assert c["counts"]["nodes"] == 832 == c["censuses"]["root_count"]["nodes"]
+    nodes = tr.nodes()
+    assert len(nodes) == 832
+    assert all(n["branches"] >= 2 and len(n["params"]) == n["branches"] for n in nodes)
+
+
+def test_uncertified_result_is_a_runtime_error_with_both_counts_documented():
+    assert issubclass(sphtroch.UncertifiedResult, RuntimeError)
+    assert "UncertifiedResult" in sphtroch.__all__
+    assert "root_nodes" in sphtroch.UncertifiedResult.__doc__
