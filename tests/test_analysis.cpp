@@ -124,7 +124,7 @@ TEST_CASE("analysis: requesting an effect runs exactly the stages stages_for() l
         CHECK(static_cast<std::size_t>(at - order.begin()) < k);
       }
   }
-  // Spot checks of the graph (DESIGN.md data flow).
+  // Spot checks of the graph (docs/design.md data flow).
   CHECK(Analysis::stages_for(Effect::trace) == std::vector<Stage>{Stage::input, Stage::trajectory});
   const auto cls = Analysis::stages_for(Effect::classification);
   for (Stage s : {Stage::polyline_census, Stage::nodes, Stage::cusps, Stage::root_census, Stage::analytic, Stage::classification})

@@ -27,7 +27,7 @@ TEST_CASE("input text: forms of parse.hpp become the train, phase defaulting to 
 TEST_CASE("input text: a3 relative to the planet's pitch cone a_p = atan2(sin a2, cos a2 + n)") {
   const InputText text{"1", "ap+1e-6", "2", "90deg"};
   const GearTrain t = text.train();
-  const double ap = std::atan2(std::sin(1.0), std::cos(1.0) + 2.0);  // DESIGN.md: the model
+  const double ap = std::atan2(std::sin(1.0), std::cos(1.0) + 2.0);  // docs/design.md: the model
   CHECK(t.a3() == Approx(ap + 1e-6).epsilon(1e-14));
   CHECK(t.phase_given() == Approx(kPi / 2).epsilon(1e-15));
 }

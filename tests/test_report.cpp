@@ -69,7 +69,7 @@ TEST_CASE("classification json: the documented keys, inputs as typed, values of 
   CHECK(j["inputs"]["n"] == "2");
   CHECK(j["inputs"]["n_value"].get<double>() == 2.0);
   CHECK(j["inputs"]["literal"] == false);
-  // DESIGN.md: a_p = atan2(sin a2, cos a2 + n), a_s = a2 - a_p; period 2 pi q.
+  // docs/design.md: a_p = atan2(sin a2, cos a2 + n), a_s = a2 - a_p; period 2 pi q.
   const double ap = std::atan2(std::sin(kPi / 3), std::cos(kPi / 3) + 2.0);
   CHECK(j["cone_angles"]["a_p"].get<double>() == Approx(ap).epsilon(1e-14));
   CHECK(j["cone_angles"]["a_s"].get<double>() == Approx(kPi / 3 - ap).epsilon(1e-14));
