@@ -19,8 +19,9 @@ namespace sphtroch::python {
 std::string classification_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
-/// {"nodes": [...], "cusps": [...]} as in that JSON, from the node and cusp stages only (what
-/// `sphtroch nodes` computes; no root-count census).
+/// {"nodes": [...], "cusps": [...], "certified", "polyline_nodes", "root_nodes", "stopped"}: the
+/// lists as in that JSON, from the certified node census and the cusps (what `sphtroch nodes`
+/// computes), and its certificate.
 std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
