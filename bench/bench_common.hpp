@@ -7,9 +7,9 @@
 // timing in the same JSON.
 #pragma once
 
-#include "sphtroch/curve.hpp"
-#include "sphtroch/gear_train.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <benchmark/benchmark.h>
 

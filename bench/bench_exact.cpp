@@ -8,12 +8,12 @@
 //   f_classify    sphtroch::classify with the defaults (what `sphtroch classify` runs), p, q <= 5.
 #include "bench_common.hpp"
 
-#include "sphtroch/criteria.hpp"
-#include "sphtroch/arc_predicates.hpp"
+#include "sphtroch/map/criteria.hpp"
+#include "sphtroch/exact/arc_predicates.hpp"
 #include "sphtroch/classify.hpp"
-#include "sphtroch/polyline_census.hpp"
-#include "sphtroch/polyline_crossings.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/exact/polyline_census.hpp"
+#include "sphtroch/exact/self_crossings.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #ifdef SPHTROCH_BENCH_HAVE_S2
 #include "s2_crossings.hpp"

@@ -1,5 +1,5 @@
 // bench/bench_report.cpp — turns the JSON of sphtroch_bench (Google Benchmark, --benchmark_out)
-// into one CSV per study and the plots, using the library's SVG writer (sphtroch/svg.hpp).
+// into one CSV per study and the plots, using the library's SVG writer (sphtroch/draw/svg.hpp).
 //
 //   sphtroch_bench_report bench.json OUT_DIR
 //
@@ -10,7 +10,7 @@
 // f_classify.csv, context.csv, crossings.svg, accuracy.svg; columns in data/bench/README.md.
 // Exit status 1 when a benchmark reported an error (S2 disagreeing with the exact search is one),
 // or when a crossing search differs from the brute force; 2 on unreadable input.
-#include "sphtroch/svg.hpp"
+#include "sphtroch/draw/svg.hpp"
 
 #include <nlohmann/json.hpp>
 

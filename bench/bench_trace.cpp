@@ -12,9 +12,9 @@
 // t_i (computed once, outside the timing). The mpreal Scalar runs at 128 bits.
 #include "bench_common.hpp"
 
-#include "sphtroch/curve.hpp"
-#include "sphtroch/mpreal_support.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/mpreal_support.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <benchmark/benchmark.h>
 

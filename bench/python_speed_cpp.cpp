@@ -5,10 +5,10 @@
 //   python_speed_cpp crossings FILE.f64 CLOSED REPS   find_self_crossings of raw float64 x,y,z rows
 //
 // Built on demand next to the module: cmake --build build --target sphtroch_python_speed_cpp.
-#include "sphtroch/curve.hpp"
-#include "sphtroch/parse.hpp"
-#include "sphtroch/polyline_crossings.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/exact/self_crossings.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <algorithm>
 #include <chrono>

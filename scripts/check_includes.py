@@ -1,6 +1,10 @@
 #!/usr/bin/env python3
 """Checks the include graph of include/sphtroch (CI runs it; exit 1 on a violation).
 
+0. Folders are layers (docs/design.md, "Layers"): a header in folder F may include only headers
+   of the folders LAYERS[F] allows; the entry headers at the top may include anything. CGAL and
+   nlohmann-json are included only under exact/ (the folder says what a header costs).
+
 1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
    runs back up; each one found is printed with its path.
 2. No header uses another header's detail namespace: `detail::name` (or `xyz_detail::name`)
@@ -16,16 +20,51 @@ import sys
 
 # detail:: helpers every header may use (defined once, in the header named).
 SHARED_DETAIL = {
-    "to_text": "errors.hpp",
+    "to_text": "core/errors.hpp",
 }
 
+# Which folders a header of each folder may include (a folder always includes its own).
+LAYERS = {
+    "core": [],                                   # types, errors, the train, the curve, sampling
+    "io": ["core"],                               # numbers as text, parsing, files, formats
+    "draw": ["core", "io"],                       # SVG
+    "map": ["core", "io"],                        # closed-form boundaries, criteria, g(b), events
+    "census": ["core", "io", "map"],              # refinement, node assembly, the root census
+    "exact": ["core", "io", "draw", "map", "census"],  # CGAL: exact crossings, classify, scenes
+    "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
+}
+TOP_LEVEL_MAX = 8
+HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
+
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
-headers = sorted(f for f in os.listdir(root) if f.endswith(".hpp"))
+headers = sorted(os.path.relpath(os.path.join(d, f), root).replace(os.sep, "/")
+                 for d, _, files in os.walk(root) for f in files if f.endswith(".hpp"))
 text = {h: open(os.path.join(root, h), encoding="utf-8").read() for h in headers}
 include_re = re.compile(r'^\s*#\s*include\s+"sphtroch/([^"]+)"', re.M)
 graph = {h: include_re.findall(text[h]) for h in headers}
 
 problems = []
+
+
+def folder(h):
+    return h.split("/")[0] if "/" in h else ""
+
+
+# 0. Folder rules.
+top = [h for h in headers if not folder(h)]
+if len(top) > TOP_LEVEL_MAX:
+    problems.append(f"{len(top)} headers at the top of include/sphtroch (at most {TOP_LEVEL_MAX}): {', '.join(top)}")
+for h in headers:
+    f = folder(h)
+    if f and f not in LAYERS:
+        problems.append(f"{h}: folder {f}/ is not a layer of LAYERS")
+        continue
+    for d in graph[h]:
+        if f and folder(d) != f and folder(d) not in LAYERS[f]:
+            problems.append(f"{h}: includes sphtroch/{d}, but {f}/ may include only "
+                            + ", ".join(x + "/" for x in [f] + LAYERS[f]))
+    if f != "exact" and f and HEAVY.search(text[h]):
+        problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/")
 
 # 1. Cycles (depth-first search, reporting each back edge with the path).
 state = {}
@@ -85,5 +124,6 @@ for p in problems:
     print("check_includes:", p)
 if problems:
     sys.exit(1)
-print(f"check_includes: {len(headers)} headers, {sum(len(v) for v in graph.values())} arrows, no cycle, "
+print(f"check_includes: {len(headers)} headers ({len(top)} at the top, {len(LAYERS)} layer folders), "
+      f"{sum(len(v) for v in graph.values())} arrows, folder rules hold, no cycle, "
       "no detail namespace used across headers")

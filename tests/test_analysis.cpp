@@ -1,11 +1,11 @@
-// Tests of sphtroch/analysis.hpp (issue 5): laziness and memoization proved through the work
+// Tests of sphtroch/exact/analysis.hpp (issue 5): laziness and memoization proved through the work
 // counters, the stage graph, and the stages' results against the report's equations computed
 // HERE (Eq. 4/5 for points, Eq. 47a for the velocity and the screw axis, Eqs. 32-35 for the z
 // extremes, Table 1 for the node counts) — never against the code's own earlier output.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/analysis.hpp"
+#include "sphtroch/exact/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>

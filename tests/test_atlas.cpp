@@ -5,9 +5,9 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/atlas.hpp"
-#include "sphtroch/atlas_csv.hpp"
-#include "sphtroch/atlas_svg.hpp"
+#include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/atlas/atlas_csv.hpp"
+#include "sphtroch/atlas/atlas_svg.hpp"
 
 #include <algorithm>
 #include <cmath>

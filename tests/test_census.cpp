@@ -6,17 +6,17 @@
 // (a node is P(t1) = P(t2); a cusp has zero speed; the phase rotates the curve by -phase/n,
 // Eq. 8), or from the other census as an independent method — never from the output of the
 // code under test. Each hard case is named after what makes it hard.
-#include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 
 #include "catch2/catch.hpp"
 
-#include "sphtroch/criteria.hpp"
+#include "sphtroch/map/criteria.hpp"
 #include "sphtroch/classify.hpp"
-#include "sphtroch/curve.hpp"
-#include "sphtroch/node_assembly.hpp"
-#include "sphtroch/polyline_census.hpp"
-#include "sphtroch/refinement.hpp"
-#include "sphtroch/root_census.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/census/node_assembly.hpp"
+#include "sphtroch/exact/polyline_census.hpp"
+#include "sphtroch/census/refinement.hpp"
+#include "sphtroch/census/root_census.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -6,12 +6,12 @@
 // rotates the curve, Eq. 8).
 #include "catch2/catch.hpp"
 
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/certified_census.hpp"
-#include "sphtroch/node_sets.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/input_text.hpp"
-#include "sphtroch/root_census.hpp"
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/certified_census.hpp"
+#include "sphtroch/census/node_sets.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/train_text.hpp"
+#include "sphtroch/census/root_census.hpp"
 
 #include <string>
 #include <vector>
@@ -22,7 +22,7 @@ namespace {
 
 /// The train as the CLI reads it ("pi-ap-1e-9" is a reference to the mirror cone).
 GearTrain train_of(const std::string& n, const std::string& a2, const std::string& a3, double phase = 0.0) {
-  InputText text{a2, a3, n};
+  TrainText text{a2, a3, n};
   text.phase = number_text(phase);
   return text.train();
 }

@@ -1,12 +1,13 @@
-// Tests for sphtroch/criteria.hpp: the report's analytic criteria, nodes, cusps, z extremes and
+// Tests for sphtroch/map/criteria.hpp: the report's analytic criteria, nodes, cusps, z extremes and
 // mirror planes. Expected values come from the report's equations (Lin & Tsai 1990) or from
 // invariants of the curve evaluated by TracerCurve (points equal at both node parameters, zero
 // velocity at cusps, stationary z, reflected points on the curve) — never from criteria.hpp itself.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/criteria.hpp"
-#include "sphtroch/curve.hpp"
+#include "sphtroch/map/criteria.hpp"
+#include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/core/curve.hpp"
 
 #include <algorithm>
 #include <cmath>

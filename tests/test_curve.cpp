@@ -1,4 +1,4 @@
-// Tests for sphtroch/curve.hpp (double): the rotation chain against the report's expanded
+// Tests for sphtroch/core/curve.hpp (double): the rotation chain against the report's expanded
 // equations (Eqs. 4, 5, 9, 28), the phase rotation (Eq. 8), the special points for n = 1
 // (Eqs. 11, 12, 14, 15, 25) and n = 2 (Eqs. 32-35), and the velocity, acceleration and screw
 // axis (Eq. 47a) against finite differences and the pitch-cone geometry.
@@ -7,8 +7,8 @@
 // component by component, never taken from the library.
 #include "catch2/catch.hpp"
 
-#include "sphtroch/curve.hpp"
-#include "sphtroch/gear_train.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/gear_train.hpp"
 
 #include <Eigen/Geometry>
 

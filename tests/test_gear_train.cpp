@@ -1,12 +1,12 @@
-// Tests for sphtroch/gear_train.hpp and sphtroch/ratio.hpp: validation (the typed InvalidInput
+// Tests for sphtroch/core/gear_train.hpp and sphtroch/core/ratio.hpp: validation (the typed InvalidInput
 // names field, value and range) and the derived quantities a_p, a_s and the closing period, each
 // checked against its definition in the report (n = sin a_s / sin a_p, a2 = a_s + a_p, Eq. 2;
 // a_p = atan(sin a2 / (cos a2 + 2)) for n = 2, Sec. 5; a_p = a_s = a2/2 for n = 1, Sec. 4.2).
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/gear_train.hpp"
-#include "sphtroch/ratio.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/ratio.hpp"
 
 #include <cmath>
 #include <vector>

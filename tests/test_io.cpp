@@ -2,19 +2,19 @@
 // polyline_input.hpp (CSV by header or headerless, .npy, errors with line numbers),
 // output_file.hpp (staged files, devices and FIFOs written directly, all-or-nothing commits, every
 // system call and allocation failing in turn through the SPHTROCH_OUTPUT_FAULT_INJECTION seam),
-// parallel_blocks.hpp (order, errors) and trace_output.hpp (same bytes for any thread count).
+// parallel_for.hpp (order, errors) and trace_output.hpp (same bytes for any thread count).
 // Expected values come from the formats' definitions and from invariants, not from the code.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/curve.hpp"
-#include "sphtroch/npy.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/output_file.hpp"
-#include "sphtroch/parallel_blocks.hpp"
-#include "sphtroch/polyline_input.hpp"
-#include "sphtroch/trace_output.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/io/npy.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/output_file.hpp"
+#include "sphtroch/core/parallel_for.hpp"
+#include "sphtroch/io/polyline_input.hpp"
+#include "sphtroch/io/trace_output.hpp"
 
 #include <sys/stat.h>
 #include <sys/sysmacros.h>

@@ -3,7 +3,7 @@
 // Eigen's AngleAxis, an independent construction of the same rotations).
 #include "test_support.hpp"
 
-#include "sphtroch/parameters.hpp"
+#include "sphtroch/core/parameters.hpp"
 
 #include <Eigen/Geometry>
 

@@ -1,9 +1,9 @@
-// Tests for sphtroch/parse.hpp: every accepted form of angles, ratios and tracer twists, and
+// Tests for sphtroch/io/parse.hpp: every accepted form of angles, ratios and tracer twists, and
 // every rejection, each with an InvalidInput that names the field it was asked to parse.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/parse.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <cmath>
 #include <limits>

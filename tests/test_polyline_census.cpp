@@ -4,8 +4,8 @@
 // constructions whose answer is known by design, and from the independent root census.
 #include "test_support.hpp"
 
-#include "sphtroch/polyline_census.hpp"
-#include "sphtroch/root_census.hpp"
+#include "sphtroch/exact/polyline_census.hpp"
+#include "sphtroch/census/root_census.hpp"
 
 #include <cmath>
 #include <cstddef>

@@ -3,7 +3,7 @@
 // written out here (Eq. 24 for n = 1), and a closed form for n = 3 (below); never the code's output.
 #include "test_support.hpp"
 
-#include "sphtroch/root_classification.hpp"
+#include "sphtroch/census/root_classification.hpp"
 
 #include <cmath>
 #include <limits>

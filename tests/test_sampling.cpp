@@ -1,10 +1,10 @@
-// Tests for sphtroch/sampling.hpp: sample counts, the closed trajectory over one period
+// Tests for sphtroch/core/sampling.hpp: sample counts, the closed trajectory over one period
 // (2 pi q, no duplicate endpoint), the open trajectory over K carrier turns (both ends), the
 // velocity columns, and the bounds on sample counts and turns.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <cmath>
 #include <limits>

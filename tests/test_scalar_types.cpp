@@ -15,9 +15,9 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport
-#include "sphtroch/curve.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <cmath>
 #include <thread>

@@ -1,11 +1,11 @@
-// Tests of sphtroch/scene.hpp: a scene's schema read into trains (every key, defaults, order of
+// Tests of sphtroch/exact/scene.hpp: a scene's schema read into trains (every key, defaults, order of
 // effects, output paths), its errors as one line naming file, field, value and valid range, each
 // effect's output against what the stage gives when computed separately here, and the
 // explanation against the Analysis's own record of the stages it ran.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/scene.hpp"
+#include "sphtroch/exact/scene.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "catch2/catch.hpp"
-#include "sphtroch/errors.hpp"
+#include "sphtroch/core/errors.hpp"
 
 #include <cstdint>
 #include <fstream>

@@ -1,9 +1,9 @@
-// Tests for sphtroch/svg.hpp (SvgWriter, SvgPath, numbers, escaping) and sphtroch/svg_plot.hpp
+// Tests for sphtroch/draw/svg.hpp (SvgWriter, SvgPath, numbers, escaping) and sphtroch/draw/svg_plot.hpp
 // (projection, front/back split at the silhouette, markers, caption, well-formed output).
 #include "catch2/catch.hpp"
 
-#include "sphtroch/svg.hpp"
-#include "sphtroch/svg_plot.hpp"
+#include "sphtroch/draw/svg.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
 
 #include <algorithm>
 #include <cctype>

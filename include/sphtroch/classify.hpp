@@ -13,8 +13,8 @@
 // and the implementation file may share one program without an ODR clash.
 #pragma once
 
-#include "sphtroch/classification.hpp"
+#include "sphtroch/exact/classification.hpp"
 
 #if !defined(SPHTROCH_SEPARATE_EXACT)
-#include "sphtroch/analysis.hpp"
+#include "sphtroch/exact/analysis.hpp"
 #endif

@@ -8,8 +8,8 @@
 // Harmless without SPHTROCH_SEPARATE_EXACT (the instantiation then merges with the implicit ones).
 #pragma once
 
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/classification.hpp"
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/classification.hpp"
 
 namespace sphtroch {
 template Classification classify<ClassifySettings>(const GearTrain&, const ClassifySettings&);

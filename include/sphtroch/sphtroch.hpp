@@ -1,65 +1,81 @@
-// sphtroch/sphtroch.hpp — umbrella header: what the linked CMake components provide.
-//   sphtroch::sphtroch (Eigen only): curves, sampling, parsing, the root census, the report's
-//     criteria, the atlas, SVG, and the I/O headers (CSV/.npy readers and writers; POSIX).
-//   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT): adds the exact
-//     crossing search, the polyline census, classify(), the lazy Analysis, the reports
-//     (text/JSON) and scenes.
-//   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (mpreal_support.hpp).
+// sphtroch/sphtroch.hpp — umbrella header: every header the linked CMake components provide, by layer.
+//   sphtroch::sphtroch (Eigen only): core/ (the train, the curve, sampling), io/ (numbers, parsing,
+//     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
+//     criteria, the root function, the boundary events), census/ (the root census), atlas/.
+//   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT): adds exact/: the
+//     exact crossing search, the polyline census, classify(), the lazy Analysis, the classification
+//     output (text/JSON) and scenes.
+//   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (core/mpreal_support.hpp).
+// Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
+// classify()'s declaration and its result types (exact/classification.hpp) and parses no CGAL
+// header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
 #pragma once
 
 #if defined(SPHTROCH_HAVE_MPFR)
-#include "sphtroch/mpreal_support.hpp"  // first: Eigen's MPRealSupport must precede other Eigen use
+#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport must precede other Eigen use
 #endif
 
-#include "sphtroch/criteria.hpp"
-#include "sphtroch/arc_crossing_point.hpp"
-#include "sphtroch/atlas.hpp"
-#include "sphtroch/atlas_csv.hpp"
-#include "sphtroch/atlas_report.hpp"
-#include "sphtroch/atlas_svg.hpp"
-#include "sphtroch/boundaries.hpp"
-#include "sphtroch/boundary_report.hpp"
-#include "sphtroch/boundary_set.hpp"
-#include "sphtroch/boundary_snap.hpp"
-#include "sphtroch/half_turn.hpp"
-#include "sphtroch/tangency_refinement.hpp"
-#include "sphtroch/atlas_boundary_check.hpp"
-#include "sphtroch/cost_bounds.hpp"
-#include "sphtroch/csv_io.hpp"
-#include "sphtroch/curve.hpp"
-#include "sphtroch/errors.hpp"
-#include "sphtroch/gear_train.hpp"
-#include "sphtroch/input_file.hpp"
-#include "sphtroch/input_text.hpp"
-#include "sphtroch/node.hpp"
-#include "sphtroch/node_assembly.hpp"
-#include "sphtroch/node_sets.hpp"
-#include "sphtroch/npy.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/output_file.hpp"
-#include "sphtroch/parameters.hpp"
-#include "sphtroch/parse.hpp"
-#include "sphtroch/pitch_cone.hpp"
-#include "sphtroch/polyline_input.hpp"
-#include "sphtroch/ratio.hpp"
-#include "sphtroch/refinement.hpp"
-#include "sphtroch/root_census.hpp"
-#include "sphtroch/sampling.hpp"
-#include "sphtroch/svg.hpp"
-#include "sphtroch/svg_plot.hpp"
-#include "sphtroch/trace_output.hpp"
-#include "sphtroch/types.hpp"
 #include "sphtroch/version.hpp"
-#include "sphtroch/work.hpp"
+
+#include "sphtroch/core/arc_crossing_point.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/node.hpp"
+#include "sphtroch/core/parallel_for.hpp"
+#include "sphtroch/core/parameters.hpp"
+#include "sphtroch/core/pitch_cone.hpp"
+#include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/reading.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/core/types.hpp"
+#include "sphtroch/core/work.hpp"
+
+#include "sphtroch/io/input_file.hpp"
+#include "sphtroch/io/node_csv.hpp"
+#include "sphtroch/io/npy.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/output_file.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/polyline_input.hpp"
+#include "sphtroch/io/trace_output.hpp"
+#include "sphtroch/io/train_text.hpp"
+
+#include "sphtroch/draw/svg.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
+
+#include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/map/boundary_events_output.hpp"
+#include "sphtroch/map/boundary_snap.hpp"
+#include "sphtroch/map/closed_form_boundaries.hpp"
+#include "sphtroch/map/criteria.hpp"
+#include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/map/root_function.hpp"
+
+#include "sphtroch/census/node_assembly.hpp"
+#include "sphtroch/census/node_sets.hpp"
+#include "sphtroch/census/polyline_census_result.hpp"
+#include "sphtroch/census/refinement.hpp"
+#include "sphtroch/census/root_census.hpp"
+#include "sphtroch/census/root_classification.hpp"
+#include "sphtroch/census/tangency_refinement.hpp"
+
+#include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/atlas/atlas_boundary_check.hpp"
+#include "sphtroch/atlas/atlas_csv.hpp"
+#include "sphtroch/atlas/atlas_summary.hpp"
+#include "sphtroch/atlas/atlas_svg.hpp"
 
 #if defined(SPHTROCH_HAVE_EXACT)
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/arc_predicates.hpp"
-#include "sphtroch/certified_census.hpp"
-#include "sphtroch/classification.hpp"
 #include "sphtroch/classify.hpp"
-#include "sphtroch/polyline_census.hpp"
-#include "sphtroch/polyline_crossings.hpp"
-#include "sphtroch/report.hpp"
-#include "sphtroch/scene.hpp"
+#if !defined(SPHTROCH_SEPARATE_EXACT)
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/arc_predicates.hpp"
+#include "sphtroch/exact/certified_census.hpp"
+#include "sphtroch/exact/classification_output.hpp"
+#include "sphtroch/exact/polyline_census.hpp"
+#include "sphtroch/exact/scene.hpp"
+#include "sphtroch/exact/self_crossings.hpp"
+#endif
 #endif

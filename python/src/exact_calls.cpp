@@ -2,10 +2,10 @@
 // own (the other is the CLI's analysis_commands.cpp, compiled in for its printers).
 #include "exact_calls.hpp"
 
-#include "sphtroch/report.hpp"
+#include "sphtroch/exact/classification_output.hpp"
 
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/polyline_crossings.hpp"
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/self_crossings.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -23,13 +23,13 @@ AnalysisSettings settings_of(bool literal, std::size_t census_samples) {
 
 }  // namespace
 
-std::string classification_json_text(const InputText& text, const GearTrain& train, bool literal,
+std::string classification_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
   return classification_json(text, a.classification()).dump();
 }
 
-std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
+std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch nodes` runs it
   // The printer of `classify --json` on a classification holding only these two stages: the

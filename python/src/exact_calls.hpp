@@ -3,9 +3,9 @@
 // Python objects here, so every call may run with the GIL released. Errors: InvalidInput.
 #pragma once
 
-#include "sphtroch/input_text.hpp"  // InputText: the angles as text, as `classify --json` reports them
+#include "sphtroch/io/train_text.hpp"  // TrainText: the angles as text, as `classify --json` reports them
 
-#include "sphtroch/gear_train.hpp"
+#include "sphtroch/core/gear_train.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,15 +14,15 @@
 
 namespace sphtroch::python {
 
-/// `sphtroch classify --json` of `train` (report.hpp, the printer the CLI uses), as JSON
+/// `sphtroch classify --json` of `train` (classification_output.hpp, the printer the CLI uses), as JSON
 /// text. literal: analyse the doubles as given; census_samples: 0 = the default count.
-std::string classification_json_text(const InputText& text, const GearTrain& train, bool literal,
+std::string classification_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
 /// {"nodes": [...], "cusps": [...], "certified", "polyline_nodes", "root_nodes", "stopped"}: the
 /// lists as in that JSON, from the certified node census and the cusps (what `sphtroch nodes`
 /// computes), and its certificate.
-std::string nodes_and_cusps_json_text(const InputText& text, const GearTrain& train, bool literal,
+std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.

@@ -14,13 +14,13 @@
 //    float) so that classify() reports a2_text/a3_text as the CLI does and pickling is exact.
 #include "exact_calls.hpp"
 
-#include "sphtroch/atlas.hpp"
-#include "sphtroch/cost_bounds.hpp"
-#include "sphtroch/curve.hpp"
-#include "sphtroch/parse.hpp"
-#include "sphtroch/polyline_census_result.hpp"
-#include "sphtroch/root_classification.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/census/polyline_census_result.hpp"
+#include "sphtroch/census/root_classification.hpp"
+#include "sphtroch/core/sampling.hpp"
 #include "sphtroch/version.hpp"
 
 #include <pybind11/numpy.h>
@@ -145,10 +145,10 @@ Ratio ratio_arg(py::handle v) {
   return parse_ratio(detail::to_text(real_arg(v, "n", kRatioForms)), "n");
 }
 
-/// A gear train and the text of its inputs (InputText: a2, a3, n, phase, as classify --json reports them).
+/// A gear train and the text of its inputs (TrainText: a2, a3, n, phase, as classify --json reports them).
 struct Train {
   GearTrain train;
-  InputText text;
+  TrainText text;
 };
 
 Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {

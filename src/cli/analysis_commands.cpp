@@ -1,12 +1,12 @@
 // sphtroch classify | nodes | plot | crossings — the node census and its reports. One of the two
 // CLI translation units that include CGAL (through analysis.hpp; the other is scene_command.cpp).
-// Every format is the library's (sphtroch/report.hpp, csv_io.hpp), shared with `sphtroch scene`.
+// Every format is the library's (sphtroch/exact/classification_output.hpp, node_csv.hpp), shared with `sphtroch scene`.
 #include "cli_common.hpp"
 
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/csv_io.hpp"
-#include "sphtroch/polyline_input.hpp"
-#include "sphtroch/report.hpp"
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/io/node_csv.hpp"
+#include "sphtroch/io/polyline_input.hpp"
+#include "sphtroch/exact/classification_output.hpp"
 
 #include <nlohmann/json.hpp>
 

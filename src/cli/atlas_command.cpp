@@ -3,13 +3,13 @@
 // Eigen only: this translation unit must not include CGAL.
 #include "cli_common.hpp"
 
-#include "sphtroch/atlas.hpp"
-#include "sphtroch/atlas_boundary_check.hpp"
-#include "sphtroch/atlas_csv.hpp"
-#include "sphtroch/atlas_report.hpp"
-#include "sphtroch/atlas_svg.hpp"
-#include "sphtroch/input_file.hpp"
-#include "sphtroch/parse.hpp"
+#include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/atlas/atlas_boundary_check.hpp"
+#include "sphtroch/atlas/atlas_csv.hpp"
+#include "sphtroch/atlas/atlas_summary.hpp"
+#include "sphtroch/atlas/atlas_svg.hpp"
+#include "sphtroch/io/input_file.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <unistd.h>
 

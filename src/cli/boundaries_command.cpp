@@ -1,11 +1,11 @@
-// sphtroch boundaries — the boundary set of the (a2, a3) map (boundary_set.hpp): the events at
+// sphtroch boundaries — the boundary set of the (a2, a3) map (boundary_events.hpp): the events at
 // one a2 (text or JSON), or the boundary curves over an a2 range as CSV. Parsing and printing
-// only; the formats are boundary_report.hpp's.
+// only; the formats are boundary_events_output.hpp's.
 #include "cli_common.hpp"
 
-#include "sphtroch/boundary_report.hpp"
-#include "sphtroch/boundary_set.hpp"
-#include "sphtroch/parse.hpp"
+#include "sphtroch/map/boundary_events_output.hpp"
+#include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/io/parse.hpp"
 
 namespace sphtroch::cli {
 

@@ -1,7 +1,7 @@
 #include "cli_common.hpp"
 
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/parse.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <algorithm>
 #include <thread>

@@ -1,14 +1,14 @@
 // src/cli/cli_common.hpp — plumbing shared by the sphtroch commands: reading gear-train
 // options, the one-line error contract (stderr, exit 2), and outputs through the library's one
-// writer (sphtroch/output_file.hpp: stdout, devices and FIFOs directly; files through a
+// writer (sphtroch/io/output_file.hpp: stdout, devices and FIFOs directly; files through a
 // temporary in the same directory, renamed when complete, so never left partial).
 #pragma once
 
-#include "sphtroch/gear_train.hpp"
-#include "sphtroch/input_text.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/output_file.hpp"
-#include "sphtroch/sampling.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/io/train_text.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/output_file.hpp"
+#include "sphtroch/core/sampling.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -53,10 +53,10 @@ struct UsageError {
   std::string message;  // one line, already naming the option, the value and the valid range
 };
 
-/// The gear-train options every analysis command shares: the library's InputText (values kept
+/// The gear-train options every analysis command shares: the library's TrainText (values kept
 /// as text, parsed by train() so that errors name the option exactly as typed; InvalidInput's
 /// field is the option name without "--").
-struct TrainOptions : InputText {
+struct TrainOptions : TrainText {
   void add_to(CLI::App& command);
 };
 

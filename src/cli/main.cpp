@@ -7,8 +7,8 @@
 // internal error (a bug).
 #include "cli_common.hpp"
 
-#include "sphtroch/errors.hpp"
-#include "sphtroch/output_file.hpp"
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/io/output_file.hpp"
 #include "sphtroch/version.hpp"
 
 #include <CLI/CLI.hpp>

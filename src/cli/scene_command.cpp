@@ -1,7 +1,7 @@
 // sphtroch scene FILE [--explain] [--json] [--output-dir DIR] — runs a scene: a list of gear
 // trains and, for each, the effects wanted, computing only the stages those effects need
 // (sphtroch::Analysis). The scene's schema, outputs and explanation are the library's
-// (sphtroch/scene.hpp); this file adds the file system. The second CLI translation unit that
+// (sphtroch/exact/scene.hpp); this file adds the file system. The second CLI translation unit that
 // includes CGAL.
 //
 // Order of work (so that a failure anywhere leaves no output at all):
@@ -17,9 +17,9 @@
 // value and the valid range, exit status 2.
 #include "cli_common.hpp"
 
-#include "sphtroch/analysis.hpp"
-#include "sphtroch/input_file.hpp"
-#include "sphtroch/scene.hpp"
+#include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/io/input_file.hpp"
+#include "sphtroch/exact/scene.hpp"
 
 #include <nlohmann/json.hpp>
 

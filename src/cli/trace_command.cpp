@@ -1,12 +1,12 @@
 // sphtroch trace — the trajectory as CSV (t,x,y,z[,vx,vy,vz]) or NumPy .npy, streamed in blocks
-// (sphtroch/trace_output.hpp): memory does not grow with --samples.
+// (sphtroch/io/trace_output.hpp): memory does not grow with --samples.
 #include "cli_common.hpp"
 
-#include "sphtroch/curve.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/parse.hpp"
-#include "sphtroch/sampling.hpp"
-#include "sphtroch/trace_output.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/io/trace_output.hpp"
 
 #include <algorithm>
 #include <cmath>

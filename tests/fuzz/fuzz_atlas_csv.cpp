@@ -7,8 +7,8 @@
 // Expected: sphtroch::InvalidInput. Anything else thrown crashes; a broken invariant traps.
 #include "fuzz_common.hpp"
 
-#include "sphtroch/atlas_csv.hpp"
-#include "sphtroch/errors.hpp"
+#include "sphtroch/atlas/atlas_csv.hpp"
+#include "sphtroch/core/errors.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -8,9 +8,9 @@
 // crashes; a broken invariant traps (FUZZ_CHECK).
 #include "fuzz_common.hpp"
 
-#include "sphtroch/errors.hpp"
-#include "sphtroch/number_text.hpp"
-#include "sphtroch/parse.hpp"
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <charconv>
 #include <cmath>

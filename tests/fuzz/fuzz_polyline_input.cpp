@@ -10,9 +10,9 @@
 // Expected: sphtroch::InvalidInput. Anything else thrown crashes; a broken invariant traps.
 #include "fuzz_common.hpp"
 
-#include "sphtroch/errors.hpp"
-#include "sphtroch/npy.hpp"
-#include "sphtroch/polyline_input.hpp"
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/io/npy.hpp"
+#include "sphtroch/io/polyline_input.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>

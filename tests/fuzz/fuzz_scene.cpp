@@ -10,7 +10,7 @@
 
 #include "cli_common.hpp"
 
-#include "sphtroch/errors.hpp"
+#include "sphtroch/core/errors.hpp"
 
 #include <cstddef>
 #include <cstdint>

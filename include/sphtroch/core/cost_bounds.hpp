@@ -1,0 +1,52 @@
+// sphtroch/core/cost_bounds.hpp — what a node census may cost, decided before any work.
+//
+//   sphtroch::check_census_cost(Ratio(301, 100));   // fine: ~1.2e5 node points, ~6 s
+//   sphtroch::check_census_cost(Ratio(1000000));    // throws InvalidInput("n", ...): ~1e12 nodes
+//
+// A closed trochoid of ratio p/q has about |p| (|p| + q) node points (13/5: 221 = 13 * 17;
+// 7/3: 63; 101/40: 14140 = 101 * 140), and the censuses' cost grows with the square of that
+// (measured on this project's 2-core machine: 101/40 0.44 s and 17 MB for `classify`, 301/100
+// 6.1 s and 100 MB; an atlas cell 26 ms and 2 s). Inputs are legal for any p, q <= 1e6, so a
+// census of a ratio beyond kMaxCensusNodes is refused up front (exit 2 in the tool) instead of
+// running for hours or exhausting memory; `trace` has no such bound (it costs N samples).
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/ratio.hpp"
+
+#include <cstddef>
+#include <string>
+
+namespace sphtroch {
+
+/// |p| (|p| + q): the order of the node count of the closed curve of ratio p/q.
+inline double estimated_nodes(const Ratio& n) {
+  const double p = static_cast<double>(n.abs_p()), q = static_cast<double>(n.q());
+  return p * (p + q);
+}
+
+/// The largest estimated_nodes a census (classify, nodes, plot, scene effects, atlas cells)
+/// accepts: 301/100 (1.2e5, ~6 s) passes, 1001/400 (1.4e6, hours) does not.
+constexpr double kMaxCensusNodes = 2e5;
+
+/// Defaults of the tool's (and the Python module's) limits on a polyline crossing search
+/// (self_crossings.hpp, CrossingSearchOptions::max_contacts, max_work): crossings +
+/// touchings (the rows --pairs may write, ~20 bytes each), and work (candidate edge pairs +
+/// overlapping box pairs), ~100-200 ns per unit on random vertices here (5e7: ~5-10 s; memory O(N)
+/// when only counting).
+constexpr std::size_t kDefaultMaxCrossings = 10'000'000;
+constexpr std::size_t kDefaultMaxCrossingWork = 50'000'000;
+/// The largest value either limit accepts.
+constexpr std::size_t kMaxCrossingLimit = 1'000'000'000'000'000;
+
+/// Throws InvalidInput(field, n, ...) when a census of this ratio would exceed kMaxCensusNodes.
+inline void check_census_cost(const Ratio& n, const std::string& field = "n") {
+  const double e = estimated_nodes(n);
+  if (e > kMaxCensusNodes)
+    throw InvalidInput(field, n.str(),
+                       "its curve has about |p|(|p|+q) = " + detail::to_text(e) +
+                           " node points, beyond what a node census does in bounded time and memory",
+                       "|p|(|p|+q) <= 200000 for a census (e.g. 301/100); `sphtroch trace` has no such bound");
+}
+
+}  // namespace sphtroch

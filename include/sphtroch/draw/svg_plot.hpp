@@ -1,0 +1,599 @@
+// sphtroch/draw/svg_plot.hpp — a trajectory on the unit sphere as a standalone SVG picture:
+// orthographic view, front half solid and back half dashed, the sphere outline, equator and
+// prime meridian, the X/Y/Z axes, nodes and cusps marked and labelled, and a caption
+// (the report's Figs. 3-5). Eigen only.
+//
+//   using namespace sphtroch;
+//   const double pi = Constants<double>::pi();
+//   GearTrain train(pi / 2, pi / 2, Ratio(1));                   // report Fig. 3
+//   TracerCurve<double> curve(train);
+//   Trajectory<double> tr = sample_period(curve, 2000);
+//   RootCensus census = root_census(train);                      // or any census
+//   PlotOptions opt;
+//   opt.caption = "a2 = pi/2, a3 = pi/2, n = 1 - 1 node (crossing), 0 cusps";
+//   std::string svg = render_sphere_svg(tr, census.nodes, {}, opt);  // nodes, cusps; write it to a .svg file
+//
+// The view: the viewer looks at the origin from the direction
+//   view = (cos el cos az, cos el sin az, sin el)
+// (default: from (1, 0.6, 0.5) normalised), with the screen's up the projection of +Z. A point P
+// of the sphere is drawn at centre + radius * (P.right, -P.up) (SVG's y grows downwards); it is
+// on the front half when P.view >= -kSilhouetteTolerance.
+//
+// Contracts:
+//  1. project(view) is the picture centre; every point with P.view = 0 lands on the outline
+//     circle (distance radius from the centre, up to rounding).
+//  2. Edges of the trajectory are great-circle arcs. An arc whose ends lie on different halves
+//     is split at the exact point where its great circle crosses the silhouette plane
+//     (P.view = 0), so front and back pieces meet on the outline. Arcs longer than
+//     PlotOptions::max_arc_step are subdivided along their great circle before projection.
+//  3. The curve is drawn as one <path> for the front half and one for the back half, whatever
+//     the sample count; grid lines likewise. Numbers carry PlotOptions::decimals digits, and
+//     each projected run is simplified (Douglas-Peucker, PlotOptions::simplify_px) so that
+//     the file size follows the picture, not the sample count (2e3 or 2e6 samples of a
+//     n = 13/5 curve: about 22 kB either way; 2e6 samples render in 0.7 s).
+//  4. Node i (0-based) is drawn as a ring at its projected position and labelled "N<i+1>";
+//     cusp j as a triangle labelled "C<j+1>"; markers on the back half are faded. Ring colour
+//     tells the node kind (crossing / tangency); a legend explains the marks.
+//  5. The caption is escaped (svg.hpp), so any text is safe; the document is valid SVG 1.1.
+//  REQUIRES: trajectory points, node and cusp positions finite (assertion); options valid
+//  (InvalidInput naming the field otherwise).
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/node.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/svg.hpp"
+#include "sphtroch/core/types.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sphtroch {
+
+/// A point whose P.view lies within this of 0 counts as on the front half (and on the
+/// silhouette): it stops the rounding noise of a curve lying in the silhouette plane (e.g. a
+/// great circle seen face-on) from being chopped into many pieces. 64 ulp of 1, far below a
+/// pixel (1e-12 of the radius).
+constexpr double kSilhouetteTolerance = 64 * 2.220446049250313e-16;
+
+namespace detail {
+/// Axes are drawn from the centre to this multiple of the radius.
+constexpr double kAxisReach = 1.22;
+}  // namespace detail
+
+/// Samples of the trajectory drawn by `sphtroch plot` (and the analysis object's plot stage):
+/// 720 per unit of (q + |p|), clamped to [1440, 400000] (the picture needs ~0.25 degree steps).
+inline std::size_t plot_sample_count(const GearTrain& train) {
+  const auto& r = train.ratio();
+  return std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
+}
+
+struct PlotOptions {
+  /// Direction of the viewer, radians: azimuth about +Z from +X towards +Y, elevation above
+  /// the XY plane. Default: looking from (1, 0.6, 0.5) normalised. Must be finite; elevation
+  /// in [-pi/2, pi/2].
+  double azimuth = std::atan2(0.6, 1.0);
+  double elevation = std::atan2(0.5, std::sqrt(1.36));
+  /// Width and height of the picture in px, caption included. Valid: [64, 8192].
+  double size_px = 520;
+  /// One line under the picture (empty: none). Any text; it is XML-escaped.
+  std::string caption;
+  bool draw_axes = true;    // X, Y, Z from the centre, with labels
+  bool draw_grid = true;    // equator and prime meridian, faint
+  bool draw_legend = true;  // what the marks mean (only the kinds present)
+  /// Digits after the decimal point of every coordinate. Valid: [0, 6].
+  int decimals = 2;
+  /// Longest great-circle arc drawn as one straight segment, radians. Valid: (0, 0.5].
+  double max_arc_step = 0.5 * Constants<double>::pi() / 180.0;
+  /// Projected polylines are simplified (Douglas-Peucker) so that the drawn line stays within
+  /// this many px of every projected sample: dense samples cost no file size. 0 keeps every
+  /// vertex that differs at the printed precision. Valid: [0, 5].
+  double simplify_px = 0.15;
+};
+
+/// A projected point: picture coordinates in px and the depth P.view (>= 0: front half).
+struct ScreenPoint {
+  double x = 0.0;
+  double y = 0.0;
+  double depth = 0.0;
+};
+
+/// The orthographic camera and where the sphere sits on the page.
+struct SphereView {
+  Vector3d view = Vector3d::UnitX();   // unit vector towards the viewer
+  Vector3d right = Vector3d::UnitY();  // screen +x
+  Vector3d up = Vector3d::UnitZ();     // screen up (SVG -y)
+  double cx = 0.0, cy = 0.0;           // picture coordinates of the sphere centre
+  double radius = 1.0;                 // px
+
+  /// Camera from azimuth/elevation (see the header comment), centred at (cx, cy).
+  static SphereView looking_from(double azimuth, double elevation, double cx, double cy, double radius);
+  ScreenPoint project(const Vector3d& p) const;
+  bool is_front(const Vector3d& p) const { return p.dot(view) >= -kSilhouetteTolerance; }
+};
+
+/// Sizes derived from the options: the camera, marker and font sizes, the caption line.
+struct PlotLayout {
+  SphereView sphere;
+  double width = 0.0, height = 0.0;
+  double font_px = 12.0;        // labels; the caption uses 1.1x
+  double marker_radius = 5.0;   // node ring radius, cusp triangle half-size
+  double caption_y = 0.0;       // baseline of the caption
+};
+
+/// REQUIRES: valid options (throws InvalidInput naming the field otherwise).
+inline PlotLayout plot_layout(const PlotOptions& options);
+
+/// Where the label of a marker at `at` goes: pushed away from the sphere centre, past the mark.
+/// `anchor_end` is true when the text should end there (labels left of the centre).
+struct LabelPlacement {
+  double x = 0.0, y = 0.0;
+  bool anchor_end = false;
+};
+inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at);
+
+/// A spherical polyline cut into maximal runs on each half of the sphere.
+struct HemisphereSplit {
+  std::vector<std::vector<Vector3d>> front;  // each run: consecutive points, >= 2 of them
+  std::vector<std::vector<Vector3d>> back;
+  std::size_t silhouette_crossings = 0;      // edges (after subdivision) that change half
+};
+
+/// Cuts the polyline `points` (closed: an edge joins the last point to the first) into runs
+/// on the front (P.view >= -kSilhouetteTolerance) and back halves. Edges are great-circle arcs
+/// shorter than pi; arcs longer than max_step are subdivided along the great circle. A changing
+/// edge is split at the point of its arc on the silhouette plane, normalised onto the sphere
+/// and shared by both runs. For a closed polyline the run through the first point is not cut
+/// there. REQUIRES: unit, finite points; view a unit vector; max_step > 0.
+inline HemisphereSplit split_by_silhouette(const std::vector<Vector3d>& points, bool closed, const Vector3d& view,
+                                    double max_step);
+
+/// The whole picture as a standalone SVG 1.1 document (see the header comment).
+inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
+                              const std::vector<Cusp>& cusps, const PlotOptions& options);
+
+// ---------------------------------------------------------------------------------------------
+// Implementation details follow.
+// ---------------------------------------------------------------------------------------------
+
+inline SphereView SphereView::looking_from(double azimuth, double elevation, double cx, double cy, double radius) {
+  SphereView v;
+  const double ca = std::cos(azimuth), sa = std::sin(azimuth);
+  const double ce = std::cos(elevation), se = std::sin(elevation);
+  v.view = Vector3d(ce * ca, ce * sa, se);
+  v.right = Vector3d(-sa, ca, 0.0);          // Z x view, normalised (horizontal)
+  v.up = Vector3d(-se * ca, -se * sa, ce);   // view x right
+  v.cx = cx;
+  v.cy = cy;
+  v.radius = radius;
+  return v;
+}
+
+inline ScreenPoint SphereView::project(const Vector3d& p) const {
+  return ScreenPoint{cx + radius * p.dot(right), cy - radius * p.dot(up), p.dot(view)};
+}
+
+inline PlotLayout plot_layout(const PlotOptions& o) {
+  const double pi = Constants<double>::pi();
+  if (!std::isfinite(o.azimuth))
+    throw InvalidInput("azimuth", detail::to_text(o.azimuth), "not a finite number", "any finite angle in radians");
+  if (!(std::isfinite(o.elevation) && std::fabs(o.elevation) <= pi / 2))
+    throw InvalidInput("elevation", detail::to_text(o.elevation), "outside the valid range", "[-pi/2, pi/2] radians");
+  if (!(o.size_px >= 64 && o.size_px <= 8192))
+    throw InvalidInput("size", detail::to_text(o.size_px), "outside the valid range", "[64, 8192] px");
+  if (!(o.decimals >= 0 && o.decimals <= 6))
+    throw InvalidInput("decimals", std::to_string(o.decimals), "outside the valid range", "integer 0 .. 6");
+  if (!(o.simplify_px >= 0 && o.simplify_px <= 5))
+    throw InvalidInput("simplify_px", detail::to_text(o.simplify_px), "outside the valid range", "[0, 5] px");
+  if (!(o.max_arc_step > 0 && o.max_arc_step <= 0.5))
+    throw InvalidInput("max_arc_step", detail::to_text(o.max_arc_step), "outside the valid range", "(0, 0.5] radians");
+
+  PlotLayout l;
+  l.width = l.height = o.size_px;
+  l.font_px = std::max(9.0, o.size_px / 42.0);
+  l.marker_radius = std::max(3.5, o.size_px / 95.0);
+  const double caption_band = o.caption.empty() ? 0.0 : 2.2 * l.font_px;
+  const double legend_band = o.draw_legend ? 1.7 * l.font_px : 0.3 * l.font_px;
+  const double avail_h = l.height - caption_band - legend_band;
+  // Extents around the centre in units of the radius: the sphere (plus the marker rings on
+  // its rim), and the axes' tips at kAxisReach R with their labels about 0.2 R further out.
+  const SphereView unit = SphereView::looking_from(o.azimuth, o.elevation, 0.0, 0.0, 1.0);
+  double left = 1.05, right = 1.05, top = 1.05, bottom = 1.05;
+  if (o.draw_axes) {
+    for (int k = 0; k < 3; ++k) {
+      const ScreenPoint tip = unit.project(detail::kAxisReach * Vector3d::Unit(k));
+      left = std::max(left, -tip.x + 0.22);
+      right = std::max(right, tip.x + 0.22);
+      top = std::max(top, -tip.y + 0.22);
+      bottom = std::max(bottom, tip.y + 0.22);
+    }
+  }
+  const double radius = std::min(l.width / (left + right), avail_h / (top + bottom));
+  const double cx = left * radius + 0.5 * (l.width - (left + right) * radius);
+  const double cy = legend_band + top * radius + 0.5 * (avail_h - (top + bottom) * radius);
+  l.sphere = SphereView::looking_from(o.azimuth, o.elevation, cx, cy, radius);
+  l.caption_y = l.height - 0.75 * l.font_px;
+  return l;
+}
+
+inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at) {
+  // Outward from the centre, bent towards the upper right so that a mark on an axis (a pole,
+  // the centre) does not put its label on the axis line.
+  double dx = at.x - layout.sphere.cx, dy = at.y - layout.sphere.cy;
+  const double len = std::hypot(dx, dy);
+  if (len > 1e-9 * layout.sphere.radius) {
+    dx /= len;
+    dy /= len;
+  } else {
+    dx = dy = 0.0;
+  }
+  dx += std::sqrt(0.5);
+  dy -= std::sqrt(0.5);
+  const double len2 = std::hypot(dx, dy);
+  if (len2 > 1e-3) {
+    dx /= len2;
+    dy /= len2;
+  } else {  // straight down-left of the centre: go right
+    dx = 1.0;
+    dy = 0.0;
+  }
+  const double gap = layout.marker_radius + 0.3 * layout.font_px;
+  LabelPlacement p;
+  p.x = at.x + dx * gap;
+  p.y = at.y + dy * gap + 0.35 * layout.font_px * (1.0 + dy);  // baseline: glyphs clear of the mark
+  p.anchor_end = dx < -0.3;
+  return p;
+}
+
+namespace detail {
+
+/// Points strictly inside the great-circle arc a->b splitting it into pieces of at most
+/// max_step (normalised linear interpolation in angle; exact points of the arc).
+inline void arc_interior(const Vector3d& a, const Vector3d& b, double max_step, std::vector<Vector3d>& out) {
+  const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
+  if (!(angle > max_step)) return;
+  const std::size_t pieces = static_cast<std::size_t>(std::ceil(angle / max_step));
+  const double s = std::sin(angle);
+  for (std::size_t k = 1; k < pieces; ++k) {
+    const double f = static_cast<double>(k) / static_cast<double>(pieces);
+    // slerp; the arc is shorter than pi so sin(angle) > 0
+    Vector3d p = (std::sin((1 - f) * angle) / s) * a + (std::sin(f * angle) / s) * b;
+    out.push_back(p.normalized());
+  }
+}
+
+/// The point of the arc a->b on the plane P.view = 0, when a and b lie on different halves.
+/// With da = a.view and db = b.view of opposite signs, |db| a + |da| b is on the plane and
+/// between a and b on their great circle; the component along view is removed once more so
+/// that the result is on the silhouette also when a or b lies within the tolerance of it.
+inline Vector3d silhouette_crossing(const Vector3d& a, const Vector3d& b, const Vector3d& view) {
+  const double da = a.dot(view), db = b.dot(view);
+  Vector3d c = std::fabs(db) * a + std::fabs(da) * b;
+  c -= c.dot(view) * view;
+  const double n = c.norm();
+  if (!(n > 0)) return a;  // a = -b: not an arc shorter than pi (precondition), keep going
+  return c / n;
+}
+
+}  // namespace detail
+
+inline HemisphereSplit split_by_silhouette(const std::vector<Vector3d>& points, bool closed, const Vector3d& view,
+                                           double max_step) {
+  SPHTROCH_ASSERT(max_step > 0, "split_by_silhouette: max_step > 0");
+  HemisphereSplit split;
+  if (points.size() < 2) return split;
+  auto front_of = [&](const Vector3d& p) { return p.dot(view) >= -kSilhouetteTolerance; };
+
+  struct Run {
+    bool front;
+    std::vector<Vector3d> pts;
+  };
+  std::vector<Run> runs;
+  runs.push_back(Run{front_of(points[0]), {points[0]}});
+  std::vector<Vector3d> interior;
+  auto step_to = [&](const Vector3d& b) {
+    Run& cur = runs.back();
+    const Vector3d& a = cur.pts.back();
+    const bool fb = front_of(b);
+    if (fb == cur.front) {
+      cur.pts.push_back(b);
+      return;
+    }
+    const Vector3d c = detail::silhouette_crossing(a, b, view);
+    cur.pts.push_back(c);
+    ++split.silhouette_crossings;
+    runs.push_back(Run{fb, {c, b}});
+  };
+  const std::size_t m = points.size();
+  const std::size_t edges = closed ? m : m - 1;
+  for (std::size_t i = 0; i < edges; ++i) {
+    const Vector3d& a = points[i];
+    const Vector3d& b = points[(i + 1) % m];
+    SPHTROCH_ASSERT(std::isfinite(a.x()) && std::isfinite(a.y()) && std::isfinite(a.z()),
+                    "split_by_silhouette: finite points");
+    interior.clear();
+    detail::arc_interior(a, b, max_step, interior);
+    for (const auto& p : interior) step_to(p);
+    step_to(b);
+  }
+  // A closed polyline started in the middle of a run: join its two ends there.
+  if (closed && runs.size() > 1 && runs.front().front == runs.back().front) {
+    Run& last = runs.back();
+    last.pts.insert(last.pts.end(), runs.front().pts.begin() + 1, runs.front().pts.end());
+    runs.front() = std::move(last);
+    runs.pop_back();
+  }
+  for (auto& r : runs) {
+    if (r.pts.size() < 2) continue;
+    (r.front ? split.front : split.back).push_back(std::move(r.pts));
+  }
+  return split;
+}
+
+namespace detail {
+
+/// Distance from p to the segment a-b (to a when a = b).
+inline double segment_distance(const ScreenPoint& p, const ScreenPoint& a, const ScreenPoint& b) {
+  const double ux = b.x - a.x, uy = b.y - a.y;
+  const double len2 = ux * ux + uy * uy;
+  double t = len2 > 0 ? ((p.x - a.x) * ux + (p.y - a.y) * uy) / len2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  return std::hypot(p.x - (a.x + t * ux), p.y - (a.y + t * uy));
+}
+
+/// Douglas-Peucker: which vertices to keep so that the kept polyline stays within `tol` of
+/// every vertex. Iterative (no recursion depth limit); ends always kept.
+inline std::vector<bool> simplify_keep(const std::vector<ScreenPoint>& pts, double tol) {
+  std::vector<bool> keep(pts.size(), tol <= 0);
+  if (pts.empty()) return keep;
+  keep.front() = keep.back() = true;
+  if (tol <= 0) return keep;
+  std::vector<std::pair<std::size_t, std::size_t>> todo{{0, pts.size() - 1}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    if (j <= i + 1) continue;
+    double worst = -1.0;
+    std::size_t at = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const double d = segment_distance(pts[k], pts[i], pts[j]);
+      if (d > worst) {
+        worst = d;
+        at = k;
+      }
+    }
+    if (worst > tol) {
+      keep[at] = true;
+      todo.emplace_back(i, at);
+      todo.emplace_back(at, j);
+    }
+  }
+  return keep;
+}
+
+inline void append_runs(SvgPath& d, const std::vector<std::vector<Vector3d>>& runs, const SphereView& cam,
+                        double simplify_px) {
+  std::vector<ScreenPoint> screen;
+  for (const auto& run : runs) {
+    screen.clear();
+    for (const auto& p : run) screen.push_back(cam.project(p));
+    const std::vector<bool> keep = simplify_keep(screen, simplify_px);
+    d.move_to(screen.front().x, screen.front().y);
+    for (std::size_t i = 1; i < screen.size(); ++i)
+      if (keep[i]) d.line_to(screen[i].x, screen[i].y);
+  }
+}
+
+inline std::vector<Vector3d> great_circle(const Vector3d& u, const Vector3d& v, std::size_t n) {
+  std::vector<Vector3d> pts;
+  pts.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = Constants<double>::two_pi() * static_cast<double>(i) / static_cast<double>(n);
+    pts.push_back(std::cos(t) * u + std::sin(t) * v);
+  }
+  return pts;
+}
+
+inline std::string triangle_path(double x, double y, double r, int decimals) {
+  SvgPath d(decimals);
+  // Equilateral, pointing up, centred on (x, y).
+  d.move_to(x, y - r * 1.15);
+  d.line_to(x + r, y + r * 0.6);
+  d.line_to(x - r, y + r * 0.6);
+  d.close();
+  return d.str();
+}
+
+constexpr const char* kCurveColour = "#1f5fa8";
+constexpr const char* kCrossingColour = "#d62728";
+constexpr const char* kTangencyColour = "#8e44ad";
+constexpr const char* kCuspColour = "#e67e00";
+constexpr const char* kGridColour = "#8a96a3";
+constexpr const char* kAxisColour = "#444444";
+
+}  // namespace detail
+
+inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
+                                     const std::vector<Cusp>& cusps, const PlotOptions& options) {
+  const PlotLayout L = plot_layout(options);
+  const SphereView& cam = L.sphere;
+  const int dec = options.decimals;
+  SvgWriter svg(L.width, L.height, dec);
+  svg.title(options.caption.empty() ? std::string("sphtroch trajectory") : options.caption);
+  auto num = [&](double v) { return svg_number(v, dec); };
+  const double lw = std::max(1.0, L.width / 300.0);  // base line width
+
+  // Sphere disc, lightly filled so the picture reads as a ball.
+  svg.circle(cam.cx, cam.cy, cam.radius, "fill:#f3f6fa;stroke:none");
+
+  // Grid: equator (XY plane) and prime meridian (XZ plane, through +X).
+  HemisphereSplit grid_eq, grid_mer;
+  if (options.draw_grid) {
+    grid_eq = split_by_silhouette(detail::great_circle(Vector3d::UnitX(), Vector3d::UnitY(), 360), true, cam.view,
+                                  options.max_arc_step);
+    grid_mer = split_by_silhouette(detail::great_circle(Vector3d::UnitX(), Vector3d::UnitZ(), 360), true, cam.view,
+                                   options.max_arc_step);
+    SvgPath back(dec);
+    detail::append_runs(back, grid_eq.back, cam, options.simplify_px);
+    detail::append_runs(back, grid_mer.back, cam, options.simplify_px);
+    svg.path(back, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.6 * lw) +
+                       ";stroke-dasharray:" + num(lw) + " " + num(3 * lw));
+  }
+
+  // The curve's back half: dashed and faded, under everything in front.
+  std::vector<Vector3d> pts(trajectory.points.begin(), trajectory.points.end());
+  const HemisphereSplit curve = split_by_silhouette(pts, trajectory.closed, cam.view, options.max_arc_step);
+  {
+    SvgPath back(dec);
+    detail::append_runs(back, curve.back, cam, options.simplify_px);
+    svg.path(back, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-opacity:0.45;stroke-width:" +
+                       num(1.1 * lw) + ";stroke-dasharray:" + num(4 * lw) + " " + num(2.5 * lw) +
+                       ";stroke-linejoin:round");
+  }
+
+  // The outline, then the front grid.
+  svg.circle(cam.cx, cam.cy, cam.radius, "fill:none;stroke:#333333;stroke-width:" + num(1.1 * lw));
+  if (options.draw_grid) {
+    SvgPath front(dec);
+    detail::append_runs(front, grid_eq.front, cam, options.simplify_px);
+    detail::append_runs(front, grid_mer.front, cam, options.simplify_px);
+    svg.path(front, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.7 * lw));
+  }
+
+  // A label: a white halo under the glyphs keeps it readable over curve and grid lines.
+  auto label = [&](double x, double y, const std::string& text, const std::string& style, const char* anchor) {
+    svg.text(x, y, text, style + ";stroke:#ffffff;stroke-width:" + num(2.5 * lw) + ";stroke-linejoin:round", anchor);
+    svg.text(x, y, text, style, anchor);
+  };
+
+  // Axes: from the centre to kAxisReach R, with an arrow head; an axis pointing away from the
+  // viewer is dashed. Labels just past the tip.
+  if (options.draw_axes) {
+    const char* names[3] = {"X", "Y", "Z"};
+    SvgPath solid(dec), dashed(dec), heads(dec);
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d e = Vector3d::Unit(k);
+      const ScreenPoint tip = cam.project(detail::kAxisReach * e);
+      const double dx = tip.x - cam.cx, dy = tip.y - cam.cy;
+      const double len = std::hypot(dx, dy);
+      SvgPath& d = e.dot(cam.view) >= 0 ? solid : dashed;
+      d.move_to(cam.cx, cam.cy);
+      d.line_to(tip.x, tip.y);
+      double ux = 0.0, uy = -1.0;
+      if (len > 1e-9) {
+        ux = dx / len;
+        uy = dy / len;
+      }
+      if (len > 0.15 * cam.radius) {  // an axis seen nearly end-on gets no arrow head
+        const double h = 2.2 * L.marker_radius, w = 0.8 * L.marker_radius;
+        heads.move_to(tip.x + ux * 0.6 * h, tip.y + uy * 0.6 * h);
+        heads.line_to(tip.x - ux * 0.4 * h - uy * w, tip.y - uy * 0.4 * h + ux * w);
+        heads.line_to(tip.x - ux * 0.4 * h + uy * w, tip.y - uy * 0.4 * h - ux * w);
+        heads.close();
+      }
+      const double gap = 1.6 * L.font_px;
+      label(tip.x + ux * gap, tip.y + uy * gap + 0.35 * L.font_px, names[k],
+               "font-family:sans-serif;font-style:italic;font-size:" + num(1.1 * L.font_px) + "px;fill:" +
+                   detail::kAxisColour,
+               "middle");
+    }
+    const std::string base = std::string("fill:none;stroke:") + detail::kAxisColour + ";stroke-width:" + num(0.9 * lw);
+    svg.path(solid, base);
+    svg.path(dashed, base + ";stroke-dasharray:" + num(3 * lw) + " " + num(2 * lw));
+    svg.path(heads, std::string("fill:") + detail::kAxisColour + ";stroke:none");
+  }
+
+  // The curve's front half.
+  {
+    SvgPath front(dec);
+    detail::append_runs(front, curve.front, cam, options.simplify_px);
+    svg.path(front, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-width:" + num(1.7 * lw) +
+                        ";stroke-linejoin:round;stroke-linecap:round");
+  }
+
+  // Markers and labels.
+  const std::string label_style = "font-family:sans-serif;font-weight:bold;font-size:" + num(L.font_px) + "px;fill:";
+  const std::string back_mark = ";stroke-opacity:0.6;stroke-dasharray:" + num(2 * lw) + " " + num(1.5 * lw);
+  bool have_crossing = false, have_tangency = false;
+  svg.begin_group("", "id=\"nodes\"");
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Node& node = nodes[i];
+    SPHTROCH_ASSERT(std::isfinite(node.position.norm()), "render_sphere_svg: finite node position");
+    const ScreenPoint s = cam.project(node.position);
+    const bool front = s.depth >= -kSilhouetteTolerance;
+    const char* colour = node.kind == NodeKind::crossing ? detail::kCrossingColour : detail::kTangencyColour;
+    (node.kind == NodeKind::crossing ? have_crossing : have_tangency) = true;
+    svg.circle(s.x, s.y, L.marker_radius,
+               std::string("fill:none;stroke:") + colour + ";stroke-width:" + num(1.6 * lw) + (front ? "" : back_mark));
+    const LabelPlacement lp = label_position(L, s);
+    label(lp.x, lp.y, "N" + std::to_string(i + 1), label_style + colour + (front ? "" : ";fill-opacity:0.6"),
+             lp.anchor_end ? "end" : "start");
+  }
+  svg.end_group();
+  svg.begin_group("", "id=\"cusps\"");
+  for (std::size_t j = 0; j < cusps.size(); ++j) {
+    const Cusp& cusp = cusps[j];
+    SPHTROCH_ASSERT(std::isfinite(cusp.position.norm()), "render_sphere_svg: finite cusp position");
+    const ScreenPoint s = cam.project(cusp.position);
+    const bool front = s.depth >= -kSilhouetteTolerance;
+    svg.path(detail::triangle_path(s.x, s.y, 1.1 * L.marker_radius, dec),
+             std::string("fill:none;stroke:") + detail::kCuspColour + ";stroke-width:" + num(1.6 * lw) +
+                 ";stroke-linejoin:round" + (front ? "" : back_mark));
+    const LabelPlacement lp = label_position(L, s);
+    label(lp.x, lp.y, "C" + std::to_string(j + 1),
+             label_style + detail::kCuspColour + (front ? "" : ";fill-opacity:0.6"), lp.anchor_end ? "end" : "start");
+  }
+  svg.end_group();
+
+  // Legend: one line along the top, only for what is drawn.
+  if (options.draw_legend) {
+    const double y = 1.1 * L.font_px;
+    double x = 0.6 * L.font_px;
+    const std::string text_style = "font-family:sans-serif;font-size:" + num(0.9 * L.font_px) + "px;fill:#333333";
+    const double r = 0.8 * L.marker_radius;
+    const double mid = y - 0.3 * L.font_px;
+    auto item_text = [&](const std::string& t) {
+      svg.text(x, y, t, text_style);
+      x += 0.5 * L.font_px * static_cast<double>(t.size()) + 1.2 * L.font_px;  // rough text width
+    };
+    svg.line(x, mid, x + 1.8 * L.font_px, mid,
+             std::string("stroke:") + detail::kCurveColour + ";stroke-width:" + num(1.7 * lw));
+    x += 2.2 * L.font_px;
+    item_text("front");
+    svg.line(x, mid, x + 1.8 * L.font_px, mid,
+             std::string("stroke:") + detail::kCurveColour + ";stroke-opacity:0.45;stroke-width:" + num(1.1 * lw) +
+                 ";stroke-dasharray:" + num(4 * lw) + " " + num(2.5 * lw));
+    x += 2.2 * L.font_px;
+    item_text("back");
+    if (have_crossing) {
+      svg.circle(x + r, mid, r, std::string("fill:none;stroke:") + detail::kCrossingColour + ";stroke-width:" + num(1.4 * lw));
+      x += 2 * r + 0.4 * L.font_px;
+      item_text("node (crossing)");
+    }
+    if (have_tangency) {
+      svg.circle(x + r, mid, r, std::string("fill:none;stroke:") + detail::kTangencyColour + ";stroke-width:" + num(1.4 * lw));
+      x += 2 * r + 0.4 * L.font_px;
+      item_text("node (tangency)");
+    }
+    if (!cusps.empty()) {
+      svg.path(detail::triangle_path(x + r, mid, r, dec),
+               std::string("fill:none;stroke:") + detail::kCuspColour + ";stroke-width:" + num(1.4 * lw));
+      x += 2 * r + 0.4 * L.font_px;
+      item_text("cusp");
+    }
+  }
+
+  if (!options.caption.empty()) {
+    // Shrink a long caption to fit the width: a sans-serif glyph averages about 0.55 em.
+    const double fit = 0.95 * L.width / (0.55 * static_cast<double>(std::max<std::size_t>(1, options.caption.size())));
+    svg.text(0.5 * L.width, L.caption_y, options.caption,
+             "font-family:sans-serif;font-size:" + num(std::min(1.1 * L.font_px, fit)) + "px;fill:#111111", "middle");
+  }
+  return svg.finish();
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,204 @@
+// sphtroch/io/parse.hpp — angles, gear ratios and tracer twists written the way people type them.
+//
+//   sphtroch::parse_angle("2pi/3", "a2");        // 2 pi / 3; also "90deg", "-pi/4", "1.25", "pi-1e-6"
+//   sphtroch::parse_ratio("5/2", "n");           // Ratio(5, 2); also "2.5", "-3", "10/4"
+//   sphtroch::parse_a3("ap+1e-6", "a3");         // {A3Reference::pitch_cone, 1e-6}; "pi-ap-1e-9", "a2"
+//
+// Grammar (no spaces inside a value; surrounding spaces are ignored):
+//   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
+//   ratio  := [sign] integer ["/" integer] | [sign] digits "." digits     (decimal, <= 9 places)
+//   a3     := angle | ref [("+" | "-") angle]     ref := "ap" | "pi-ap" | "a2" | "pi-a2"
+// Every failure throws InvalidInput naming the field, the text and the accepted forms.
+// Range checks (a2 in (0, pi) ...) are the GearTrain's; parsing only rejects non-numbers,
+// NaN and infinities.
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/types.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sphtroch {
+
+constexpr const char* kAngleForms = "radians (1.25), multiples of pi (pi/2, 2pi/3, 0.75pi, -pi/4) or degrees (90deg)";
+constexpr const char* kRatioForms = "p/q or a decimal (2, 5/2, 2.5, -3/2), p != 0";
+
+namespace detail {
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n')) s.remove_suffix(1);
+  return s;
+}
+
+/// A whole string as a finite double, or nothing (one leading sign; the number as parse_number reads it).
+inline std::optional<double> strict_double(std::string_view s) {
+  if (s.empty()) return std::nullopt;
+  bool negative = false;
+  if (s.front() == '+' || s.front() == '-') {
+    negative = s.front() == '-';
+    s.remove_prefix(1);
+  }
+  if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s.front())) || s.front() == '.')) return std::nullopt;
+  const std::optional<double> v = parse_number(s);  // number_text.hpp: 1e999 refused, 1e-400 is 0
+  if (!v) return std::nullopt;
+  return negative ? -*v : *v;
+}
+
+/// A whole string as an integer of at most 18 digits ("+-3", "--3" and overflow refused), so
+/// that |v| < 1e18 and negating it or taking llabs is always defined.
+inline std::optional<std::int64_t> strict_int(std::string_view s) {
+  if (s.empty()) return std::nullopt;
+  if (s.front() == '+') {
+    s.remove_prefix(1);
+    if (s.empty() || !std::isdigit(static_cast<unsigned char>(s.front()))) return std::nullopt;
+  }
+  const std::string_view digits = !s.empty() && s.front() == '-' ? s.substr(1) : s;
+  if (digits.empty() || digits.size() > 18 || !std::isdigit(static_cast<unsigned char>(digits.front())))
+    return std::nullopt;
+  std::int64_t v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+inline std::optional<double> angle_value(std::string_view s) {
+  s = trim(s);
+  if (s.size() > 3 && s.substr(s.size() - 3) == "deg") {
+    const auto v = strict_double(s.substr(0, s.size() - 3));
+    if (!v) return std::nullopt;
+    return *v * (Constants<double>::pi() / 180.0);
+  }
+  const auto pi_at = s.find("pi");
+  if (pi_at == std::string_view::npos) return strict_double(s);
+  std::string_view coef = s.substr(0, pi_at);
+  std::string_view rest = s.substr(pi_at + 2);
+  if (!coef.empty() && coef.back() == '*') coef.remove_suffix(1);
+  double c = 1.0;
+  if (coef == "-") c = -1.0;
+  else if (coef == "+" || coef.empty()) c = 1.0;
+  else if (const auto v = strict_double(coef)) c = *v;
+  else return std::nullopt;
+  // An optional offset in radians after the pi term: "pi-1e-6", "pi/2+0.1".
+  double offset = 0.0;
+  for (std::size_t i = 1; i < rest.size(); ++i) {
+    if ((rest[i] == '+' || rest[i] == '-') && rest[i - 1] != 'e' && rest[i - 1] != 'E') {
+      const auto v = strict_double(rest.substr(i));
+      if (!v) return std::nullopt;
+      offset = *v;
+      rest = rest.substr(0, i);
+      break;
+    }
+  }
+  double d = 1.0;
+  if (!rest.empty()) {
+    if (rest.front() == '+' || rest.front() == '-') {  // "pi-1e-6": the offset starts right after pi
+      const auto v = strict_double(rest);
+      if (!v) return std::nullopt;
+      return c * Constants<double>::pi() + *v;
+    }
+    if (rest.front() != '/') return std::nullopt;
+    const auto v = strict_double(rest.substr(1));
+    if (!v || *v == 0.0) return std::nullopt;
+    d = *v;
+  }
+  // c*pi/d (+ offset): one rounding of pi, then of the product, the quotient and the sum.
+  return c * Constants<double>::pi() / d + offset;
+}
+
+}  // namespace detail
+
+/// An angle in radians. Throws InvalidInput(field, text, ...) unless it is finite and well formed.
+inline double parse_angle(std::string_view text, const std::string& field) {
+  const auto v = detail::angle_value(text);
+  if (!v) throw InvalidInput(field, std::string(text), "not a finite angle", kAngleForms);
+  return *v;
+}
+
+/// A gear ratio as an exact rational. Throws InvalidInput("n"...) for malformed text or n = 0.
+inline Ratio parse_ratio(std::string_view text, const std::string& field = "n") {
+  const std::string_view s = detail::trim(text);
+  const std::string shown(text);
+  auto bad = [&](const char* problem) { return InvalidInput(field, shown, problem, kRatioForms); };
+  if (const auto slash = s.find('/'); slash != std::string_view::npos) {
+    const auto p = detail::strict_int(s.substr(0, slash));
+    const auto q = detail::strict_int(s.substr(slash + 1));
+    if (!p || !q) throw bad("not a ratio of integers");
+    if (*q == 0) throw bad("zero denominator");
+    if (*p == 0) throw bad("the gear ratio must not be zero");
+    if (std::llabs(*p) > Ratio::kMaxTerm || std::llabs(*q) > Ratio::kMaxTerm) throw bad("numerator or denominator too large (max 1000000)");
+    return Ratio(*p, *q);
+  }
+  if (const auto dot = s.find('.'); dot != std::string_view::npos) {
+    std::string_view whole = s.substr(0, dot), frac = s.substr(dot + 1);
+    bool negative = false;
+    if (!whole.empty() && (whole.front() == '-' || whole.front() == '+')) {
+      negative = whole.front() == '-';
+      whole.remove_prefix(1);
+    }
+    if (frac.empty() || frac.size() > 9) throw bad("not a decimal with 1 to 9 places");
+    for (char ch : frac)
+      if (!std::isdigit(static_cast<unsigned char>(ch))) throw bad("not a number");
+    for (char ch : whole)
+      if (!std::isdigit(static_cast<unsigned char>(ch))) throw bad("not a number");
+    const auto w = whole.empty() ? std::optional<std::int64_t>(0) : detail::strict_int(whole);
+    const auto f = detail::strict_int(frac);
+    if (!w || !f || *w > Ratio::kMaxTerm) throw bad("not a number");
+    std::int64_t q = 1;
+    for (std::size_t i = 0; i < frac.size(); ++i) q *= 10;
+    std::int64_t p = *w * q + *f;
+    if (p == 0) throw bad("the gear ratio must not be zero");
+    if (negative) p = -p;
+    // Reduce before the range check: 2.5 = 25/10 = 5/2.
+    const std::int64_t g = std::gcd(p < 0 ? -p : p, q);
+    if (std::llabs(p / g) > Ratio::kMaxTerm || q / g > Ratio::kMaxTerm) throw bad("numerator or denominator too large (max 1000000)");
+    return Ratio(p / g, q / g);
+  }
+  const auto p = detail::strict_int(s);
+  if (!p) throw bad("not a number");
+  if (*p == 0) throw bad("the gear ratio must not be zero");
+  if (std::llabs(*p) > Ratio::kMaxTerm) throw bad("too large (max 1000000)");
+  return Ratio(*p, 1);
+}
+
+/// A tracer twist: an angle, or a reference cone plus an optional signed offset (radians or
+/// any angle form): "ap", "pi-ap", "a2", "pi-a2", "ap+1e-6", "pi-ap-1e-9".
+inline A3Spec parse_a3(std::string_view text, const std::string& field = "a3") {
+  const std::string_view s = detail::trim(text);
+  struct Ref {
+    std::string_view name;
+    A3Reference reference;
+  };
+  // Longest names first so that "pi-ap" is not read as "pi" followed by garbage.
+  constexpr Ref refs[] = {{"pi-ap", A3Reference::mirror_pitch_cone},
+                          {"pi-a2", A3Reference::pi_minus_a2},
+                          {"ap", A3Reference::pitch_cone},
+                          {"a2", A3Reference::a2}};
+  for (const auto& r : refs) {
+    if (s.substr(0, r.name.size()) != r.name) continue;
+    const std::string_view rest = s.substr(r.name.size());
+    if (rest.empty()) return {r.reference, 0.0};
+    if (rest.front() != '+' && rest.front() != '-') break;
+    const auto v = detail::angle_value(rest.substr(1));
+    if (!v) break;
+    return {r.reference, rest.front() == '-' ? -*v : *v};
+  }
+  const auto v = detail::angle_value(s);
+  if (!v)
+    throw InvalidInput(field, std::string(text), "not a finite angle",
+                       std::string(kAngleForms) + ", or ap, pi-ap, a2, pi-a2 with an optional +/- offset");
+  return {A3Reference::given, *v};
+}
+
+}  // namespace sphtroch

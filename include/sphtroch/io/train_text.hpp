@@ -1,0 +1,34 @@
+// sphtroch/io/train_text.hpp — a gear train as the user wrote it: the four texts of a2, a3, n and
+// the phase, kept as typed so that reports can echo them ("a2 = pi/2 = 1.5707963267948966 rad")
+// and errors can name the field. Eigen only.
+//
+//   sphtroch::TrainText text{"pi/2", "ap+1e-6", "5/2"};   // phase defaults to "0"
+//   sphtroch::GearTrain train = text.train();              // InvalidInput naming "a2", "a3", "n" or "phase"
+//
+// The forms are those of parse.hpp (angles, ratios, a3 relative to a pitch cone). The CLI's
+// options and a scene's train entries both fill one of these; classification_output.hpp prints it.
+#pragma once
+
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/io/parse.hpp"
+
+#include <string>
+
+namespace sphtroch {
+
+struct TrainText {
+  std::string a2, a3, n, phase = "0";
+
+  /// Parses the four texts in the order a2, a3, n, phase (the first that is not a value is
+  /// reported), then validates the train (ranges: GearTrain). Throws InvalidInput whose field is
+  /// "a2", "a3", "n" or "phase".
+  GearTrain train() const {
+    const double a2v = parse_angle(a2, "a2");
+    const A3Spec a3v = parse_a3(a3, "a3");
+    const Ratio nv = parse_ratio(n, "n");
+    const double phase_v = parse_angle(phase, "phase");
+    return make_gear_train(a2v, a3v, nv, phase_v);
+  }
+};
+
+}  // namespace sphtroch
