@@ -1,9 +1,10 @@
 // sphtroch/census/root_census.hpp — the node census by one-dimensional root counting, independent
-// of any polyline sampling. Used to cross-check the polyline census (node_census.hpp).
+// of any polyline sampling: the integer values of the root function g(b) (map/root_function.hpp).
+// Used to certify the polyline census (exact/polyline_census.hpp, exact/certified_census.hpp).
 //
 //   sphtroch::RootCensus c = sphtroch::root_census(train);
 //   c.nodes;            // every node point with its branches (node.hpp)
-//   c.roots;            // roots of g in (0, pi), each standing for |p| branch pairs
+//   c.roots;            // roots of g in (0, pi), each standing for |p| branch pairs (NodeRoot)
 //
 // Derivation (ours; the report treats n = 1, 2 only).
 //   Write P(t) = Rz(t) C(b) with C(b) = Rx(a2) Rz(b) Rx(a3) z, b = theta3 = n t + theta_p (Eq. 3, 4).
@@ -52,6 +53,7 @@
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/map/closed_form_boundaries.hpp"
+#include "sphtroch/map/root_function.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/parameters.hpp"
 #include "sphtroch/core/node.hpp"
@@ -80,7 +82,7 @@ struct RootCensusSettings {
 };
 
 /// One root of g on (0, pi).
-struct HalfTurnRoot {
+struct NodeRoot {
   double beta = 0.0;       // planet angle b of the first branch, radians in (0, pi)
   long double beta_precise = 0.0L;  // the same root as solved, in long double
   std::int64_t value = 0;  // the integer g(b)
@@ -89,7 +91,7 @@ struct HalfTurnRoot {
 };
 
 struct RootCensus {
-  std::vector<HalfTurnRoot> roots;   // roots of g in (0, pi), ascending
+  std::vector<NodeRoot> roots;       // roots of g in (0, pi), ascending
   std::vector<double> stationary;    // stationary points of g in (0, pi)
   std::vector<BranchPair> pairs;     // every unordered branch pair, incl. pole pairs
   std::vector<Node> nodes;           // pairs grouped into node points
@@ -101,135 +103,7 @@ struct RootCensus {
   std::vector<std::string> notes;
 };
 
-namespace detail {
-
-/// g(b) and g'(b) on (0, pi) for one gear train (see header), in long double.
-class HalfTurnFunction {
- public:
-  using Real = long double;
-  explicit HalfTurnFunction(const GearTrain& train) {
-    const auto t = train.trig<Real>();
-    sa2_ = t.sin_a2;
-    ca2_ = t.cos_a2;
-    sa3_ = t.sin_a3;
-    ca3_ = t.cos_a3;
-    p_ = static_cast<Real>(train.ratio().p());
-    q_ = static_cast<Real>(train.ratio().q());
-    y0_ = -(sa3_ * ca2_ + ca3_ * sa2_);  // y of C(0)  = -sin(a2 + a3)
-    ypi_ = sa3_ * ca2_ - ca3_ * sa2_;    // y of C(pi) =  sin(a3 - a2)
-  }
-
-  static Real pi() { return Constants<Real>::pi(); }
-  Real y_at_0() const { return y0_; }
-  Real y_at_pi() const { return ypi_; }
-  /// Integer values of g at the ends (trivial roots), valid when the end is not a pole.
-  Real g_at_0() const { return y0_ < 0 ? -p_ : Real(0); }
-  Real g_at_pi() const { return ypi_ > 0 ? q_ : q_ - p_; }
-  /// Limits of g at the ends when they are poles: C(b) approaches the pole tangentially to the
-  /// x axis (x ~ sa3 |b - end|, y ~ O(|b - end|^2)), so az -> 0 and g -> -p/2 or q - p/2.
-  Real g_limit_at_0() const { return y0_ == 0 ? -p_ / 2 : g_at_0(); }
-  Real g_limit_at_pi() const { return ypi_ == 0 ? q_ - p_ / 2 : g_at_pi(); }
-
-  /// Horizontal projection (x, y) of C(b).
-  void horizontal(Real b, Real& x, Real& y) const {
-    x = sa3_ * std::sin(b);
-    y = -(sa3_ * ca2_ * std::cos(b) + ca3_ * sa2_);
-  }
-
-  Real g(Real b) const {
-    ++evaluations;
-    Real x, y;
-    horizontal(b, x, y);
-    const bool near_zero = b <= pi() / 2;
-    const Real y_end = near_zero ? y0_ : ypi_;
-    if (y_end == 0) {  // the end is a pole: no exact end value, evaluate directly
-      return (p_ * (2 * std::atan2(y, x) - pi()) + 2 * q_ * b) / (2 * pi());
-    }
-    // Signed angle from the end's projection (0, y_end) to (x, y).
-    const Real cross = -y_end * x;  // (0, ye) x (x, y) = 0*y - ye*x
-    const Real dot = y_end * y;
-    const Real daz = std::atan2(cross, dot);
-    const Real end = near_zero ? Real(0) : pi();
-    const Real g_end = near_zero ? g_at_0() : g_at_pi();
-    return g_end + (2 * p_ * daz + 2 * q_ * (b - end)) / (2 * pi());
-  }
-
-  Real dg(Real b) const {
-    ++evaluations;
-    const Real c = std::cos(b);
-    Real x, y;
-    horizontal(b, x, y);
-    const Real rho2 = x * x + y * y;
-    return (p_ * (sa3_ * sa3_ * ca2_ + sa3_ * ca3_ * sa2_ * c) / rho2 + q_) / pi();
-  }
-
-  /// Stationary points of g in (0, pi), ascending (roots of the quadratic in cos b).
-  std::vector<Real> stationary_points() const {
-    const Real A = -q_ * sa2_ * sa2_ * sa3_ * sa3_;
-    const Real B = sa2_ * sa3_ * ca3_ * (2 * q_ * ca2_ + p_);
-    const Real C = q_ * (sa2_ * sa2_ + ca2_ * ca2_ * sa3_ * sa3_) + p_ * sa3_ * sa3_ * ca2_;
-    std::vector<Real> cs;
-    const Real disc = B * B - 4 * A * C;
-    if (disc >= 0) {
-      const Real s = std::sqrt(disc);
-      const Real r1 = (-B - (B >= 0 ? s : -s)) / (2 * A);  // A < 0, never 0
-      cs.push_back(r1);
-      if (r1 != 0) cs.push_back(C / (A * r1));
-      else cs.push_back(-B / A);
-    }
-    std::vector<Real> bs;
-    for (Real c : cs)
-      if (c > -1 && c < 1) bs.push_back(std::acos(c));
-    std::sort(bs.begin(), bs.end());
-    bs.erase(std::unique(bs.begin(), bs.end()), bs.end());
-    return bs;
-  }
-
-  /// The root of g(b) = m on [lo, hi] where g - m changes sign (monotone piece).
-  Real solve(Real lo, Real hi, Real m) const {
-    Real flo = g(lo) - m;
-    for (int it = 0; it < 200 && hi - lo > 4 * LDBL_EPSILON * std::max<Real>(1, hi); ++it) {
-      const Real mid = (lo + hi) / 2;
-      // Newton from the midpoint when it stays inside the bracket, else bisection.
-      const Real fm = g(mid) - m;
-      if (fm == 0) return mid;
-      if ((fm < 0) == (flo < 0)) {
-        lo = mid;
-        flo = fm;
-      } else {
-        hi = mid;
-      }
-      const Real d = dg(mid);
-      if (d != 0) {
-        const Real x = mid - fm / d;
-        if (x > lo && x < hi) {
-          const Real fx = g(x) - m;
-          if (fx == 0) return x;
-          if ((fx < 0) == (flo < 0)) {
-            lo = x;
-            flo = fx;
-          } else {
-            hi = x;
-          }
-        }
-      }
-    }
-    return (lo + hi) / 2;
-  }
-
-  Real p() const { return p_; }
-  Real q() const { return q_; }
-  /// C(b) in carrier coordinates.
-  Vector3<Real> circle_point(Real b) const {
-    return Vector3<Real>(sa3_ * std::sin(b), -(sa3_ * ca2_ * std::cos(b) + ca3_ * sa2_),
-                         ca2_ * ca3_ - sa2_ * sa3_ * std::cos(b));
-  }
-
-  mutable std::size_t evaluations = 0;
-
- private:
-  Real sa2_, ca2_, sa3_, ca3_, p_, q_, y0_, ypi_;
-};
+namespace root_census_detail {
 
 inline std::int64_t mod_inverse(std::int64_t a, std::int64_t m) {
   // Extended Euclid; REQUIRES gcd(a, m) = 1, m >= 1.
@@ -246,36 +120,29 @@ inline std::int64_t mod_inverse(std::int64_t a, std::int64_t m) {
   return ((x % m) + m) % m;
 }
 
-}  // namespace detail
+using Real = long double;
 
-/// Counts and locates every node of the train's curve by root counting (see header).
-/// The train is analysed as given: snap it to its boundaries first (boundary_snap.hpp) to get
-/// the report's boundary cases; pass settings.tangency_tolerance = 0 for the literal curve.
-inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& settings = {}) {
-  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
-  using Real = long double;
-  const detail::HalfTurnFunction f(train);
-  const TracerCurve<double> curve(train);
-  const double period = train.period();
-  const double phase = train.phase();
-  const std::int64_t p = train.ratio().p(), q = train.ratio().q();
-  const std::int64_t abs_p = p < 0 ? -p : p;
+/// g on (0, pi) cut into monotone pieces: breaks 0, the stationary points kept, pi; g there; and
+/// for each interior break whether it is a tangency (a double root).
+struct MonotonePieces {
+  std::vector<Real> breaks;
+  std::vector<Real> values;
+  std::vector<bool> tangency_at;
+};
+
+/// Stage 1: decides every stationary point of g. One whose value is an end's integer within
+/// kCuspNeighbourhood of that end and below resolution (or on a cusp cone) is a near-cusp loop
+/// merged into the end (out.cusp_within_resolution, a note); the others become breaks, tangencies
+/// when |g - m| <= tangency_tol.
+inline MonotonePieces monotone_pieces(const RootFunction<Real>& f, const GearTrain& train, Real tangency_tol,
+                                      RootCensus& out) {
   const Real pi = Constants<Real>::pi();
-
-  RootCensus out;
-  out.error_bound = static_cast<double>(kRootCensusErrorFactor * LDBL_EPSILON * (abs_p + q));
   const Real err = out.error_bound;
-  const Real tangency_tol = std::max<Real>(settings.tangency_tolerance, err);
   // Within kCuspResolution of a pitch cone a near-cusp loop is not resolved (pitch_cone.hpp).
   const ConeMargins cones = cone_margins(train);
-
-  // Breakpoints: 0, stationary points, pi; decide each stationary point first.
-  const std::vector<Real> stationary = f.stationary_points();
   const bool pole0 = f.y_at_0() == 0, pole_pi = f.y_at_pi() == 0;
-  std::vector<Real> breaks{0};
-  std::vector<Real> values{f.g_limit_at_0()};
-  std::vector<bool> tangency_at;  // per interior break
-  for (Real b : stationary) {
+  MonotonePieces pieces{{0}, {f.g_limit_at_0()}, {}};
+  for (Real b : f.stationary_points()) {
     out.stationary.push_back(static_cast<double>(b));
     const Real gb = f.g(b);
     const Real m = std::nearbyint(gb);
@@ -284,53 +151,70 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
     const bool near_pi = pi - b < kCuspNeighbourhood && !pole_pi && m == f.g_at_pi();
     const bool unresolved = gap <= err || (near0 && cones.on_mirror_cone()) || (near_pi && cones.on_pitch_cone());
     if ((near0 || near_pi) && unresolved) {
-      // A near-cusp loop whose size is below what g can resolve: merge into the end (cusp).
       out.cusp_within_resolution = true;
       out.notes.push_back("near-cusp loop at b = " + std::string(near0 ? "0" : "pi") +
                           " below resolution (|g - m| = " + detail::to_text(static_cast<double>(gap)) +
                           " <= error bound " + detail::to_text(out.error_bound) + "): reported as a cusp within resolution");
       continue;
     }
-    breaks.push_back(b);
-    values.push_back(gb);
-    tangency_at.push_back(!(near0 || near_pi) && gap <= tangency_tol);
+    pieces.breaks.push_back(b);
+    pieces.values.push_back(gb);
+    pieces.tangency_at.push_back(!(near0 || near_pi) && gap <= tangency_tol);
   }
-  breaks.push_back(pi);
-  values.push_back(f.g_limit_at_pi());
+  pieces.breaks.push_back(pi);
+  pieces.values.push_back(f.g_limit_at_pi());
+  return pieces;
+}
 
-  // Roots: integers strictly inside each monotone piece, plus tangencies at stationary points.
+/// A crossing root: the b in [lo, hi] with g(b) = m.
+inline NodeRoot crossing_root(const RootFunction<Real>& f, Real lo, Real hi, Real m) {
+  NodeRoot r;
+  r.beta_precise = f.solve(lo, hi, m);
+  r.beta = static_cast<double>(r.beta_precise);
+  r.value = static_cast<std::int64_t>(m);
+  r.kind = NodeKind::crossing;
+  r.margin = static_cast<double>(std::abs(f.dg_db(r.beta)) * Constants<Real>::pi());
+  return r;
+}
+
+/// A tangency root: the stationary point b with g(b) = gb within the tangency tolerance.
+inline NodeRoot tangency_root(Real b, Real gb) {
+  NodeRoot r;
+  r.beta_precise = b;
+  r.beta = static_cast<double>(r.beta_precise);
+  r.value = static_cast<std::int64_t>(std::nearbyint(gb));
+  r.kind = NodeKind::tangency;
+  r.margin = static_cast<double>(std::abs(gb - std::nearbyint(gb)));
+  return r;
+}
+
+/// Stage 2: the roots, ascending in b: the integers strictly inside each monotone piece (a
+/// count, then one solve each), plus the tangencies at stationary points.
+inline void collect_roots(const RootFunction<Real>& f, const MonotonePieces& pieces, RootCensus& out) {
+  const auto& breaks = pieces.breaks;
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-    const Real g_lo = values[i], g_hi = values[i + 1];
+    const Real g_lo = pieces.values[i], g_hi = pieces.values[i + 1];
     const Real lo_v = std::min(g_lo, g_hi), hi_v = std::max(g_lo, g_hi);
     // Integers m with lo_v < m < hi_v, excluding those claimed by a tangency at either end.
-    const bool tan_lo = i > 0 && tangency_at[i - 1];
-    const bool tan_hi = i + 1 < breaks.size() - 1 && tangency_at[i];
+    const bool tan_lo = i > 0 && pieces.tangency_at[i - 1];
+    const bool tan_hi = i + 1 < breaks.size() - 1 && pieces.tangency_at[i];
     for (Real m = std::floor(lo_v) + 1; m < hi_v; m += 1) {
       if (tan_lo && std::nearbyint(g_lo) == m) continue;
       if (tan_hi && std::nearbyint(g_hi) == m) continue;
-      HalfTurnRoot r;
-      r.beta_precise = f.solve(breaks[i], breaks[i + 1], m);
-      r.beta = static_cast<double>(r.beta_precise);
-      r.value = static_cast<std::int64_t>(m);
-      r.kind = NodeKind::crossing;
-      r.margin = static_cast<double>(std::abs(f.dg(r.beta)) * pi);
-      out.roots.push_back(r);
+      out.roots.push_back(crossing_root(f, breaks[i], breaks[i + 1], m));
     }
-    if (tan_hi) {
-      HalfTurnRoot r;
-      r.beta_precise = breaks[i + 1];
-      r.beta = static_cast<double>(r.beta_precise);
-      r.value = static_cast<std::int64_t>(std::nearbyint(g_hi));
-      r.kind = NodeKind::tangency;
-      r.margin = static_cast<double>(std::abs(g_hi - std::nearbyint(g_hi)));
-      out.roots.push_back(r);
-    }
+    if (tan_hi) out.roots.push_back(tangency_root(breaks[i + 1], g_hi));
   }
   std::sort(out.roots.begin(), out.roots.end(), [](const auto& a, const auto& b) { return a.beta < b.beta; });
+}
 
-  // Branch pairs of each root (|p| rotated copies).
-  const std::int64_t p_inv = q == 1 ? 0 : detail::mod_inverse(((p % q) + q) % q, q);
-  const Real two_pi = 2 * pi;
+/// Stage 3: the |p| branch pairs of each root (the rotated copies of one node, see header).
+inline void add_root_pairs(const GearTrain& train, const RootFunction<Real>& f, RootCensus& out) {
+  const std::int64_t p = train.ratio().p(), q = train.ratio().q();
+  const std::int64_t abs_p = p < 0 ? -p : p;
+  const Real pi = Constants<Real>::pi(), two_pi = 2 * pi;
+  const double period = train.period();
+  const std::int64_t p_inv = q == 1 ? 0 : mod_inverse(((p % q) + q) % q, q);
   for (const auto& r : out.roots) {
     const Real b = r.beta_precise;
     const Vector3<Real> y = f.circle_point(b);
@@ -345,7 +229,7 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
             : 2 * std::atan2(y.y(), y.x()) - pi;
     const Real d = two_az_minus_pi + two_pi * static_cast<Real>(j);
     for (std::int64_t k = 0; k < abs_p; ++k) {
-      const Real t1 = theta2_at_planet_angle(train.ratio(), static_cast<Real>(phase), b, k);
+      const Real t1 = theta2_at_planet_angle(train.ratio(), static_cast<Real>(train.phase()), b, k);
       BranchPair bp;
       bp.t1 = reduce_to_period(static_cast<double>(t1), period);
       bp.t2 = reduce_to_period(static_cast<double>(t1 + d), period);
@@ -357,31 +241,53 @@ inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& 
       out.pairs.push_back(bp);
     }
   }
+}
 
-  // Pole nodes.
-  auto add_pole = [&](Real b_pole, double z) {
-    std::vector<double> ts;
-    for (std::int64_t k = 0; k < abs_p; ++k)
-      ts.push_back(reduce_to_period(static_cast<double>(theta2_at_planet_angle(train.ratio(), static_cast<Real>(phase), b_pole, k)), period));
-    for (std::int64_t k = 0; k < abs_p; ++k)
-      for (std::int64_t l = k + 1; l < abs_p; ++l) {
-        BranchPair bp;
-        bp.t1 = std::min(ts[k], ts[l]);
-        bp.t2 = std::max(ts[k], ts[l]);
-        bp.position = Vector3d(0, 0, z);
-        bp.kind = (2 * q * (l - k)) % abs_p == 0 ? NodeKind::tangency : NodeKind::crossing;
-        out.pairs.push_back(bp);
-      }
-  };
-  if (abs_p >= 2 && pole_pi) {
+/// Stage 4: the branch pairs through a pole the circle C passes (b_pole = 0 or pi, z = -1 or 1):
+/// branches k, l touch iff 2 q (l - k) / p is an integer, else they cross (see header).
+inline void add_pole_pairs(const GearTrain& train, Real b_pole, double z, RootCensus& out) {
+  const std::int64_t p = train.ratio().p(), q = train.ratio().q();
+  const std::int64_t abs_p = p < 0 ? -p : p;
+  const double period = train.period();
+  std::vector<double> ts;
+  for (std::int64_t k = 0; k < abs_p; ++k)
+    ts.push_back(reduce_to_period(
+        static_cast<double>(theta2_at_planet_angle(train.ratio(), static_cast<Real>(train.phase()), b_pole, k)), period));
+  for (std::int64_t k = 0; k < abs_p; ++k)
+    for (std::int64_t l = k + 1; l < abs_p; ++l) {
+      BranchPair bp;
+      bp.t1 = std::min(ts[k], ts[l]);
+      bp.t2 = std::max(ts[k], ts[l]);
+      bp.position = Vector3d(0, 0, z);
+      bp.kind = (2 * q * (l - k)) % abs_p == 0 ? NodeKind::tangency : NodeKind::crossing;
+      out.pairs.push_back(bp);
+    }
+}
+
+}  // namespace root_census_detail
+
+/// Counts and locates every node of the train's curve by root counting (see header).
+/// The train is analysed as given: snap it to its boundaries first (boundary_snap.hpp) to get
+/// the report's boundary cases; pass settings.tangency_tolerance = 0 for the literal curve.
+inline RootCensus root_census(const GearTrain& train, const RootCensusSettings& settings = {}) {
+  using namespace root_census_detail;
+  check_census_cost(train.ratio());  // InvalidInput up front instead of hours or gigabytes
+  const RootFunction<Real> f(train);
+  const std::int64_t abs_p = train.ratio().abs_p(), q = train.ratio().q();
+  RootCensus out;
+  out.error_bound = static_cast<double>(kRootCensusErrorFactor * LDBL_EPSILON * (abs_p + q));
+  const Real tangency_tol = std::max<Real>(settings.tangency_tolerance, out.error_bound);
+  collect_roots(f, monotone_pieces(f, train, tangency_tol, out), out);
+  add_root_pairs(train, f, out);
+  if (abs_p >= 2 && f.y_at_pi() == 0) {
     out.north_pole_node = true;
-    add_pole(pi, 1.0);
+    add_pole_pairs(train, Constants<Real>::pi(), 1.0, out);
   }
-  if (abs_p >= 2 && pole0) {
+  if (abs_p >= 2 && f.y_at_0() == 0) {
     out.south_pole_node = true;
-    add_pole(0, -1.0);
+    add_pole_pairs(train, 0, -1.0, out);
   }
-  out.nodes = assemble_nodes(out.pairs, curve);
+  out.nodes = assemble_nodes(out.pairs, TracerCurve<double>(train));
   out.evaluations = f.evaluations;
   return out;
 }

@@ -29,7 +29,7 @@
 //   point have planet angles b and -b (root_census.hpp step 1, since z = ca2 ca3 - sa2 sa3 cos b
 //   fixes cos b), so among three branches two have EQUAL planet angles, which forces the point
 //   onto the Z1 axis (step 1): a pole. Hence (a) and (b) are all the events, and the number of
-//   node points off the events is |p| x HalfTurn::node_roots().
+//   node points off the events is |p| x RootFunction::node_roots().
 //   Cusps exist only ON a pitch cone (zero speed iff a3 = a_p or pi - a_p, DESIGN.md), so
 //   cusps_below = cusps_above = 0 for every event; they are reported for the interface's sake.
 //
@@ -45,7 +45,7 @@
 // of (a), not a tangency, and is dropped.
 //
 // The counts on either side of an event are the counts at the midpoints between consecutive
-// distinct events (the count is constant between events), by HalfTurn::node_roots.
+// distinct events (the count is constant between events), by RootFunction::node_roots.
 #pragma once
 
 #include "sphtroch/map/closed_form_boundaries.hpp"
@@ -160,7 +160,7 @@ struct Sample {
 inline Sample sample(Real sa2, Real ca2, Real a3, const Ratio& n, int label) {
   Sample s;
   s.a3 = a3;
-  const HalfTurn<Real> h(sa2, ca2, std::sin(a3), std::cos(a3), n);
+  const RootFunction<Real> h(sa2, ca2, std::sin(a3), std::cos(a3), n);
   if (const auto b = h.stationary(label)) {
     s.ok = true;
     s.b = *b;
@@ -172,7 +172,7 @@ inline Sample sample(Real sa2, Real ca2, Real a3, const Ratio& n, int label) {
 
 /// The a3 grid: uniform plus geometric refinement towards 0, pi and the closed-form events.
 inline std::vector<Real> grid(Real a2, Real a_p) {
-  const Real pi = HalfTurn<Real>::pi();
+  const Real pi = RootFunction<Real>::pi();
   std::vector<Real> g;
   constexpr int kUniform = 2048;
   for (int i = 1; i < kUniform; ++i) g.push_back(pi * i / kUniform);
@@ -228,7 +228,7 @@ inline std::string tangency_name(std::int64_t m, int label) {
 /// Every tangency at this a2, unsorted.
 inline std::vector<BoundaryEvent> tangencies(Real a2, const Ratio& n) {
   const Real sa2 = std::sin(a2), ca2 = std::cos(a2);
-  const Real pi = HalfTurn<Real>::pi();
+  const Real pi = RootFunction<Real>::pi();
   const Real a_p = std::atan2(sa2, ca2 + static_cast<Real>(n.p()) / static_cast<Real>(n.q()));
   const std::vector<Real> g = grid(a2, a_p);
   std::vector<BoundaryEvent> out;
@@ -238,7 +238,7 @@ inline std::vector<BoundaryEvent> tangencies(Real a2, const Ratio& n) {
       for (Real m = std::floor(lo) + 1; m < hi; m += 1) {
         const Sample rr = solve(sa2, ca2, n, label, m, u, v);  // u.a3 < v.a3
         // A stationary value equal to the end integer next to a pitch cone: the near-cusp loop.
-        const HalfTurn<Real> h(sa2, ca2, std::sin(rr.a3), std::cos(rr.a3), n);
+        const RootFunction<Real> h(sa2, ca2, std::sin(rr.a3), std::cos(rr.a3), n);
         if ((std::abs(rr.a3 - a_p) < 1e-8L && m == h.g_at_pi()) || (std::abs(rr.a3 - (pi - a_p)) < 1e-8L && m == h.g_at_0()))
           continue;
         BoundaryEvent e;
@@ -275,7 +275,7 @@ inline std::vector<BoundaryEvent> tangencies(Real a2, const Ratio& n) {
 }
 
 inline std::int64_t node_count(Real sa2, Real ca2, Real a3, const Ratio& n) {
-  const HalfTurn<Real> h(sa2, ca2, std::sin(a3), std::cos(a3), n);
+  const RootFunction<Real> h(sa2, ca2, std::sin(a3), std::cos(a3), n);
   return n.abs_p() * h.node_roots();
 }
 
@@ -302,7 +302,7 @@ inline BoundarySet boundary_set(double a2, const Ratio& n) {
   check_census_cost(n);
   const Real A2 = a2;
   const Real sa2 = std::sin(A2), ca2 = std::cos(A2);
-  const Real pi = HalfTurn<Real>::pi();
+  const Real pi = RootFunction<Real>::pi();
   const Real a_p = std::atan2(sa2, ca2 + static_cast<Real>(n.p()) / static_cast<Real>(n.q()));
   BoundarySet s;
   s.ratio = n;
@@ -457,9 +457,9 @@ inline std::optional<TangencyHit> nearest_tangency(double a2, double a3, const R
     const double margin = static_cast<double>(static_cast<Real>(a3) - r.a3);
     if (std::abs(margin) > tolerance) continue;
     // Not the near-cusp loop of a pitch cone (see header).
-    const HalfTurn<Real> h(sa2, ca2, std::sin(r.a3), std::cos(r.a3), n);
+    const RootFunction<Real> h(sa2, ca2, std::sin(r.a3), std::cos(r.a3), n);
     const Real a_p = std::atan2(sa2, ca2 + static_cast<Real>(n.p()) / static_cast<Real>(n.q()));
-    const Real pi = HalfTurn<Real>::pi();
+    const Real pi = RootFunction<Real>::pi();
     if ((std::abs(r.a3 - a_p) < 1e-8L && m == h.g_at_pi()) || (std::abs(r.a3 - (pi - a_p)) < 1e-8L && m == h.g_at_0()))
       continue;
     if (!best || std::abs(margin) < std::abs(best->margin))

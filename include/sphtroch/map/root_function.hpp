@@ -1,12 +1,16 @@
-// sphtroch/map/root_function.hpp — the root census's function g(b) (root_census.hpp) as a function of both
-// the planet angle b and the tracer twist a3, with the derivatives the boundary set needs. Eigen
-// only (no Eigen type even): a value type over Real = long double (or any floating type).
+// sphtroch/map/root_function.hpp — the root function g(b): its integer values on (0, pi) are the
+// nodes of the curve. The one definition used by the root census (census/root_census.hpp: counts
+// and locates nodes), the boundary events of the design map (boundary_events.hpp: where the count
+// changes with a3) and the tangency refinement, so that `classify` and `boundaries` cannot
+// disagree on an event. A value type over Real = long double (or any floating type).
 //
-//   sphtroch::HalfTurn<long double> h(a2, a3, sphtroch::Ratio(5, 2));
+//   sphtroch::RootFunction<long double> g(kPi / 3, kPi / 2, sphtroch::Ratio(5, 2));
 //   const long double b = 1.0L;                 // the planet angle, in (0, pi)
-//   h.g(b);  h.dg_db(b);  h.dg_da3(b);          // g and its partial derivatives
-//   h.stationary(0);                            // stationary point b*, label 0 (or nothing)
-//   h.node_roots();                             // #{b in (0, pi): g(b) integer}, off tangencies
+//   g.g(b);  g.dg_db(b);  g.dg_da3(b);          // g and its partial derivatives
+//   g.stationary(0);                            // stationary point b*, label 0 (or nothing)
+//   g.node_roots();                             // #{b in (0, pi): g(b) integer}, off tangencies
+//   g.solve(0.1L, 1.0L, 1.0L);                  // b with g(b) = 1 on a monotone piece
+//   g.evaluations;                              // evaluations of g and g' so far
 //
 // Derivation (root_census.hpp, recalled): with C(b) = Rx(a2) Rz(b) Rx(a3) z (Eq. 4 at t = 0),
 // az(b) = atan2(y, x) of C(b), a non-pole node of the curve of n = p/q is a b in (0, pi) with
@@ -21,33 +25,43 @@
 // At a stationary point b*(a3), d/da3 g(b*(a3), a3) = dg/da3 (envelope theorem: g_b = 0 there).
 //
 // Numbers: g is evaluated relative to the exact end value g(0) or g(pi) (signed angle between the
-// horizontal projections), as root_census.hpp does, so that g - g(end) keeps its relative accuracy
+// horizontal projections), once for every user, so that g - g(end) keeps its relative accuracy
 // near the ends. Error of g: a few ulp of Real times (|p| + q) (root_census.hpp's bound).
 #pragma once
 
+#include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/types.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
+#include <vector>
 
 namespace sphtroch {
 
 template <typename Real>
-class HalfTurn {
+class RootFunction {
  public:
+  /// The train's own sines and cosines (exact identities on its boundaries: GearTrain::trig).
+  explicit RootFunction(const GearTrain& train) : RootFunction(train.trig<Real>(), train.ratio()) {}
   /// Twist angles in radians (a2, a3 in (0, pi)), n = p/q.
-  HalfTurn(Real a2, Real a3, const Ratio& n)
-      : HalfTurn(std::sin(a2), std::cos(a2), std::sin(a3), std::cos(a3), n) {}
+  RootFunction(Real a2, Real a3, const Ratio& n)
+      : RootFunction(std::sin(a2), std::cos(a2), std::sin(a3), std::cos(a3), n) {}
   /// From the sines and cosines (exact identities, e.g. a2 = pi/2: sin 1, cos 0).
-  HalfTurn(Real sa2, Real ca2, Real sa3, Real ca3, const Ratio& n)
+  RootFunction(Real sa2, Real ca2, Real sa3, Real ca3, const Ratio& n)
       : sa2_(sa2), ca2_(ca2), sa3_(sa3), ca3_(ca3), p_(static_cast<Real>(n.p())), q_(static_cast<Real>(n.q())) {
-    y0_ = -(sa3_ * ca2_ + ca3_ * sa2_);
-    ypi_ = sa3_ * ca2_ - ca3_ * sa2_;
+    y0_ = -(sa3_ * ca2_ + ca3_ * sa2_);  // y of C(0)  = -sin(a2 + a3)
+    ypi_ = sa3_ * ca2_ - ca3_ * sa2_;    // y of C(pi) =  sin(a3 - a2)
   }
 
-  static Real pi() { return static_cast<Real>(3.141592653589793238462643383279502884L); }
+  static Real pi() { return Constants<Real>::pi(); }
+  Real p() const { return p_; }
+  Real q() const { return q_; }
 
   /// y of C(0) = -sin(a2 + a3) and of C(pi) = sin(a3 - a2): 0 exactly when the end is a pole.
   Real y_at_0() const { return y0_; }
@@ -55,9 +69,20 @@ class HalfTurn {
   /// The integer values of g at the ends (trivial roots t1 = t2), for ends that are not poles.
   Real g_at_0() const { return y0_ < 0 ? -p_ : Real(0); }
   Real g_at_pi() const { return ypi_ > 0 ? q_ : q_ - p_; }
+  /// Limits of g at the ends, also when they are poles: C(b) then approaches the pole tangentially
+  /// to the x axis (x ~ sa3 |b - end|, y ~ O(|b - end|^2)), so az -> 0 and g -> -p/2 or q - p/2.
+  Real g_limit_at_0() const { return y0_ == 0 ? -p_ / 2 : g_at_0(); }
+  Real g_limit_at_pi() const { return ypi_ == 0 ? q_ - p_ / 2 : g_at_pi(); }
+
+  /// C(b) in carrier coordinates.
+  Vector3<Real> circle_point(Real b) const {
+    return Vector3<Real>(sa3_ * std::sin(b), -(sa3_ * ca2_ * std::cos(b) + ca3_ * sa2_),
+                         ca2_ * ca3_ - sa2_ * sa3_ * std::cos(b));
+  }
 
   /// g(b), b in (0, pi) (see header).
   Real g(Real b) const {
+    ++evaluations;
     const Real x = sa3_ * std::sin(b), y = -(sa3_ * ca2_ * std::cos(b) + ca3_ * sa2_);
     const bool near_zero = b <= pi() / 2;
     const Real y_end = near_zero ? y0_ : ypi_;
@@ -69,6 +94,7 @@ class HalfTurn {
 
   /// dg/db (see header).
   Real dg_db(Real b) const {
+    ++evaluations;
     const Real c = std::cos(b);
     const Real x = sa3_ * std::sin(b), y = -(sa3_ * ca2_ * c + ca3_ * sa2_);
     return (p_ * (sa3_ * sa3_ * ca2_ + sa3_ * ca3_ * sa2_ * c) / (x * x + y * y) + q_) / pi();
@@ -103,31 +129,69 @@ class HalfTurn {
     return std::acos(*c);
   }
 
+  /// Every stationary point of g in (0, pi), ascending, without repeats.
+  std::vector<Real> stationary_points() const {
+    std::vector<Real> bs;
+    for (int label = 0; label < 2; ++label)
+      if (const auto b = stationary(label)) bs.push_back(*b);
+    std::sort(bs.begin(), bs.end());
+    bs.erase(std::unique(bs.begin(), bs.end()), bs.end());
+    return bs;
+  }
+
+  /// The b in [lo, hi] with g(b) = m, where g - m changes sign on [lo, hi] (a monotone piece):
+  /// bisection with a Newton step from each midpoint that stays inside the bracket, to a bracket
+  /// of 4 ulp of max(1, hi) (at most 200 steps).
+  Real solve(Real lo, Real hi, Real m) const {
+    Real flo = g(lo) - m;
+    const Real eps = std::numeric_limits<Real>::epsilon();
+    for (int it = 0; it < 200 && hi - lo > 4 * eps * std::max<Real>(1, hi); ++it) {
+      const Real mid = (lo + hi) / 2;
+      const Real fm = g(mid) - m;
+      if (fm == 0) return mid;
+      narrow(lo, hi, flo, mid, fm);
+      const Real d = dg_db(mid);
+      if (d == 0) continue;
+      const Real x = mid - fm / d;
+      if (!(x > lo && x < hi)) continue;
+      const Real fx = g(x) - m;
+      if (fx == 0) return x;
+      narrow(lo, hi, flo, x, fx);
+    }
+    return (lo + hi) / 2;
+  }
+
   /// Roots of g in (0, pi) counted as crossings: integers strictly inside the range of each
   /// monotone piece between 0, the stationary points and pi (REQUIRES: no stationary value of g
   /// and no end is exactly on its boundary, i.e. a3 off every event; else the count is that of
   /// one side). The curve has |p| times this many node points (root_census.hpp).
   std::int64_t node_roots() const {
-    Real breaks[2];
-    int k = 0;
-    for (int label = 1; label >= 0; --label)  // label 1 has the smaller b
-      if (const auto b = stationary(label)) breaks[k++] = *b;
-    Real values[4];
-    int v = 0;
-    values[v++] = y0_ == 0 ? -p_ / 2 : g_at_0();
-    for (int i = 0; i < k; ++i) values[v++] = g(breaks[i]);
-    values[v++] = ypi_ == 0 ? q_ - p_ / 2 : g_at_pi();
+    std::vector<Real> values{g_limit_at_0()};
+    for (Real b : stationary_points()) values.push_back(g(b));
+    values.push_back(g_limit_at_pi());
     std::int64_t roots = 0;
-    for (int i = 0; i + 1 < v; ++i) {
+    for (std::size_t i = 0; i + 1 < values.size(); ++i) {
       const Real lo = std::min(values[i], values[i + 1]), hi = std::max(values[i], values[i + 1]);
-      // Integers m with lo < m < hi.
-      const Real first = std::floor(lo) + 1, last = std::ceil(hi) - 1;
+      const Real first = std::floor(lo) + 1, last = std::ceil(hi) - 1;  // integers m, lo < m < hi
       if (last >= first) roots += static_cast<std::int64_t>(last - first) + 1;
     }
     return roots;
   }
 
+  /// Evaluations of g and dg/db made through this object (the census's work counter).
+  mutable std::size_t evaluations = 0;
+
  private:
+  /// Keeps the half of [lo, hi] where g - m changes sign, given f = g(x) - m at x inside.
+  static void narrow(Real& lo, Real& hi, Real& flo, Real x, Real f) {
+    if ((f < 0) == (flo < 0)) {
+      lo = x;
+      flo = f;
+    } else {
+      hi = x;
+    }
+  }
+
   Real sa2_, ca2_, sa3_, ca3_, p_, q_, y0_ = 0, ypi_ = 0;
 };
 
