@@ -5,6 +5,7 @@
 #include "test_support.hpp"
 #include "sphtroch/atlas/atlas_boundary_check.hpp"
 #include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/census/root_census.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/map/criteria.hpp"
 
@@ -329,4 +330,34 @@ TEST_CASE("classify at a tangency of a tiny curve next to a pole (n = 3/5, a2 = 
     ++checked;
   }
   CHECK(checked == 2);
+}
+
+// One g(b) (map/root_function.hpp) serves `boundaries` and `classify`: at the very a3 double where
+// boundary_set() puts a tangency event, the root census (what `classify` counts with) must find
+// that tangency — the double root m at the stationary point b* — and count the node points the
+// event implies: two simple roots merge into one double root, so the count there is the mean of
+// nodes_below and nodes_above (they differ by 2|p|). Not sampling around the event: if the two
+// ever used different functions (or different stationary-point formulas), the event double would
+// miss the census's tangency by far more than the 1e-10 tangency tolerance.
+TEST_CASE("one g(b): at every tangency event of boundary_set, the root census finds that tangency and the mean count",
+          "[boundary_set]") {
+  const std::vector<Ratio> ratios{Ratio(3), Ratio(5, 2), Ratio(-7, 3), Ratio(7, 5), Ratio(4, 3), Ratio(-5, 2), Ratio(9, 4)};
+  const std::vector<double> a2s{0.7, kPi / 2, 2.1, 0.35};
+  std::size_t checked = 0;
+  for (const Ratio& n : ratios)
+    for (double a2 : a2s) {
+      const BoundarySet s = boundary_set(a2, n);
+      for (const BoundaryEvent& e : of_kind(s, BoundaryEventKind::tangency)) {
+        INFO("n = " << n.p() << "/" << n.q() << ", a2 = " << a2 << ", event " << e.name << " at a3 = " << e.a3);
+        REQUIRE(std::llabs(e.nodes_above - e.nodes_below) == 2 * n.abs_p());
+        const RootCensus rc = root_census(GearTrain(a2, e.a3, n));
+        bool found = false;
+        for (const NodeRoot& r : rc.roots)
+          found = found || (r.kind == NodeKind::tangency && r.value == e.m && std::abs(r.beta - e.b) < 1e-6);
+        CHECK(found);
+        CHECK(static_cast<std::int64_t>(rc.nodes.size()) == (e.nodes_below + e.nodes_above) / 2);
+        ++checked;
+      }
+    }
+  CHECK(checked >= 10);  // the ratios and a2 above do have tangency loci (n = 3 at pi/2: two)
 }

@@ -42,6 +42,7 @@
 #include "sphtroch/map/closed_form_boundaries.hpp"
 #include "sphtroch/map/boundary_snap.hpp"
 #include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
@@ -51,19 +52,14 @@
 #include "sphtroch/core/types.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace sphtroch {
@@ -145,7 +141,7 @@ inline AtlasCell atlas_cell(const AtlasSpec& spec, std::size_t i, std::size_t j)
 
 /// Progress callback: (cells done, cells total); called on the calling thread only, about
 /// every 0.1 s and once at the end.
-using AtlasProgress = std::function<void(std::size_t done, std::size_t total)>;
+using AtlasProgress = ParallelProgress;
 
 /// Every cell of rows [rows.begin, rows.end), row-major, on `threads` worker threads.
 /// REQUIRES: spec valid, rows.begin <= rows.end <= grid, 1 <= threads <= kAtlasMaxThreads.
@@ -236,43 +232,10 @@ inline std::vector<AtlasCell> compute_atlas(const AtlasSpec& spec, AtlasRows row
   const std::size_t g = spec.grid;
   const std::size_t total = (rows.end - rows.begin) * g;
   std::vector<AtlasCell> cells(total);
-  // Work is handed out in chunks of cells by an atomic counter; each result goes to its index.
+  // Each result goes to its index: the cells do not depend on the thread count.
   constexpr std::size_t kChunk = 64;
-  std::atomic<std::size_t> next{0}, done{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto worker = [&] {
-    try {
-      for (;;) {
-        const std::size_t start = next.fetch_add(kChunk);
-        if (start >= total || failed.load()) return;
-        const std::size_t stop = std::min(total, start + kChunk);
-        for (std::size_t k = start; k < stop; ++k) cells[k] = atlas_cell(spec, rows.begin + k / g, k % g);
-        done.fetch_add(stop - start);
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = std::current_exception();
-      failed = true;
-    }
-  };
-  const std::size_t n_threads = std::min(threads, std::max<std::size_t>(1, (total + kChunk - 1) / kChunk));
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < n_threads; ++t) pool.emplace_back(worker);
-  if (!progress) {
-    worker();  // the calling thread is one of the workers
-  } else {
-    // The calling thread reports progress; the pool (one more thread) does the work.
-    pool.emplace_back(worker);
-    while (done.load() < total && !failed.load()) {
-      progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  }
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-  if (progress) progress(done.load(), total);
+  parallel_for(total, threads, [&](std::size_t k) { cells[k] = atlas_cell(spec, rows.begin + k / g, k % g); }, kChunk,
+               progress);
   return cells;
 }
 

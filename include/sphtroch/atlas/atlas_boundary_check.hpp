@@ -21,6 +21,7 @@
 #pragma once
 
 #include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/io/number_text.hpp"
 
@@ -29,7 +30,6 @@
 #include <map>
 #include <ostream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -73,14 +73,7 @@ inline AtlasBoundaryCheck check_atlas_boundaries(const AtlasSpec& spec, const st
   if (cells.empty()) return out;
   const std::size_t i0 = cells.front().i, columns = cells.size() / g;
   std::vector<std::vector<BoundaryEvent>> events(columns);
-  const std::size_t workers = std::max<std::size_t>(1, std::min(threads, columns));
-  auto work = [&](std::size_t w) {
-    for (std::size_t c = w; c < columns; c += workers) events[c] = boundary_set(spec.a2_at(i0 + c), spec.ratio).events;
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
-  work(0);
-  for (auto& t : pool) t.join();
+  parallel_for(columns, threads, [&](std::size_t c) { events[c] = boundary_set(spec.a2_at(i0 + c), spec.ratio).events; });
   auto key = [](const BoundaryEvent& e) {
     return e.kind == BoundaryEventKind::tangency ? "t" + std::to_string(e.label) + ":" + std::to_string(e.m) : e.name;
   };

@@ -43,8 +43,7 @@ struct TangencyPair {
 inline TangencyPair refine_tangency_pair(const GearTrain& train, long double t1, long double t2) {
   using Real = long double;
   const Real pi = RootFunction<Real>::pi();
-  const auto t = train.trig<Real>();
-  const RootFunction<Real> h(t.sin_a2, t.cos_a2, t.sin_a3, t.cos_a3, train.ratio());
+  const RootFunction<Real> h(train);
   const Real n = static_cast<Real>(train.ratio().p()) / static_cast<Real>(train.ratio().q());
   const Real phase = train.phase();
   // Planet angles wrapped to (-pi, pi].

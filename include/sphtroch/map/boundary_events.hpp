@@ -50,6 +50,7 @@
 
 #include "sphtroch/map/closed_form_boundaries.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
+#include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/map/root_function.hpp"
 #include "sphtroch/core/ratio.hpp"
@@ -60,7 +61,6 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace sphtroch {
@@ -391,18 +391,10 @@ inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_
   for (BoundaryKind k : atlas_boundary_kinds(n)) out.push_back(closed(k));
   // The tangencies of every sample (independent: spread over the threads), then linked.
   std::vector<std::vector<BoundaryEvent>> events(steps);
-  const std::size_t workers = std::max<std::size_t>(1, std::min(threads, steps));
-  auto work = [&](std::size_t w) {
-    for (std::size_t k = w; k < steps; k += workers) {
-      events[k] = tangencies(a2s[k], n);
-      std::sort(events[k].begin(), events[k].end(),
-                [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
-  work(0);
-  for (auto& t : pool) t.join();
+  parallel_for(steps, threads, [&](std::size_t k) {
+    events[k] = tangencies(a2s[k], n);
+    std::sort(events[k].begin(), events[k].end(), [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
+  });
   // Tangency loci: events of one (label, m) continued from sample to sample (nearest in a3).
   std::vector<std::size_t> open;  // indices into out of loci that reached the previous sample
   for (std::size_t k = 0; k < steps; ++k) {

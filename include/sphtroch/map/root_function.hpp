@@ -49,6 +49,7 @@ class RootFunction {
  public:
   /// The train's own sines and cosines (exact identities on its boundaries: GearTrain::trig).
   explicit RootFunction(const GearTrain& train) : RootFunction(train.trig<Real>(), train.ratio()) {}
+  RootFunction(const TwistTrig<Real>& t, const Ratio& n) : RootFunction(t.sin_a2, t.cos_a2, t.sin_a3, t.cos_a3, n) {}
   /// Twist angles in radians (a2, a3 in (0, pi)), n = p/q.
   RootFunction(Real a2, Real a3, const Ratio& n)
       : RootFunction(std::sin(a2), std::cos(a2), std::sin(a3), std::cos(a3), n) {}
