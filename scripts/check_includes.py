@@ -19,9 +19,7 @@ import re
 import sys
 
 # detail:: helpers every header may use (defined once, in the header named).
-SHARED_DETAIL = {
-    "to_text": "core/errors.hpp",
-}
+SHARED_DETAIL = {}
 
 # Which folders a header of each folder may include (a folder always includes its own).
 LAYERS = {

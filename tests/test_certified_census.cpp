@@ -9,7 +9,7 @@
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/certified_census.hpp"
 #include "sphtroch/census/node_sets.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/census/root_census.hpp"
 

@@ -35,7 +35,7 @@
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/node_csv.hpp"
 #include "sphtroch/io/npy.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
@@ -66,6 +66,7 @@
 #include "sphtroch/atlas/atlas_csv.hpp"
 #include "sphtroch/atlas/atlas_summary.hpp"
 #include "sphtroch/atlas/atlas_svg.hpp"
+#include "sphtroch/atlas/atlas_slices.hpp"
 
 #if defined(SPHTROCH_HAVE_EXACT)
 #include "sphtroch/classify.hpp"

@@ -111,7 +111,7 @@ double angle_arg(py::handle v, const std::string& field, std::string& text) {
     return parse_angle(text, field);
   }
   const double x = real_arg(v, field, kAngleForms);
-  text = detail::to_text(x);
+  text = number_text(x);
   return x;
 }
 
@@ -122,7 +122,7 @@ A3Spec a3_arg(py::handle v, std::string& text) {
     return parse_a3(text, "a3");
   }
   const double x = real_arg(v, "a3", kAngleForms);
-  text = detail::to_text(x);
+  text = number_text(x);
   return {A3Reference::given, x};
 }
 
@@ -142,7 +142,7 @@ Ratio ratio_arg(py::handle v) {
     if (pv == 0) throw InvalidInput("n", repr_of(v), "the gear ratio must not be zero", kRatioForms);
     return Ratio(pv, qv);  // range-checked (InvalidInput "n")
   }
-  return parse_ratio(detail::to_text(real_arg(v, "n", kRatioForms)), "n");
+  return parse_ratio(number_text(real_arg(v, "n", kRatioForms)), "n");
 }
 
 /// A gear train and the text of its inputs (TrainText: a2, a3, n, phase, as classify --json reports them).
@@ -175,9 +175,8 @@ py::tuple trace(const Train& self, py::handle samples, py::handle turns, py::han
   const bool velocity = flag_arg(velocity_flag, "velocity");
   std::optional<double> k;
   if (!turns.is_none()) {
-    k = real_arg(turns, "turns", "(0, 1e6] carrier turns");
-    if (!(*k > 0.0 && *k <= kMaxTurns))
-      throw InvalidInput("turns", detail::to_text(*k), "outside the valid range", "(0, 1e6] carrier turns");
+    k = real_arg(turns, "turns", kTurnsRange);
+    check_turns(*k, number_text(*k));
   }
   const std::size_t n = samples.is_none() ? trace_sample_count(self.train, k)
                                            : count_arg(samples, "samples", kMinSamples, kMaxSamples);
@@ -279,10 +278,14 @@ py::dict classify_roots_dict(const Train& self, py::handle literal_flag) {
   return d;
 }
 
-/// (lo, hi) of angles (radians or the CLI's text), field `field`.
+/// (lo, hi) of angles (radians or the CLI's text), or the CLI's "LO:HI" text, field `field`.
 std::pair<double, double> range_arg(py::handle v, const std::string& field) {
-  const std::string valid = "(lo, hi) with angles as numbers (radians) or text (\"pi/3\")";
-  if (py::isinstance<py::str>(v) || !py::isinstance<py::sequence>(v) || py::len(v) != 2)
+  const std::string valid = "(lo, hi) with angles as numbers (radians) or text (\"pi/3\"), or \"LO:HI\"";
+  if (py::isinstance<py::str>(v)) {
+    const AngleRange r = parse_angle_range(v.cast<std::string>(), field, kAngleRangeForms);
+    return {r.lo, r.hi};
+  }
+  if (!py::isinstance<py::sequence>(v) || py::len(v) != 2)
     throw InvalidInput(field, repr_of(v), "not a pair (lo, hi)", valid);
   const py::sequence s = py::reinterpret_borrow<py::sequence>(v);
   std::string ignored;

@@ -6,6 +6,7 @@
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/atlas/atlas_boundary_check.hpp"
 #include "sphtroch/atlas/atlas_csv.hpp"
+#include "sphtroch/atlas/atlas_slices.hpp"
 #include "sphtroch/atlas/atlas_summary.hpp"
 #include "sphtroch/atlas/atlas_svg.hpp"
 #include "sphtroch/io/input_file.hpp"
@@ -37,21 +38,6 @@ struct MergeOptions {
   std::string output, svg;
 };
 
-const char* const kRangeForms = "LO:HI with 0 <= LO < HI <= pi (angles: 1.2, pi/6, 5pi/6, 90deg)";
-
-AngleRange parse_range(const std::string& text, const std::string& field) {
-  if (text.find_first_of(" \t\r\n") != std::string::npos)
-    throw InvalidInput(field, text, "spaces inside a range", kRangeForms);
-  const auto colon = text.find(':');
-  if (colon == std::string::npos) throw InvalidInput(field, text, "not a range LO:HI", kRangeForms);
-  const auto lo = detail::angle_value(text.substr(0, colon));
-  const auto hi = detail::angle_value(text.substr(colon + 1));
-  if (!lo || !hi) throw InvalidInput(field, text, "not two finite angles LO:HI", kRangeForms);
-  if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
-    throw InvalidInput(field, text, "outside the valid range", kRangeForms);
-  return AngleRange{*lo, *hi};
-}
-
 /// Every cell centre must be a valid twist, strictly inside (0, pi): a range too narrow for the
 /// grid (0:4.9e-324) would put centres at 0. Named by the range as typed.
 void check_cell_centres(const AtlasSpec& spec, const AtlasOptions& o) {
@@ -61,7 +47,7 @@ void check_cell_centres(const AtlasSpec& spec, const AtlasOptions& o) {
     for (std::size_t k = 1; ok && k < spec.grid; ++k) ok = (spec.*at)(k - 1) < (spec.*at)(k);
     if (!ok)
       throw InvalidInput(field, text, "too narrow for the grid: its cell centres are not distinct angles in (0, pi)",
-                         std::string(kRangeForms) + ", wide enough for distinct cell centres");
+                         std::string(kAngleRangeForms) + ", wide enough for distinct cell centres");
   };
   check(&AtlasSpec::a2_at, o.a2, "a2");
   check(&AtlasSpec::a3_at, o.a3, "a3");
@@ -69,7 +55,7 @@ void check_cell_centres(const AtlasSpec& spec, const AtlasOptions& o) {
     try {
       GearTrain::on_cone(spec.a2_at(i), A3Reference::pitch_cone, 0.0, spec.ratio);
     } catch (const InvalidInput& e) {
-      throw InvalidInput("a2", o.a2, "its cell centre a2 = " + number(spec.a2_at(i)) + " is " + e.problem(),
+      throw InvalidInput("a2", o.a2, "its cell centre a2 = " + number_text(spec.a2_at(i)) + " is " + e.problem(),
                          e.valid_range());
     }
   }
@@ -151,8 +137,8 @@ void run_atlas(const AtlasOptions& o) {
   AtlasSpec spec;
   spec.ratio = parse_ratio(o.n, "n");
   spec.grid = parse_count(o.grid, "grid", 1, kAtlasMaxGrid);
-  spec.a2 = parse_range(o.a2, "a2");
-  spec.a3 = parse_range(o.a3, "a3");
+  spec.a2 = parse_angle_range(o.a2, "a2");
+  spec.a3 = parse_angle_range(o.a3, "a3");
   spec.literal = o.literal;
   check_cell_centres(spec, o);
   spec.validate();
@@ -187,114 +173,10 @@ void run_atlas(const AtlasOptions& o) {
   check_atlas_certified(summary, &check);
 }
 
-/// One slice given to atlas-merge. A regular file is read twice or more (its head first, its rows
-/// when its turn comes), never held in memory; standard input, a pipe or a FIFO can be read only
-/// once, so its text is held (bounded by kMaxHeldSliceBytes).
-struct SliceSource {
-  std::string path;
-  AtlasCsvHead head;
-  std::optional<std::string> held;
-};
-
-/// Atlas lines are under 200 bytes; a longer one is not an atlas line.
-constexpr std::size_t kMaxAtlasLine = 4096;
-/// A slice read from a pipe is held in memory: at most this many bytes (~13 M cells).
-constexpr std::size_t kMaxHeldSliceBytes = std::size_t(1) << 30;
-
-UsageError unreadable_slice(const std::string& path, const InvalidInput& e) {
-  return UsageError{"atlas-merge: slice = " + path + ": " + e.problem() +
+/// A slice that cannot be read as a file: a usage error naming it.
+UsageError unreadable_slice(const UnreadableSlice& e) {
+  return UsageError{"atlas-merge: slice = " + e.path() + ": " + e.problem() +
                     "; valid: a readable CSV written by sphtroch atlas"};
-}
-
-/// The comment and header lines of a slice, checked as read_atlas_csv checks them.
-AtlasCsvHead read_head(InputLines& lines, const std::string& path) {
-  const auto bad = [&](const char* problem) {
-    return InvalidInput("slice", path, problem, atlas_csv_detail::kAtlasCsvForm);
-  };
-  std::string_view line;
-  if (!lines.next(line)) throw bad("empty or truncated (no final newline)");
-  const std::string comment(line);  // the view ends with the next call
-  if (!lines.next(line) || !lines.last_ended_with_newline()) throw bad("no comment and header lines");
-  return read_atlas_csv_head(comment, line, path);
-}
-
-/// Calls row(cell, line) for every row of the slice, in order, with read_atlas_csv's checks
-/// (the head again, row count, final newline); memory: one block and one line.
-template <class Row>
-void for_each_row(const SliceSource& s, const Row& row) {
-  std::optional<InputFile> file;
-  std::optional<InputLines> lines;
-  try {
-    if (s.held) {
-      lines.emplace(*s.held, s.path, "slice", kMaxAtlasLine);
-    } else {
-      file.emplace(InputFile::open(s.path, "slice"));
-      lines.emplace(*file, kMaxAtlasLine);
-    }
-  } catch (const InvalidInput& e) {
-    throw unreadable_slice(s.path, e);
-  }
-  auto bad = [&](const std::string& problem) { return InvalidInput("slice", s.path, problem, atlas_csv_detail::kAtlasCsvForm); };
-  auto next = [&](std::string_view& line) {
-    try {
-      return lines->next(line);
-    } catch (const InvalidInput& e) {
-      if (e.field() == "slice" && e.value() == s.path && e.problem().rfind("line ", 0) == 0) throw bad(e.problem());
-      throw unreadable_slice(s.path, e);
-    }
-  };
-  AtlasCsvHead again;
-  try {
-    again = read_head(*lines, s.path);
-  } catch (const InvalidInput& e) {
-    if (e.valid_range() == atlas_csv_detail::kAtlasCsvForm) throw;
-    throw unreadable_slice(s.path, e);
-  }
-  if (again.spec_comment != s.head.spec_comment || again.rows.begin != s.head.rows.begin)
-    throw bad("changed while being merged");
-  std::string_view line;
-  const std::size_t expected = s.head.cell_count();
-  std::size_t k = 0;
-  for (; next(line); ++k)
-    if (k < expected) row(read_atlas_csv_row(s.head, k, line), line);
-  if (k != 0 && !lines->last_ended_with_newline()) throw bad("empty or truncated (no final newline)");
-  if (k != expected)
-    throw bad(std::to_string(k) + " rows where rows " + std::to_string(s.head.rows.begin) + ":" +
-              std::to_string(s.head.rows.end) + " of grid " + std::to_string(s.head.spec.grid) + " need " +
-              std::to_string(expected));
-}
-
-/// The head of every slice; a slice that is not a regular file is read whole and held.
-std::vector<SliceSource> open_slices(const std::vector<std::string>& paths) {
-  std::vector<SliceSource> sources;
-  for (const std::string& path : paths) {
-    SliceSource s;
-    s.path = path;
-    try {
-      InputFile in = InputFile::open(path, "slice");
-      if (path == "-" || !in.size()) {  // read once: stdin (even from a file), a pipe, a FIFO
-        std::string text;
-        std::vector<char> block(std::size_t(1) << 16);
-        while (const std::size_t k = in.read(block.data(), block.size())) {
-          text.append(block.data(), k);
-          if (text.size() > kMaxHeldSliceBytes)
-            throw InvalidInput("slice", path, "larger than " + std::to_string(kMaxHeldSliceBytes) + " bytes from a pipe",
-                               "a regular file (streamed), or a pipe of at most that size");
-          if (k < block.size()) break;
-        }
-        s.held = std::move(text);
-      }
-      std::optional<InputLines> lines;
-      if (s.held) lines.emplace(*s.held, path, "slice", kMaxAtlasLine);
-      else lines.emplace(in, kMaxAtlasLine);
-      s.head = read_head(*lines, path);
-    } catch (const InvalidInput& e) {
-      if (e.field() == "slice" && e.valid_range() == atlas_csv_detail::kAtlasCsvForm) throw;
-      throw unreadable_slice(path, e);
-    }
-    sources.push_back(std::move(s));
-  }
-  return sources;
 }
 
 /// Joins the slices in shard order: the merged CSV streamed row by row (memory: one block and
@@ -309,9 +191,9 @@ void run_merge(const MergeOptions& o) {
   if (std::count(o.slices.begin(), o.slices.end(), std::string("-")) > 1)
     throw UsageError{"atlas-merge: slice = -: standard input given twice; valid: each slice once, at most one as -"};
   try {
-    const std::vector<SliceSource> sources = open_slices(o.slices);
+    const std::vector<AtlasSlice> sources = open_atlas_slices(o.slices);
     std::vector<AtlasCsvHead> heads;
-    for (const SliceSource& s : sources) heads.push_back(s.head);
+    for (const AtlasSlice& s : sources) heads.push_back(s.head);
     const std::vector<std::size_t> order = atlas_slice_order(heads);
     const AtlasSpec& spec = heads.front().spec;
 
@@ -324,7 +206,7 @@ void run_merge(const MergeOptions& o) {
       if (out) *out << atlas_csv_comment(spec) << '\n' << kAtlasCsvHeader << '\n';
       std::size_t k = 0;
       for (std::size_t at : order)
-        for_each_row(sources[at], [&](const AtlasCell& c, std::string_view line) {
+        for_each_atlas_row(sources[at], [&](const AtlasCell& c, std::string_view line) {
           const std::size_t before = summary.disagreement_count;
           add_to_summary(summary, c, k++, spec.ratio, 0);
           if (summary.disagreement_count > before && listed.size() < kMaxListedDisagreements) listed.push_back(c);
@@ -348,6 +230,8 @@ void run_merge(const MergeOptions& o) {
       write_stdout_after_outputs(written_files({o.output, o.svg}), write_summary);
     }
     check_atlas_certified(summary, nullptr);
+  } catch (const UnreadableSlice& e) {
+    throw unreadable_slice(e);
   } catch (const InvalidInput& e) {
     throw UsageError{std::string("atlas-merge: ") + e.what()};
   }

@@ -32,16 +32,11 @@ void run_boundaries(const BoundariesOptions& o) {
   }
   if (o.json)
     throw UsageError{"--json: the curves over an a2 range are CSV; valid: --json with one --a2 angle, or leave it out"};
-  if (o.a2.find_first_of(" \t\r\n") != std::string::npos) throw InvalidInput("a2", o.a2, "spaces inside a range", kA2Forms);
-  const auto lo = detail::angle_value(o.a2.substr(0, colon));
-  const auto hi = detail::angle_value(o.a2.substr(colon + 1));
-  if (!lo || !hi) throw InvalidInput("a2", o.a2, "not two finite angles LO:HI", kA2Forms);
-  if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
-    throw InvalidInput("a2", o.a2, "outside the valid range", kA2Forms);
+  const AngleRange a2 = parse_angle_range(o.a2, "a2", kA2Forms);
   const std::size_t steps = o.steps.empty() ? 720 : parse_count(o.steps, "steps", 1, kMaxLocusSteps);
   const std::size_t threads = parse_threads(o.threads);
-  const std::vector<Locus> loci = boundary_loci(n, *lo, *hi, steps, threads);
-  write_output(o.output, [&](std::ostream& out) { write_loci_csv(out, n, *lo, *hi, steps, loci); });
+  const std::vector<Locus> loci = boundary_loci(n, a2.lo, a2.hi, steps, threads);
+  write_output(o.output, [&](std::ostream& out) { write_loci_csv(out, n, a2.lo, a2.hi, steps, loci); });
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #include "cli_common.hpp"
 
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 
 #include <algorithm>
@@ -27,10 +27,6 @@ void TrainOptions::add_to(CLI::App& command) {
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {
   command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)");
 }
-
-std::string number(double v) { return number_text(v); }
-
-std::string shortest_number(double v) { return number_text(v); }
 
 std::size_t parse_threads(const std::string& text) {
   if (!text.empty()) return parse_count(text, "threads", 1, kMaxThreads);

@@ -6,7 +6,7 @@
 
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/core/sampling.hpp"
 
@@ -103,15 +103,10 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
 /// A non-negative integer option value, or InvalidInput naming the option.
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
 
-/// The shortest form that reads back as the same double (number_text.hpp): every number the
-/// tool prints, in data and in reports.
-std::string number(double v);
-
-/// A measured time in seconds for text reports (number_text.hpp: 3 significant digits).
+/// Every number the tool prints is sphtroch::number_text (core/number_text.hpp: the shortest form
+/// that reads back as the same double); measured times in text reports are seconds_text.
+using sphtroch::number_text;
 using sphtroch::seconds_text;
-
-/// The same as number() (kept for the named constants of text reports).
-std::string shortest_number(double v);
 
 /// The worker threads of a command: `text` ("" = all cores, capped at kMaxThreads) as a count.
 constexpr std::size_t kMaxThreads = 1024;

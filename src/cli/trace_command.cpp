@@ -3,7 +3,7 @@
 #include "cli_common.hpp"
 
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/trace_output.hpp"
@@ -44,10 +44,7 @@ void run_trace(const TraceOptions& o) {
                      "; valid: either --samples N (closed curve) or --turns K (open curve)"};
   std::optional<double> turns;
   if (!o.turns.empty()) {
-    const auto k = detail::strict_double(o.turns);
-    if (!k || !(*k > 0.0 && *k <= kMaxTurns))
-      throw InvalidInput("turns", o.turns, "outside the valid range", "a number in (0, 1e6] carrier turns");
-    turns = *k;
+    turns = parse_turns(o.turns);
   }
   const std::size_t n =
       o.samples.empty() ? trace_sample_count(train, turns) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);

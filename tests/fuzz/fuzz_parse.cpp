@@ -9,7 +9,7 @@
 #include "fuzz_common.hpp"
 
 #include "sphtroch/core/errors.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 
 #include <charconv>

@@ -75,12 +75,6 @@ constexpr double kAtlasBoundaryBand = 1e-9;
 /// Largest thread count accepted.
 constexpr std::size_t kAtlasMaxThreads = 1024;
 
-/// A closed angle range [lo, hi] of a2 or a3, radians; 0 <= lo < hi <= pi.
-struct AngleRange {
-  double lo = 0.0;
-  double hi = Constants<double>::pi();
-};
-
 struct AtlasSpec {
   Ratio ratio{2};
   std::size_t grid = 128;  // G: G x G cells
@@ -179,13 +173,13 @@ inline void AtlasSpec::validate() const {
   const double pi = Constants<double>::pi();
   auto check = [&](const AngleRange& r, const char* field) {
     if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo >= 0.0 && r.lo < r.hi && r.hi <= pi))
-      throw InvalidInput(field, detail::to_text(r.lo) + ":" + detail::to_text(r.hi), "not a valid range",
+      throw InvalidInput(field, number_text(r.lo) + ":" + number_text(r.hi), "not a valid range",
                          "LO:HI with 0 <= LO < HI <= pi");
   };
   check(a2, "a2");
   check(a3, "a3");
   if (!(boundary_tolerance >= 0.0))
-    throw InvalidInput("boundary_tolerance", detail::to_text(boundary_tolerance), "negative", ">= 0 radians");
+    throw InvalidInput("boundary_tolerance", number_text(boundary_tolerance), "negative", ">= 0 radians");
   // The carrier-twist bounds up front, for every row: a row whose pitch cone is ill-defined would
   // refuse the cells near it (GearTrain), so the whole range is refused instead.
   for (std::size_t i = 0; i < grid; ++i) GearTrain::on_cone(a2_at(i), A3Reference::pitch_cone, 0.0, ratio);

@@ -23,7 +23,7 @@
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/map/boundary_events.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -130,8 +130,8 @@ inline std::optional<std::string_view> field(const std::vector<std::string_view>
 
 inline std::string atlas_csv_comment(const AtlasSpec& spec, const std::optional<AtlasShard>& shard) {
   std::string s = "# sphtroch atlas n=" + spec.ratio.str() + " grid=" + std::to_string(spec.grid) + " a2=" +
-                  detail::to_text(spec.a2.lo) + ":" + detail::to_text(spec.a2.hi) + " a3=" + detail::to_text(spec.a3.lo) +
-                  ":" + detail::to_text(spec.a3.hi) + " reading=" + (spec.literal ? "literal" : "default");
+                  number_text(spec.a2.lo) + ":" + number_text(spec.a2.hi) + " a3=" + number_text(spec.a3.lo) +
+                  ":" + number_text(spec.a3.hi) + " reading=" + (spec.literal ? "literal" : "default");
   if (shard) {
     const AtlasRows r = shard_rows(spec.grid, *shard);
     s += " shard=" + std::to_string(shard->index) + "/" + std::to_string(shard->count) + " rows=" +
@@ -141,8 +141,8 @@ inline std::string atlas_csv_comment(const AtlasSpec& spec, const std::optional<
 }
 
 inline std::string atlas_csv_row(const AtlasCell& c) {
-  std::string s = std::to_string(c.i) + "," + std::to_string(c.j) + "," + detail::to_text(c.a2) + "," +
-                  detail::to_text(c.a3) + "," + std::to_string(c.nodes) + "," + std::to_string(c.crossings) + "," +
+  std::string s = std::to_string(c.i) + "," + std::to_string(c.j) + "," + number_text(c.a2) + "," +
+                  number_text(c.a3) + "," + std::to_string(c.nodes) + "," + std::to_string(c.crossings) + "," +
                   std::to_string(c.tangencies) + "," + std::to_string(c.cusps) + ",";
   s += c.analytic_nodes ? std::to_string(*c.analytic_nodes) : std::string("NA");
   s += "," + std::to_string(c.analytic_cusps) + ",";
@@ -156,10 +156,11 @@ inline void write_atlas_csv(std::ostream& out, const AtlasSpec& spec, const std:
   for (const AtlasCell& c : cells) out << atlas_csv_row(c) << '\n';
 }
 
-namespace atlas_csv_detail {
-
+/// The valid form named by every InvalidInput about an atlas CSV's content.
 inline const char* const kAtlasCsvForm =
     "a CSV written by sphtroch atlas (comment line, header, one row per cell in order)";
+
+namespace atlas_csv_detail {
 
 /// The start of a line for a message: at most 120 bytes, control bytes (NUL included) as \xNN,
 /// so that the message stays one C string on one line.

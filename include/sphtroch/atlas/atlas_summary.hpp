@@ -18,7 +18,7 @@
 
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/map/closed_form_boundaries.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/census/root_census.hpp"

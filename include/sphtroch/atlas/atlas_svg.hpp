@@ -217,7 +217,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   spec.validate();
   SPHTROCH_ASSERT(cells.size() == spec.cells(), "render_atlas_svg: one cell per grid point");
   if (!(options.map_px >= 64 && options.map_px <= 8192))
-    throw InvalidInput("map_px", detail::to_text(options.map_px), "outside the valid range", "[64, 8192] px");
+    throw InvalidInput("map_px", number_text(options.map_px), "outside the valid range", "[64, 8192] px");
   const std::size_t g = spec.grid;
   const double map = options.map_px;
   const double left = 72, top = 48, bottom = 64, legend_w = 330;

@@ -12,7 +12,7 @@
 #pragma once
 
 #include "sphtroch/core/node.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 
 #include <algorithm>
 #include <cstddef>

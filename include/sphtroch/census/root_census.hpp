@@ -153,8 +153,8 @@ inline MonotonePieces monotone_pieces(const RootFunction<Real>& f, const GearTra
     if ((near0 || near_pi) && unresolved) {
       out.cusp_within_resolution = true;
       out.notes.push_back("near-cusp loop at b = " + std::string(near0 ? "0" : "pi") +
-                          " below resolution (|g - m| = " + detail::to_text(static_cast<double>(gap)) +
-                          " <= error bound " + detail::to_text(out.error_bound) + "): reported as a cusp within resolution");
+                          " below resolution (|g - m| = " + number_text(static_cast<double>(gap)) +
+                          " <= error bound " + number_text(out.error_bound) + "): reported as a cusp within resolution");
       continue;
     }
     pieces.breaks.push_back(b);

@@ -44,7 +44,7 @@ inline void check_census_cost(const Ratio& n, const std::string& field = "n") {
   const double e = estimated_nodes(n);
   if (e > kMaxCensusNodes)
     throw InvalidInput(field, n.str(),
-                       "its curve has about |p|(|p|+q) = " + detail::to_text(e) +
+                       "its curve has about |p|(|p|+q) = " + number_text(e) +
                            " node points, beyond what a node census does in bounded time and memory",
                        "|p|(|p|+q) <= 200000 for a census (e.g. 301/100); `sphtroch trace` has no such bound");
 }

@@ -15,6 +15,8 @@
 //    in release builds (they guard cheap conditions only).
 #pragma once
 
+#include "sphtroch/core/number_text.hpp"
+
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -65,12 +67,6 @@ inline std::string one_line_text(const std::string& message) {
 }
 
 namespace detail {
-/// A double as text that round-trips: the shortest such form ("0.1", "1e-300", "nan", "inf").
-inline std::string to_text(double v) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
-}
-
 [[noreturn]] inline void assertion_failed(const char* condition, const char* message, const char* file,
                                           int line) {
   std::fprintf(stderr, "sphtroch: assertion failed: %s (%s) at %s:%d\n", condition, message, file, line);

@@ -27,6 +27,14 @@ constexpr std::size_t kMinSamples = 3;
 constexpr std::size_t kMaxSamples = 10000000;
 /// Bounds on the number of carrier turns of an open trajectory.
 constexpr double kMaxTurns = 1000000.0;
+constexpr const char* kTurnsRange = "a number in (0, 1e6] carrier turns";
+
+/// The one turns check of the library, the CLI, scenes and Python: throws
+/// InvalidInput("turns", text, ...) unless 0 < turns <= kMaxTurns. `text` is the value as given.
+inline bool turns_in_range(double turns) { return turns > 0.0 && turns <= kMaxTurns; }
+inline void check_turns(double turns, const std::string& text) {
+  if (!turns_in_range(turns)) throw InvalidInput("turns", text, "outside the valid range", kTurnsRange);
+}
 
 template <typename Scalar>
 struct Trajectory {
@@ -73,10 +81,10 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
                          : 360.0 * static_cast<double>(r.q() + r.abs_p());
   if (n > static_cast<double>(kMaxDefaultSamples)) {
     if (turns)
-      throw InvalidInput("turns", detail::to_text(*turns),
-                         "needs 360 (1 + |n|) K + 1 = " + detail::to_text(std::ceil(n)) + " samples, more than 1000000",
-                         "K <= " + detail::to_text(max_default_turns(train)) + " carrier turns for this n");
-    throw InvalidInput("samples", "(default) " + detail::to_text(std::ceil(n)),
+      throw InvalidInput("turns", number_text(*turns),
+                         "needs 360 (1 + |n|) K + 1 = " + number_text(std::ceil(n)) + " samples, more than 1000000",
+                         "K <= " + number_text(max_default_turns(train)) + " carrier turns for this n");
+    throw InvalidInput("samples", "(default) " + number_text(std::ceil(n)),
                        "the default 360 (q + |p|) exceeds 1000000", "give the number of samples explicitly (3 .. 10000000)");
   }
   return static_cast<std::size_t>(std::max(std::ceil(n), static_cast<double>(kMinSamples)));
@@ -109,8 +117,7 @@ UniformSampling<Scalar> period_sampling(const TracerCurve<Scalar>& curve, std::s
 template <typename Scalar>
 UniformSampling<Scalar> turns_sampling(const TracerCurve<Scalar>& curve, double turns, std::size_t n) {
   (void)curve;
-  if (!(turns > 0.0 && turns <= kMaxTurns))
-    throw InvalidInput("turns", detail::to_text(turns), "outside the valid range", "(0, 1e6] carrier turns");
+  check_turns(turns, number_text(turns));
   check_sample_count(n);
   return UniformSampling<Scalar>{Constants<Scalar>::two_pi() * Scalar(turns), n, n - 1, false};
 }

@@ -300,8 +300,7 @@ inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settin
     throw InvalidInput("census_samples", std::to_string(settings.census_samples), "outside the valid range",
                        "0 (default) or integer " + std::to_string(kMinCensusSamples) + " .. " +
                            std::to_string(kMaxSamples));
-  if (settings.turns && !(*settings.turns > 0.0 && *settings.turns <= kMaxTurns))
-    throw InvalidInput("turns", detail::to_text(*settings.turns), "outside the valid range", "(0, 1e6] carrier turns");
+  if (settings.turns) check_turns(*settings.turns, number_text(*settings.turns));
   run_stage(Stage::input, [&](StageWork&) {
     snapped_ = snap_to_boundaries(input_, settings_.reading().boundary());
   });

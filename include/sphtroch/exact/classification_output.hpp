@@ -32,7 +32,7 @@
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/census/node_assembly.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/exact/self_crossings.hpp"

@@ -49,7 +49,7 @@
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/core/sampling.hpp"
@@ -341,8 +341,8 @@ inline void read_settings(const TrainObject& t, SceneTrain& st) {
               "either samples N (closed curve) or turns K (open curve)");
   if (samples) st.settings.samples = count_value(err, t.at("samples"), *samples, kMinSamples, kMaxSamples);
   if (turns) {
-    if (!turns->is_number() || !(turns->get<double>() > 0.0 && turns->get<double>() <= kMaxTurns))
-      err.field(t.at("turns"), turns, "outside the valid range", "a number in (0, 1e6] carrier turns");
+    if (!turns->is_number() || !turns_in_range(turns->get<double>()))
+      err.field(t.at("turns"), turns, "outside the valid range", kTurnsRange);
     st.settings.turns = turns->get<double>();
   }
   if (const Json* c = t.optional("census_samples"))

@@ -274,12 +274,12 @@ inline double sagitta_bound(const Eigen::Vector3d& u, const Eigen::Vector3d& v) 
 
 inline std::string vertex_text(VertexSpan vs, std::size_t i) {
   const Eigen::Vector3d& v = vs[i];
-  return "index " + std::to_string(i) + ": (" + to_text(v.x()) + ", " + to_text(v.y()) + ", " + to_text(v.z()) + ")";
+  return "index " + std::to_string(i) + ": (" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + ")";
 }
 
 inline void validate_margin(double margin) {
   if (!(std::isfinite(margin) && margin >= 0.0))
-    throw InvalidInput("margin", to_text(margin), "not a finite non-negative distance", "[0, inf)");
+    throw InvalidInput("margin", number_text(margin), "not a finite non-negative distance", "[0, inf)");
 }
 
 /// Validates (see validate_spherical_polyline) and returns whether every vertex is already a
@@ -929,7 +929,7 @@ inline void check_search_complete(const CrossingCounts& c, const CrossingSearchO
     throw InvalidInput(
         work_field, std::to_string(o.max_work),
         c.stop == SearchStop::estimate
-            ? "the search would need about " + detail::to_text(std::round(c.estimated_box_pairs)) +
+            ? "the search would need about " + number_text(std::round(c.estimated_box_pairs)) +
                   " units of work (overlapping box pairs, estimated before searching), more than 2 x " +
                   std::to_string(o.max_work)
             : "the search needs more than " + std::to_string(o.max_work) +

@@ -157,9 +157,16 @@ inline std::string read_whole_input(const std::string& path, const std::string& 
 }
 
 
+/// A line over InputLines' bound: InvalidInput of its own type, so that a reader can tell a file
+/// whose content is not what it expects from one it cannot read at all.
+class LineTooLong : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
 /// The lines of an InputFile (read in 64 KiB blocks) or of bytes in memory, one at a time, in
 /// memory bounded by the block and the longest line. A line longer than max_line bytes throws
-/// InvalidInput(field, path, "line N is longer than max_line bytes").
+/// LineTooLong(field, path, "line N is longer than max_line bytes").
 class InputLines {
  public:
   InputLines(InputFile& in, std::size_t max_line)
@@ -219,7 +226,7 @@ class InputLines {
     if (got < kBlock) at_end_ = true;
   }
   [[noreturn]] void too_long() const {
-    throw InvalidInput(field_, path_,
+    throw LineTooLong(field_, path_,
                        "line " + std::to_string(lines_ + 1) + " is longer than " + std::to_string(max_line_) + " bytes",
                        "lines of at most " + std::to_string(max_line_) + " bytes");
   }

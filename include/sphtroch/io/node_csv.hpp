@@ -20,7 +20,7 @@
 
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/node.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/core/types.hpp"
 

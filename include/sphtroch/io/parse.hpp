@@ -14,9 +14,10 @@
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/sampling.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <cctype>
@@ -199,6 +200,42 @@ inline A3Spec parse_a3(std::string_view text, const std::string& field = "a3") {
     throw InvalidInput(field, std::string(text), "not a finite angle",
                        std::string(kAngleForms) + ", or ap, pi-ap, a2, pi-a2 with an optional +/- offset");
   return {A3Reference::given, *v};
+}
+
+/// A closed angle range [lo, hi] of a2 or a3, radians; 0 <= lo < hi <= pi.
+struct AngleRange {
+  double lo = 0.0;
+  double hi = Constants<double>::pi();
+};
+
+/// The forms of an angle range, as the CLI (--a2, --a3 of atlas and boundaries) and Python take it.
+constexpr const char* kAngleRangeForms = "LO:HI with 0 <= LO < HI <= pi (angles: 1.2, pi/6, 5pi/6, 90deg)";
+
+/// "LO:HI" (each an angle in the forms of parse_angle) as a range with 0 <= LO < HI <= pi.
+/// Throws InvalidInput(field, text, problem, valid): "spaces inside a range", "not a range
+/// LO:HI", "not two finite angles LO:HI" or "outside the valid range".
+inline AngleRange parse_angle_range(std::string_view text, const std::string& field,
+                                    const std::string& valid = kAngleRangeForms) {
+  const std::string as_given(text);
+  if (text.find_first_of(" \t\r\n") != std::string_view::npos)
+    throw InvalidInput(field, as_given, "spaces inside a range", valid);
+  const auto colon = text.find(':');
+  if (colon == std::string_view::npos) throw InvalidInput(field, as_given, "not a range LO:HI", valid);
+  const auto lo = detail::angle_value(text.substr(0, colon));
+  const auto hi = detail::angle_value(text.substr(colon + 1));
+  if (!lo || !hi) throw InvalidInput(field, as_given, "not two finite angles LO:HI", valid);
+  if (!(*lo >= 0.0 && *lo < *hi && *hi <= Constants<double>::pi()))
+    throw InvalidInput(field, as_given, "outside the valid range", valid);
+  return AngleRange{*lo, *hi};
+}
+
+/// The carrier turns K of an open trajectory, typed as a plain number: K in (0, kMaxTurns]
+/// (sampling.hpp). Throws InvalidInput("turns", text, ...) otherwise.
+inline double parse_turns(std::string_view text) {
+  const auto k = detail::strict_double(text);
+  if (!k) throw InvalidInput("turns", std::string(text), "outside the valid range", kTurnsRange);
+  check_turns(*k, std::string(text));
+  return *k;
 }
 
 }  // namespace sphtroch

@@ -23,7 +23,7 @@
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/npy.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <algorithm>
@@ -336,8 +336,8 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
       }
       if (!finite_nonzero_row(xyz))  // refused as it is read: a sparse (3e9, 3) file fails at its first row
         throw InvalidInput(field, path,
-                           "row " + std::to_string(h.rows() - rows_left + r) + " (" + detail::to_text(xyz[0]) + ", " +
-                               detail::to_text(xyz[1]) + ", " + detail::to_text(xyz[2]) + ") is not a finite nonzero vector",
+                           "row " + std::to_string(h.rows() - rows_left + r) + " (" + number_text(xyz[0]) + ", " +
+                               number_text(xyz[1]) + ", " + number_text(xyz[2]) + ") is not a finite nonzero vector",
                            kNpyValid);
       result.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
     }

@@ -16,7 +16,7 @@
 
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/io/npy.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/sampling.hpp"

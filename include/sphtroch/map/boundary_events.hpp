@@ -288,9 +288,9 @@ inline bool a2_in_range(double a2) {
 
 inline void check_a2(double a2) {
   if (!(std::isfinite(a2) && a2 > 0 && a2 < Constants<double>::pi()))
-    throw InvalidInput("a2", detail::to_text(a2), "outside the valid range", "(0, pi) radians");
+    throw InvalidInput("a2", number_text(a2), "outside the valid range", "(0, pi) radians");
   if (!a2_in_range(a2))
-    throw InvalidInput("a2", detail::to_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
+    throw InvalidInput("a2", number_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
                        "[1e-6, pi - 1e-6] radians");
 }
 
@@ -362,7 +362,7 @@ inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_
                                         std::size_t threads) {
   using namespace boundary_set_detail;
   const double pi = Constants<double>::pi();
-  const std::string range = detail::to_text(a2_lo) + ":" + detail::to_text(a2_hi);
+  const std::string range = number_text(a2_lo) + ":" + number_text(a2_hi);
   if (!(a2_lo >= 0 && a2_lo < a2_hi && a2_hi <= pi))
     throw InvalidInput("a2", range, "not a valid range", "LO:HI with 0 <= LO < HI <= pi");
   if (steps < 1 || steps > kMaxLocusSteps)

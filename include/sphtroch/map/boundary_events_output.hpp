@@ -15,7 +15,7 @@
 #pragma once
 
 #include "sphtroch/map/boundary_events.hpp"
-#include "sphtroch/io/number_text.hpp"
+#include "sphtroch/core/number_text.hpp"
 
 #include <ostream>
 #include <string>

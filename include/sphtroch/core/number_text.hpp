@@ -1,4 +1,4 @@
-// sphtroch/io/number_text.hpp — doubles as text and back: the one number format of every file and
+// sphtroch/core/number_text.hpp — doubles as text and back: the one number format of every file and
 // report the library writes.
 //
 //   char buf[sphtroch::kMaxNumberChars];
