@@ -376,7 +376,7 @@ TEST_CASE("SVG map: well formed, boundary curves, legend, disagreements outlined
   }
 }
 
-TEST_CASE("node shades: distinct counts get distinct blues, darker for more; > 8 counts share the last",
+TEST_CASE("node shades: distinct counts get distinct blues, darker for more, > 8 counts share the last",
           "[atlas][svg]") {
   auto cells_with = [](std::initializer_list<std::uint32_t> counts) {
     std::vector<AtlasCell> cells;

@@ -67,7 +67,7 @@ TEST_CASE("atlas summary: every count of the summary, the listed cells, the rest
   for (const auto& line : l) CHECK(line.rfind("time:", 0) != 0);
 }
 
-TEST_CASE("atlas summary: a shard names itself; a timed run ends with its time; n without node criteria says NA") {
+TEST_CASE("atlas summary: a shard names itself, a timed run ends with its time, n without node criteria says NA") {
   AtlasSpec spec;
   spec.ratio = Ratio(5, 2);
   spec.grid = 8;

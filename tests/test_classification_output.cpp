@@ -86,7 +86,7 @@ TEST_CASE("classification json: the documented keys, inputs as typed, values of 
   CHECK(j["work"]["points_evaluated"].get<std::size_t>() == f.c.work.points_evaluated);
 }
 
-TEST_CASE("classification json: node positions round-trip exactly; longitude, latitude from them") {
+TEST_CASE("classification json: node positions round-trip exactly, longitude, latitude from them") {
   const Fig5f& f = fig5f();
   const json j = json::parse(classification_json(f.text, f.c).dump());
   REQUIRE(j["nodes"].size() == f.c.nodes.size());

@@ -244,7 +244,7 @@ TEST_CASE("hostile: fifo_input_without_writer fails after a bounded wait instead
   check_refused(shell("timeout 30 " + kExe + " crossings --input ff", dir), "no writer opened within 10 s");
 }
 
-TEST_CASE("hostile: fifo_output_without_reader fails after a bounded wait; with a reader it is written", "[cli][hostile][fifo]") {
+TEST_CASE("hostile: fifo_output_without_reader fails after a bounded wait, with a reader it is written", "[cli][hostile][fifo]") {
   TempDir dir;
   REQUIRE(::mkfifo((dir.path / "ff").c_str(), 0666) == 0);
   check_refused(shell("timeout 30 " + kExe + " boundaries --n 3 --a2 1 -o ff", dir), "no reader opened within 10 s");
@@ -349,7 +349,7 @@ TEST_CASE("hostile: D5 sigterm_with_100_staged_outputs leaves no temporary and n
   CHECK(count_entries(dir.path / "out", "") == 0);  // no temporary, no output
 }
 
-TEST_CASE("hostile: D6 scene_with_1100_outputs succeeds under ulimit -n 256; above 100000 outputs refused up front",
+TEST_CASE("hostile: D6 scene_with_1100_outputs succeeds under ulimit -n 256, above 100000 outputs refused up front",
           "[cli][hostile][scene]") {
   TempDir dir;
   fs::create_directory(dir.path / "out");
@@ -466,7 +466,7 @@ TEST_CASE("hostile: D12 messages: a NUL in a .npy descr escaped, the CSV field t
   CHECK(ok.out == "1000001\n");  // header + ceil(360 (1 + n) K + 1) = 1000000 samples
 }
 
-TEST_CASE("hostile: D13 the a2 bound 1e-6 is inclusive and nothing below passes; a JSON float n is refused", "[cli][hostile][twist]") {
+TEST_CASE("hostile: D13 the a2 bound 1e-6 is inclusive and nothing below passes, a JSON float n is refused", "[cli][hostile][twist]") {
   TempDir dir;
   const std::string t = kExe + " trace --n 2 --a3 1 --samples 3 --a2 ";
   CHECK(shell(t + "1e-6", dir).status == 0);

@@ -60,7 +60,7 @@ TEST_CASE("cli io: trace piped into crossings, trace's CSV and .npy files, all g
   CHECK(json_of(shell("cat c.npy | " + kExe + " crossings --input - --json", dir))["crossings"] == nodes);
 }
 
-TEST_CASE("cli io: numpy.load reads what trace writes; crossings reads what numpy.save writes", "[cli][io][numpy]") {
+TEST_CASE("cli io: numpy.load reads what trace writes, crossings reads what numpy.save writes", "[cli][io][numpy]") {
   TempDir dir;
   REQUIRE(shell(kExe + " " + kTrain + " --samples 5000 --velocity -o t.npy && " + kExe + " " + kTrain +
                     " --samples 5000 --velocity -o t.csv",
@@ -133,7 +133,7 @@ TEST_CASE("cli io: bad CSV and .npy inputs exit 2 with one line naming the file,
   }
 }
 
-TEST_CASE("cli io: write failures: a full device gives one line and status 2; a device is never replaced",
+TEST_CASE("cli io: write failures: a full device gives one line and status 2, a device is never replaced",
           "[cli][io][device]") {
   TempDir dir;
   const fs::path full = dir.path / "full";
@@ -164,7 +164,7 @@ TEST_CASE("cli io: a closed pipe ends trace quietly, like other filters", "[cli]
   CHECK(contains(r.out, "status 141"));  // killed by SIGPIPE after cleaning up, as `cat` would be
 }
 
-TEST_CASE("cli io: -o /dev/stdout writes into the redirected file; an existing file keeps its mode", "[cli][io][output]") {
+TEST_CASE("cli io: -o /dev/stdout writes into the redirected file, an existing file keeps its mode", "[cli][io][output]") {
   TempDir dir;
   const Result r = shell(kExe + " " + kTrain + " --samples 5 -o /dev/stdout > redirected.csv && " + kExe + " " +
                              kTrain + " --samples 5 > plain.csv && cmp redirected.csv plain.csv && ls -A",

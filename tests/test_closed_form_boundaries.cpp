@@ -14,7 +14,7 @@ namespace {
 const double kPi = Constants<double>::pi();
 }
 
-TEST_CASE("boundaries: values and margins from the definitions; exact margin when a3 is given on a cone", "[boundaries]") {
+TEST_CASE("boundaries: values and margins from the definitions, exact margin when a3 is given on a cone", "[boundaries]") {
   const double a2 = kPi / 3;
   const double ap = std::atan2(std::sin(a2), std::cos(a2) + 2.0);  // Eq. 2, n = 2
   const GearTrain t(a2, 1.0, Ratio(2));

@@ -201,7 +201,7 @@ TEST_CASE("n = 1 cardioids: equality in Eq. 24 is one cusp at Eq. 25's point", "
 // n = 2
 // ---------------------------------------------------------------------------------------------
 
-TEST_CASE("n = 2 grid: Eqs. 43/46 agree with Eqs. 40/45; nodes of Eqs. 39b/44b on the curve twice",
+TEST_CASE("n = 2 grid: Eqs. 43/46 agree with Eqs. 40/45, nodes of Eqs. 39b/44b on the curve twice",
           "[analytic][n2]") {
   std::size_t with43 = 0, with46 = 0, pairs = 0;
   for (int i = 0; i < 14; ++i) {
@@ -272,7 +272,7 @@ TEST_CASE("n = 2 Table 1 rows (a) and (c) with chosen values", "[analytic][n2][t
   }
 }
 
-TEST_CASE("paper_cases.csv: predicted counts reproduce every row; Table 1 columns", "[analytic][paper]") {
+TEST_CASE("paper_cases.csv: predicted counts reproduce every row, Table 1 columns", "[analytic][paper]") {
   const std::vector<CsvRow> rows = read_paper_cases();
   REQUIRE(rows.size() >= 10);
   // Table 1 of the report: status of Eq. 43 and Eq. 46 for each figure of Fig. 5.

@@ -117,7 +117,7 @@ TEST_CASE("chain equals the expanded Eq. 4 component by component to 1e-15 over 
   CHECK(worst <= 1e-15);
 }
 
-TEST_CASE("theta3 = n theta2 + theta_p (Eq. 3) to its rounding bound; why large theta2 misses 1e-15 absolute",
+TEST_CASE("theta3 = n theta2 + theta_p (Eq. 3) to its rounding bound, why large theta2 misses 1e-15 absolute",
           "[curve][eq3]") {
   // Reference in long double (64-bit significand): p * theta2 is exact there for |p| < 2^10 and
   // theta2 a double, so the reference carries one rounding of 2^-64 relative. The double value

@@ -162,7 +162,7 @@ TEST_CASE("npy: the header is the documented dict, padded to 64 bytes, and parse
   CHECK(p.data_offset == h.size());
 }
 
-TEST_CASE("npy: headers numpy.save writes are read; others are refused with one line", "[io][npy]") {
+TEST_CASE("npy: headers numpy.save writes are read, others are refused with one line", "[io][npy]") {
   // Version 2.0 with a 32-bit length, double quotes, no trailing comma, float32.
   const NpyHeader v2 =
       parse_npy_header(npy_by_hand("{\"descr\": \"<f4\", \"fortran_order\": False, \"shape\": (7, 3)}\n", "", 2), "input", "a");
@@ -194,7 +194,7 @@ TEST_CASE("npy: headers numpy.save writes are read; others are refused with one 
         std::string::npos);
 }
 
-TEST_CASE("polyline_input: CSV with a header takes x, y, z by name; headerless takes 3 numbers", "[io][csv]") {
+TEST_CASE("polyline_input: CSV with a header takes x, y, z by name, headerless takes 3 numbers", "[io][csv]") {
   TempDir dir;
   const fs::path trace = dir.path / "trace.csv", plain = dir.path / "plain.csv", crlf = dir.path / "crlf.csv";
   put(trace, "t,x,y,z,vx,vy,vz\n0,1,0,0,9,9,9\n1,0,1,0,9,9,9\n2,0,0,1,9,9,9\n");
@@ -263,7 +263,7 @@ TEST_CASE("polyline_input: a large CSV spans many blocks and both parser threads
   CHECK(expect_invalid([&] { read_polyline(p.string()); }).problem().find("line " + std::to_string(bad_row + 2) + " ") == 0);
 }
 
-TEST_CASE("polyline_input: .npy by magic bytes, whatever the name; float32 and trace arrays", "[io][npy]") {
+TEST_CASE("polyline_input: .npy by magic bytes, whatever the name, float32 and trace arrays", "[io][npy]") {
   TempDir dir;
   const fs::path a = dir.path / "a.csv", b = dir.path / "b", c = dir.path / "c.npy";
   put(a, npy_by_hand("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3), }\n", doubles({1, 2, 3, 4, 5, 6})));
@@ -298,7 +298,7 @@ TEST_CASE("polyline_input: .npy by magic bytes, whatever the name; float32 and t
   }
 }
 
-TEST_CASE("output_file: a file appears only on commit, with no temporary left; discard leaves the old file",
+TEST_CASE("output_file: a file appears only on commit, with no temporary left, discard leaves the old file",
           "[io][output]") {
   TempDir dir;
   const fs::path p = dir.path / "out.csv";
@@ -391,7 +391,7 @@ TEST_CASE("output_file: commit_together puts back every file when a later rename
   CHECK(entries == std::vector<std::string>{"a.csv", "b.csv", "b.csv/keep", "c.csv", "c.csv/keep"});
 }
 
-TEST_CASE("parallel_blocks: blocks are consumed in order for any thread count; errors come back", "[io][parallel]") {
+TEST_CASE("parallel_blocks: blocks are consumed in order for any thread count, errors come back", "[io][parallel]") {
   for (std::size_t threads : {1, 2, 3, 7}) {
     std::vector<std::size_t> seen;
     for_each_block_in_order(
@@ -625,7 +625,7 @@ TEST_CASE("polyline_input: D10 declared sizes are hints: a sparse 64 GB CSV or (
   CHECK(n.problem() == "row 2 (0, 0, 0) is not a finite nonzero vector");
 }
 
-TEST_CASE("npy and csv: D12 a NUL in a descr is escaped; a CSV field that is not a number is quoted", "[io][npy][csv]") {
+TEST_CASE("npy and csv: D12 a NUL in a descr is escaped, a CSV field that is not a number is quoted", "[io][npy][csv]") {
   const InvalidInput e = expect_invalid([] {
     const char dict[] = "{'descr': '<f\0" "8', 'fortran_order': False, 'shape': (2, 3), }";
     parse_npy_header(npy_by_hand(std::string(dict, sizeof dict - 1), ""), "input", "n.npy");

@@ -16,7 +16,7 @@ namespace {
 const double kPi = Constants<double>::pi();
 }
 
-TEST_CASE("reduce_to_period lands in [0, period), also at the edges", "[parameters]") {
+TEST_CASE("reduce_to_period lands in 0 <= t < period, also at the edges", "[parameters]") {
   const double period = 2 * kPi * 3;
   CHECK(reduce_to_period(0.0, period) == 0.0);
   CHECK(reduce_to_period(period, period) == 0.0);

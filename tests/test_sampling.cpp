@@ -18,7 +18,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 using sphtroch::test::expect_invalid;
 }  // namespace
 
-TEST_CASE("sample_period: N samples t_i = 2 pi q i / N over [0, 2 pi q), closed, no duplicate endpoint",
+TEST_CASE("sample_period: N samples t_i = 2 pi q i / N over 0 <= t < 2 pi q, closed, no duplicate endpoint",
           "[sampling][closed]") {
   for (const Ratio& n : {Ratio(1), Ratio(2), Ratio(5, 2), Ratio(-3, 2), Ratio(2, 7)}) {
     const TracerCurve<double> curve(GearTrain(kPi / 2, 1.1, n, 0.2));
@@ -76,7 +76,7 @@ TEST_CASE("sampling with velocity stores dP/dtheta2 at every sample", "[sampling
   REQUIRE(open.velocities.size() == 10);
 }
 
-TEST_CASE("sample counts outside [3, 10000000] and turns outside (0, 1e6] throw InvalidInput", "[sampling][errors]") {
+TEST_CASE("sample counts outside 3 .. 10000000 and turns outside 0 < K <= 1e6 throw InvalidInput", "[sampling][errors]") {
   const TracerCurve<double> curve(GearTrain(1.0, 1.0, Ratio(1)));
   CHECK(kMinSamples == 3);
   CHECK(kMaxSamples == 10000000);

@@ -81,7 +81,7 @@ TEST_CASE("scene: every key read, defaults, effects in the order written, relati
   CHECK_FALSE(b.settings.literal);
 }
 
-TEST_CASE("scene errors: FILE: PATH = VALUE: PROBLEM; valid: RANGE, one line, an InvalidInput") {
+TEST_CASE("scene errors: FILE: PATH = VALUE: PROBLEM, valid: RANGE, one line, an InvalidInput") {
   const SceneError e = scene_error(train_with(R"("phase": "x", )"));
   const InvalidInput& base = e;  // callers that know InvalidInput only still get the parts
   CHECK(base.field() == "f.json: trains[0].phase");
@@ -119,7 +119,7 @@ TEST_CASE("scene errors: each hazard named where it is") {
         "f.json: trains[0].effects.nodes");
 }
 
-TEST_CASE("scene errors: JSON syntax by line and column; depth, NUL and overflow refused") {
+TEST_CASE("scene errors: JSON syntax by line and column, depth, NUL and overflow refused") {
   const SceneError syntax = scene_error("{\n  \"trains\": [,]\n}");
   CHECK(std::string(syntax.what()).rfind("f.json: line 2, column ", 0) == 0);
   const std::string deep = std::string(kMaxSceneDepth + 4, '[') + std::string(kMaxSceneDepth + 4, ']');

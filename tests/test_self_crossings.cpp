@@ -684,7 +684,7 @@ TEST_CASE("timing: closed trochoid a2 = 1, a3 = 2, n = 7/3", "[.timing]") {
   }
 }
 
-TEST_CASE("arc_crossing_point: on both circles, on both arcs, either order; degenerate pairs refused", "[crossings][point]") {
+TEST_CASE("arc_crossing_point: on both circles, on both arcs, either order, degenerate pairs refused", "[crossings][point]") {
   const double s = std::sqrt(0.5);
   const Eigen::Vector3d a(1, 0, 0), b(0, 1, 0);                              // the equator, x to y
   const Eigen::Vector3d c = Eigen::Vector3d(s, s, -0.5).normalized(), d = Eigen::Vector3d(s, s, 0.5).normalized();

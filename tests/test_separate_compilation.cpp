@@ -18,6 +18,8 @@
 
 // Defined in separate_compilation_default.cpp (header-only mode).
 std::size_t classify_nodes_header_only(double a2, double a3, std::int64_t p, std::int64_t q);
+// Defined in separate_compilation_umbrella.cpp (the umbrella header in separate mode).
+std::size_t classify_nodes_via_umbrella(double a2, double a3, std::int64_t p, std::int64_t q, std::size_t& root_nodes);
 
 TEST_CASE("separate compilation: classify() declared here, defined in one file, equal to header-only", "[exact][odr]") {
   for (const auto& row : sphtroch::test::paper_cases()) {
@@ -28,5 +30,8 @@ TEST_CASE("separate compilation: classify() declared here, defined in one file, 
     CHECK(c.cusps.size() == row.cusps);
     CHECK(c.agreement.ok());
     CHECK(classify_nodes_header_only(row.a2, row.a3, row.n_num, row.n_den) == row.nodes);
+    std::size_t root_nodes = 0;
+    CHECK(classify_nodes_via_umbrella(row.a2, row.a3, row.n_num, row.n_den, root_nodes) == row.nodes);
+    CHECK(root_nodes == row.nodes);
   }
 }

@@ -47,10 +47,36 @@ if(MODE STREQUAL "find_package")
   endif()
   step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
        -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DSPHTROCH_CONSUMER_MODE=find_package ${part_flags})
+  if(PART STREQUAL "eigen")
+    # COMPONENTS exact where CGAL cannot be found: a failure that names what is missing.
+    execute_process(COMMAND ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${work}/consumer-exact-no-cgal"
+                            -DCMAKE_PREFIX_PATH=${prefix} -DSPHTROCH_CONSUMER_MODE=find_package
+                            -DSPHTROCH_CONSUMER_PART=exact -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT "${out}${err}" MATCHES "sphtroch: exact needs CGAL")
+      message(FATAL_ERROR "consumer (${MODE}): COMPONENTS exact without CGAL must fail naming CGAL (${rc})\n${out}\n${err}")
+    endif()
+    message(STATUS "consumer (${MODE}): COMPONENTS exact without CGAL fails naming CGAL")
+  endif()
 else()
   step("configure consumer" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}" -B "${consumer_build}"
        -DCMAKE_BUILD_TYPE=Release -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR}
        ${part_flags})
+  # As a subproject sphtroch must leave the parent's build type alone and add nothing to the
+  # parent's install (SPHTROCH_INSTALL is off under add_subdirectory).
+  if(PART STREQUAL "eigen")
+    step("configure consumer without a build type" ${CMAKE_COMMAND} -S "${CMAKE_CURRENT_LIST_DIR}"
+         -B "${work}/consumer-no-type" -DSPHTROCH_CONSUMER_MODE=add_subdirectory -DSPHTROCH_SOURCE_DIR=${SOURCE_DIR}
+         ${part_flags})
+    file(STRINGS "${work}/consumer-no-type/CMakeCache.txt" build_type REGEX "^CMAKE_BUILD_TYPE:")
+    if(NOT build_type MATCHES "^CMAKE_BUILD_TYPE:[A-Z]+=$")
+      message(FATAL_ERROR "consumer (${MODE}): sphtroch set the parent's build type: ${build_type}")
+    endif()
+    step("install the parent" ${CMAKE_COMMAND} --install "${work}/consumer-no-type" --prefix "${work}/parent-prefix")
+    if(EXISTS "${work}/parent-prefix/include/sphtroch")
+      message(FATAL_ERROR "consumer (${MODE}): the parent's install installed sphtroch's headers")
+    endif()
+  endif()
   # As a subproject sphtroch must not build its tests, CLI, benchmarks or Python module by default.
   foreach(dir tests src/cli bench python)
     if(EXISTS "${consumer_build}/sphtroch/${dir}/Makefile" OR EXISTS "${consumer_build}/sphtroch/${dir}/build.ninja")
