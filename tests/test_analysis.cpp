@@ -268,10 +268,10 @@ TEST_CASE("analysis and classify: bad census settings throw InvalidInput, never 
   for (double bad : {-1.0, std::nan(""), 1.0}) {
     INFO(bad);
     AnalysisSettings s;
-    s.boundary_tolerance = bad;
+    s.reading.boundary_tolerance = bad;
     CHECK(test::expect_invalid([&] { Analysis a(fig5f(), s); }).field() == "boundary_tolerance");
     ClassifySettings c;
-    c.boundary_tolerance = bad;
+    c.reading.boundary_tolerance = bad;
     CHECK(test::expect_invalid([&] { classify(fig5f(), c); }).field() == "boundary_tolerance");
   }
   AnalysisSettings few;

@@ -162,7 +162,7 @@ TEST_CASE("literal reading: disagreements only where a2 + a3 rounds to pi, none 
   // Cell (i, G-1-i) has a2 + a3 = pi up to rounding: in double the report's margin is 0
   // (equality: a pole tangency), while the long-double census sees the pole just missed.
   AtlasSpec spec = spec_of(Ratio(2), 64);
-  spec.literal = true;
+  spec.reading.literal = true;
   const std::vector<AtlasCell> cells = compute_atlas(spec, {0, spec.grid}, 2);
   const AtlasSummary s = summarize_atlas(cells, spec.ratio);
   CHECK(s.disagreements_off_boundaries == 0);

@@ -71,7 +71,7 @@ TEST_CASE("atlas summary: a shard names itself, a timed run ends with its time, 
   AtlasSpec spec;
   spec.ratio = Ratio(5, 2);
   spec.grid = 8;
-  spec.literal = true;
+  spec.reading.literal = true;
   AtlasSummary s = hand_summary();
   s.disagreement_count = 0, s.disagreements_off_boundaries = 0;
   std::ostringstream out;

@@ -255,7 +255,7 @@ TEST_CASE("classify reads a self-tangency like the other boundaries: both census
         CHECK(off.agreement.ok());
         // --literal reads the doubles as given: no snapping.
         ClassifySettings literal;
-        literal.literal = true;
+        literal.reading.literal = true;
         CHECK(classify(GearTrain(a2, e.a3 + 5e-11, n, phase), literal).snapped.hits.empty());
         ++checked;
       }

@@ -9,11 +9,13 @@
 #include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 
 #include "catch2/catch.hpp"
+#include "test_support.hpp"
 
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/census/node_assembly.hpp"
+#include "sphtroch/census/node_sets.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/census/refinement.hpp"
 #include "sphtroch/census/root_census.hpp"
@@ -32,45 +34,11 @@ namespace {
 
 const double kPi = Constants<double>::pi();
 
-struct PaperRow {
-  std::string id;
-  std::int64_t p = 1, q = 1;
-  std::string a2_symbolic, a3_symbolic;
-  double a2 = 0, a3 = 0;
-  std::size_t nodes = 0, cusps = 0;
-};
-
-std::vector<PaperRow> read_paper_cases() {
-  std::ifstream in(std::string(SPHTROCH_REFERENCE_DIR) + "/paper_cases.csv");
-  REQUIRE(in.good());
-  std::vector<PaperRow> rows;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::vector<std::string> f;
-    std::string cur;
-    std::istringstream s(line);
-    for (int k = 0; k < 9 && std::getline(s, cur, ','); ++k) f.push_back(cur);
-    REQUIRE(f.size() == 9);
-    PaperRow r;
-    r.id = f[0];
-    r.p = std::stoll(f[1]);
-    r.q = std::stoll(f[2]);
-    r.a2_symbolic = f[3];
-    r.a3_symbolic = f[4];
-    r.a2 = std::stod(f[5]);
-    r.a3 = std::stod(f[6]);
-    r.nodes = std::stoul(f[7]);
-    r.cusps = std::stoul(f[8]);
-    rows.push_back(r);
-  }
-  return rows;
-}
+using PaperRow = sphtroch::test::PaperCase;  // data/reference/paper_cases.csv (test_support.hpp)
 
 GearTrain train_of(const PaperRow& r) {
-  if (r.a3_symbolic == "a_p") return GearTrain::on_cone(r.a2, A3Reference::pitch_cone, 0.0, Ratio(r.p, r.q));
-  return GearTrain(r.a2, r.a3, Ratio(r.p, r.q));
+  if (r.a3_symbolic == "a_p") return GearTrain::on_cone(r.a2, A3Reference::pitch_cone, 0.0, Ratio(r.n_num, r.n_den));
+  return GearTrain(r.a2, r.a3, Ratio(r.n_num, r.n_den));
 }
 
 /// Eq. 28 (n = 2, theta_p = 0), written out from the report.
@@ -131,39 +99,14 @@ const Node* nearest(const std::vector<Node>& nodes, const Vector3d& x) {
   return best;
 }
 
-/// Node-for-node agreement of two node sets: same size, and a bijection pairing nodes closer
-/// than `distance` with equal kinds and branch counts.
-void check_same_nodes(const std::vector<Node>& a, const std::vector<Node>& b, double distance = 1e-8) {
-  CHECK(a.size() == b.size());
-  if (a.size() != b.size()) return;
-  // Candidates from a sweep in x (node sets of large ratios have thousands of points).
-  std::vector<std::size_t> order(b.size());
-  for (std::size_t j = 0; j < b.size(); ++j) order[j] = j;
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return b[i].position.x() < b[j].position.x(); });
-  std::vector<bool> used(b.size(), false);
-  std::size_t unmatched = 0;
-  for (const Node& n : a) {
-    auto it = std::lower_bound(order.begin(), order.end(), n.position.x() - distance,
-                               [&](std::size_t j, double x) { return b[j].position.x() < x; });
-    // The nearest unused candidate (clusters near a pole can be ~1e-9 apart, closer than `distance`).
-    std::size_t hit = b.size();
-    double best = distance;
-    for (; it != order.end() && b[*it].position.x() <= n.position.x() + distance; ++it) {
-      const Node& m = b[*it];
-      const double gap = (m.position - n.position).norm();
-      if (!used[*it] && gap <= best && m.kind == n.kind && m.branches == n.branches) {
-        hit = *it;
-        best = gap;
-      }
-    }
-    if (hit < b.size()) {
-      used[hit] = true;
-    } else if (++unmatched <= 3) {
-      INFO("node at (" << n.position.transpose() << "), " << to_string(n.kind) << ", " << n.branches << " branches");
-      CHECK(hit < b.size());
-    }
-  }
-  CHECK(unmatched == 0);
+/// Node-for-node agreement of two node sets (census/node_sets.hpp, tested on its own in
+/// test_certified_census.cpp): same size, nearest nodes paired one to one within 1e-8 with equal
+/// kinds and branch counts.
+void check_same_nodes(const std::vector<Node>& a, const std::vector<Node>& b) {
+  std::string why;
+  const bool same = same_node_sets(a, b, why);
+  INFO(why);
+  CHECK(same);
 }
 
 /// Every branch parameter of every node puts the curve on the node (to `tol`).
@@ -205,10 +148,10 @@ Vector3d omega_eq47a(double a2, double n, double t) {
 // ---------------------------------------------------------------------------------------------
 
 TEST_CASE("census: every paper case: node and cusp counts, kinds and positions from the report", "[census][paper]") {
-  const auto rows = read_paper_cases();
+  const auto rows = sphtroch::test::paper_cases();
   REQUIRE(rows.size() >= 10);
   for (const PaperRow& r : rows) {
-    INFO("case " << r.id << ": a2 = " << r.a2_symbolic << ", a3 = " << r.a3_symbolic << ", n = " << r.p << "/" << r.q);
+    INFO("case " << r.id << ": a2 = " << r.a2_symbolic << ", a3 = " << r.a3_symbolic << ", n = " << r.n_num << "/" << r.n_den);
     const GearTrain train = train_of(r);
     const Classification c = classify(train);
     CHECK(c.nodes.size() == r.nodes);
@@ -227,7 +170,7 @@ TEST_CASE("census: every paper case: node and cusp counts, kinds and positions f
       CHECK((curve.point(k.param) - k.position).norm() <= 1e-15);
     }
 
-    if (r.p == 1 && r.q == 1) {
+    if (r.n_num == 1 && r.n_den == 1) {
       // Eq. 24 strictly: one crossing at Eq. 25, (0, sin a3, cos a3); equality: the cusp is there.
       const Vector3d eq25(0, std::sin(a3), std::cos(a3));
       for (const Node& n : c.nodes) {
@@ -269,7 +212,7 @@ TEST_CASE("census: every paper case: node and cusp counts, kinds and positions f
         CHECK(n->kind == NodeKind::crossing);
         CHECK(std::abs(n->position.x()) <= 1e-14);
       }
-    } else if (r.p == 2 && r.q == 1 && r.cusps == 0) {
+    } else if (r.n_num == 2 && r.n_den == 1 && r.cusps == 0) {
       const auto expected = report_nodes_n2(a2, a3);
       CHECK(expected.size() == r.nodes);
       for (const auto& e : expected) {
@@ -434,7 +377,7 @@ TEST_CASE("census: near_cusp_loop at a3 = a_p +- 1e-3, 1e-6, 1e-9: the loop is o
         const GearTrain plain = GearTrain::on_cone(a2, cc.cone, -sign_loop * d, cc.n);
         INFO("n = " << cc.n.str() << ", a3 = " << to_string(cc.cone) << " +- " << d << (literal ? " literal" : " default"));
         ClassifySettings s;
-        s.literal = literal;
+        s.reading.literal = literal;
         const Classification cl = classify(loop, s), cp = classify(plain, s);
         CHECK(cl.cusps.empty());
         CHECK(cp.cusps.empty());
@@ -488,7 +431,7 @@ TEST_CASE("census: tracer_on_pitch_cone within 1e-12: a cusp within resolution, 
         const RootCensus root_exact = root_census(exact);
         for (bool literal : {false, true}) {
           ClassifySettings s;
-          s.literal = literal;
+          s.reading.literal = literal;
           const Classification c = classify(train, s);
           INFO((literal ? "literal" : "default"));
           CHECK(c.cusps.size() == static_cast<std::size_t>(n.abs_p()));
@@ -665,7 +608,7 @@ TEST_CASE("census: literal_row_g: a2 + a3 = pi - 3.4e-16 splits the pole tangenc
   REQUIRE(e > 0);
   REQUIRE(e < 1e-15L);
   ClassifySettings s;
-  s.literal = true;
+  s.reading.literal = true;
   const Classification c = classify(train, s);
   REQUIRE(c.nodes.size() == 4);
   CHECK(c.crossings == 4);

@@ -4,6 +4,7 @@
 // stdout, and no output or temporary file left behind.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
+#include "test_support.hpp"
 
 #include <sys/wait.h>
 
@@ -645,17 +646,13 @@ TEST_CASE("cli: the example scene data/scenes/paper_figures.json runs every pape
   const std::string scene = std::string(SPHTROCH_SOURCE_DIR) + "/data/scenes/paper_figures.json";
   const nlohmann::json j = run_json("scene '" + scene + "' --output-dir '" + dir.path.string() + "' --json", dir);
   // Expected counts: data/reference/paper_cases.csv (the report's figures and Table 1).
-  std::ifstream cases(std::string(SPHTROCH_REFERENCE_DIR) + "/paper_cases.csv");
-  std::string line;
-  std::getline(cases, line);
   std::size_t checked = 0;
-  while (std::getline(cases, line)) {
-    const auto cells = split(line, ',');
-    const std::string id = cells[0];
+  for (const sphtroch::test::PaperCase& row : sphtroch::test::paper_cases()) {
+    const std::string id = row.id;
     INFO("case " << id);
     const nlohmann::json c = nlohmann::json::parse(slurp(dir.path / (id + ".json")));
-    CHECK(c["counts"]["nodes"] == std::stoul(cells[7]));
-    CHECK(c["counts"]["cusps"] == std::stoul(cells[8]));
+    CHECK(c["counts"]["nodes"] == row.nodes);
+    CHECK(c["counts"]["cusps"] == row.cusps);
     CHECK(fs::exists(dir.path / (id + ".svg")));
     CHECK(fs::exists(dir.path / (id + "_nodes.csv")));
     ++checked;

@@ -59,7 +59,7 @@ TEST_CASE("scene: every key read, defaults, effects in the order written, relati
   CHECK(a.train.a3() == 1.25);
   CHECK(a.settings.samples == 720);
   CHECK(a.settings.census_samples == 2048);
-  CHECK(a.settings.literal);
+  CHECK(a.settings.reading.literal);
   CHECK_FALSE(a.settings.turns);
   REQUIRE(a.effects.size() == 3);
   CHECK(a.effects[0].effect == Effect::plot);  // as written, not alphabetical
@@ -78,7 +78,7 @@ TEST_CASE("scene: every key read, defaults, effects in the order written, relati
   REQUIRE(b.settings.turns);
   CHECK(*b.settings.turns == 1.5);
   CHECK(b.settings.samples == 0);
-  CHECK_FALSE(b.settings.literal);
+  CHECK_FALSE(b.settings.reading.literal);
 }
 
 TEST_CASE("scene errors: FILE: PATH = VALUE: PROBLEM, valid: RANGE, one line, an InvalidInput") {

@@ -38,6 +38,7 @@ InvalidInput expect_invalid(F&& f) {
 struct PaperCase {
   std::string id;
   std::int64_t n_num = 1, n_den = 1;
+  std::string a2_symbolic, a3_symbolic;  // as the report writes them ("pi/2", "a_p", ...)
   double a2 = 0, a3 = 0;  // radians, as the CSV gives them
   std::size_t nodes = 0, cusps = 0;
 };
@@ -57,7 +58,7 @@ inline std::vector<PaperCase> paper_cases() {
     std::string cell;
     for (int i = 0; i < 9 && std::getline(ss, cell, ','); ++i) f.push_back(cell);
     REQUIRE(f.size() == 9);
-    rows.push_back(PaperCase{f[0], std::stoll(f[1]), std::stoll(f[2]), std::stod(f[5]), std::stod(f[6]),
+    rows.push_back(PaperCase{f[0], std::stoll(f[1]), std::stoll(f[2]), f[3], f[4], std::stod(f[5]), std::stod(f[6]),
                              static_cast<std::size_t>(std::stoul(f[7])), static_cast<std::size_t>(std::stoul(f[8]))});
   }
   REQUIRE(rows.size() >= 10);

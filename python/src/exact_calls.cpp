@@ -16,7 +16,7 @@ namespace {
 
 AnalysisSettings settings_of(bool literal, std::size_t census_samples) {
   AnalysisSettings s;
-  s.literal = literal;
+  s.reading.literal = literal;
   s.census_samples = census_samples;
   return s;
 }

@@ -338,7 +338,7 @@ py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::
   const auto r2 = range_arg(a2, "a2"), r3 = range_arg(a3, "a3");
   spec.a2 = AngleRange{r2.first, r2.second};
   spec.a3 = AngleRange{r3.first, r3.second};
-  spec.literal = literal;
+  spec.reading.literal = literal;
   const std::size_t workers =
       threads.is_none() ? std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kAtlasMaxThreads)
                         : count_arg(threads, "threads", 1, kAtlasMaxThreads);

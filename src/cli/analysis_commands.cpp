@@ -34,7 +34,7 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
 
 AnalysisSettings analysis_settings(const AnalysisOptions& o) {
   AnalysisSettings s;
-  s.literal = o.literal;
+  s.reading.literal = o.literal;
   if (!o.samples.empty()) s.census_samples = parse_count(o.samples, "samples", kMinCensusSamples, kMaxSamples);
   return s;
 }

@@ -139,7 +139,7 @@ void run_atlas(const AtlasOptions& o) {
   spec.grid = parse_count(o.grid, "grid", 1, kAtlasMaxGrid);
   spec.a2 = parse_angle_range(o.a2, "a2");
   spec.a3 = parse_angle_range(o.a3, "a3");
-  spec.literal = o.literal;
+  spec.reading.literal = o.literal;
   check_cell_centres(spec, o);
   spec.validate();
   const unsigned hw = std::thread::hardware_concurrency();

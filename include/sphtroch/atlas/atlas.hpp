@@ -18,8 +18,8 @@
 //      there the curve passes through a pole, which for |p| >= 2 is a node (Table 1 rows d, g).
 //      They are boundary cases, analysed as below, and they agree with the report.
 //  (2) Each cell is analysed exactly as `sphtroch classify` analyses one train (classification.hpp):
-//      the default reading snaps an input within spec.boundary_tolerance of a boundary onto it
-//      (boundary_snap.hpp) and uses the tangency tolerance kTangencyTolerance; spec.literal
+//      the default reading snaps an input within spec.reading.boundary_tolerance of a boundary onto it
+//      (boundary_snap.hpp) and uses the tangency tolerance kTangencyTolerance; spec.reading.literal
 //      analyses the doubles as given (tolerances 0). Nodes and their kinds come from
 //      root_census() of the snapped train; cusps from pitch_cone_cusps(snapped, kCuspResolution),
 //      as classify counts them. The report's prediction is classify_analytic(snapped, tolerance).
@@ -50,6 +50,7 @@
 #include "sphtroch/census/root_census.hpp"
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,10 +81,8 @@ struct AtlasSpec {
   std::size_t grid = 128;  // G: G x G cells
   AngleRange a2;           // horizontal axis, index i
   AngleRange a3;           // vertical axis, index j
-  bool literal = false;    // analyse the doubles as given (no boundary snapping, tolerances 0)
-  double boundary_tolerance = kBoundaryTolerance;  // default reading only
+  Reading reading;         // default, or literal: the doubles as given (core/reading.hpp)
   /// The boundary reading of every cell (closed_form_boundaries.hpp).
-  Reading reading() const { return Reading{literal, boundary_tolerance}; }
 
   std::size_t cells() const { return grid * grid; }
   /// Cell centre lo + (k + 1/2)(hi - lo)/G.
@@ -178,8 +177,8 @@ inline void AtlasSpec::validate() const {
   };
   check(a2, "a2");
   check(a3, "a3");
-  if (!(boundary_tolerance >= 0.0))
-    throw InvalidInput("boundary_tolerance", number_text(boundary_tolerance), "negative", ">= 0 radians");
+  if (!(reading.boundary_tolerance >= 0.0))
+    throw InvalidInput("boundary_tolerance", number_text(reading.boundary_tolerance), "negative", ">= 0 radians");
   // The carrier-twist bounds up front, for every row: a row whose pitch cone is ill-defined would
   // refuse the cells near it (GearTrain), so the whole range is refused instead.
   for (std::size_t i = 0; i < grid; ++i) GearTrain::on_cone(a2_at(i), A3Reference::pitch_cone, 0.0, ratio);
@@ -202,7 +201,7 @@ inline AtlasCell atlas_cell(const AtlasSpec& spec, std::size_t i, std::size_t j)
   cell.j = static_cast<std::uint32_t>(j);
   cell.a2 = spec.a2_at(i);
   cell.a3 = spec.a3_at(j);
-  const RootClassification c = classify_roots(GearTrain(cell.a2, cell.a3, spec.ratio), spec.reading());
+  const RootClassification c = classify_roots(GearTrain(cell.a2, cell.a3, spec.ratio), spec.reading);
   cell.crossings = static_cast<std::uint32_t>(c.crossings);
   cell.tangencies = static_cast<std::uint32_t>(c.tangencies);
   cell.nodes = static_cast<std::uint32_t>(c.nodes);

@@ -131,7 +131,7 @@ inline std::optional<std::string_view> field(const std::vector<std::string_view>
 inline std::string atlas_csv_comment(const AtlasSpec& spec, const std::optional<AtlasShard>& shard) {
   std::string s = "# sphtroch atlas n=" + spec.ratio.str() + " grid=" + std::to_string(spec.grid) + " a2=" +
                   number_text(spec.a2.lo) + ":" + number_text(spec.a2.hi) + " a3=" + number_text(spec.a3.lo) +
-                  ":" + number_text(spec.a3.hi) + " reading=" + (spec.literal ? "literal" : "default");
+                  ":" + number_text(spec.a3.hi) + " reading=" + (spec.reading.literal ? "literal" : "default");
   if (shard) {
     const AtlasRows r = shard_rows(spec.grid, *shard);
     s += " shard=" + std::to_string(shard->index) + "/" + std::to_string(shard->count) + " rows=" +
@@ -226,7 +226,7 @@ inline AtlasCsvHead read_atlas_csv_head(std::string_view comment, std::string_vi
     out.spec.grid = static_cast<std::size_t>(*g);
     out.spec.a2 = range_field(*a2, name);
     out.spec.a3 = range_field(*a3, name);
-    out.spec.literal = *reading == "literal";
+    out.spec.reading.literal = *reading == "literal";
     out.spec.validate();
   } catch (const InvalidInput& e) {
     if (e.field() == "slice") throw;

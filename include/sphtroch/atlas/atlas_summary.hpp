@@ -65,8 +65,8 @@ inline void head(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s
   out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
       << number_text(spec.a2.lo) << ", " << number_text(spec.a2.hi) << "], a3 in [" << number_text(spec.a3.lo) << ", "
       << number_text(spec.a3.hi) << "], cell centres; "
-      << (spec.literal ? "literal reading (tolerances 0)"
-                       : "default reading (boundary tolerance " + number_text(spec.boundary_tolerance) +
+      << (spec.reading.literal ? "literal reading (tolerances 0)"
+                       : "default reading (boundary tolerance " + number_text(spec.reading.boundary_tolerance) +
                              " rad, tangency " + number_text(kTangencyTolerance) + ")")
       << "; cusp resolution " << number_text(kCuspResolution) << " rad"
       << "\n";

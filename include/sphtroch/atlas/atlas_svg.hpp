@@ -375,7 +375,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   y += 18;
   svg.text(lx + 24, y, "(report: " + predicted + ")", body);
   y += 18;
-  svg.text(lx, y + 8, std::string(spec.literal ? "literal reading" : "default reading") + "; cell centres sampled", body);
+  svg.text(lx, y + 8, std::string(spec.reading.literal ? "literal reading" : "default reading") + "; cell centres sampled", body);
   svg.end_group();
   return svg.finish();
 }

@@ -22,8 +22,8 @@
 //     root-count function g or g'; seconds = wall time of the stage itself (its dependencies
 //     are timed in their own stages). Timing is informative only.
 //  3. Which train: the input stage snaps the given train onto boundaries within
-//     settings.boundary_tolerance (boundary_snap.hpp; no point evaluated), unless
-//     settings.literal. The trajectory, velocity and screw-axis stages sample the train AS GIVEN
+//     settings.reading.boundary_tolerance (boundary_snap.hpp; no point evaluated), unless
+//     settings.reading.literal. The trajectory, velocity and screw-axis stages sample the train AS GIVEN
 //     (what `sphtroch trace` prints); every census stage, the criteria, the extremes, the
 //     symmetry and the plot trajectory use the ANALYSED (snapped) train (what `sphtroch
 //     classify`, `nodes` and `plot` report).
@@ -110,14 +110,11 @@ using StageWork = Work;
 
 struct AnalysisSettings {
   // Census (as ClassifySettings).
-  bool literal = false;                            // analyse the doubles as given
-  double boundary_tolerance = kBoundaryTolerance;  // default reading only; [0, kMaxBoundaryTolerance]
+  Reading reading;  // default, or literal: the doubles as given (core/reading.hpp)
   std::size_t census_samples = 0;  // polyline census samples; 0 = census_sample_count, else >= kMinCensusSamples
   // Trajectory (trace, velocity, screw axis).
   std::size_t samples = 0;       // closed curve: samples per period; 0 = trace_sample_count
   std::optional<double> turns;   // open curve over K carrier turns instead (K in (0, kMaxTurns])
-  /// The boundary reading these settings ask for (closed_form_boundaries.hpp).
-  Reading reading() const { return Reading{literal, boundary_tolerance}; }
 };
 
 /// omega(t_i) along the trajectory's parameters (contract 5).
@@ -294,7 +291,7 @@ inline std::vector<Stage> Analysis::stages_for(Effect effect) {
 inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settings)
     : input_(train), settings_(settings), snapped_{train, {}, false, 0.0, 0.0} {
   if (settings.samples != 0) check_sample_count(settings.samples);
-  settings.reading().validate();
+  settings.reading.validate();
   if (settings.census_samples != 0 &&
       (settings.census_samples < kMinCensusSamples || settings.census_samples > kMaxSamples))
     throw InvalidInput("census_samples", std::to_string(settings.census_samples), "outside the valid range",
@@ -302,7 +299,7 @@ inline Analysis::Analysis(const GearTrain& train, const AnalysisSettings& settin
                            std::to_string(kMaxSamples));
   if (settings.turns) check_turns(*settings.turns, number_text(*settings.turns));
   run_stage(Stage::input, [&](StageWork&) {
-    snapped_ = snap_to_boundaries(input_, settings_.reading().boundary());
+    snapped_ = snap_to_boundaries(input_, settings_.reading.boundary());
   });
 }
 
@@ -378,7 +375,7 @@ inline const PolylineCensus& Analysis::polyline_census() const {
     run_stage(Stage::polyline_census, [&](StageWork& w) {
       PolylineCensusSettings ps;
       ps.samples = settings_.census_samples;
-      ps.tangency_tolerance = settings_.reading().tangency();
+      ps.tangency_tolerance = settings_.reading.tangency();
 #if defined(SPHTROCH_FAULT_INJECTION)
       // Test seam, compiled only into tests' sphtroch_fault (tests/CMakeLists.txt), never into the
       // tool or the library's users: a root census missing its last node stands for a disagreement
@@ -438,7 +435,7 @@ inline const RootCensus& Analysis::root_census() const {
   if (!root_)
     run_stage(Stage::root_census, [&](StageWork& w) {
       RootCensusSettings rs;
-      rs.tangency_tolerance = settings_.reading().tangency();
+      rs.tangency_tolerance = settings_.reading.tangency();
       root_ = sphtroch::root_census(analysed(), rs);
       w.root_evaluations = root_->evaluations;
       w.points_evaluated = assembly_evaluations(root_->nodes);  // velocities of node assembly
@@ -449,7 +446,7 @@ inline const RootCensus& Analysis::root_census() const {
 inline const AnalyticClassification& Analysis::analytic() const {
   if (!analytic_)
     run_stage(Stage::analytic, [&](StageWork&) {
-      analytic_ = classify_analytic(analysed(), settings_.reading().boundary());
+      analytic_ = classify_analytic(analysed(), settings_.reading.boundary());
     });
   return *analytic_;
 }
@@ -480,7 +477,7 @@ inline const Classification& Analysis::classification() const {
   for (Stage d : dependencies(Stage::classification)) compute(d);
   run_stage(Stage::classification, [&](StageWork&) {
     classification_ = assemble_classification(
-        {input_, snapped_, settings_.literal, polyline_census_->polyline, polyline_census_->certificate, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
+        {input_, snapped_, settings_.reading.literal, polyline_census_->polyline, polyline_census_->certificate, *root_, *cusps_, *analytic_, *extremes_, *symmetry_});
   });
   // The work of everything the classification needed (contract 4).
   StageWork sum;
@@ -522,8 +519,7 @@ template <typename Settings>
 Classification classify(const GearTrain& input, const Settings& settings) {
   static_assert(std::is_same<Settings, ClassifySettings>::value, "classify(train, ClassifySettings)");
   AnalysisSettings s;
-  s.literal = settings.literal;
-  s.boundary_tolerance = settings.boundary_tolerance;
+  s.reading = settings.reading;
   s.census_samples = settings.samples;
   return Analysis(input, s).classification();
 }

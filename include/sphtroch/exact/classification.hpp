@@ -9,9 +9,9 @@
 //   c.agreement.ok();       // both numeric censuses and (n = 1, 2) the report's criteria agree
 //
 // Decisions (stated in every report):
-//  * Default reading: an input within settings.boundary_tolerance of a boundary (a3 = a_p,
+//  * Default reading: an input within settings.reading.boundary_tolerance of a boundary (a3 = a_p,
 //    pi - a_p, a2, pi - a2; a2 = pi/2) is analysed exactly on it (boundary_snap.hpp).
-//    settings.literal analyses the given doubles as they are.
+//    settings.reading.literal analyses the given doubles as they are.
 //  * Nodes are those of the polyline census (exact CGAL crossings + near misses, refined by
 //    Newton on the true curve); the root-count census must find the same node points (positions
 //    within kAgreementDistance, same kinds) or the disagreement is listed.
@@ -51,11 +51,8 @@
 namespace sphtroch {
 
 struct ClassifySettings {
-  bool literal = false;                          // analyse the doubles as given
-  double boundary_tolerance = kBoundaryTolerance;  // default reading only
-  std::size_t samples = 0;                       // polyline census samples; 0 = default
-  /// The boundary reading these settings ask for (closed_form_boundaries.hpp).
-  Reading reading() const { return Reading{literal, boundary_tolerance}; }
+  Reading reading;          // default, or literal: the doubles as given (core/reading.hpp)
+  std::size_t samples = 0;  // polyline census samples; 0 = default
 };
 
 struct CensusAgreement {

@@ -349,7 +349,7 @@ inline void read_settings(const TrainObject& t, SceneTrain& st) {
     st.settings.census_samples = count_value(err, t.at("census_samples"), *c, kMinCensusSamples, kMaxSamples);
   if (const Json* l = t.optional("literal")) {
     if (!l->is_boolean()) err.field(t.at("literal"), l, "not a boolean", "true or false");
-    st.settings.literal = l->get<bool>();
+    st.settings.reading.literal = l->get<bool>();
   }
 }
 
