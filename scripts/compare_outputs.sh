@@ -7,7 +7,8 @@
 #
 # Inputs: every case of data/reference/paper_cases.csv (classify, classify --json, nodes, trace,
 # plot), the scene data/scenes/paper_figures.json (--explain and its files), atlas n = 2 grid 32
-# (CSV, SVG, summary). Exits 0 when identical, 1 with the diff otherwise.
+# (CSV, SVG, summary), a sharded atlas merged, boundaries (events, JSON, loci), crossings of a
+# trace, and refusals (stderr line and status). Exits 0 when identical, 1 with the diff otherwise.
 set -euo pipefail
 [[ $# -eq 2 ]] || { echo "usage: bash scripts/compare_outputs.sh BEFORE_EXE AFTER_EXE" >&2; exit 2; }
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -28,6 +29,23 @@ run_all() {
   mkdir -p "$d/scene"
   (cd "$d" && "$exe" scene "$root/data/scenes/paper_figures.json" --output-dir scene --explain >scene.txt 2>&1) || true
   "$exe" atlas --n 2 --grid 32 -o "$d/atlas.csv" --svg "$d/atlas.svg" >"$d/atlas.txt" 2>&1 || true
+  # Sharded atlas merged back, boundaries (events and loci), crossings of a trace.
+  for k in 1 2 3; do "$exe" atlas --n -5/3 --grid 24 --shard "$k/3" -o "$d/shard$k.csv" >/dev/null 2>&1 || true; done
+  "$exe" atlas-merge "$d/shard2.csv" "$d/shard1.csv" "$d/shard3.csv" -o "$d/merged.csv" >"$d/merge.txt" 2>&1 || true
+  "$exe" boundaries --n 3 --a2 pi/2 >"$d/boundaries.txt" 2>&1 || true
+  "$exe" boundaries --n 7/5 --a2 1.1 --json >"$d/boundaries.json" 2>&1 || true
+  "$exe" boundaries --n -5/2 --a2 0.2:3 --steps 60 >"$d/loci.csv" 2>&1 || true
+  "$exe" trace --n 5/2 --a2 pi/3 --a3 pi/2 --samples 4000 -o "$d/t.csv" >/dev/null 2>&1 || true
+  "$exe" crossings "$d/t.csv" >"$d/crossings.txt" 2>&1 || true
+  # Refusals: the one stderr line and the status of each.
+  local k=0
+  for args in "classify --n 0 --a2 1 --a3 1" "classify --n 2 --a2 4 --a3 1" "trace --n 2 --a2 1 --a3 1 --turns 2e6" \
+              "atlas --n 2 --grid 8 --a2 1:0.5" "boundaries --n 3 --a2 '1 :2'" "atlas-merge $d/missing.csv" \
+              "trace --n 2 --a2 1 --a3 1 --turns x"; do
+    k=$((k + 1))
+    (eval "\"$exe\" $args" >"$d/refusal$k.out" 2>"$d/refusal$k.err"; echo "status $?" >>"$d/refusal$k.err") || true
+    sed -i "s|$d|DIR|g" "$d/refusal$k.err"
+  done
   # Mask the wall-clock fields.
   find "$d" -type f \( -name '*.txt' -o -name '*.json' \) -exec sed -i -E \
     -e 's/("seconds[a-z_]*": )[-0-9.e+]+/\1T/' -e 's/^(time: ).*/\1T/' -e 's/^(work: .*), [0-9.e+-]+ s$/\1, T s/' \
