@@ -52,10 +52,22 @@ const std::string text;
 const std::size_t i = 1, j = 2, k = 3, rows = 10, threads = 2;
 const sphtroch::TracerCurve<double> curve(train);
 const std::vector<sphtroch::BranchPair> pairs;
-sphtroch::AtlasSpec spec;
-const std::vector<sphtroch::AtlasCell> cells;
-const std::vector<sphtroch::AtlasCell> slice;
-const sphtroch::AtlasCsv part1, part2;
+sphtroch::AtlasSpec small_atlas() {
+  sphtroch::AtlasSpec s;
+  s.grid = 8;
+  return s;
+}
+sphtroch::AtlasSpec spec = small_atlas();
+const std::vector<sphtroch::AtlasCell> cells = sphtroch::compute_atlas(spec, {0, spec.grid}, 1);
+const std::vector<sphtroch::AtlasCell> slice = sphtroch::compute_atlas(spec, sphtroch::shard_rows(8, {2, 4}), 1);
+std::string csv_of(const std::vector<sphtroch::AtlasCell>& c, sphtroch::AtlasShard shard) {
+  std::ostringstream out;
+  sphtroch::write_atlas_csv(out, spec, shard, c);
+  return out.str();
+}
+const std::string slice_text = csv_of(slice, {2, 4});
+const sphtroch::AtlasCsv part1 = sphtroch::read_atlas_csv(csv_of(sphtroch::compute_atlas(spec, sphtroch::shard_rows(8, {1, 2}), 1), {1, 2}), "1");
+const sphtroch::AtlasCsv part2 = sphtroch::read_atlas_csv(csv_of(sphtroch::compute_atlas(spec, sphtroch::shard_rows(8, {2, 2}), 1), {2, 2}), "2");
 const std::vector<sphtroch::EdgePair> crossings;
 const std::size_t blocks = 4;
 std::string format_rows(std::size_t block) { return std::to_string(block) + "\n"; }

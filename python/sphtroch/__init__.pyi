@@ -17,7 +17,7 @@ __version__: str
 
 Angle = Union[float, int, str]
 RatioLike = Union[int, str, float, Fraction]
-AngleRange = Tuple[Angle, Angle]
+AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" text ("0:pi/2")
 
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
@@ -152,7 +152,8 @@ def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.14159265358979
     radians), nodes, crossings, tangencies, cusps, analytic_nodes (-1 where the report gives no
     count, n != 1, 2), analytic_cusps (int64), agree (int8: 1 agree, 0 disagree, -1 no
     prediction), cusps_agree (bool); plus n (str) and threads (int).
-    grid: 1 .. 4096; ranges 0 <= lo < hi <= pi; threads: 1 .. 1024 (default: all cores).
+    grid: 1 .. 4096; ranges (lo, hi) or the CLI's "LO:HI" text, 0 <= lo < hi <= pi; threads: 1 .. 1024
+    (default: all cores).
     """
 
 def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,

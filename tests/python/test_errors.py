@@ -78,7 +78,8 @@ def test_crossings_open_needs_two_points():
 
 @pytest.mark.parametrize("kwargs,field", [
     (dict(n=0), "n"), (dict(n="2", grid=0), "grid"), (dict(n="2", grid=5000), "grid"), (dict(n=2, grid=8.5), "grid"),
-    (dict(n=2, grid=8, a2=(1.0, 0.5)), "a2"), (dict(n=2, grid=8, a2=(0, 4)), "a2"), (dict(n=2, grid=8, a2="0:pi"), "a2"),
+    (dict(n=2, grid=8, a2=(1.0, 0.5)), "a2"), (dict(n=2, grid=8, a2=(0, 4)), "a2"), (dict(n=2, grid=8, a2="0:x"), "a2"),
+        (dict(n=2, grid=8, a2="pi:0"), "a2"), (dict(n=2, grid=8, a2="0 :pi"), "a2"),
     (dict(n=2, grid=8, a3=(0, "x")), "a3"), (dict(n=2, grid=8, a3=(0, 1, 2)), "a3"),
     (dict(n=2, grid=8, threads=0), "threads"), (dict(n=2, grid=8, threads=5000), "threads"),
 ])
@@ -154,3 +155,13 @@ def test_d11_flags_accept_only_true_or_false(value):
 def test_d11_string_and_non_numeric_arrays_are_refused(points):
     e = check(lambda: sphtroch.crossings(points), "points")
     assert "dtype" in e.value and "numeric" in e.problem
+
+
+def test_ranges_as_the_cli_writes_them():
+    """"LO:HI" text is the same range as the pair (lo, hi): one parser for the CLI and Python."""
+    import math
+    a = sphtroch.atlas(2, grid=4, a2="0:pi/2", a3="pi/4:3pi/4", threads=1)
+    b = sphtroch.atlas(2, grid=4, a2=(0, math.pi / 2), a3=(math.pi / 4, 3 * math.pi / 4), threads=1)
+    assert (a["a2"] == b["a2"]).all() and (a["a3"] == b["a3"]).all() and (a["nodes"] == b["nodes"]).all()
+    r = sphtroch.classify_a3_range(1.0, 2, "0.5:2.5", count=11)
+    assert r == sphtroch.classify_a3_range(1.0, 2, (0.5, 2.5), count=11)

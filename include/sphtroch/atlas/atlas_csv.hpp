@@ -4,7 +4,7 @@
 //   std::ostringstream out;
 //   write_atlas_csv(out, spec, std::nullopt, cells);         // the whole atlas
 //   write_atlas_csv(out, spec, AtlasShard{2, 4}, slice);     // job 2 of 4
-//   AtlasCsv part = read_atlas_csv(text, "slice2.csv");      // InvalidInput on anything odd
+//   AtlasCsv part = read_atlas_csv(slice_text, "slice2.csv");  // InvalidInput on anything odd
 //   AtlasCsv whole = merge_atlas_slices({part1, part2});    // any order
 //   write_atlas_csv(out, whole.spec, std::nullopt, whole.cells);  // == the unsharded file
 //

@@ -2,6 +2,7 @@
 // (atlas_csv.hpp), streamed row by row in memory bounded by one block and one line per slice.
 // Eigen only; POSIX files (io/input_file.hpp).
 //
+//   std::ofstream("part1.csv") << slice_text;  // a slice written by `sphtroch atlas --shard 2/4`
 //   std::vector<sphtroch::AtlasSlice> s = sphtroch::open_atlas_slices({"part1.csv"});  // heads only
 //   sphtroch::for_each_atlas_row(s[0], [&](const sphtroch::AtlasCell& c, std::string_view line) {});
 //

@@ -5,7 +5,7 @@
 //   sphtroch::RootClassification c = sphtroch::classify_roots(train);      // default reading
 //   c.curve_class == sphtroch::CurveClass::nodes;  c.nodes;  c.node_points;  c.cusps;
 //   c.analytic_nodes;                // the report's count (n = 1, 2), or nullopt
-//   std::vector<sphtroch::A3Interval> v = sphtroch::classify_a3_range(pi / 3, sphtroch::Ratio(2), 0, pi, 721);
+//   std::vector<sphtroch::A3Interval> v = sphtroch::classify_a3_range(pi / 3, sphtroch::Ratio(2), 0.01, pi - 0.01, 721);
 //
 // Reading (as classification.hpp): by default a train within `boundary_tolerance` (radians) of a
 // boundary (pitch cone, pole passage, a2 = pi/2) is analysed on it; `literal` analyses the doubles

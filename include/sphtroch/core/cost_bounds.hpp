@@ -1,7 +1,8 @@
 // sphtroch/core/cost_bounds.hpp — what a node census may cost, decided before any work.
 //
 //   sphtroch::check_census_cost(Ratio(301, 100));   // fine: ~1.2e5 node points, ~6 s
-//   sphtroch::check_census_cost(Ratio(1000000));    // throws InvalidInput("n", ...): ~1e12 nodes
+//   try { sphtroch::check_census_cost(Ratio(1000000)); }   // ~1e12 nodes:
+//   catch (const sphtroch::InvalidInput& e) { e.field(); }  // "n", with the bound in e.valid_range()
 //
 // A closed trochoid of ratio p/q has about |p| (|p| + q) node points (13/5: 221 = 13 * 17;
 // 7/3: 63; 101/40: 14140 = 101 * 140), and the censuses' cost grows with the square of that

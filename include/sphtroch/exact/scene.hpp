@@ -3,6 +3,7 @@
 // effects; and the explanation of which stages ran. The format part of `sphtroch scene` (the
 // tool adds the file system: reading the file, checking and writing the outputs).
 //
+//   const std::string text = R"({"trains": [{"name": "fig3", "a2": "pi/2", "a3": "pi/2", "n": "1", "effects": {"trace": "fig3.csv"}}]})";
 //   std::vector<sphtroch::SceneTrain> scene = sphtroch::parse_scene(text, "figs.json");  // SceneError
 //   for (const sphtroch::SceneTrain& st : scene) {
 //     const sphtroch::Analysis a(st.train, st.settings);

@@ -1,5 +1,6 @@
 // sphtroch/io/input_file.hpp — reading a file or standard input in large blocks (POSIX).
 //
+//   std::ofstream("x.csv") << "1,0,0\n0,1,0\n";
 //   sphtroch::InputFile in = sphtroch::InputFile::open("x.csv", "input");   // "-": standard input
 //   std::size_t got = in.read(buffer, size);   // < size only at the end of the input
 //   sphtroch::InputLines lines(in, 4096);       // or InputLines(text, 4096) over bytes in memory

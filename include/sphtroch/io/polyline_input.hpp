@@ -1,7 +1,8 @@
 // sphtroch/io/polyline_input.hpp — a spherical polyline read from a file or standard input: CSV or
 // NumPy .npy, told apart by the file's first bytes (the .npy magic), not by its name.
 //
-//   sphtroch::PolylineInput in = sphtroch::read_polyline("t.csv", "input");  // "-": standard input
+//   std::ofstream("p.csv") << "x,y,z\n1,0,0\n0,1,0\n0,0,1\n";
+//   sphtroch::PolylineInput in = sphtroch::read_polyline("p.csv", "input");  // "-": standard input
 //   in.vertices;   // std::vector<Eigen::Vector3d>, not normalised (validate_spherical_polyline does that)
 //   in.format;     // "csv", "csv with header", "npy <f8 (N, 4)", ...
 //
