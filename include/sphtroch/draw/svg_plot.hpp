@@ -417,183 +417,227 @@ constexpr const char* kAxisColour = "#444444";
 
 }  // namespace detail
 
-inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
-                                     const std::vector<Cusp>& cusps, const PlotOptions& options) {
-  const PlotLayout L = plot_layout(options);
-  const SphereView& cam = L.sphere;
-  const int dec = options.decimals;
-  SvgWriter svg(L.width, L.height, dec);
-  svg.title(options.caption.empty() ? std::string("sphtroch trajectory") : options.caption);
-  auto num = [&](double v) { return svg_number(v, dec); };
-  const double lw = std::max(1.0, L.width / 300.0);  // base line width
+namespace detail {
 
-  // Sphere disc, lightly filled so the picture reads as a ball.
-  svg.circle(cam.cx, cam.cy, cam.radius, "fill:#f3f6fa;stroke:none");
-
-  // Grid: equator (XY plane) and prime meridian (XZ plane, through +X).
-  HemisphereSplit grid_eq, grid_mer;
-  if (options.draw_grid) {
-    grid_eq = split_by_silhouette(detail::great_circle(Vector3d::UnitX(), Vector3d::UnitY(), 360), true, cam.view,
-                                  options.max_arc_step);
-    grid_mer = split_by_silhouette(detail::great_circle(Vector3d::UnitX(), Vector3d::UnitZ(), 360), true, cam.view,
-                                   options.max_arc_step);
-    SvgPath back(dec);
-    detail::append_runs(back, grid_eq.back, cam, options.simplify_px);
-    detail::append_runs(back, grid_mer.back, cam, options.simplify_px);
-    svg.path(back, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.6 * lw) +
-                       ";stroke-dasharray:" + num(lw) + " " + num(3 * lw));
+/// The sphere picture being drawn (contracts 1-5): layout, view, writer and base line width, with
+/// one method per layer. render_sphere_svg calls them back to front.
+class SphereCanvas {
+ public:
+  explicit SphereCanvas(const PlotOptions& options)
+      : opt_(options), L_(plot_layout(options)), cam_(L_.sphere), svg_(L_.width, L_.height, options.decimals),
+        lw_(std::max(1.0, L_.width / 300.0)) {
+    svg_.title(options.caption.empty() ? std::string("sphtroch trajectory") : options.caption);
   }
 
-  // The curve's back half: dashed and faded, under everything in front.
-  std::vector<Vector3d> pts(trajectory.points.begin(), trajectory.points.end());
-  const HemisphereSplit curve = split_by_silhouette(pts, trajectory.closed, cam.view, options.max_arc_step);
-  {
-    SvgPath back(dec);
-    detail::append_runs(back, curve.back, cam, options.simplify_px);
-    svg.path(back, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-opacity:0.45;stroke-width:" +
-                       num(1.1 * lw) + ";stroke-dasharray:" + num(4 * lw) + " " + num(2.5 * lw) +
-                       ";stroke-linejoin:round");
+  /// Sphere disc, lightly filled so the picture reads as a ball.
+  void disc() { svg_.circle(cam_.cx, cam_.cy, cam_.radius, "fill:#f3f6fa;stroke:none"); }
+
+  /// Grid: equator (XY plane) and prime meridian (XZ plane, through +X), split once; back half dashed.
+  void grid_back() {
+    if (!opt_.draw_grid) return;
+    grid_eq_ = split(great_circle(Vector3d::UnitX(), Vector3d::UnitY(), 360), true);
+    grid_mer_ = split(great_circle(Vector3d::UnitX(), Vector3d::UnitZ(), 360), true);
+    svg_.path(runs_path(grid_eq_.back, grid_mer_.back),
+              stroke(kGridColour, 0.6) + ";stroke-dasharray:" + num(lw_) + " " + num(3 * lw_));
   }
 
-  // The outline, then the front grid.
-  svg.circle(cam.cx, cam.cy, cam.radius, "fill:none;stroke:#333333;stroke-width:" + num(1.1 * lw));
-  if (options.draw_grid) {
-    SvgPath front(dec);
-    detail::append_runs(front, grid_eq.front, cam, options.simplify_px);
-    detail::append_runs(front, grid_mer.front, cam, options.simplify_px);
-    svg.path(front, std::string("fill:none;stroke:") + detail::kGridColour + ";stroke-width:" + num(0.7 * lw));
+  /// The curve's back half: dashed and faded, under everything in front (contract 2, 3).
+  void curve_back(const HemisphereSplit& curve) {
+    svg_.path(runs_path(curve.back, {}), curve_back_style() + ";stroke-linejoin:round");
   }
 
-  // A label: a white halo under the glyphs keeps it readable over curve and grid lines.
-  auto label = [&](double x, double y, const std::string& text, const std::string& style, const char* anchor) {
-    svg.text(x, y, text, style + ";stroke:#ffffff;stroke-width:" + num(2.5 * lw) + ";stroke-linejoin:round", anchor);
-    svg.text(x, y, text, style, anchor);
+  /// The outline, then the front grid.
+  void outline_and_grid_front() {
+    svg_.circle(cam_.cx, cam_.cy, cam_.radius, stroke("#333333", 1.1));
+    if (opt_.draw_grid) svg_.path(runs_path(grid_eq_.front, grid_mer_.front), stroke(kGridColour, 0.7));
+  }
+
+  /// Axes from the centre to kAxisReach R with arrow heads; one pointing away is dashed.
+  void axes() {
+    if (!opt_.draw_axes) return;
+    SvgPath solid(dec()), dashed(dec()), heads(dec());
+    for (int k = 0; k < 3; ++k) axis(k, solid, dashed, heads);
+    const std::string base = stroke(kAxisColour, 0.9);
+    svg_.path(solid, base);
+    svg_.path(dashed, base + ";stroke-dasharray:" + num(3 * lw_) + " " + num(2 * lw_));
+    svg_.path(heads, std::string("fill:") + kAxisColour + ";stroke:none");
+  }
+
+  /// The curve's front half.
+  void curve_front(const HemisphereSplit& curve) {
+    svg_.path(runs_path(curve.front, {}), stroke(kCurveColour, 1.7) + ";stroke-linejoin:round;stroke-linecap:round");
+  }
+
+  /// Node i as a ring labelled N<i+1>, coloured by kind, faded on the back half (contract 4).
+  void node_markers(const std::vector<Node>& nodes) {
+    svg_.begin_group("", "id=\"nodes\"");
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const Node& node = nodes[i];
+      SPHTROCH_ASSERT(std::isfinite(node.position.norm()), "render_sphere_svg: finite node position");
+      const ScreenPoint s = cam_.project(node.position);
+      const bool front = s.depth >= -kSilhouetteTolerance;
+      const char* colour = node.kind == NodeKind::crossing ? kCrossingColour : kTangencyColour;
+      (node.kind == NodeKind::crossing ? have_crossing_ : have_tangency_) = true;
+      svg_.circle(s.x, s.y, L_.marker_radius, stroke(colour, 1.6) + (front ? "" : back_mark()));
+      marker_label(s, "N" + std::to_string(i + 1), colour, front);
+    }
+    svg_.end_group();
+  }
+
+  /// Cusp j as a triangle labelled C<j+1> (contract 4).
+  void cusp_markers(const std::vector<Cusp>& cusps) {
+    svg_.begin_group("", "id=\"cusps\"");
+    for (std::size_t j = 0; j < cusps.size(); ++j) {
+      SPHTROCH_ASSERT(std::isfinite(cusps[j].position.norm()), "render_sphere_svg: finite cusp position");
+      const ScreenPoint s = cam_.project(cusps[j].position);
+      const bool front = s.depth >= -kSilhouetteTolerance;
+      svg_.path(triangle_path(s.x, s.y, 1.1 * L_.marker_radius, dec()),
+                stroke(kCuspColour, 1.6) + ";stroke-linejoin:round" + (front ? "" : back_mark()));
+      marker_label(s, "C" + std::to_string(j + 1), kCuspColour, front);
+    }
+    svg_.end_group();
+  }
+
+  /// Legend: one line along the top, only for what is drawn.
+  void legend(bool with_cusps) {
+    if (!opt_.draw_legend) return;
+    LegendPen pen{0.6 * L_.font_px, 1.1 * L_.font_px};
+    const double r = 0.8 * L_.marker_radius;
+    legend_line(pen, std::string("stroke:") + kCurveColour + ";stroke-width:" + num(1.7 * lw_), "front");
+    legend_line(pen, "stroke:" + curve_back_style().substr(std::string("fill:none;stroke:").size()), "back");
+    if (have_crossing_) {
+      svg_.circle(pen.x + r, pen.mid(L_), r, stroke(kCrossingColour, 1.4));
+      legend_mark(pen, r, "node (crossing)");
+    }
+    if (have_tangency_) {
+      svg_.circle(pen.x + r, pen.mid(L_), r, stroke(kTangencyColour, 1.4));
+      legend_mark(pen, r, "node (tangency)");
+    }
+    if (with_cusps) {
+      svg_.path(triangle_path(pen.x + r, pen.mid(L_), r, dec()), stroke(kCuspColour, 1.4));
+      legend_mark(pen, r, "cusp");
+    }
+  }
+
+  /// The caption, shrunk to fit the width (a sans-serif glyph averages about 0.55 em).
+  void caption() {
+    if (opt_.caption.empty()) return;
+    const double fit = 0.95 * L_.width / (0.55 * static_cast<double>(std::max<std::size_t>(1, opt_.caption.size())));
+    svg_.text(0.5 * L_.width, L_.caption_y, opt_.caption,
+              "font-family:sans-serif;font-size:" + num(std::min(1.1 * L_.font_px, fit)) + "px;fill:#111111", "middle");
+  }
+
+  HemisphereSplit split(const std::vector<Vector3d>& points, bool closed) const {
+    return split_by_silhouette(points, closed, cam_.view, opt_.max_arc_step);
+  }
+  std::string finish() { return svg_.finish(); }
+
+ private:
+  /// Where the next legend item goes: x advances, y is the text baseline.
+  struct LegendPen {
+    double x, y;
+    double mid(const PlotLayout& L) const { return y - 0.3 * L.font_px; }
   };
 
-  // Axes: from the centre to kAxisReach R, with an arrow head; an axis pointing away from the
-  // viewer is dashed. Labels just past the tip.
-  if (options.draw_axes) {
-    const char* names[3] = {"X", "Y", "Z"};
-    SvgPath solid(dec), dashed(dec), heads(dec);
-    for (int k = 0; k < 3; ++k) {
-      const Vector3d e = Vector3d::Unit(k);
-      const ScreenPoint tip = cam.project(detail::kAxisReach * e);
-      const double dx = tip.x - cam.cx, dy = tip.y - cam.cy;
-      const double len = std::hypot(dx, dy);
-      SvgPath& d = e.dot(cam.view) >= 0 ? solid : dashed;
-      d.move_to(cam.cx, cam.cy);
-      d.line_to(tip.x, tip.y);
-      double ux = 0.0, uy = -1.0;
-      if (len > 1e-9) {
-        ux = dx / len;
-        uy = dy / len;
-      }
-      if (len > 0.15 * cam.radius) {  // an axis seen nearly end-on gets no arrow head
-        const double h = 2.2 * L.marker_radius, w = 0.8 * L.marker_radius;
-        heads.move_to(tip.x + ux * 0.6 * h, tip.y + uy * 0.6 * h);
-        heads.line_to(tip.x - ux * 0.4 * h - uy * w, tip.y - uy * 0.4 * h + ux * w);
-        heads.line_to(tip.x - ux * 0.4 * h + uy * w, tip.y - uy * 0.4 * h - ux * w);
-        heads.close();
-      }
-      const double gap = 1.6 * L.font_px;
-      label(tip.x + ux * gap, tip.y + uy * gap + 0.35 * L.font_px, names[k],
-               "font-family:sans-serif;font-style:italic;font-size:" + num(1.1 * L.font_px) + "px;fill:" +
-                   detail::kAxisColour,
-               "middle");
-    }
-    const std::string base = std::string("fill:none;stroke:") + detail::kAxisColour + ";stroke-width:" + num(0.9 * lw);
-    svg.path(solid, base);
-    svg.path(dashed, base + ";stroke-dasharray:" + num(3 * lw) + " " + num(2 * lw));
-    svg.path(heads, std::string("fill:") + detail::kAxisColour + ";stroke:none");
+  int dec() const { return opt_.decimals; }
+  std::string num(double v) const { return svg_number(v, dec()); }
+  /// The one stroke style: no fill, a colour, `width` times the base line width.
+  std::string stroke(const char* colour, double width) const {
+    return std::string("fill:none;stroke:") + colour + ";stroke-width:" + num(width * lw_);
+  }
+  std::string curve_back_style() const {
+    return std::string("fill:none;stroke:") + kCurveColour + ";stroke-opacity:0.45;stroke-width:" + num(1.1 * lw_) +
+           ";stroke-dasharray:" + num(4 * lw_) + " " + num(2.5 * lw_);
+  }
+  std::string back_mark() const { return ";stroke-opacity:0.6;stroke-dasharray:" + num(2 * lw_) + " " + num(1.5 * lw_); }
+
+  SvgPath runs_path(const std::vector<std::vector<Vector3d>>& a, const std::vector<std::vector<Vector3d>>& b) const {
+    SvgPath d(dec());
+    append_runs(d, a, cam_, opt_.simplify_px);
+    append_runs(d, b, cam_, opt_.simplify_px);
+    return d;
   }
 
-  // The curve's front half.
-  {
-    SvgPath front(dec);
-    detail::append_runs(front, curve.front, cam, options.simplify_px);
-    svg.path(front, std::string("fill:none;stroke:") + detail::kCurveColour + ";stroke-width:" + num(1.7 * lw) +
-                        ";stroke-linejoin:round;stroke-linecap:round");
+  /// A label: a white halo under the glyphs keeps it readable over curve and grid lines.
+  void label(double x, double y, const std::string& text, const std::string& style, const char* anchor) {
+    svg_.text(x, y, text, style + ";stroke:#ffffff;stroke-width:" + num(2.5 * lw_) + ";stroke-linejoin:round", anchor);
+    svg_.text(x, y, text, style, anchor);
+  }
+  void marker_label(const ScreenPoint& s, const std::string& text, const char* colour, bool front) {
+    const LabelPlacement lp = label_position(L_, s);
+    label(lp.x, lp.y, text,
+          "font-family:sans-serif;font-weight:bold;font-size:" + num(L_.font_px) + "px;fill:" + colour +
+              (front ? "" : ";fill-opacity:0.6"),
+          lp.anchor_end ? "end" : "start");
   }
 
-  // Markers and labels.
-  const std::string label_style = "font-family:sans-serif;font-weight:bold;font-size:" + num(L.font_px) + "px;fill:";
-  const std::string back_mark = ";stroke-opacity:0.6;stroke-dasharray:" + num(2 * lw) + " " + num(1.5 * lw);
-  bool have_crossing = false, have_tangency = false;
-  svg.begin_group("", "id=\"nodes\"");
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const Node& node = nodes[i];
-    SPHTROCH_ASSERT(std::isfinite(node.position.norm()), "render_sphere_svg: finite node position");
-    const ScreenPoint s = cam.project(node.position);
-    const bool front = s.depth >= -kSilhouetteTolerance;
-    const char* colour = node.kind == NodeKind::crossing ? detail::kCrossingColour : detail::kTangencyColour;
-    (node.kind == NodeKind::crossing ? have_crossing : have_tangency) = true;
-    svg.circle(s.x, s.y, L.marker_radius,
-               std::string("fill:none;stroke:") + colour + ";stroke-width:" + num(1.6 * lw) + (front ? "" : back_mark));
-    const LabelPlacement lp = label_position(L, s);
-    label(lp.x, lp.y, "N" + std::to_string(i + 1), label_style + colour + (front ? "" : ";fill-opacity:0.6"),
-             lp.anchor_end ? "end" : "start");
-  }
-  svg.end_group();
-  svg.begin_group("", "id=\"cusps\"");
-  for (std::size_t j = 0; j < cusps.size(); ++j) {
-    const Cusp& cusp = cusps[j];
-    SPHTROCH_ASSERT(std::isfinite(cusp.position.norm()), "render_sphere_svg: finite cusp position");
-    const ScreenPoint s = cam.project(cusp.position);
-    const bool front = s.depth >= -kSilhouetteTolerance;
-    svg.path(detail::triangle_path(s.x, s.y, 1.1 * L.marker_radius, dec),
-             std::string("fill:none;stroke:") + detail::kCuspColour + ";stroke-width:" + num(1.6 * lw) +
-                 ";stroke-linejoin:round" + (front ? "" : back_mark));
-    const LabelPlacement lp = label_position(L, s);
-    label(lp.x, lp.y, "C" + std::to_string(j + 1),
-             label_style + detail::kCuspColour + (front ? "" : ";fill-opacity:0.6"), lp.anchor_end ? "end" : "start");
-  }
-  svg.end_group();
-
-  // Legend: one line along the top, only for what is drawn.
-  if (options.draw_legend) {
-    const double y = 1.1 * L.font_px;
-    double x = 0.6 * L.font_px;
-    const std::string text_style = "font-family:sans-serif;font-size:" + num(0.9 * L.font_px) + "px;fill:#333333";
-    const double r = 0.8 * L.marker_radius;
-    const double mid = y - 0.3 * L.font_px;
-    auto item_text = [&](const std::string& t) {
-      svg.text(x, y, t, text_style);
-      x += 0.5 * L.font_px * static_cast<double>(t.size()) + 1.2 * L.font_px;  // rough text width
-    };
-    svg.line(x, mid, x + 1.8 * L.font_px, mid,
-             std::string("stroke:") + detail::kCurveColour + ";stroke-width:" + num(1.7 * lw));
-    x += 2.2 * L.font_px;
-    item_text("front");
-    svg.line(x, mid, x + 1.8 * L.font_px, mid,
-             std::string("stroke:") + detail::kCurveColour + ";stroke-opacity:0.45;stroke-width:" + num(1.1 * lw) +
-                 ";stroke-dasharray:" + num(4 * lw) + " " + num(2.5 * lw));
-    x += 2.2 * L.font_px;
-    item_text("back");
-    if (have_crossing) {
-      svg.circle(x + r, mid, r, std::string("fill:none;stroke:") + detail::kCrossingColour + ";stroke-width:" + num(1.4 * lw));
-      x += 2 * r + 0.4 * L.font_px;
-      item_text("node (crossing)");
+  /// Axis k: its line (solid or dashed), an arrow head unless seen nearly end-on, its label.
+  void axis(int k, SvgPath& solid, SvgPath& dashed, SvgPath& heads) {
+    static const char* const names[3] = {"X", "Y", "Z"};
+    const Vector3d e = Vector3d::Unit(k);
+    const ScreenPoint tip = cam_.project(kAxisReach * e);
+    const double dx = tip.x - cam_.cx, dy = tip.y - cam_.cy;
+    const double len = std::hypot(dx, dy);
+    SvgPath& d = e.dot(cam_.view) >= 0 ? solid : dashed;
+    d.move_to(cam_.cx, cam_.cy);
+    d.line_to(tip.x, tip.y);
+    const double ux = len > 1e-9 ? dx / len : 0.0, uy = len > 1e-9 ? dy / len : -1.0;
+    if (len > 0.15 * cam_.radius) {
+      const double h = 2.2 * L_.marker_radius, w = 0.8 * L_.marker_radius;
+      heads.move_to(tip.x + ux * 0.6 * h, tip.y + uy * 0.6 * h);
+      heads.line_to(tip.x - ux * 0.4 * h - uy * w, tip.y - uy * 0.4 * h + ux * w);
+      heads.line_to(tip.x - ux * 0.4 * h + uy * w, tip.y - uy * 0.4 * h - ux * w);
+      heads.close();
     }
-    if (have_tangency) {
-      svg.circle(x + r, mid, r, std::string("fill:none;stroke:") + detail::kTangencyColour + ";stroke-width:" + num(1.4 * lw));
-      x += 2 * r + 0.4 * L.font_px;
-      item_text("node (tangency)");
-    }
-    if (!cusps.empty()) {
-      svg.path(detail::triangle_path(x + r, mid, r, dec),
-               std::string("fill:none;stroke:") + detail::kCuspColour + ";stroke-width:" + num(1.4 * lw));
-      x += 2 * r + 0.4 * L.font_px;
-      item_text("cusp");
-    }
+    const double gap = 1.6 * L_.font_px;
+    label(tip.x + ux * gap, tip.y + uy * gap + 0.35 * L_.font_px, names[k],
+          "font-family:sans-serif;font-style:italic;font-size:" + num(1.1 * L_.font_px) + "px;fill:" + kAxisColour,
+          "middle");
   }
 
-  if (!options.caption.empty()) {
-    // Shrink a long caption to fit the width: a sans-serif glyph averages about 0.55 em.
-    const double fit = 0.95 * L.width / (0.55 * static_cast<double>(std::max<std::size_t>(1, options.caption.size())));
-    svg.text(0.5 * L.width, L.caption_y, options.caption,
-             "font-family:sans-serif;font-size:" + num(std::min(1.1 * L.font_px, fit)) + "px;fill:#111111", "middle");
+  void legend_text(LegendPen& pen, const std::string& t) {
+    svg_.text(pen.x, pen.y, t, "font-family:sans-serif;font-size:" + num(0.9 * L_.font_px) + "px;fill:#333333");
+    pen.x += 0.5 * L_.font_px * static_cast<double>(t.size()) + 1.2 * L_.font_px;  // rough text width
   }
-  return svg.finish();
+  void legend_line(LegendPen& pen, const std::string& style, const std::string& t) {
+    svg_.line(pen.x, pen.mid(L_), pen.x + 1.8 * L_.font_px, pen.mid(L_), style);
+    pen.x += 2.2 * L_.font_px;
+    legend_text(pen, t);
+  }
+  /// After a mark of radius r: the text beside it.
+  void legend_mark(LegendPen& pen, double r, const std::string& t) {
+    pen.x += 2 * r + 0.4 * L_.font_px;
+    legend_text(pen, t);
+  }
+
+  const PlotOptions& opt_;
+  const PlotLayout L_;
+  const SphereView& cam_;
+  SvgWriter svg_;
+  const double lw_;  // base line width
+  HemisphereSplit grid_eq_, grid_mer_;
+  bool have_crossing_ = false, have_tangency_ = false;
+};
+
+}  // namespace detail
+
+/// The picture (see header): the layers back to front.
+inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
+                                     const std::vector<Cusp>& cusps, const PlotOptions& options) {
+  detail::SphereCanvas canvas(options);
+  canvas.disc();
+  canvas.grid_back();
+  const std::vector<Vector3d> points(trajectory.points.begin(), trajectory.points.end());
+  const HemisphereSplit curve = canvas.split(points, trajectory.closed);
+  canvas.curve_back(curve);
+  canvas.outline_and_grid_front();
+  canvas.axes();
+  canvas.curve_front(curve);
+  canvas.node_markers(nodes);
+  canvas.cusp_markers(cusps);
+  canvas.legend(!cusps.empty());
+  canvas.caption();
+  return canvas.finish();
 }
 
 }  // namespace sphtroch
