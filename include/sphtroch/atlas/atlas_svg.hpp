@@ -211,173 +211,221 @@ inline std::vector<Tick> ticks(double lo, double hi) {
 
 }  // namespace atlas_svg_detail
 
+namespace atlas_svg_detail {
+
+/// The map being drawn (contracts 1-4): geometry, summary, shades and writer, one method per
+/// layer; render_atlas_svg calls them in drawing order.
+class AtlasCanvas {
+ public:
+  AtlasCanvas(const AtlasSpec& spec, const std::vector<AtlasCell>& cells, double map_px)
+      : spec_(spec), cells_(cells), g_(spec.grid), map_(map_px), width_(kLeft + map_ + 24 + kLegendWidth),
+        height_(kTop + map_ + kBottom), cell_(map_ / static_cast<double>(g_)), summary_(summarize_atlas(cells, spec.ratio)),
+        shades_(cells), svg_(width_, height_, 2) {}
+
+  /// Title, white background.
+  void head(const std::string& title) {
+    svg_.title(title);
+    svg_.rect(0, 0, width_, height_, "fill:#ffffff");
+    svg_.text(kLeft, 28, title, "font-family:sans-serif;font-size:16px;font-weight:bold");
+  }
+
+  /// Cells: one rect per run of equal colour along a2 (contract 1).
+  void cells() {
+    svg_.begin_group("shape-rendering:crispEdges", "class=\"cells\"");
+    for (std::size_t j = 0; j < g_; ++j)
+      for (std::size_t i = 0; i < g_;) i += cell_run(i, j);
+    svg_.end_group();
+  }
+
+  /// The closed-form boundaries (contract 2) and the self-tangency loci (2b), clipped to the map.
+  void boundaries() {
+    svg_.raw("<defs><clipPath id=\"atlas-map-clip\"><rect x=\"" + svg_.num(kLeft) + "\" y=\"" + svg_.num(kTop) +
+             "\" width=\"" + svg_.num(map_) + "\" height=\"" + svg_.num(map_) + "\"/></clipPath></defs>\n");
+    svg_.begin_group({}, "clip-path=\"url(#atlas-map-clip)\"");
+    for (BoundaryKind kind : atlas_boundary_kinds(spec_.ratio)) {
+      SvgPath d(2);
+      for (std::size_t s = 0; s <= kAtlasBoundarySteps; ++s) {
+        const double a2 = spec_.a2.lo + (spec_.a2.hi - spec_.a2.lo) * static_cast<double>(s) / kAtlasBoundarySteps;
+        to(d, s == 0, x_of(a2), y_of(atlas_boundary_a3(kind, a2, spec_.ratio)));
+      }
+      boundary_path(d, boundary_style(kind), std::string("class=\"boundary\" data-kind=\"") + to_string(kind) + "\"");
+    }
+    for (const Locus& l : tangency_loci(spec_)) {
+      if (l.points.size() < 2) continue;
+      SvgPath d(2);
+      for (std::size_t s = 0; s < l.points.size(); ++s) to(d, s == 0, x_of(l.points[s].a2), y_of(l.points[s].a3));
+      boundary_path(d, boundary_style(BoundaryKind::tangency),
+                    "class=\"boundary\" data-kind=\"tangency\" data-m=\"" + std::to_string(l.m) + "\"");
+      ++tangency_loci_;
+    }
+    svg_.end_group();
+  }
+
+  /// Disagreeing cells outlined (contract 3).
+  void disagreements() {
+    svg_.begin_group("fill:none;stroke:#ff00ff;stroke-width:1.5", "class=\"disagreements\"");
+    for (std::size_t k : summary_.disagreements) {
+      const AtlasCell& c = cells_[k];
+      const double s = std::max(cell_, 3.0);
+      svg_.rect(kLeft + (static_cast<double>(c.i) + 0.5) * cell_ - s / 2,
+                kTop + map_ - (static_cast<double>(c.j) + 0.5) * cell_ - s / 2, s, s, "");
+    }
+    svg_.end_group();
+  }
+
+  /// Frame, ticks in multiples of pi, axis titles.
+  void frame_and_axes() {
+    svg_.rect(kLeft, kTop, map_, map_, "fill:none;stroke:#333333;stroke-width:1");
+    const std::string tick_text = "font-family:sans-serif;font-size:12px;fill:#333333";
+    for (const Tick& t : ticks(spec_.a2.lo, spec_.a2.hi)) {
+      const double x = x_of(t.value);
+      svg_.line(x, kTop + map_, x, kTop + map_ + 5, "stroke:#333333");
+      svg_.text(x, kTop + map_ + 19, t.label, tick_text, "middle");
+    }
+    for (const Tick& t : ticks(spec_.a3.lo, spec_.a3.hi)) {
+      const double y = y_of(t.value);
+      svg_.line(kLeft - 5, y, kLeft, y, "stroke:#333333");
+      svg_.text(kLeft - 8, y + 4, t.label, tick_text, "end");
+    }
+    svg_.text(kLeft + map_ / 2, kTop + map_ + 44, "α2 (carrier twist), rad", "font-family:sans-serif;font-size:13px", "middle");
+    const double ly = kTop + map_ / 2;
+    svg_.raw("<text x=\"" + svg_.num(kLeft - 48) + "\" y=\"" + svg_.num(ly) + "\" transform=\"rotate(-90 " +
+             svg_.num(kLeft - 48) + " " + svg_.num(ly) +
+             ")\" text-anchor=\"middle\" style=\"font-family:sans-serif;font-size:13px\">" +
+             xml_escape("α3 (tracer twist), rad") + "</text>\n");
+  }
+
+  /// The legend (contract 4): classes present, boundaries, disagreements, the reading.
+  void legend() {
+    y_ = kTop + 6;
+    svg_.begin_group({}, "class=\"legend\"");
+    legend_classes();
+    legend_boundaries();
+    legend_disagreements();
+    svg_.text(lx(), y_ + 8,
+              std::string(spec_.reading.literal ? "literal reading" : "default reading") + "; cell centres sampled", kBody);
+    svg_.end_group();
+  }
+
+  std::string finish() { return svg_.finish(); }
+
+ private:
+  static constexpr double kLeft = 72, kTop = 48, kBottom = 64, kLegendWidth = 330;
+  static constexpr const char* kHead = "font-family:sans-serif;font-size:13px;font-weight:bold";
+  static constexpr const char* kBody = "font-family:sans-serif;font-size:12px";
+
+  double x_of(double a2) const { return kLeft + (a2 - spec_.a2.lo) / (spec_.a2.hi - spec_.a2.lo) * map_; }
+  double y_of(double a3) const { return kTop + map_ - (a3 - spec_.a3.lo) / (spec_.a3.hi - spec_.a3.lo) * map_; }
+  double lx() const { return kLeft + map_ + 24; }
+  std::size_t count(AtlasClass c) const { return summary_.by_class[static_cast<int>(c)]; }
+
+  /// The run of cells of one colour starting at (i, j) along a2, as one rect; its length.
+  std::size_t cell_run(std::size_t i, std::size_t j) {
+    const char* colour = shades_.colour(cells_[i * g_ + j]);
+    std::size_t run = 1;
+    while (i + run < g_ && shades_.colour(cells_[(i + run) * g_ + j]) == colour) ++run;
+    // Rects overlap their right/top neighbour by a hair so no background shows between them.
+    svg_.rect(kLeft + static_cast<double>(i) * cell_, kTop + map_ - static_cast<double>(j + 1) * cell_,
+              static_cast<double>(run) * cell_ + 0.01, cell_ + 0.01, std::string("fill:") + colour);
+    return run;
+  }
+
+  /// A polyline vertex, its y clamped to 10 map sizes (an asymptote stays drawable).
+  void to(SvgPath& d, bool first, double x, double y) const {
+    y = std::clamp(y, -10 * map_, 10 * map_);
+    if (first) d.move_to(x, y);
+    else d.line_to(x, y);
+  }
+  void boundary_path(const SvgPath& d, const char* style, const std::string& attributes) {
+    svg_.begin_group(style, attributes);
+    svg_.path(d, "");
+    svg_.end_group();
+  }
+
+  void swatch(const char* colour, const std::string& label) {
+    svg_.rect(lx(), y_ - 10, 16, 12, std::string("stroke:#999999;stroke-width:0.5;fill:") + colour);
+    svg_.text(lx() + 24, y_, label, kBody);
+    y_ += 18;
+  }
+  void class_swatch(AtlasClass c, const std::string& name) {
+    if (count(c) > 0) swatch(atlas_class_colour(c), name + " (" + std::to_string(count(c)) + " cells)");
+  }
+  void legend_line(const char* style, const std::string& label) {
+    svg_.line(lx(), y_ - 4, lx() + 28, y_ - 4, style);
+    svg_.text(lx() + 36, y_, label, kBody);
+    y_ += 18;
+  }
+
+  void legend_classes() {
+    svg_.text(lx(), y_ + 4, "cells: root-count census", kHead);
+    y_ += 20;
+    class_swatch(AtlasClass::simple_curve, "simple curve");
+    for (const AtlasNodeShades::Entry& e : shades_.entries())
+      swatch(e.colour, (e.and_more ? "≥ " : "") + std::to_string(e.nodes) + (e.nodes == 1 && !e.and_more ? " node" : " nodes") +
+                           " (" + std::to_string(e.cells) + " cells)");
+    class_swatch(AtlasClass::cusps, "cusps");
+    class_swatch(AtlasClass::nodes_and_cusps, "nodes and cusps");
+    if (summary_.with_tangencies > 0) {
+      svg_.text(lx(), y_, "(" + std::to_string(summary_.with_tangencies) + " cells with a tangency node: a pole node)", kBody);
+      y_ += 18;
+    }
+    y_ += 10;
+  }
+
+  void legend_boundaries() {
+    svg_.text(lx(), y_, "boundaries: the report's criteria", kHead);
+    y_ += 20;
+    for (BoundaryKind kind : atlas_boundary_kinds(spec_.ratio)) legend_line(boundary_style(kind), atlas_boundary_label(kind, spec_.ratio));
+    if (tangency_loci_ > 0)
+      legend_line(boundary_style(BoundaryKind::tangency),
+                  "self-tangency loci (" + std::to_string(tangency_loci_) + "): two branches touch");
+    y_ += 10;
+  }
+
+  void legend_disagreements() {
+    svg_.rect(lx(), y_ - 10, 12, 12, "fill:none;stroke:#ff00ff;stroke-width:1.5");
+    const std::string predicted = spec_.ratio == Ratio(1)   ? "Eq. 24 and the pitch-cone criterion"
+                                  : spec_.ratio == Ratio(2) ? "Eqs. 43, 46 and the pitch-cone criterion"
+                                                            : "the pitch-cone criterion (cusps only)";
+    svg_.text(lx() + 24, y_,
+              "census ≠ report: " + std::to_string(summary_.disagreements.size()) + " cells (" +
+                  std::to_string(summary_.disagreements_off_boundaries) + " off the boundaries)",
+              kBody);
+    y_ += 18;
+    svg_.text(lx() + 24, y_, "(report: " + predicted + ")", kBody);
+    y_ += 18;
+  }
+
+  const AtlasSpec& spec_;
+  const std::vector<AtlasCell>& cells_;
+  const std::size_t g_;
+  const double map_, width_, height_, cell_;
+  const AtlasSummary summary_;
+  const AtlasNodeShades shades_;
+  SvgWriter svg_;
+  std::size_t tangency_loci_ = 0;
+  double y_ = 0;  // the legend's next baseline
+};
+
+}  // namespace atlas_svg_detail
+
 inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<AtlasCell>& cells,
                                     const AtlasSvgOptions& options) {
-  using namespace atlas_svg_detail;
   spec.validate();
   SPHTROCH_ASSERT(cells.size() == spec.cells(), "render_atlas_svg: one cell per grid point");
   if (!(options.map_px >= 64 && options.map_px <= 8192))
     throw InvalidInput("map_px", number_text(options.map_px), "outside the valid range", "[64, 8192] px");
-  const std::size_t g = spec.grid;
-  const double map = options.map_px;
-  const double left = 72, top = 48, bottom = 64, legend_w = 330;
-  const double width = left + map + 24 + legend_w, height = top + map + bottom;
-  const double cell = map / static_cast<double>(g);
-  auto x_of = [&](double a2) { return left + (a2 - spec.a2.lo) / (spec.a2.hi - spec.a2.lo) * map; };
-  auto y_of = [&](double a3) { return top + map - (a3 - spec.a3.lo) / (spec.a3.hi - spec.a3.lo) * map; };
-  const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
-  const AtlasNodeShades shades(cells);
-
-  SvgWriter svg(width, height, 2);
   const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + ", " +
-                                                        std::to_string(g) + " × " + std::to_string(g) + " cells"
+                                                        std::to_string(spec.grid) + " × " + std::to_string(spec.grid) + " cells"
                                                   : options.title;
-  svg.title(title);
-  svg.rect(0, 0, width, height, "fill:#ffffff");
-  svg.text(left, 28, title, "font-family:sans-serif;font-size:16px;font-weight:bold");
-
-  // Cells: one rect per run of equal colour along a2 (contract 1).
-  svg.begin_group("shape-rendering:crispEdges", "class=\"cells\"");
-  for (std::size_t j = 0; j < g; ++j) {
-    std::size_t i = 0;
-    while (i < g) {
-      const AtlasCell& c = cells[i * g + j];
-      const char* colour = shades.colour(c);
-      std::size_t run = 1;
-      while (i + run < g) {
-        const AtlasCell& d = cells[(i + run) * g + j];
-        if (shades.colour(d) != colour) break;
-        ++run;
-      }
-      // Rects overlap their right/top neighbour by a hair so no background shows between them.
-      svg.rect(left + static_cast<double>(i) * cell, top + map - static_cast<double>(j + 1) * cell,
-               static_cast<double>(run) * cell + 0.01, cell + 0.01, std::string("fill:") + colour);
-      i += run;
-    }
-  }
-  svg.end_group();
-
-  // Boundaries (contract 2), clipped to the map.
-  svg.raw("<defs><clipPath id=\"atlas-map-clip\"><rect x=\"" + svg.num(left) + "\" y=\"" + svg.num(top) +
-          "\" width=\"" + svg.num(map) + "\" height=\"" + svg.num(map) + "\"/></clipPath></defs>\n");
-  svg.begin_group({}, "clip-path=\"url(#atlas-map-clip)\"");
-  const std::vector<BoundaryKind> kinds = atlas_boundary_kinds(spec.ratio);
-  for (BoundaryKind kind : kinds) {
-    SvgPath d(2);
-    for (std::size_t s = 0; s <= kAtlasBoundarySteps; ++s) {
-      const double a2 = spec.a2.lo + (spec.a2.hi - spec.a2.lo) * static_cast<double>(s) / kAtlasBoundarySteps;
-      const double y = std::clamp(y_of(atlas_boundary_a3(kind, a2, spec.ratio)), -10 * map, 10 * map);
-      if (s == 0) d.move_to(x_of(a2), y);
-      else d.line_to(x_of(a2), y);
-    }
-    svg.begin_group(boundary_style(kind), std::string("class=\"boundary\" data-kind=\"") + to_string(kind) + "\"");
-    svg.path(d, "");
-    svg.end_group();
-  }
-  // The self-tangency loci (contract 2b), one path per locus.
-  std::size_t tangency_loci = 0;
-  for (const Locus& l : atlas_svg_detail::tangency_loci(spec)) {
-    if (l.points.size() < 2) continue;
-    SvgPath d(2);
-    for (std::size_t s = 0; s < l.points.size(); ++s) {
-      const double y = std::clamp(y_of(l.points[s].a3), -10 * map, 10 * map);
-      if (s == 0) d.move_to(x_of(l.points[s].a2), y);
-      else d.line_to(x_of(l.points[s].a2), y);
-    }
-    svg.begin_group(boundary_style(BoundaryKind::tangency),
-                    "class=\"boundary\" data-kind=\"tangency\" data-m=\"" + std::to_string(l.m) + "\"");
-    svg.path(d, "");
-    svg.end_group();
-    ++tangency_loci;
-  }
-  svg.end_group();
-
-  // Disagreeing cells (contract 3).
-  svg.begin_group("fill:none;stroke:#ff00ff;stroke-width:1.5", "class=\"disagreements\"");
-  for (std::size_t k : summary.disagreements) {
-    const AtlasCell& c = cells[k];
-    const double s = std::max(cell, 3.0);
-    svg.rect(left + (static_cast<double>(c.i) + 0.5) * cell - s / 2, top + map - (static_cast<double>(c.j) + 0.5) * cell - s / 2,
-             s, s, "");
-  }
-  svg.end_group();
-
-  // Frame, ticks, axis titles.
-  svg.rect(left, top, map, map, "fill:none;stroke:#333333;stroke-width:1");
-  const std::string tick_text = "font-family:sans-serif;font-size:12px;fill:#333333";
-  for (const Tick& t : ticks(spec.a2.lo, spec.a2.hi)) {
-    const double x = x_of(t.value);
-    svg.line(x, top + map, x, top + map + 5, "stroke:#333333");
-    svg.text(x, top + map + 19, t.label, tick_text, "middle");
-  }
-  for (const Tick& t : ticks(spec.a3.lo, spec.a3.hi)) {
-    const double y = y_of(t.value);
-    svg.line(left - 5, y, left, y, "stroke:#333333");
-    svg.text(left - 8, y + 4, t.label, tick_text, "end");
-  }
-  svg.text(left + map / 2, top + map + 44, "α2 (carrier twist), rad", "font-family:sans-serif;font-size:13px", "middle");
-  const double ly = top + map / 2;
-  svg.raw("<text x=\"" + svg.num(left - 48) + "\" y=\"" + svg.num(ly) + "\" transform=\"rotate(-90 " + svg.num(left - 48) +
-          " " + svg.num(ly) + ")\" text-anchor=\"middle\" style=\"font-family:sans-serif;font-size:13px\">" +
-          xml_escape("α3 (tracer twist), rad") + "</text>\n");
-
-  // Legend (contract 4).
-  const double lx = left + map + 24;
-  double y = top + 6;
-  const std::string head = "font-family:sans-serif;font-size:13px;font-weight:bold";
-  const std::string body = "font-family:sans-serif;font-size:12px";
-  svg.begin_group({}, "class=\"legend\"");
-  svg.text(lx, y + 4, "cells: root-count census", head);
-  y += 20;
-  auto swatch = [&](const char* colour, const std::string& label) {
-    svg.rect(lx, y - 10, 16, 12, std::string("stroke:#999999;stroke-width:0.5;fill:") + colour);
-    svg.text(lx + 24, y, label, body);
-    y += 18;
-  };
-  const auto count = [&](AtlasClass c) { return summary.by_class[static_cast<int>(c)]; };
-  if (count(AtlasClass::simple_curve) > 0)
-    swatch(atlas_class_colour(AtlasClass::simple_curve),
-           "simple curve (" + std::to_string(count(AtlasClass::simple_curve)) + " cells)");
-  for (const AtlasNodeShades::Entry& e : shades.entries())
-    swatch(e.colour, (e.and_more ? "≥ " : "") + std::to_string(e.nodes) + (e.nodes == 1 && !e.and_more ? " node" : " nodes") +
-                         " (" + std::to_string(e.cells) + " cells)");
-  if (count(AtlasClass::cusps) > 0)
-    swatch(atlas_class_colour(AtlasClass::cusps), "cusps (" + std::to_string(count(AtlasClass::cusps)) + " cells)");
-  if (count(AtlasClass::nodes_and_cusps) > 0)
-    swatch(atlas_class_colour(AtlasClass::nodes_and_cusps),
-           "nodes and cusps (" + std::to_string(count(AtlasClass::nodes_and_cusps)) + " cells)");
-  if (summary.with_tangencies > 0) {
-    svg.text(lx, y, "(" + std::to_string(summary.with_tangencies) + " cells with a tangency node: a pole node)", body);
-    y += 18;
-  }
-  y += 10;
-  svg.text(lx, y, "boundaries: the report's criteria", head);
-  y += 20;
-  for (BoundaryKind kind : kinds) {
-    svg.line(lx, y - 4, lx + 28, y - 4, boundary_style(kind));
-    svg.text(lx + 36, y, atlas_boundary_label(kind, spec.ratio), body);
-    y += 18;
-  }
-  if (tangency_loci > 0) {
-    svg.line(lx, y - 4, lx + 28, y - 4, boundary_style(BoundaryKind::tangency));
-    svg.text(lx + 36, y, "self-tangency loci (" + std::to_string(tangency_loci) + "): two branches touch", body);
-    y += 18;
-  }
-  y += 10;
-  svg.rect(lx, y - 10, 12, 12, "fill:none;stroke:#ff00ff;stroke-width:1.5");
-  const std::string predicted = spec.ratio == Ratio(1) ? "Eq. 24 and the pitch-cone criterion"
-                                : spec.ratio == Ratio(2) ? "Eqs. 43, 46 and the pitch-cone criterion"
-                                                         : "the pitch-cone criterion (cusps only)";
-  svg.text(lx + 24, y,
-           "census ≠ report: " + std::to_string(summary.disagreements.size()) + " cells (" +
-               std::to_string(summary.disagreements_off_boundaries) + " off the boundaries)",
-           body);
-  y += 18;
-  svg.text(lx + 24, y, "(report: " + predicted + ")", body);
-  y += 18;
-  svg.text(lx, y + 8, std::string(spec.reading.literal ? "literal reading" : "default reading") + "; cell centres sampled", body);
-  svg.end_group();
-  return svg.finish();
+  atlas_svg_detail::AtlasCanvas canvas(spec, cells, options.map_px);
+  canvas.head(title);
+  canvas.cells();
+  canvas.boundaries();
+  canvas.disagreements();
+  canvas.frame_and_axes();
+  canvas.legend();
+  return canvas.finish();
 }
 
 }  // namespace sphtroch
