@@ -24,11 +24,12 @@ jobs=${JOBS:-$(nproc)}
 
 # What the library and the tool need; the tests add python3-numpy (numpy.load/numpy.save round
 # trips of the .npy files), libbenchmark-dev (bench/, built by bench/run) and the Python module's
-# build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example).
+# build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example),
+# and jq (a console example of docs/cli.md pipes classify --json through it; ctest docs:console_examples).
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
           libcli11-dev nlohmann-json3-dev)
 if [[ $mode == test ]]; then
-  packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib)
+  packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq)
 fi
 
 install_missing_packages() {

@@ -18,7 +18,7 @@ import sys
 NO_EXAMPLE = {
     "version.hpp": "two macros and a string",
     "core/types.hpp": "type aliases only",
-    "sphtroch.hpp": "the umbrella header (its use is the README's consumer example)",
+    "sphtroch.hpp": "the umbrella header (its use is docs/library.md's consumer example)",
     "exact_implementation.hpp": "defines classify(); it may be included in one file of a program only",
     "core/mpreal_support.hpp": "its example needs sphtroch::mpfr; compiled by test_scalar_types",
 }

@@ -5,7 +5,7 @@
 //   sphtroch::Classification c = sphtroch::classify(train);
 //
 // Separate compilation. By default every file that calls classify() parses CGAL and compiles
-// the whole census: 11.9 s of g++ 12 -O2 per file (README, Library). Define
+// the whole census: 11.9 s of g++ 12 -O2 per file (docs/library.md). Define
 // SPHTROCH_SEPARATE_EXACT for the whole project (target_compile_definitions) and this header
 // only declares classify(): 1.5 s. Exactly one file of the program then includes
 // <sphtroch/exact_implementation.hpp>, which defines and instantiates it (the stb / fmt pattern).

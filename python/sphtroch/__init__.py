@@ -1,7 +1,7 @@
 """sphtroch: trajectories of a point on the planet of a spherical planetary (bevel) gear train.
 
 The C++ library (Lin & Tsai 1990) as a Python module: NumPy arrays in and out, the GIL released
-during every computation. The API with its contracts is in __init__.pyi (and README, "Python").
+during every computation. The API with its contracts is in __init__.pyi (and docs/python.md).
 
     import sphtroch
     tr = sphtroch.GearTrain(a2="pi/3", a3="pi/2", n="2")

@@ -21,7 +21,7 @@ AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" t
 
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
-    even after escalation (README: Certified counts; the tool's exit status 3). Raised by
+    even after escalation (docs/cli.md: Certified counts; the tool's exit status 3). Raised by
     GearTrain.nodes(); classify() returns its dict with "certified": False instead."""
 
     nodes: List[Dict[str, Any]]
@@ -103,7 +103,7 @@ class GearTrain:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
         boundaries, z_extremes, symmetry, criteria, censuses, agreement, certified, certificate,
-        tolerances, work). "certified" is False when the censuses disagree (README: Certified counts).
+        tolerances, work). "certified" is False when the censuses disagree (docs/cli.md: Certified counts).
         literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
         samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
         """

@@ -230,7 +230,7 @@ py::object nodes_and_cusps(const Train& self, py::handle literal_flag, py::handl
     const std::string message = "the node count is not certified: polyline census " +
                                 py::str(all["polyline_nodes"]).cast<std::string>() + " node(s), root-count census " +
                                 py::str(all["root_nodes"]).cast<std::string>() + "; " +
-                                all["stopped"].cast<std::string>() + " (see README: Certified counts)";
+                                all["stopped"].cast<std::string>() + " (see docs/cli.md: Certified counts)";
     py::object err = py::reinterpret_borrow<py::object>(g_uncertified)(message);
     err.attr("nodes") = all["nodes"];
     err.attr("polyline_nodes") = all["polyline_nodes"];
@@ -493,7 +493,7 @@ PYBIND11_MODULE(_sphtroch, m) {
   static py::exception<UncertifiedMarker> uncertified(m, "UncertifiedResult", PyExc_RuntimeError);
   g_uncertified = uncertified;
   uncertified.attr("__doc__") =
-      "A node count the two censuses do not agree on (README: Certified counts): .nodes (the polyline census's "
+      "A node count the two censuses do not agree on (docs/cli.md: Certified counts): .nodes (the polyline census's "
       "uncertified list), .polyline_nodes, .root_nodes.";
   uncertified.attr("__module__") = "sphtroch";
 

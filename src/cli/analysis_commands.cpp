@@ -46,7 +46,7 @@ void check_certified(const CensusCertificate& cert, bool analytic_agrees = true)
                                       : "polyline census " + std::to_string(cert.polyline_nodes.back()) +
                                             " node(s), root-count census " + std::to_string(cert.root_nodes);
   throw UncertifiedResult{"the node count is not certified: " + counts + (cert.stopped.empty() ? "" : "; " + cert.stopped) +
-                          " (exit status 3; see README: Certified counts)"};
+                          " (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
 void run_classify(const AnalysisOptions& o) {

@@ -90,7 +90,7 @@ void check_writable(const std::string& path, const std::string& option) {
 void check_atlas_certified(const AtlasSummary& summary, const AtlasBoundaryCheck* check) {
   const std::string why = atlas_uncertified(summary, check);
   if (!why.empty())
-    throw UncertifiedResult{"the atlas is not certified: " + why + " (exit status 3; see README: Certified counts)"};
+    throw UncertifiedResult{"the atlas is not certified: " + why + " (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
 std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& cells) {

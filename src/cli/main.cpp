@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     std::cerr << "sphtroch: " << one_line(e.message) << "\n";
     return kUncertified;
   } catch (const std::bad_alloc&) {
-    std::cerr << "sphtroch: out of memory; valid: a smaller problem (see README: Errors, cost bounds)\n";
+    std::cerr << "sphtroch: out of memory; valid: a smaller problem (see docs/cli.md: Errors and limits)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "sphtroch: internal error: " << one_line(e.what()) << "\n";

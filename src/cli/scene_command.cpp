@@ -107,7 +107,7 @@ void run_scene(const SceneOptions& o) {
   if (!uncertified.empty())  // 4. the outputs say so (classification, plot caption); so does the status
     throw UncertifiedResult{uncertified.front() + (uncertified.size() > 1 ? " (and " + std::to_string(uncertified.size() - 1) +
                                                                                " more train(s))" : "") +
-                            " (exit status 3; see README: Certified counts)"};
+                            " (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
 }  // namespace
@@ -117,7 +117,7 @@ std::size_t validate_scene_text(const std::string& text) { return parse_scene_te
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto o = std::make_shared<SceneOptions>();
   CLI::App* cmd = app.add_subcommand("scene", "run a scene file: gear trains and the effects wanted from each (JSON)");
-  cmd->add_option("FILE", o->file, "the scene (JSON; see README: sphtroch scene)")->required();
+  cmd->add_option("FILE", o->file, "the scene (JSON; see docs/cli.md: sphtroch scene)")->required();
   cmd->add_flag("--explain", o->explain, "print, per gear train, the stages each effect needs and the work done");
   cmd->add_flag("--json", o->json, "the explanation as one JSON object (implies --explain)");
   cmd->add_option("--output-dir", o->output_dir, "resolve relative output paths against DIR (default: the current directory)");

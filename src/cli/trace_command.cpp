@@ -53,7 +53,7 @@ void run_trace(const TraceOptions& o) {
   options.velocity = o.velocity;
   // Default: one worker per core plus one: the calling thread only writes, and while it waits on
   // the kernel the extra worker keeps both cores busy (measured: 1.49 s vs 1.66 s median for 1e7
-  // rows to a CSV file on 2 cores; README "What accuracy costs").
+  // rows to a CSV file on 2 cores; docs/accuracy.md).
   options.threads = o.threads.empty() ? parse_threads("") + 1 : parse_threads(o.threads);
   const TracerCurve<double> curve(train);
   const UniformSampling<double> sampling = turns ? turns_sampling(curve, *turns, n) : period_sampling(curve, n);

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# A real one-node Slurm cluster runs the README's atlas job array ("sphtroch atlas, atlas-merge").
+# A real one-node Slurm cluster runs the atlas job array of docs/cli.md ("sphtroch atlas, atlas-merge").
 #
 # Usage: slurm_cluster.sh SPHTROCH_EXE WORKDIR
 #
 # Starts munged (or reuses a running one), slurmctld and slurmd by hand (no systemd) with a
 # slurm.conf of its own in a temporary directory, then:
-#   1. runs the README's job script as `sbatch --wait --array=1-4` (grid 64, shards I/4) and checks
+#   1. runs the job script of docs/cli.md as `sbatch --wait --array=1-4` (grid 64, shards I/4) and checks
 #      that `atlas-merge` of the four slices is byte-identical to the unsharded `atlas` run;
 #   2. runs the array again with task 3 failing before it writes its slice, and checks that
 #      `atlas-merge` refuses with exit status 2 and one stderr line naming shard 3/4;
@@ -236,21 +236,21 @@ cleanup() {
   exit "$status"
 }
 
-# --- the README's job array -----------------------------------------------------------------
+# --- the job array of docs/cli.md -----------------------------------------------------------------
 
-# The job script: the README's atlas.sbatch with a small grid, 4 shards and $exe for `sphtroch`,
-# taken from README.md when it is beside the tests (so the test follows the documented text).
+# The job script: docs/cli.md's atlas.sbatch with a small grid, 4 shards and $exe for `sphtroch`,
+# taken from docs/cli.md when it is beside the tests (so the test follows the documented text).
 # Task $SPHTROCH_FAIL_TASK, when that is set, fails (exit 42) before it writes anything.
 write_job_script() {
-  local readme=$source_dir/README.md body qexe
+  local readme=$source_dir/docs/cli.md body qexe
   printf -v qexe '%q' "$exe"
-  [[ -r $readme ]] || die "no README.md at $readme"
+  [[ -r $readme ]] || die "no docs/cli.md at $readme"
   body=$(sed -n '/^# atlas\.sbatch — /,/^# afterwards, once:/p' "$readme" | sed '$d')
-  [[ -n $body ]] || die "README.md has no '# atlas.sbatch — ' block"
+  [[ -n $body ]] || die "docs/cli.md has no '# atlas.sbatch — ' block"
   body=$(sed -e "s|--array=1-16|--array=1-$SHARDS|" -e "s|--grid 4096|--grid $GRID|" \
     -e "s|/16\"|/$SHARDS\"|" -e "s|^sphtroch |$qexe |" <<<"$body")
   [[ $body == *"$qexe atlas --n 2 --grid $GRID "* && $body == *"/$SHARDS\" -o \"slice-\$SLURM_ARRAY_TASK_ID.csv\""* ]] ||
-    die "README.md's atlas.sbatch block changed; adapt write_job_script: $body"
+    die "docs/cli.md's atlas.sbatch block changed; adapt write_job_script: $body"
   cat >"$work/atlas.sbatch" <<EOF
 #!/bin/sh
 #SBATCH --job-name=sphtroch-atlas
@@ -283,7 +283,7 @@ run_array() {
   say "sbatch --wait --array=$array${fail:+ (task $fail fails)} in ${dir##*/}: exit $rc after $((SECONDS - start)) s"
 }
 
-# merge DIR: the README's `atlas-merge -o atlas.csv --svg atlas.svg slice-*.csv` in DIR, writing
+# merge DIR: docs/cli.md's `atlas-merge -o atlas.csv --svg atlas.svg slice-*.csv` in DIR, writing
 # merged.csv and merged.svg; its stderr goes to DIR/merge.err (and is shown), rc is its exit status.
 merge() {
   rc=0

@@ -6,7 +6,7 @@
 //   m.on_pitch_cone(), m.on_mirror_cone();  // |margin| <= kCuspResolution
 //
 // The velocity vanishes (a cusp) exactly when P is parallel to omega, i.e. a3 = a_p or
-// a3 = pi - a_p (DESIGN.md; report Sec. 4.2 and Eq. 47). Margins are computed in long double from
+// a3 = pi - a_p (docs/design.md; report Sec. 4.2 and Eq. 47). Margins are computed in long double from
 // the train's sin/cos (trig<long double>()), so a tracer put on a cone symbolically has margin 0.
 #pragma once
 

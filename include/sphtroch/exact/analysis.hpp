@@ -38,8 +38,8 @@
 //     input stage runs in the constructor, every other stage only when asked for.
 //  CAVEAT: the memo is not synchronised; use one Analysis per thread.
 //  CAVEAT: this header includes CGAL (through polyline_census.hpp): the object owns the crossing
-//  stage. STYLE.md lists "analysis" among the Eigen-only headers; the Eigen-only closed forms
-//  stay in criteria.hpp, and a user who only wants trajectories still pays for Eigen alone.
+//  stage, so it lives in exact/. The Eigen-only closed forms stay in map/criteria.hpp, and a user
+//  who only wants trajectories still pays for Eigen alone.
 //  REQUIRES: settings valid (InvalidInput naming "samples" or "turns" otherwise, from the
 //  constructor).
 #pragma once

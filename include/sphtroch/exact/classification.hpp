@@ -62,7 +62,7 @@ struct CensusAgreement {
   bool ok() const { return censuses_agree && analytic_agrees.value_or(true); }
 };
 
-/// Exit status of the tool when what it printed is not certified (README: Exit status).
+/// Exit status of the tool when what it printed is not certified (docs/cli.md: Errors and limits).
 constexpr int kUncertifiedExitStatus = 3;
 
 /// The work of every stage a classification needed (work.hpp).

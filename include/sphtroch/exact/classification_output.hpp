@@ -15,7 +15,7 @@
 //     text reports have 3 significant digits (seconds_text), in JSON every digit.
 //  2. classification_json: one object with the keys inputs, cone_angles, period, class, counts,
 //     nodes, cusps, cusp_within_resolution, boundaries, z_extremes, symmetry, analytic, censuses,
-//     agreement, tolerances, work (README: classify --json documents each field). nlohmann::json
+//     agreement, tolerances, work (docs/cli.md: classify --json documents each field). nlohmann::json
 //     sorts keys when dumped. Node longitude/latitude are radians, atan2(y, x) and asin(z).
 //  3. The text report states the same facts in words, with degrees beside radians for the inputs
 //     and node positions, and every disagreement of the censuses on its own "DISAGREEMENT:" line.
@@ -214,7 +214,7 @@ inline nlohmann::json certificate_json(const Classification& c) {
           {"stopped", c.certificate.stopped}};
 }
 
-/// The words for an uncertified result: both counts (README: Certified counts).
+/// The words for an uncertified result: both counts (docs/cli.md: Certified counts).
 inline std::string uncertified_text(const Classification& c) {
   return "UNCERTIFIED: the polyline census finds " + std::to_string(c.polyline.nodes.size()) +
          " node(s), the root-count census " + std::to_string(c.certificate.root_nodes) +

@@ -14,7 +14,7 @@
 //     sphtroch::write_scene_explanation(std::cout, st, a);
 //   }
 //
-// Schema (README: sphtroch scene). The top level is an object {"trains": [...], "description"?};
+// Schema (docs/cli.md: sphtroch scene). The top level is an object {"trains": [...], "description"?};
 // a train is an object with
 //   name (non-empty string, distinct per train), description? (string, ignored),
 //   a2, a3 (angle strings in the CLI forms of parse.hpp, or numbers in radians), n (a ratio
@@ -224,7 +224,7 @@ class DuplicateKeyCheck {
 };
 
 inline Json read_json(const Errors& err, const std::string& text) {
-  const std::string valid = "a JSON scene file (README: sphtroch scene)";
+  const std::string valid = "a JSON scene file (docs/cli.md: sphtroch scene)";
   if (const auto nul = text.find('\0'); nul != std::string::npos)
     throw SceneError(err.file, line_column(text, nul + 1), "", "not valid JSON (a NUL byte)", valid);
   try {
@@ -232,7 +232,7 @@ inline Json read_json(const Errors& err, const std::string& text) {
     return Json::parse(text, [&](int depth, Json::parse_event_t event, Json& parsed) {
       if (depth > kMaxSceneDepth)
         throw SceneError(err.file, "", "", "nested deeper than " + std::to_string(kMaxSceneDepth) + " levels",
-                         "a JSON scene file (README: sphtroch scene; at most " + std::to_string(kMaxSceneDepth) +
+                         "a JSON scene file (docs/cli.md: sphtroch scene; at most " + std::to_string(kMaxSceneDepth) +
                              " levels)");
       return check(depth, event, parsed);
     });
@@ -247,7 +247,7 @@ inline Json read_json(const Errors& err, const std::string& text) {
     std::string why = e.what();
     if (const auto at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
     throw SceneError(err.file, "", "", "not valid JSON (" + why + ")",
-                     "a JSON scene file with finite numbers (README: sphtroch scene)");
+                     "a JSON scene file with finite numbers (docs/cli.md: sphtroch scene)");
   }
 }
 
@@ -508,7 +508,7 @@ inline void write_scene_explanation(std::ostream& out, const SceneTrain& st, con
 }
 
 inline nlohmann::ordered_json scene_explanation_json(const SceneTrain& st, const Analysis& a) {
-  using json = nlohmann::ordered_json;  // keys in the order of the shape documented in README
+  using json = nlohmann::ordered_json;  // keys in the order of the shape documented in docs/cli.md
   json effects = json::array();
   for (const SceneEffect& e : st.effects) {
     json stages = json::array();

@@ -30,7 +30,7 @@
 //   fixes cos b), so among three branches two have EQUAL planet angles, which forces the point
 //   onto the Z1 axis (step 1): a pole. Hence (a) and (b) are all the events, and the number of
 //   node points off the events is |p| x RootFunction::node_roots().
-//   Cusps exist only ON a pitch cone (zero speed iff a3 = a_p or pi - a_p, DESIGN.md), so
+//   Cusps exist only ON a pitch cone (zero speed iff a3 = a_p or pi - a_p, docs/design.md), so
 //   cusps_below = cusps_above = 0 for every event; they are reported for the interface's sake.
 //
 // How the tangencies are found at one a2: for each label l, G_l(a3) is sampled on a grid of
