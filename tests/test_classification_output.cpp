@@ -190,3 +190,32 @@ TEST_CASE("crossings summary: the search's counts under their names, as JSON and
   CHECK(l[4] == "seconds_read 0.25");
   CHECK(l[5] == "seconds_search 0.5");
 }
+
+TEST_CASE("root classification json: the fields of classify_roots, node points in the schema of classify's nodes") {
+  const double pi = sphtroch::Constants<double>::pi();
+  const sphtroch::GearTrain fig5f(pi / 3, pi / 2, sphtroch::Ratio(2));  // Fig. 5(f): 4 crossing nodes
+  const sphtroch::RootClassification r = sphtroch::classify_roots(fig5f);
+  const nlohmann::json j = sphtroch::root_classification_json(r);
+  for (const char* key : {"a2", "a3", "boundaries", "class", "nodes", "crossings", "tangencies", "cusps", "analytic_nodes",
+                          "analytic_cusps", "agrees_with_report", "node_points"})
+    CHECK(j.contains(key));
+  CHECK(j.size() == 12);
+  CHECK(j["nodes"] == 4);
+  CHECK(j["analytic_nodes"] == 4);
+  CHECK(j["class"] == "nodes");
+  CHECK(j["agrees_with_report"] == true);
+  // One node schema: the keys of classify()'s nodes (the full classification, another route).
+  const nlohmann::json full = sphtroch::classification_json(sphtroch::TrainText{"pi/3", "pi/2", "2"}, sphtroch::classify(fig5f));
+  REQUIRE(j["node_points"].size() == r.node_points.size());
+  for (std::size_t k = 0; k < r.node_points.size(); ++k) {
+    const nlohmann::json& n = j["node_points"][k];
+    for (const auto& item : full["nodes"][0].items()) CHECK(n.contains(item.key()));
+    CHECK(n.size() == full["nodes"][0].size());
+    const Eigen::Vector3d& p = r.node_points[k].position;
+    CHECK(n["position"] == nlohmann::json::array({p.x(), p.y(), p.z()}));
+    CHECK(n["longitude"].get<double>() == std::atan2(p.y(), p.x()));
+    CHECK(n["kind"] == "crossing");
+  }
+  // No report count for n != 1, 2: null.
+  CHECK(sphtroch::root_classification_json(sphtroch::classify_roots(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(7, 3))))["analytic_nodes"].is_null());
+}

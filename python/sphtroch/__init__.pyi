@@ -117,7 +117,8 @@ class GearTrain:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
         analytic_nodes (the report's count for n = 1, 2, else None), analytic_cusps,
-        agrees_with_report, node_points (position, params, branches, kind, angle, ...)."""
+        agrees_with_report, node_points (the same node dicts as classify()["nodes"]: position,
+        longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs)."""
     def __reduce__(self) -> Any: ...
 
 def crossings(points: npt.ArrayLike, closed: bool = True, *, pairs: bool = False,

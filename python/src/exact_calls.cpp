@@ -49,6 +49,10 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
       .dump();
 }
 
+std::string root_classification_json_text(const GearTrain& train, bool literal) {
+  return root_classification_json(classify_roots(train, Reading{literal})).dump();
+}
+
 std::string contact_name(std::uint8_t kind) { return std::string(to_string(static_cast<ArcContact>(kind))); }
 
 CrossingsResult self_crossings(const double* xyz, std::size_t n, bool closed, bool with_pairs, std::size_t max_crossings,

@@ -25,6 +25,10 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
 std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
+/// Python's classify_roots(): the root-count classification (Reading{literal}) as
+/// root_classification_json (classification_output.hpp), JSON text.
+std::string root_classification_json_text(const GearTrain& train, bool literal);
+
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {
   std::size_t vertices = 0, crossings = 0, touchings = 0, candidate_pairs = 0, predicates = 0;

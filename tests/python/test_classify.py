@@ -94,3 +94,19 @@ def test_uncertified_result_is_a_runtime_error_with_both_counts_documented():
     assert issubclass(sphtroch.UncertifiedResult, RuntimeError)
     assert "UncertifiedResult" in sphtroch.__all__
     assert "root_nodes" in sphtroch.UncertifiedResult.__doc__
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
+def test_one_node_schema_for_classify_and_classify_roots(case):
+    """classify_roots()["node_points"] are node dicts of the same schema as classify()["nodes"] and
+    the same points: the expected positions come from classify (the certified polyline census
+    checked against the root census), matched nearest to within 1e-9."""
+    tr = sphtroch.GearTrain(case["a2_symbolic"], cli_angle(case["a3_symbolic"]), f'{case["n_num"]}/{case["n_den"]}')
+    full, roots = tr.classify()["nodes"], tr.classify_roots()["node_points"]
+    assert len(roots) == len(full) == int(case["nodes"])
+    for node in roots:
+        assert set(node) == set(full[0]) if full else True
+        nearest = min(full, key=lambda f: math.dist(f["position"], node["position"]))
+        assert math.dist(nearest["position"], node["position"]) < 1e-9
+        assert (nearest["kind"], nearest["branches"]) == (node["kind"], node["branches"])
+        assert math.isclose(node["longitude"], math.atan2(node["position"][1], node["position"][0]), abs_tol=1e-15)

@@ -4,7 +4,7 @@
 //
 //   std::ofstream("part1.csv") << slice_text;  // a slice written by `sphtroch atlas --shard 2/4`
 //   std::vector<sphtroch::AtlasSlice> s = sphtroch::open_atlas_slices({"part1.csv"});  // heads only
-//   sphtroch::for_each_atlas_row(s[0], [&](const sphtroch::AtlasCell& c, std::string_view line) {});
+//   sphtroch::for_each_atlas_row(s[0], [&](const sphtroch::AtlasCell&, std::string_view) {});  // each row, in order
 //
 // Contracts:
 //  1. open_atlas_slices reads each slice's comment and header line. A regular file is read again

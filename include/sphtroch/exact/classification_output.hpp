@@ -21,6 +21,10 @@
 //     and node positions, and every disagreement of the censuses on its own "DISAGREEMENT:" line.
 //  4. plot_caption: "a2 = A2, a3 = A3, n = p/q[, phase = PH] — N node(s)[ (C crossing, T tangency)],
 //     K cusp(s)", the phase shown when the analysed phase is not 0.
+//  5. root_classification_json (the Eigen-only classification, Python's classify_roots()): a2,
+//     a3, boundaries, class, nodes, crossings, tangencies, cusps, analytic_nodes (null without a
+//     report's count), analytic_cusps, agrees_with_report, node_points; each node point is an
+//     object of classification_json's "nodes" (one node schema for every result).
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -53,6 +57,9 @@ namespace sphtroch {
 
 /// `classify --json` (contract 2).
 inline nlohmann::json classification_json(const TrainText& text, const Classification& c);
+
+/// The root-count classification (contract 5).
+inline nlohmann::json root_classification_json(const RootClassification& c);
 
 /// `classify` (contract 3).
 inline void write_classification_text(std::ostream& out, const TrainText& text, const Classification& c);
@@ -339,6 +346,21 @@ inline nlohmann::json z_extremes_json(const ZExtremes& z) {
   for (const auto& p : z.maxima) zmax.push_back({{"param", p.param}, {"position", report_detail::vec_json(p.position)}});
   for (const auto& p : z.minima) zmin.push_back({{"param", p.param}, {"position", report_detail::vec_json(p.position)}});
   return {{"z_max", z.z_max}, {"z_min", z.z_min}, {"maxima", zmax}, {"minima", zmin}};
+}
+
+inline nlohmann::json root_classification_json(const RootClassification& c) {
+  return {{"a2", c.a2},
+          {"a3", c.a3},
+          {"boundaries", c.boundaries},
+          {"class", to_string(c.curve_class)},
+          {"nodes", c.nodes},
+          {"crossings", c.crossings},
+          {"tangencies", c.tangencies},
+          {"cusps", c.cusps},
+          {"analytic_nodes", c.analytic_nodes ? nlohmann::json(*c.analytic_nodes) : nlohmann::json(nullptr)},
+          {"analytic_cusps", c.analytic_cusps},
+          {"agrees_with_report", c.agrees_with_report()},
+          {"node_points", report_detail::nodes_json(c.node_points)}};
 }
 
 inline nlohmann::json classification_json(const TrainText& text, const Classification& c) {

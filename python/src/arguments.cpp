@@ -1,0 +1,141 @@
+// python/src/arguments.cpp — Python values to C++ values (bindings.hpp), each refusal an
+// InvalidInput naming the argument with its valid range.
+#include "bindings.hpp"
+
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/io/parse.hpp"
+
+#include <string>
+
+namespace sphtroch::python {
+
+std::string repr_of(py::handle v) { return py::repr(v).cast<std::string>(); }
+
+/// A str as UTF-8, else InvalidInput (a lone surrogate such as "\ud800" cannot be encoded).
+std::string text_arg(py::handle v, const std::string& field, const std::string& valid) {
+  Py_ssize_t size = 0;
+  const char* p = PyUnicode_AsUTF8AndSize(v.ptr(), &size);
+  if (p == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not valid Unicode text (not encodable as UTF-8)", valid);
+  }
+  return std::string(p, static_cast<std::size_t>(size));
+}
+
+/// A flag: True or False (also numpy.bool_), else InvalidInput. Truthy objects ("yes", 1, None)
+/// are refused, not read as bool.
+bool flag_arg(py::handle v, const std::string& field) {
+  if (v.ptr() == Py_True) return true;
+  if (v.ptr() == Py_False) return false;
+  const py::object np_bool = py::module_::import("numpy").attr("bool_");
+  if (py::isinstance(v, np_bool)) return v.ptr() == Py_True || PyObject_IsTrue(v.ptr()) == 1;
+  throw InvalidInput(field, repr_of(v), "not a flag", "True or False");
+}
+
+/// A real number (anything float() accepts, except bool, None and str), else InvalidInput.
+double real_arg(py::handle v, const std::string& field, const std::string& valid) {
+  if (v.is_none() || py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v))
+    throw InvalidInput(field, repr_of(v), "not a real number", valid);
+  PyObject* f = PyNumber_Float(v.ptr());
+  if (f == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not a real number", valid);
+  }
+  const double x = PyFloat_AsDouble(f);
+  Py_DECREF(f);
+  return x;
+}
+
+/// A whole number in [lo, hi] (int or any integer type with __index__; not bool), else InvalidInput.
+std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
+  const std::string valid = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
+  if (py::isinstance<py::bool_>(v) || !PyIndex_Check(v.ptr())) throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+  PyObject* i = PyNumber_Index(v.ptr());
+  if (i == nullptr) {
+    PyErr_Clear();
+    throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+  }
+  int overflow = 0;
+  const long long x = PyLong_AsLongLongAndOverflow(i, &overflow);
+  Py_DECREF(i);
+  if (overflow != 0 || x < 0 || static_cast<unsigned long long>(x) < lo || static_cast<unsigned long long>(x) > hi)
+    throw InvalidInput(field, repr_of(v), "outside the valid range", valid);
+  return static_cast<std::size_t>(x);
+}
+
+/// An angle: radians as a real number, or the CLI's text ("2pi/3", "90deg"). `text` receives
+/// the text kept for reports (the shortest round-trip form of a real number).
+double angle_arg(py::handle v, const std::string& field, std::string& text) {
+  if (py::isinstance<py::str>(v)) {
+    text = text_arg(v, field, kAngleForms);
+    return parse_angle(text, field);
+  }
+  const double x = real_arg(v, field, kAngleForms);
+  text = number_text(x);
+  return x;
+}
+
+/// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
+A3Spec a3_arg(py::handle v, std::string& text) {
+  if (py::isinstance<py::str>(v)) {
+    text = text_arg(v, "a3", kAngleForms);
+    return parse_a3(text, "a3");
+  }
+  const double x = real_arg(v, "a3", kAngleForms);
+  text = number_text(x);
+  return {A3Reference::given, x};
+}
+
+/// n: int (or any integer type), fractions.Fraction (anything with integer numerator and
+/// denominator), the CLI's text ("5/2", "2.5"), or a float read as its shortest decimal text
+/// (2.5 -> 5/2; a float that is no decimal of at most 9 places, e.g. 1/3, is refused: give "1/3").
+Ratio ratio_arg(py::handle v) {
+  if (py::isinstance<py::str>(v)) return parse_ratio(text_arg(v, "n", kRatioForms), "n");
+  if (v.is_none() || py::isinstance<py::bool_>(v)) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
+    const py::object p = v.attr("numerator"), q = v.attr("denominator");
+    if (!PyIndex_Check(p.ptr()) || !PyIndex_Check(q.ptr())) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
+    int op = 0, oq = 0;
+    const long long pv = PyLong_AsLongLongAndOverflow(py::int_(p).ptr(), &op);
+    const long long qv = PyLong_AsLongLongAndOverflow(py::int_(q).ptr(), &oq);
+    if (op != 0 || oq != 0) throw InvalidInput("n", repr_of(v), "numerator or denominator too large (max 1000000)", kRatioForms);
+    if (pv == 0) throw InvalidInput("n", repr_of(v), "the gear ratio must not be zero", kRatioForms);
+    return Ratio(pv, qv);  // range-checked (InvalidInput "n")
+  }
+  return parse_ratio(number_text(real_arg(v, "n", kRatioForms)), "n");
+}
+
+/// (lo, hi) of angles (radians or the CLI's text), or the CLI's "LO:HI" text, field `field`.
+std::pair<double, double> range_arg(py::handle v, const std::string& field) {
+  const std::string valid = "(lo, hi) with angles as numbers (radians) or text (\"pi/3\"), or \"LO:HI\"";
+  if (py::isinstance<py::str>(v)) {
+    const AngleRange r = parse_angle_range(v.cast<std::string>(), field, kAngleRangeForms);
+    return {r.lo, r.hi};
+  }
+  if (!py::isinstance<py::sequence>(v) || py::len(v) != 2)
+    throw InvalidInput(field, repr_of(v), "not a pair (lo, hi)", valid);
+  const py::sequence s = py::reinterpret_borrow<py::sequence>(v);
+  std::string ignored;
+  return {angle_arg(s[0], field, ignored), angle_arg(s[1], field, ignored)};
+}
+
+std::size_t census_samples_arg(py::handle samples) {
+  return samples.is_none() ? 0 : count_arg(samples, "samples", kMinCensusSamples, kMaxSamples);
+}
+
+Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
+  Train t;
+  const double a2v = angle_arg(a2, "a2", t.text.a2);
+  const A3Spec a3v = a3_arg(a3, t.text.a3);
+  const Ratio nv = ratio_arg(n);
+  t.text.n = nv.str();
+  const double phv = angle_arg(phase, "phase", t.text.phase);
+  t.train = make_gear_train(a2v, a3v, nv, phv);
+  return t;
+}
+
+/// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
+py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+}  // namespace sphtroch::python

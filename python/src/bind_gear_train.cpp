@@ -1,0 +1,137 @@
+// python/src/bind_gear_train.cpp — the class sphtroch.GearTrain (bindings.hpp): its properties,
+// trace, classify, nodes, cusps, classify_roots, repr, equality and pickling.
+#include "bindings.hpp"
+#include "exact_calls.hpp"
+
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/sampling.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphtroch::python {
+namespace {
+
+py::tuple trace(const Train& self, py::handle samples, py::handle turns, py::handle velocity_flag) {
+  const bool velocity = flag_arg(velocity_flag, "velocity");
+  std::optional<double> k;
+  if (!turns.is_none()) {
+    k = real_arg(turns, "turns", kTurnsRange);
+    check_turns(*k, number_text(*k));
+  }
+  const std::size_t n = samples.is_none() ? trace_sample_count(self.train, k)
+                                           : count_arg(samples, "samples", kMinSamples, kMaxSamples);
+  const TracerCurve<double> curve(self.train);
+  const UniformSampling<double> sampling = k ? turns_sampling(curve, *k, n) : period_sampling(curve, n);
+  auto tr = std::make_unique<Trajectory<double>>();
+  {
+    py::gil_scoped_release release;
+    *tr = sample(curve, sampling, velocity);
+  }
+  const Trajectory<double>& v = *tr;
+  const py::capsule owner = capsule_of(std::move(tr));
+  const auto rows = static_cast<py::ssize_t>(v.size());
+  py::array_t<double> t(std::vector<py::ssize_t>{rows}, v.t.data(), owner);
+  py::array_t<double> p(std::vector<py::ssize_t>{rows, 3}, v.points.front().data(), owner);
+  if (!velocity) return py::make_tuple(t, p);
+  py::array_t<double> vel(std::vector<py::ssize_t>{rows, 3}, v.velocities.front().data(), owner);
+  return py::make_tuple(t, p, vel);
+}
+
+py::object classify(const Train& self, py::handle literal_flag, py::handle samples) {
+  const bool literal = flag_arg(literal_flag, "literal");
+  const std::size_t s = census_samples_arg(samples);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = classification_json_text(self.text, self.train, literal, s);
+  }
+  return from_json(text);
+}
+
+/// nodes(): the certified node list, or UncertifiedResult carrying the uncertified list and both
+/// counts (the CLI's exit status 3). cusps() need no node census certificate (pitch-cone criterion).
+py::object nodes_and_cusps(const Train& self, py::handle literal_flag, py::handle samples, const char* key) {
+  const bool literal = flag_arg(literal_flag, "literal");
+  const std::size_t s = census_samples_arg(samples);
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = nodes_and_cusps_json_text(self.text, self.train, literal, s);
+  }
+  const py::object all = from_json(text);
+  if (std::string(key) == "nodes" && !all["certified"].cast<bool>()) {
+    const std::string message = "the node count is not certified: polyline census " +
+                                py::str(all["polyline_nodes"]).cast<std::string>() + " node(s), root-count census " +
+                                py::str(all["root_nodes"]).cast<std::string>() + "; " +
+                                all["stopped"].cast<std::string>() + " (see docs/cli.md: Certified counts)";
+    raise_uncertified(message, all["nodes"], all["polyline_nodes"], all["root_nodes"]);
+  }
+  return all[key];
+}
+
+py::object classify_roots(const Train& self, py::handle literal_flag) {
+  const bool literal = flag_arg(literal_flag, "literal");
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = root_classification_json_text(self.train, literal);
+  }
+  return from_json(text);
+}
+
+std::string train_repr(const Train& t) {
+  return "GearTrain(a2=" + repr_of(py::str(t.text.a2)) + ", a3=" + repr_of(py::str(t.text.a3)) + ", n=" +
+         repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
+}
+
+}  // namespace
+
+void bind_gear_train(py::module_& m) {
+  py::class_<Train>(m, "GearTrain")
+      .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),
+           py::arg("a2"), py::arg("a3"), py::arg("n"), py::arg("phase") = 0.0)
+      .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); })
+      .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); })
+      .def_property_readonly("n", [](const Train& t) { return t.train.n(); })
+      .def_property_readonly("ratio", [](const Train& t) { return t.train.ratio().str(); })
+      .def_property_readonly("p", [](const Train& t) { return t.train.ratio().p(); })
+      .def_property_readonly("q", [](const Train& t) { return t.train.ratio().q(); })
+      .def_property_readonly("phase", [](const Train& t) { return t.train.phase(); })
+      .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); })
+      .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); })
+      .def_property_readonly("period", [](const Train& t) { return t.train.period(); })
+      .def_property_readonly("texts", [](const Train& t) {
+        return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase);
+      })
+      .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
+           py::arg("velocity") = false)
+      .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("nodes", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+      .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false)
+      .def("__repr__", &train_repr)
+      // Another type: NotImplemented (so train == 5 is False, and the other operand may decide).
+      .def("__eq__", [](const Train& a, py::handle other) -> py::object {
+        if (!py::isinstance<Train>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        const Train& b = other.cast<const Train&>();
+        return py::bool_(a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n &&
+                         a.text.phase == b.text.phase);
+      })
+      // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
+      // texts: a tampered pickle is validated like any other input (InvalidInput).
+      .def("__reduce__", [](py::object self) {
+        const Train& t = self.cast<const Train&>();
+        return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase));
+      });
+}
+
+}  // namespace sphtroch::python

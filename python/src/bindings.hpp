@@ -1,0 +1,84 @@
+// python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
+// the argument converters (arguments.cpp), the exception classes (errors.cpp) and one bind_*
+// function per topic (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp), called by
+// module.cpp.
+// The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
+//
+// Decisions
+//  * Every computation runs with the GIL released, on C++ values only (a GearTrain is an
+//    immutable value; no state is shared between calls): Python threads run in parallel.
+//  * Arrays go out without a copy: the C++ vectors move to the heap and a py::capsule owns them
+//    (the array's base); the (N, 3) arrays view std::vector<Eigen::Vector3d> (3 packed doubles).
+//  * Points come in without a copy when C-contiguous float64 (else converted once by NumPy).
+//  * Every bad argument raises sphtroch.InvalidInput (a ValueError) with .field, .value, .valid
+//    (and .problem): the library's own InvalidInput, or one raised here with the same contract.
+//  * Angles are stored with their text (the CLI's strings, or the shortest round-trip text of a
+//    float) so that classify() reports a2_text/a3_text as the CLI does and pickling is exact.
+#pragma once
+
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/ratio.hpp"
+#include "sphtroch/io/train_text.hpp"
+
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+
+namespace sphtroch::python {
+
+namespace py = pybind11;
+
+// --- errors.cpp ---------------------------------------------------------------------------
+/// sphtroch.InvalidInput (a ValueError) and sphtroch.UncertifiedResult (a RuntimeError), with the
+/// translator that raises the first for the library's InvalidInput.
+void bind_errors(py::module_& m);
+/// Raises sphtroch.UncertifiedResult(message) carrying .nodes, .polyline_nodes and .root_nodes.
+[[noreturn]] void raise_uncertified(const std::string& message, py::handle nodes, py::handle polyline_nodes,
+                                    py::handle root_nodes);
+
+// --- arguments.cpp: Python values -> C++ values, else InvalidInput naming the argument -----
+std::string repr_of(py::handle v);
+/// A str as UTF-8, else InvalidInput (a lone surrogate such as "\ud800" cannot be encoded).
+std::string text_arg(py::handle v, const std::string& field, const std::string& valid);
+/// A flag: True or False (also numpy.bool_); truthy objects ("yes", 1, None) are refused.
+bool flag_arg(py::handle v, const std::string& field);
+/// A real number (anything float() accepts, except bool, None and str).
+double real_arg(py::handle v, const std::string& field, const std::string& valid);
+/// A whole number in [lo, hi] (int or any integer type with __index__; not bool).
+std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi);
+/// An angle: radians as a real number, or the CLI's text; `text` receives the text kept for reports.
+double angle_arg(py::handle v, const std::string& field, std::string& text);
+/// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
+A3Spec a3_arg(py::handle v, std::string& text);
+/// n: an integer, a Fraction, the CLI's text, or a float that is a short decimal.
+Ratio ratio_arg(py::handle v);
+/// (lo, hi) of angles, or the CLI's "LO:HI" text.
+std::pair<double, double> range_arg(py::handle v, const std::string& field);
+/// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
+std::size_t census_samples_arg(py::handle samples);
+
+/// A gear train and the text of its inputs (TrainText: a2, a3, n, phase, as classify --json reports them).
+struct Train {
+  GearTrain train;
+  TrainText text;
+};
+Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase);
+
+/// A capsule owning `owner`: the base of arrays viewing its data, deleting it with the last of them.
+template <typename Owner>
+py::capsule capsule_of(std::unique_ptr<Owner> owner) {
+  return py::capsule(owner.release(), [](void* p) { delete static_cast<Owner*>(p); });
+}
+
+/// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
+py::object from_json(const std::string& text);
+
+// --- one function per topic ----------------------------------------------------------------
+void bind_gear_train(py::module_& m);  // class GearTrain: trace, classify, nodes, cusps, classify_roots
+void bind_design_map(py::module_& m);  // classify_a3_range, atlas
+void bind_crossings(py::module_& m);   // crossings
+
+}  // namespace sphtroch::python
