@@ -30,6 +30,7 @@ LAYERS = {
     "census": ["core", "io", "map"],              # refinement, node assembly, the root census
     "exact": ["core", "io", "draw", "map", "census"],  # CGAL: exact crossings, classify, scenes
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
+    "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
 }
 TOP_LEVEL_MAX = 8
 HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)

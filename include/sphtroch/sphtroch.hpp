@@ -66,6 +66,8 @@
 #include "sphtroch/atlas/atlas_csv.hpp"
 #include "sphtroch/atlas/atlas_summary.hpp"
 #include "sphtroch/atlas/atlas_svg.hpp"
+
+#include "sphtroch/synthesis/identify.hpp"
 #include "sphtroch/atlas/atlas_slices.hpp"
 
 #if defined(SPHTROCH_HAVE_EXACT)
