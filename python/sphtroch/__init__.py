@@ -16,6 +16,7 @@ from ._sphtroch import (  # noqa: F401
     atlas,
     classify_a3_range,
     crossings,
+    identify,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "identify", "__version__"]

@@ -163,3 +163,10 @@ def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
     (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
     (radians). The class changes between the last sample of a run and the first of the next.
     Raises InvalidInput: "a3" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""
+
+def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
+    """The gear train of a timed trace (as `sphtroch synth identify`): t (N,) carrier angles,
+    points (N, 3) unit vectors over one period, dense enough that the planet turns by less than
+    3pi/4 between two samples. Returns {"n": "p/q" (the simplest fraction that fits, |p|, q <=
+    1000), "a2", "a3", "phase" (radians), "residual" (max |P(t_i) - P_i|), "rms", "noise"}.
+    Raises InvalidInput naming "t", "points" or "samples"."""

@@ -80,5 +80,6 @@ py::object from_json(const std::string& text);
 void bind_gear_train(py::module_& m);  // class GearTrain: trace, classify, nodes, cusps, classify_roots
 void bind_design_map(py::module_& m);  // classify_a3_range, atlas
 void bind_crossings(py::module_& m);   // crossings
+void bind_synthesis(py::module_& m);   // identify
 
 }  // namespace sphtroch::python

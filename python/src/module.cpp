@@ -24,4 +24,5 @@ PYBIND11_MODULE(_sphtroch, m) {
   python::bind_gear_train(m);
   python::bind_design_map(m);
   python::bind_crossings(m);
+  python::bind_synthesis(m);
 }

@@ -117,6 +117,7 @@ using Action = std::function<void()>;
 void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // atlas, atlas-merge
 void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth identify
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);

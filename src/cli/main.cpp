@@ -42,9 +42,19 @@ std::optional<std::string> unknown_command(const CLI::App& app, int argc, char**
   return std::string(argv[1]) + ": not a command; valid: " + names + " (see sphtroch --help)";
 }
 
+/// Every command, also the nested ones (`synth identify`).
+std::vector<const CLI::App*> all_commands(const CLI::App& app) {
+  std::vector<const CLI::App*> out;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    out.push_back(sub);
+    for (const CLI::App* nested : all_commands(*sub)) out.push_back(nested);
+  }
+  return out;
+}
+
 /// A flag written with a value ("--velocity=true"): flags take none.
 std::optional<std::string> flag_with_value(const CLI::App& app, int argc, char** argv) {
-  for (const CLI::App* sub : app.get_subcommands({}))
+  for (const CLI::App* sub : all_commands(app))
     for (const CLI::Option* opt : sub->get_options())
       if (opt->get_expected_max() == 0)
         for (const std::string& name : opt->get_lnames())
@@ -57,7 +67,7 @@ std::optional<std::string> flag_with_value(const CLI::App& app, int argc, char**
 
 /// An option given with an empty value ("--samples ''") is an error, never the default.
 void check_no_empty_values(const CLI::App& app) {
-  for (const CLI::App* sub : app.get_subcommands())
+  for (const CLI::App* sub : all_commands(app))
     for (const CLI::Option* opt : sub->get_options())
       if (opt->count() > 0 && opt->get_expected_min() > 0)
         for (const std::string& v : opt->results())
@@ -80,6 +90,7 @@ int main(int argc, char** argv) {
   register_trace(app, actions);
   register_atlas(app, actions);
   register_boundaries(app, actions);
+  register_synth(app, actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS
   register_analysis(app, actions);
   register_scene(app, actions);

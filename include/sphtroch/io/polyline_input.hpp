@@ -45,11 +45,15 @@ namespace sphtroch {
 struct PolylineInput {
   std::vector<Vector3d> vertices;
   std::string format;  // what was read, for reports
+  std::vector<double> t;  // read_timed_polyline only: theta2 of each vertex (the column t)
 };
 
 /// The valid forms of a CSV polyline, quoted in errors.
 constexpr const char* kPolylineCsvValid =
     "CSV rows of 3 numbers x,y,z, or a header naming x, y, z (other columns ignored), or a .npy file";
+/// The valid forms of a timed polyline (read_timed_polyline), quoted in errors.
+constexpr const char* kTimedPolylineValid =
+    "CSV with a header naming t, x, y, z (as `sphtroch trace` writes), or a .npy array (N, 4) or (N, 7): t,x,y,z[,vx,vy,vz]";
 
 namespace polyline_input_detail {
 
@@ -62,6 +66,7 @@ struct CsvLayout {
   std::size_t fields = 3;
   std::array<std::size_t, 3> xyz{0, 1, 2};
   bool header = false;
+  std::optional<std::size_t> t;  // the header's column t, if any
 };
 
 /// Splits one line (without '\n') at commas.
@@ -108,6 +113,11 @@ inline CsvLayout layout_from_first_line(std::string_view line, const std::string
     std::string_view name = trim(cells[k]);
     if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
     if (name.size() != 1) continue;
+    if ((name[0] | 0x20) == 't') {
+      if (layout.t) throw InvalidInput(field, path, "the header names column t twice", kPolylineCsvValid);
+      layout.t = k;
+      continue;
+    }
     const int axis = (name[0] | 0x20) - 'x';  // x, y, z in any case
     if (axis < 0 || axis > 2) continue;
     if (seen[static_cast<std::size_t>(axis)])
@@ -146,17 +156,21 @@ struct RowError {
 /// Appends vertices to `out`; returns the number of lines (counting blank ones). Stops at the
 /// first bad row and fills `error`.
 inline std::size_t parse_rows(const char* first, const char* last, const CsvLayout& layout,
-                              std::vector<Vector3d>& out, std::optional<RowError>& error) {
+                              std::vector<Vector3d>& out, std::optional<RowError>& error,
+                              std::vector<double>* times = nullptr) {
   std::size_t lines = 0;
-  std::array<int, 64> role{};  // field k: 0 ignored, 1 + axis
+  std::array<int, 64> role{};  // field k: 0 ignored, 1 + axis, 4 the time t (only with `times`)
   const bool wide = layout.fields > role.size();
-  if (!wide)
+  const bool timed = times && layout.t;
+  if (!wide) {
     for (std::size_t a = 0; a < 3; ++a) role[layout.xyz[a]] = static_cast<int>(a) + 1;
+    if (timed) role[*layout.t] = 4;
+  }
   auto role_of = [&](std::size_t k) -> int {
     if (!wide) return role[k];
     for (std::size_t a = 0; a < 3; ++a)
       if (layout.xyz[a] == k) return static_cast<int>(a) + 1;
-    return 0;
+    return timed && *layout.t == k ? 4 : 0;
   };
   const char* p = first;
   while (p < last) {
@@ -169,7 +183,7 @@ inline std::size_t parse_rows(const char* first, const char* last, const CsvLayo
       p = nl ? nl + 1 : last;
       continue;
     }
-    double xyz[3] = {0, 0, 0};
+    double xyz[4] = {0, 0, 0, 0};
     q = p;
     for (std::size_t k = 0; k < layout.fields; ++k) {
       const char* comma = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)));
@@ -194,6 +208,7 @@ inline std::size_t parse_rows(const char* first, const char* last, const CsvLayo
       q = field_end + (comma ? 1 : 0);
     }
     out.emplace_back(xyz[0], xyz[1], xyz[2]);
+    if (timed) times->push_back(xyz[3]);
     p = nl ? nl + 1 : last;
   }
   return lines;
@@ -202,21 +217,22 @@ inline std::size_t parse_rows(const char* first, const char* last, const CsvLayo
 /// Parses [first, last) on up to two threads (split at a line end near the middle).
 inline void parse_block(const char* first, const char* last, const CsvLayout& layout, std::size_t threads,
                         std::size_t line_base, std::vector<Vector3d>& out, const std::string& field,
-                        const std::string& path, std::size_t& lines_total) {
+                        const std::string& path, std::size_t& lines_total, std::vector<double>* times) {
   const char* mid = last;
   if (threads > 1 && last - first > (1 << 16)) {
     const char* nl = static_cast<const char*>(std::memchr(first + (last - first) / 2, '\n', static_cast<std::size_t>(last - (first + (last - first) / 2))));
     if (nl && nl + 1 < last) mid = nl + 1;
   }
   std::vector<Vector3d> second;
+  std::vector<double> second_times;
   std::optional<RowError> e1, e2;
   std::size_t lines2 = 0;
   std::thread helper;
   if (mid != last) {
     second.reserve(static_cast<std::size_t>(last - mid) / 48);
-    helper = std::thread([&] { lines2 = parse_rows(mid, last, layout, second, e2); });
+    helper = std::thread([&] { lines2 = parse_rows(mid, last, layout, second, e2, times ? &second_times : nullptr); });
   }
-  const std::size_t lines1 = parse_rows(first, mid, layout, out, e1);
+  const std::size_t lines1 = parse_rows(first, mid, layout, out, e1, times);
   if (helper.joinable()) helper.join();
   const auto fail = [&](std::size_t line, const std::string& problem) {
     throw InvalidInput(field, path, "line " + std::to_string(line_base + line + 1) + " " + problem, kPolylineCsvValid);
@@ -224,10 +240,11 @@ inline void parse_block(const char* first, const char* last, const CsvLayout& la
   if (e1) fail(e1->line, e1->problem);
   if (e2) fail(lines1 + e2->line, e2->problem);
   out.insert(out.end(), second.begin(), second.end());
+  if (times) times->insert(times->end(), second_times.begin(), second_times.end());
   lines_total = lines1 + lines2;
 }
 
-inline void read_csv(InputFile& in, std::string block, std::size_t threads, PolylineInput& result) {
+inline void read_csv(InputFile& in, std::string block, std::size_t threads, PolylineInput& result, bool timed = false) {
   const std::string& field = in.field();
   const std::string& path = in.path();
   if (block.size() >= 3 && block.compare(0, 3, "\xEF\xBB\xBF") == 0) block.erase(0, 3);  // UTF-8 BOM
@@ -267,8 +284,10 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
     }
     if (layout) {
       std::size_t lines = 0;
+      if (timed && !layout->t)
+        throw InvalidInput(field, path, "no column t (line 1 must be a header naming t, x, y, z)", kTimedPolylineValid);
       parse_block(block.data() + start, block.data() + complete, *layout, threads, line_base, result.vertices, field,
-                  path, lines);
+                  path, lines, timed ? &result.t : nullptr);
       line_base += lines;
     }
     if (consumed == 0 && complete > 0 && in.size() && *in.size() > complete)  // from the first block's row density
@@ -292,7 +311,7 @@ inline std::string shape_text(const NpyHeader& h) {
   return s + (h.shape.size() == 1 ? ",)" : ")");
 }
 
-inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
+inline void read_npy(InputFile& in, std::string block, PolylineInput& result, bool timed = false) {
   const std::string& field = in.field();
   const std::string& path = in.path();
   const std::size_t preamble = npy_preamble_length(block, field, path);
@@ -305,6 +324,8 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
   const std::uint64_t cols = h.cols();
   if (h.shape.size() != 2 || !(cols == 3 || cols == 4 || cols == 7))
     throw InvalidInput(field, path, "an array of shape " + shape_text(h), kNpyValid);
+  if (timed && cols == 3)
+    throw InvalidInput(field, path, "an array of shape " + shape_text(h) + " has no column t", kTimedPolylineValid);
   const std::uint64_t bytes = npy_data_bytes(h, field, path);
   const auto truncated = [&](std::uint64_t have) {
     return InvalidInput(field, path,
@@ -341,6 +362,18 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result) {
                                number_text(xyz[1]) + ", " + number_text(xyz[2]) + ") is not a finite nonzero vector",
                            kNpyValid);
       result.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+      if (timed) {
+        const char* t0 = data.data() + r * row_bytes;
+        if (h.item_bytes == 8) {
+          double v;
+          std::memcpy(&v, t0, sizeof v);
+          result.t.push_back(v);
+        } else {
+          float v;
+          std::memcpy(&v, t0, sizeof v);
+          result.t.push_back(v);
+        }
+      }
     }
     rows_left -= whole;
     data.erase(0, whole * row_bytes);
@@ -366,6 +399,22 @@ inline PolylineInput read_polyline(const std::string& path, const std::string& f
   PolylineInput result;
   if (looks_like_npy(start)) d::read_npy(in, std::move(start), result);
   else d::read_csv(in, std::move(start), threads, result);
+  return result;
+}
+
+/// A timed polyline: the vertices and their carrier angles t, from a CSV whose header names t, x,
+/// y, z (what `sphtroch trace` writes) or a .npy array (N, 4) / (N, 7) (column 0 is t). Throws
+/// InvalidInput(field, path, ...) as read_polyline does, and when there is no column t; a t that
+/// is not a finite number is refused with its line. Finite, increasing t is the caller's check.
+inline PolylineInput read_timed_polyline(const std::string& path, const std::string& field = "input",
+                                         std::size_t threads = 2) {
+  namespace d = polyline_input_detail;
+  InputFile in = InputFile::open(path, field);
+  std::string start(16, '\0');
+  start.resize(in.read(start.data(), start.size()));
+  PolylineInput result;
+  if (looks_like_npy(start)) d::read_npy(in, std::move(start), result, true);
+  else d::read_csv(in, std::move(start), threads, result, true);
   return result;
 }
 

@@ -1,0 +1,49 @@
+// python/src/bind_synthesis.cpp — the inverse question (bindings.hpp): sphtroch.identify(t, P), the
+// train of a timed trace (synthesis/identify.hpp), NumPy in, a dict out, the GIL released.
+#include "bindings.hpp"
+
+#include "sphtroch/synthesis/identify.hpp"
+
+#include <pybind11/numpy.h>
+
+#include <string>
+#include <vector>
+
+namespace sphtroch::python {
+namespace {
+
+constexpr const char* kTimesValid = "a 1-D array of carrier angles theta2 (radians), one per point";
+constexpr const char* kPointsValid = "an (N, 3) array of unit vectors x, y, z, one per time";
+
+py::dict identify_dict(py::handle t, py::handle points) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  const Array ta = Array::ensure(t), pa = Array::ensure(points);
+  if (!ta || ta.ndim() != 1) throw InvalidInput("t", repr_of(py::type::of(t).attr("__name__")), "not a 1-D array", kTimesValid);
+  if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
+    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array", kPointsValid);
+  const std::vector<double> times(ta.data(), ta.data() + ta.shape(0));
+  std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
+  Identified id{};
+  {
+    py::gil_scoped_release release;
+    id = identify(times, p);
+  }
+  py::dict d;
+  d["n"] = id.train.ratio().str();
+  d["a2"] = id.train.a2();
+  d["a3"] = id.train.a3();
+  d["phase"] = id.train.phase();
+  d["residual"] = id.residual;
+  d["rms"] = id.rms;
+  d["noise"] = id.noise;
+  return d;
+}
+
+}  // namespace
+
+void bind_synthesis(py::module_& m) {
+  m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
+}
+
+}  // namespace sphtroch::python

@@ -1,0 +1,65 @@
+// `sphtroch synth identify`, run as a real executable: trace's own output (CSV through a pipe,
+// .npy, an open curve) gives back the train that traced it; bad input is one stderr line, exit 2,
+// nothing on stdout. Expected values: the trace's own arguments (the hidden train).
+#include "catch2/catch.hpp"
+#include "cli_support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace sphtroch::test;
+
+namespace {
+
+std::string exe() { return std::string("'") + SPHTROCH_EXE + "'"; }
+
+}  // namespace
+
+TEST_CASE("cli synth identify: trace's CSV, .npy and open curves give back their train", "[cli][synth]") {
+  TempDir dir;
+  struct Case {
+    std::string trace_args, n;
+    double a2, a3, phase;
+  };
+  for (const Case& c : {Case{"--n 5/2 --a2 1 --a3 2", "5/2", 1, 2, 0}, Case{"--n -7/3 --a2 0.5 --a3 2.5 --phase 1 --turns 3", "-7/3", 0.5, 2.5, 1},
+                        Case{"--n 13/5 --a2 2.9 --a3 0.2 --phase -2 --samples 20000", "13/5", 2.9, 0.2, -2}}) {
+    INFO(c.trace_args);
+    for (const char* file : {"t.csv", "t.npy"}) {
+      REQUIRE(run("trace " + c.trace_args + " -o " + file, dir, true).status == 0);
+      const Result r = run(std::string("synth identify --json --input ") + file, dir, true);
+      REQUIRE(r.status == 0);
+      CHECK(r.err.empty());
+      const nlohmann::json j = nlohmann::json::parse(r.out);
+      CHECK(j["n"] == c.n);
+      CHECK(std::abs(j["a2"].get<double>() - c.a2) < 1e-12);
+      CHECK(std::abs(j["a3"].get<double>() - c.a3) < 1e-12);
+      CHECK(std::abs(std::remainder(j["phase"].get<double>() - c.phase, 2 * M_PI)) < 1e-12);
+      CHECK(j["residual"].get<double>() < 1e-12);
+    }
+  }
+  const Result piped = shell(exe() + " trace --n 3 --a2 pi/2 --a3 pi/3 | " + exe() + " synth identify --input -", dir);
+  REQUIRE(piped.status == 0);
+  CHECK(contains(piped.out, "n = 3\n"));
+  CHECK(contains(piped.out, "trace it: sphtroch trace --n 3 --a2 1.5707963267948966 --a3 1.047197551196597"));
+}
+
+TEST_CASE("cli synth identify: bad input is one stderr line naming the input, exit 2, no stdout", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 2 --a2 1 --a3 1 --samples 100 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > nt.csv && head -5 t.csv > few.csv", dir).status == 0);
+  for (const std::string& args : {std::string("--input nt.csv"), std::string("--input few.csv"),
+                                  std::string("--input missing.csv"), std::string("--input t.csv --max-terms 1,1"),
+                                  std::string("--input t.csv --max-terms 3"), std::string("--input t.csv --max-terms 0,5")}) {
+    INFO(args);
+    const Result r = run("synth identify " + args, dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK((contains(r.err, "--input") || contains(r.err, "--max-terms")));
+  }
+  const Result none = run("synth", dir, true);
+  CHECK(none.status == 2);
+  CHECK(none.out.empty());
+}
