@@ -121,6 +121,7 @@ void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth points
 /// Parses and validates a scene's text as `sphtroch scene` does, without touching the file system
 /// (output paths unchecked, nothing computed); returns the number of trains. Throws UsageError
 /// (one line) for anything wrong. For tests/fuzz.

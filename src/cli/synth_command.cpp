@@ -1,5 +1,6 @@
 // sphtroch synth — the inverse question, which train draws a wanted path (synthesis/). Today:
-// `synth identify`, the train of a timed trace (synthesis/identify.hpp). Parsing and printing only.
+// `synth identify`, the train of a timed trace (synthesis/identify.hpp); `synth points` is in
+// synth_points_command.cpp (CGAL). Parsing and printing only.
 #include "cli_common.hpp"
 
 #include "sphtroch/io/polyline_input.hpp"
@@ -81,6 +82,9 @@ void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_flag("--json", o->json, "{\"n\", \"a2\", \"a3\", \"phase\", \"residual\", \"rms\", \"noise\"}");
   add_output_option(*cmd, o->output, "the identified train");
   actions.emplace_back(cmd, [o] { run_identify(*o); });
+#ifdef SPHTROCH_HAVE_ANALYSIS
+  register_synth_points(*synth, actions);  // CGAL: synth_points_command.cpp
+#endif
 }
 
 }  // namespace sphtroch::cli

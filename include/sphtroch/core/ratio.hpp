@@ -10,7 +10,9 @@
 
 #include <cstdint>
 #include <numeric>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace sphtroch {
 
@@ -53,5 +55,23 @@ class Ratio {
   std::int64_t p_;
   std::int64_t q_;
 };
+
+/// The ratio set of `--ratios P,Q`: every n = p/q in lowest terms with 1 <= |p| <= max_p and
+/// 1 <= q <= max_q, both signs, in increasing order of n. REQUIRES 1 <= max_p, max_q <= Ratio::kMaxTerm
+/// (InvalidInput "ratios" otherwise); the caller bounds the cost (2 P Q entries at most).
+inline std::vector<Ratio> ratio_set(std::int64_t max_p, std::int64_t max_q) {
+  if (max_p < 1 || max_q < 1 || max_p > Ratio::kMaxTerm || max_q > Ratio::kMaxTerm)
+    throw InvalidInput("ratios", std::to_string(max_p) + "," + std::to_string(max_q), "bounds out of range",
+                       "P,Q with 1 <= P, Q <= " + std::to_string(Ratio::kMaxTerm));
+  std::vector<Ratio> set;
+  for (std::int64_t q = 1; q <= max_q; ++q)
+    for (std::int64_t p = 1; p <= max_p; ++p)
+      if (std::gcd(p, q) == 1) {
+        set.emplace_back(p, q);
+        set.emplace_back(-p, q);
+      }
+  std::sort(set.begin(), set.end(), [](const Ratio& a, const Ratio& b) { return a.p() * b.q() < b.p() * a.q(); });
+  return set;
+}
 
 }  // namespace sphtroch
