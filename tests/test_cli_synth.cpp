@@ -63,3 +63,48 @@ TEST_CASE("cli synth identify: bad input is one stderr line naming the input, ex
   CHECK(none.status == 2);
   CHECK(none.out.empty());
 }
+
+TEST_CASE("cli synth points: three points of a trace give back its train among all, certified", "[cli][synth]") {
+  TempDir dir;
+  // Rows 3, 12 and 30 of a 40-sample trace of the hidden train (theta2 = 2 pi k / 40 * period / (2 pi)).
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
+  const Result r = run("synth points --input pts.csv --n 1/2 --json", dir, true);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == true);
+  bool hidden = false;
+  for (const auto& s : j["solutions"]) {
+    CHECK(s["n"] == "1/2");
+    CHECK(s["residual"].get<double>() <= 1e-12);
+    CHECK(s["params"].size() == 3);
+    CHECK(s["census_certified"] == true);
+    CHECK(s["counts"]["nodes"].get<int>() == s["counts"]["crossings"].get<int>() + s["counts"]["tangencies"].get<int>());
+    hidden = hidden || (std::abs(s["a2"].get<double>() - 1) < 1e-9 && std::abs(s["a3"].get<double>() - 2) < 1e-9 &&
+                        std::abs(std::remainder(s["phase"].get<double>() - 0.3, M_PI)) < 1e-9);
+  }
+  CHECK(hidden);
+  // The hidden train's theta2 at the points: rows 3, 12, 30 are samples 2, 11, 29 of 40 over 4 pi.
+  const Result text = run("synth points --input pts.csv --n 1/2", dir, true);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "all of them (certified)"));
+  CHECK(contains(text.out, "plot it: sphtroch plot --n 1/2 --a2 1 --a3 2 --phase "));
+}
+
+TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n' > two.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n1,0,0\\n' > dup.csv && "
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1.00001\\n' > off.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > ok.csv",
+                dir).status == 0);
+  for (const std::string& args : {std::string("--input two.csv --n 1"), std::string("--input dup.csv --n 1"),
+                                  std::string("--input off.csv --n 1"), std::string("--input ok.csv"),
+                                  std::string("--input ok.csv --n 1 --ratios 2,2"), std::string("--input ok.csv --ratios 30,30"),
+                                  std::string("--input ok.csv --n 200/3"), std::string("--input ok.csv --ratios 3")}) {
+    INFO(args);
+    const Result r = run("synth points " + args, dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+  }
+}

@@ -78,6 +78,8 @@
 #include "sphtroch/exact/certified_census.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
+#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/exact/interval_trig.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 #endif
