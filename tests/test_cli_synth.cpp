@@ -66,7 +66,7 @@ TEST_CASE("cli synth identify: bad input is one stderr line naming the input, ex
 
 TEST_CASE("cli synth points: three points of a trace give back its train among all, certified", "[cli][synth]") {
   TempDir dir;
-  // Rows 3, 12 and 30 of a 40-sample trace of the hidden train (theta2 = 2 pi k / 40 * period / (2 pi)).
+  // Samples 1, 10 and 28 (CSV lines 3, 12, 30) of a 40-sample trace of the hidden train.
   REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 -o t.csv", dir, true).status == 0);
   REQUIRE(shell("(echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
   const Result r = run("synth points --input pts.csv --n 1/2 --json", dir, true);
@@ -85,7 +85,6 @@ TEST_CASE("cli synth points: three points of a trace give back its train among a
                         std::abs(std::remainder(s["phase"].get<double>() - 0.3, M_PI)) < 1e-9);
   }
   CHECK(hidden);
-  // The hidden train's theta2 at the points: rows 3, 12, 30 are samples 2, 11, 29 of 40 over 4 pi.
   const Result text = run("synth points --input pts.csv --n 1/2", dir, true);
   REQUIRE(text.status == 0);
   CHECK(contains(text.out, "all of them (certified)"));

@@ -79,6 +79,7 @@
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/interval_trig.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"

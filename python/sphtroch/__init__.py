@@ -17,6 +17,7 @@ from ._sphtroch import (  # noqa: F401
     classify_a3_range,
     crossings,
     identify,
+    synth_points,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "identify", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "identify", "synth_points", "__version__"]

@@ -1,6 +1,8 @@
 // python/src/bind_synthesis.cpp — the inverse question (bindings.hpp): sphtroch.identify(t, P), the
-// train of a timed trace (synthesis/identify.hpp), NumPy in, a dict out, the GIL released.
+// train of a timed trace (synthesis/identify.hpp), and sphtroch.synth_points(P, n=...), every train
+// through three points (exact/precision_points.hpp); NumPy in, a dict out, the GIL released.
 #include "bindings.hpp"
+#include "exact_calls.hpp"
 
 #include "sphtroch/synthesis/identify.hpp"
 
@@ -40,10 +42,30 @@ py::dict identify_dict(py::handle t, py::handle points) {
   return d;
 }
 
+/// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
+/// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
+py::object synth_points(py::handle points, py::handle n) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  const Array pa = Array::ensure(points);
+  if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
+    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array",
+                       "a (3, 3) array of unit vectors x, y, z");
+  std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
+  const Ratio ratio = ratio_arg(n);
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = precision_points_json_text(p, {ratio});
+  }
+  return py::module_::import("json").attr("loads")(json);
+}
+
 }  // namespace
 
 void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
+  m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n"));
 }
 
 }  // namespace sphtroch::python

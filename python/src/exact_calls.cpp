@@ -5,6 +5,7 @@
 #include "sphtroch/exact/classification_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 
 #include <algorithm>
@@ -47,6 +48,10 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
                         {"root_nodes", cert.root_nodes},
                         {"stopped", cert.stopped}}
       .dump();
+}
+
+std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios) {
+  return precision_points_json(precision_points_with_census(points, ratios));
 }
 
 std::string root_classification_json_text(const GearTrain& train, bool literal) {

@@ -6,6 +6,7 @@
 #include "sphtroch/io/train_text.hpp"  // TrainText: the angles as text, as `classify --json` reports them
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/types.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,6 +29,10 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
 /// Python's classify_roots(): the root-count classification (Reading{literal}) as
 /// root_classification_json (classification_output.hpp), JSON text.
 std::string root_classification_json_text(const GearTrain& train, bool literal);
+
+/// `sphtroch synth points --json` (precision_points_output.hpp): every train of each ratio through
+/// the three points, with its census. InvalidInput "points" for bad points.
+std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

@@ -3,7 +3,7 @@
 #include "cli_common.hpp"
 
 #include "sphtroch/classify.hpp"
-#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 
@@ -23,11 +23,7 @@ struct PointsOptions {
   bool json = false;
 };
 
-struct RatioSolutions {
-  Ratio ratio;
-  PrecisionPoints result;
-  std::vector<Classification> census;  // one per solution
-};
+using RatioSolutions = RatioPrecisionPoints;
 
 std::vector<Ratio> requested_ratios(const PointsOptions& o) {
   if (o.n.empty() == o.ratios.empty())
@@ -74,30 +70,6 @@ void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all
   }
 }
 
-void write_points_json(std::ostream& out, const std::vector<RatioSolutions>& all) {
-  out << "{\"solutions\": [";
-  bool first = true, complete = true;
-  std::size_t undecided = 0;
-  for (const auto& rs : all) {
-    complete = complete && rs.result.certified;
-    undecided += rs.result.undecided;
-    for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
-      const PrecisionSolution& s = rs.result.solutions[k];
-      const Classification& c = rs.census[k];
-      out << (first ? "\n" : ",\n") << "  {\"n\": \"" << s.train.ratio().str() << "\", \"a2\": " << number_text(s.train.a2())
-          << ", \"a3\": " << number_text(s.train.a3()) << ", \"phase\": " << number_text(s.train.phase_given())
-          << ", \"params\": [";
-      for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
-      out << "], \"residual\": " << number_text(s.residual) << ", \"counts\": {\"nodes\": " << c.nodes.size()
-          << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": "
-          << c.cusps.size() << "}, \"census_certified\": " << (c.certified() ? "true" : "false") << "}";
-      first = false;
-    }
-  }
-  out << (first ? "" : "\n") << "], \"complete\": " << (complete ? "true" : "false") << ", \"undecided_boxes\": "
-      << undecided << "}\n";
-}
-
 /// After the output is complete: exit 3 when the list is not certified complete or a census is not.
 void check_points_certified(const std::vector<RatioSolutions>& all) {
   for (const auto& rs : all) {
@@ -115,18 +87,17 @@ void run_points(const PointsOptions& o) {
   const std::vector<Ratio> ratios = requested_ratios(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
-  std::vector<RatioSolutions> all;
-  for (const Ratio& n : ratios) {
-    RatioSolutions rs{n, {}, {}};
+  const std::vector<RatioSolutions> all = [&] {
     try {
-      rs.result = precision_points(in.vertices, n);
+      return precision_points_with_census(in.vertices, ratios);
     } catch (const InvalidInput& e) {  // the library names its argument (points): here the file
       throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
     }
-    for (const auto& s : rs.result.solutions) rs.census.push_back(classify(s.train));
-    all.push_back(std::move(rs));
-  }
-  write_output(o.output, [&](std::ostream& out) { o.json ? write_points_json(out, all) : write_points_text(out, all); });
+  }();
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << precision_points_json(all);
+    else write_points_text(out, all);
+  });
   check_points_certified(all);
 }
 

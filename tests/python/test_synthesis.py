@@ -26,3 +26,26 @@ def test_identify_refuses_bad_samples():
         with pytest.raises(sphtroch.InvalidInput) as info:
             sphtroch.identify(*args)
         assert info.value.field == field
+
+
+def test_synth_points_finds_the_hidden_train_among_all():
+    # Three points of a known train (the forward model through trace()); expected: that train.
+    train = sphtroch.GearTrain(a2=1.0, a3=2.0, n="1/2", phase=0.3)
+    _, P = train.trace(samples=40)
+    pts = P[[1, 10, 28]]
+    r = sphtroch.synth_points(pts, n="1/2")
+    assert r["complete"] is True
+    hits = [s for s in r["solutions"]
+            if abs(s["a2"] - 1.0) < 1e-9 and abs(s["a3"] - 2.0) < 1e-9
+            and abs(math.remainder(s["phase"] - 0.3, math.pi)) < 1e-9]
+    assert len(hits) == 1
+    for s in r["solutions"]:
+        assert s["residual"] <= 1e-12 and len(s["params"]) == 3
+        assert s["counts"]["nodes"] == s["counts"]["crossings"] + s["counts"]["tangencies"]
+
+
+def test_synth_points_refuses_bad_points():
+    with pytest.raises(sphtroch.InvalidInput, match="points"):
+        sphtroch.synth_points(np.array([[1.0, 0, 0], [0, 1.0, 0]]), n=1)
+    with pytest.raises(sphtroch.InvalidInput, match="points"):
+        sphtroch.synth_points(np.array([[1.0, 0, 0], [0, 1.0, 0], [1.0, 0, 0]]), n=1)

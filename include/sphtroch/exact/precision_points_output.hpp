@@ -1,0 +1,79 @@
+// sphtroch/exact/precision_points_output.hpp — precision points over a set of ratios, each train
+// with its census, and the JSON that `sphtroch synth points --json` and Python's synth_points print.
+//
+//   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
+//   std::vector<sphtroch::Vector3d> pts = {curve.point(0.5), curve.point(2.0), curve.point(7.0)};
+//   auto all = sphtroch::precision_points_with_census(pts, {sphtroch::Ratio(1, 2)});
+//   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
+//
+// JSON: {"solutions": [{"n": "p/q", "a2", "a3", "phase", "params": [theta2 per point, input order],
+// "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}],
+// "complete": every ratio's list certified complete, "undecided_boxes": their sum}. Radians.
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/exact/precision_points_output.hpp needs CGAL: link the CMake target sphtroch::exact"
+#endif
+
+#include "sphtroch/classify.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/exact/precision_points.hpp"
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphtroch {
+
+/// The trains of one ratio through the points, and the census (classify) of each.
+struct RatioPrecisionPoints {
+  Ratio ratio;
+  PrecisionPoints result;
+  std::vector<Classification> census;  // one per solution, same order
+};
+
+/// precision_points for each ratio, then classify() of every train found.
+inline std::vector<RatioPrecisionPoints> precision_points_with_census(const std::vector<Vector3d>& points,
+                                                                      const std::vector<Ratio>& ratios,
+                                                                      const PrecisionPointsOptions& options = {}) {
+  std::vector<RatioPrecisionPoints> all;
+  for (const Ratio& n : ratios) {
+    RatioPrecisionPoints rs{n, precision_points(points, n, options), {}};
+    for (const auto& s : rs.result.solutions) rs.census.push_back(classify(s.train));
+    all.push_back(std::move(rs));
+  }
+  return all;
+}
+
+/// One solution as a JSON object (see header).
+inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c) {
+  std::ostringstream out;
+  out << "{\"n\": \"" << s.train.ratio().str() << "\", \"a2\": " << number_text(s.train.a2())
+      << ", \"a3\": " << number_text(s.train.a3()) << ", \"phase\": " << number_text(s.train.phase_given())
+      << ", \"params\": [";
+  for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
+  out << "], \"residual\": " << number_text(s.residual) << ", \"counts\": {\"nodes\": " << c.nodes.size()
+      << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
+      << "}, \"census_certified\": " << (c.certified() ? "true" : "false") << "}";
+  return out.str();
+}
+
+/// The whole result as JSON (see header), one solution per line.
+inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>& all) {
+  std::string out = "{\"solutions\": [";
+  bool first = true, complete = true;
+  std::size_t undecided = 0;
+  for (const auto& rs : all) {
+    complete = complete && rs.result.certified;
+    undecided += rs.result.undecided;
+    for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
+      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k]);
+      first = false;
+    }
+  }
+  out += std::string(first ? "" : "\n") + "], \"complete\": " + (complete ? "true" : "false") +
+         ", \"undecided_boxes\": " + std::to_string(undecided) + "}\n";
+  return out;
+}
+
+}  // namespace sphtroch
