@@ -21,7 +21,7 @@ const double kPi = Constants<double>::pi();
 #ifdef SPHTROCH_SANITIZED_BUILD
 constexpr int kRandomProblems = 8;  // each solve is ~5x slower under the sanitizers
 #else
-constexpr int kRandomProblems = 64;  // scripts/precision_points_sweep.cpp runs 1,000 and reports the time
+constexpr int kRandomProblems = 64;  // bench/precision_points_sweep.cpp runs 1,000 and reports the time
 #endif
 /// A work bound that keeps the test short: a problem that needs more is returned uncertified,
 /// and must say so (certified == false, undecided > 0); a certified one must hold the hidden train.

@@ -170,3 +170,11 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     3pi/4 between two samples. Returns {"n": "p/q" (the simplest fraction that fits, |p|, q <=
     1000), "a2", "a3", "phase" (radians), "residual" (max |P(t_i) - P_i|), "rms", "noise"}.
     Raises InvalidInput naming "t", "points" or "samples"."""
+
+
+def synth_points(points: npt.ArrayLike, *, n: Union[str, int, float, Tuple[int, int]]) -> Dict[str, Any]:
+    """Every gear train of ratio n whose tracer passes through the three points (a (3, 3) array of
+    unit vectors; fixed frame, sun axis Z), as `sphtroch synth points --json`: {"solutions": [{"n",
+    "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual", "counts":
+    {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], "complete" (the list is
+    certified to hold every train), "undecided_boxes"}. Raises InvalidInput naming "points" or "n"."""

@@ -8,7 +8,7 @@
 // How: the extremes of sin over [lo, hi] are at the ends or at pi/2 + k pi inside. The ends are
 // evaluated by the C library and widened outward by kTrigUlps ulps: this rests on the library's
 // error bound (glibc documents at most 1 ulp for sin/cos of a double on x86-64; MPFR at 200
-// bits confirms it in test_interval_trig.cpp). Whether an interior extreme lies inside is decided
+// bits confirms it in test_precision_points.cpp). Whether an interior extreme lies inside is decided
 // with a margin (1e-9 of a period) in the safe direction: a doubtful extreme is counted, which
 // only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once

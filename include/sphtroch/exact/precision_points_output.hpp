@@ -15,7 +15,7 @@
 #error "sphtroch/exact/precision_points_output.hpp needs CGAL: link the CMake target sphtroch::exact"
 #endif
 
-#include "sphtroch/classify.hpp"
+#include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/exact/precision_points.hpp"
 
