@@ -6,17 +6,20 @@
 //
 // Contract: for every real x in X, sin(x) lies in interval_sin(X) (the same for cos).
 // How: the extremes of sin over [lo, hi] are at the ends or at pi/2 + k pi inside. The ends are
-// evaluated by the C library and widened outward by kTrigUlps ulps: this rests on the library's
-// error bound (glibc documents at most 1 ulp for sin/cos of a double on x86-64; MPFR at 200
-// bits confirms it in test_precision_points.cpp). Whether an interior extreme lies inside is decided
-// with a margin (1e-9 of a period) in the safe direction: a doubtful extreme is counted, which
-// only widens the result. Intervals of 2 pi or more give [-1, 1].
+// evaluated by the C library in round-to-nearest and widened outward by at least kTrigUlps ulps:
+// this rests on the library's error bound (glibc documents at most 1 ulp for sin/cos of a double
+// on x86-64; MPFR at 200 bits confirms it in test_precision_points.cpp). Whether an interior
+// extreme lies inside is decided with a margin (1e-9 of a quarter turn) in the safe direction: a
+// doubtful extreme is counted, which only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once
 
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cmath>
+#include <utility>
 
 namespace sphtroch {
 
@@ -25,60 +28,77 @@ namespace sphtroch {
 using Interval = CGAL::Interval_nt<false>;
 using RoundingGuard = CGAL::Protect_FPU_rounding<true>;
 
-/// Outward widening of a library sin/cos value, in ulps (the library's bound is 1).
+/// Outward widening of a library sin/cos value, at least this many ulps (the library's bound is 1).
 constexpr int kTrigUlps = 2;
 
 namespace interval_trig_detail {
 
-inline double widen_down(double x) {
-  for (int i = 0; i < kTrigUlps; ++i) x = std::nextafter(x, -2.0);
-  return std::max(x, -1.0);
-}
+/// x lowered / raised by at least kTrigUlps ulps: |x| 2^-50 is 4 to 8 ulps, and the absolute term
+/// covers subnormals; computed in round-to-nearest (half an ulp lost), clamped to [-1, 1].
+inline double widen_down(double x) { return std::max(x - (std::fabs(x) * 0x1p-50 + 1e-300), -1.0); }
+inline double widen_up(double x) { return std::min(x + (std::fabs(x) * 0x1p-50 + 1e-300), 1.0); }
 
-inline double widen_up(double x) {
-  for (int i = 0; i < kTrigUlps; ++i) x = std::nextafter(x, 2.0);
-  return std::min(x, 1.0);
-}
-
-/// Whether [lo, hi] may contain a point offset + 2 pi k (k integer); true when in doubt.
-inline bool may_contain(double lo, double hi, double offset) {
-  constexpr double kTwoPi = 6.283185307179586;
+/// Whether [lo, hi] may contain a point offset + k pi / 2 with k = 4 j + shift, in quarter turns
+/// from `base` (t = (x - base) / (pi / 2)); true when in doubt (a margin of 1e-9 quarter turn).
+inline bool may_contain_quarter(double t_lo, double t_hi, int shift) {
   constexpr double kMargin = 1e-9;
-  const double a = (lo - offset) / kTwoPi - kMargin;
-  const double b = (hi - offset) / kTwoPi + kMargin;
+  const double a = (t_lo - shift) / 4 - kMargin, b = (t_hi - shift) / 4 + kMargin;
   return std::floor(b) >= std::ceil(a);
 }
 
 }  // namespace interval_trig_detail
 
-/// Contains sin(x) for every x in `x` (see the header for the guarantee).
-inline Interval interval_sin(const Interval& x) {
+/// Encloses sin and cos over `x`: {sin, cos}. REQUIRES the rounding mode to nearest (the
+/// library's bound holds in that mode); interval_sincos and interval_sincos_all set it.
+inline std::pair<Interval, Interval> interval_sincos_in_nearest_mode(const Interval& x) {
   namespace d = interval_trig_detail;
-  constexpr double kHalfPi = 1.5707963267948966;
   const double lo = x.inf(), hi = x.sup();
-  if (!(hi - lo < 6.283)) return Interval(-1.0, 1.0);  // also NaN ends
-  const RoundingGuard nearest(CGAL_FE_TONEAREST);       // the library's bound holds in this mode
-  const double s_lo = std::sin(lo), s_hi = std::sin(hi);
-  const double top = d::may_contain(lo, hi, kHalfPi) ? 1.0 : d::widen_up(std::max(s_lo, s_hi));
-  const double bottom = d::may_contain(lo, hi, -kHalfPi) ? -1.0 : d::widen_down(std::min(s_lo, s_hi));
-  return Interval(bottom, top);
+  if (!(hi - lo < 6.283)) return {Interval(-1.0, 1.0), Interval(-1.0, 1.0)};  // also NaN ends
+  if (lo == hi) {  // a point: no extreme inside
+    const double s = std::sin(lo), c = std::cos(lo);
+    return {Interval(d::widen_down(s), d::widen_up(s)), Interval(d::widen_down(c), d::widen_up(c))};
+  }
+  const double s_lo = std::sin(lo), s_hi = std::sin(hi), c_lo = std::cos(lo), c_hi = std::cos(hi);
+  constexpr double kQuarter = 1.5707963267948966;
+  const double t_lo = lo / kQuarter, t_hi = hi / kQuarter;  // quarter turns; errors ~1e-14 << margin
+  // Extremes inside: sin = 1 at quarter 1, -1 at quarter 3; cos = 1 at quarter 0, -1 at quarter 2 (mod 4).
+  const Interval sine(d::may_contain_quarter(t_lo, t_hi, 3) ? -1.0 : d::widen_down(std::min(s_lo, s_hi)),
+                      d::may_contain_quarter(t_lo, t_hi, 1) ? 1.0 : d::widen_up(std::max(s_lo, s_hi)));
+  const Interval cosine(d::may_contain_quarter(t_lo, t_hi, 2) ? -1.0 : d::widen_down(std::min(c_lo, c_hi)),
+                        d::may_contain_quarter(t_lo, t_hi, 0) ? 1.0 : d::widen_up(std::max(c_lo, c_hi)));
+  return {sine, cosine};
 }
 
-/// Contains cos(x) for every x in `x`.
-inline Interval interval_cos(const Interval& x) {
-  namespace d = interval_trig_detail;
-  constexpr double kPi = 3.141592653589793;
-  const double lo = x.inf(), hi = x.sup();
-  if (!(hi - lo < 6.283)) return Interval(-1.0, 1.0);
+/// Encloses sin and cos over `x` (see the header for the guarantee): {sin, cos}.
+inline std::pair<Interval, Interval> interval_sincos(const Interval& x) {
   const RoundingGuard nearest(CGAL_FE_TONEAREST);
-  const double c_lo = std::cos(lo), c_hi = std::cos(hi);
-  const double top = d::may_contain(lo, hi, 0.0) ? 1.0 : d::widen_up(std::max(c_lo, c_hi));
-  const double bottom = d::may_contain(lo, hi, kPi) ? -1.0 : d::widen_down(std::min(c_lo, c_hi));
-  return Interval(bottom, top);
+  return interval_sincos_in_nearest_mode(x);
 }
+
+/// interval_sincos of each, with one change of rounding mode for all (the mode switches cost
+/// more than the sines).
+template <std::size_t N>
+std::array<std::pair<Interval, Interval>, N> interval_sincos_all(const std::array<Interval, N>& x) {
+  const RoundingGuard nearest(CGAL_FE_TONEAREST);
+  std::array<std::pair<Interval, Interval>, N> out;
+  for (std::size_t k = 0; k < N; ++k) out[k] = interval_sincos_in_nearest_mode(x[k]);
+  return out;
+}
+
+/// Contains sin(x) for every x in `x`.
+inline Interval interval_sin(const Interval& x) { return interval_sincos(x).first; }
+/// Contains cos(x) for every x in `x`.
+inline Interval interval_cos(const Interval& x) { return interval_sincos(x).second; }
 
 /// The same names for doubles, so that one template evaluates a function in either type.
 inline double interval_sin(double x) { return std::sin(x); }
 inline double interval_cos(double x) { return std::cos(x); }
+inline std::pair<double, double> interval_sincos(double x) { return {std::sin(x), std::cos(x)}; }
+template <std::size_t N>
+std::array<std::pair<double, double>, N> interval_sincos_all(const std::array<double, N>& x) {
+  std::array<std::pair<double, double>, N> out;
+  for (std::size_t k = 0; k < N; ++k) out[k] = {std::sin(x[k]), std::cos(x[k])};
+  return out;
+}
 
 }  // namespace sphtroch

@@ -100,9 +100,13 @@ struct CarrierView {
   T d_a2[3];     // (0, q_z, -q_y)
 };
 
+/// {sin, cos} of one angle (interval_trig.hpp).
 template <typename T>
-CarrierView<T> carrier_view(const T& ca, const T& sa, const T& theta, const Vector3d& p) {
-  const T c = interval_cos(theta), s = interval_sin(theta);
+using SinCos = std::pair<T, T>;
+
+template <typename T>
+CarrierView<T> carrier_view(const T& ca, const T& sa, const SinCos<T>& theta, const Vector3d& p) {
+  const T &s = theta.first, &c = theta.second;
   const T r1 = c * p.x() + s * p.y();
   const T r2 = c * p.y() - s * p.x();
   CarrierView<T> v{{r1, ca * r2 + sa * p.z(), ca * p.z() - sa * r2},
@@ -121,12 +125,12 @@ struct PointEquations {
   T df[3], dg[3];
 };
 
+/// theta_i = theta_1 + Delta and n Delta enter through their sines and cosines.
 template <typename T>
-PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>& q1, const T& theta1,
-                                  const T& delta, const T& n, const Vector3d& p, bool jacobian) {
-  const CarrierView<T> qi = carrier_view(ca, sa, T(theta1 + delta), p);
-  const T nd = n * delta;
-  const T c = interval_cos(nd), s = interval_sin(nd);
+PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>& q1, const SinCos<T>& theta_i,
+                                  const SinCos<T>& n_delta, const T& n, const Vector3d& p, bool jacobian) {
+  const CarrierView<T> qi = carrier_view(ca, sa, theta_i, p);
+  const T &s = n_delta.first, &c = n_delta.second;
   const T wx = c * q1.q[0] - s * q1.q[1], wy = s * q1.q[0] + c * q1.q[1];
   PointEquations<T> e;
   e.f = qi.q[2] - q1.q[2];
@@ -157,20 +161,37 @@ struct Problem {
 inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
 
 /// Whether point i (1 or 2) may satisfy its equations on (a2, theta_1) x delta.
-inline bool point_may_hold(const Problem& pr, const Interval& ca, const Interval& sa,
+inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
+
+inline bool point_may_hold(const Problem& pr, const Interval& a2, const Interval& ca, const Interval& sa,
                            const CarrierView<Interval>& q1, const Interval& theta1, const Interval& delta, int i) {
-  const auto e = point_equations(ca, sa, q1, theta1, delta, pr.n_interval, pr.p[i], false);
-  return may_vanish(e.f) && may_vanish(e.g) && e.dot.sup() > 0.0;
+  const Interval c[3] = {centre_of(a2), centre_of(theta1), centre_of(delta)};
+  const auto trig = interval_sincos_all<6>({theta1 + delta, pr.n_interval * delta, c[0], c[1] + c[2],
+                                            pr.n_interval * c[2], c[1]});
+  const auto e = point_equations(ca, sa, q1, trig[0], trig[1], pr.n_interval, pr.p[i], true);
+  if (!(may_vanish(e.f) && may_vanish(e.g) && e.dot.sup() > 0.0)) return false;
+  // Mean-value form F(X) in F(c) + J(X) (X - c): much tighter than the plain one on small boxes.
+  const Interval &cs = trig[2].first, &cc = trig[2].second;
+  const auto q1c = carrier_view(cc, cs, trig[5], pr.p[0]);
+  const auto ec = point_equations(cc, cs, q1c, trig[3], trig[4], pr.n_interval, pr.p[i], false);
+  const Interval dx[3] = {a2 - c[0], theta1 - c[1], delta - c[2]};
+  Interval f = ec.f, g = ec.g;
+  for (int k = 0; k < 3; ++k) {
+    f += e.df[k] * dx[k];
+    g += e.dg[k] * dx[k];
+  }
+  return may_vanish(f) && may_vanish(g);
 }
 
 /// F(x) and J(x) in type T (double at the centre, Interval over a box).
 template <typename T>
 void equations(const Problem& pr, const std::array<T, 4>& x, const T& n, std::array<T, 4>& f,
                std::array<std::array<T, 4>, 4>& jac, bool jacobian) {
-  const T ca = interval_cos(x[0]), sa = interval_sin(x[0]);
-  const CarrierView<T> q1 = carrier_view(ca, sa, x[1], pr.p[0]);
+  const auto trig = interval_sincos_all(std::array<T, 6>{x[0], x[1], T(x[1] + x[2]), T(n * x[2]), T(x[1] + x[3]), T(n * x[3])});
+  const T &sa = trig[0].first, &ca = trig[0].second;
+  const CarrierView<T> q1 = carrier_view(ca, sa, trig[1], pr.p[0]);
   for (int i = 0; i < 2; ++i) {
-    const auto e = point_equations(ca, sa, q1, x[1], x[2 + i], n, pr.p[1 + i], jacobian);
+    const auto e = point_equations(ca, sa, q1, trig[2 + 2 * i], trig[3 + 2 * i], n, pr.p[1 + i], jacobian);
     f[2 * i] = e.f;
     f[2 * i + 1] = e.g;
     if (!jacobian) continue;
@@ -347,12 +368,13 @@ class PointsSolver {
 
   void step(Node node, std::vector<Node>& stack) {
     ++result_.boxes;
-    const Interval ca = interval_cos(node.a2), sa = interval_sin(node.a2);
-    const CarrierView<Interval> q1 = carrier_view(ca, sa, node.theta1, pr_.p[0]);
+    const auto trig = interval_sincos_all<2>({node.a2, node.theta1});
+    const Interval &sa = trig[0].first, &ca = trig[0].second;
+    const CarrierView<Interval> q1 = carrier_view(ca, sa, trig[1], pr_.p[0]);
     for (int i = 0; i < 2; ++i) {
       auto& list = node.delta[i];
       list.erase(std::remove_if(list.begin(), list.end(), [&](const Interval& d) {
-                   return !point_may_hold(pr_, ca, sa, q1, node.theta1, d, i + 1);
+                   return !point_may_hold(pr_, node.a2, ca, sa, q1, node.theta1, d, i + 1);
                  }), list.end());
       if (list.empty()) return;
     }
@@ -411,9 +433,10 @@ class PointsSolver {
   }
 
   bool excluded(const Box& x) const {
-    const Interval ca = interval_cos(x[0]), sa = interval_sin(x[0]);
-    const CarrierView<Interval> q1 = carrier_view(ca, sa, x[1], pr_.p[0]);
-    return !point_may_hold(pr_, ca, sa, q1, x[1], x[2], 1) || !point_may_hold(pr_, ca, sa, q1, x[1], x[3], 2);
+    const auto trig = interval_sincos_all<2>({x[0], x[1]});
+    const Interval &sa = trig[0].first, &ca = trig[0].second;
+    const CarrierView<Interval> q1 = carrier_view(ca, sa, trig[1], pr_.p[0]);
+    return !point_may_hold(pr_, x[0], ca, sa, q1, x[1], x[2], 1) || !point_may_hold(pr_, x[0], ca, sa, q1, x[1], x[3], 2);
   }
 
   /// Krawczyk with bisection on one box of all four unknowns. A root found by Newton is
@@ -519,9 +542,11 @@ class PointsSolver {
   void add_solution(const std::array<double, 4>& y) {
     const double two_pi = 2 * Constants<double>::pi();
     const std::int64_t q = pr_.ratio.q();
-    const CarrierView<double> q1 = carrier_view(std::cos(y[0]), std::sin(y[0]), y[1], pr_.p[0]);
+    const double ca = std::cos(y[0]), sa = std::sin(y[0]);
+    const CarrierView<double> q1 = carrier_view(ca, sa, interval_sincos(y[1]), pr_.p[0]);
     for (int i = 0; i < 2; ++i) {
-      const auto e = point_equations(std::cos(y[0]), std::sin(y[0]), q1, y[1], y[2 + i], pr_.n_value, pr_.p[1 + i], false);
+      const auto e = point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(pr_.n_value * y[2 + i]),
+                                     pr_.n_value, pr_.p[1 + i], false);
       if (!(e.dot > 0.0)) return;
     }
     const double a3 = std::acos(std::clamp(q1.q[2], -1.0, 1.0));
