@@ -7,9 +7,13 @@
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/mpreal_support.hpp"
 #include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 using namespace sphtroch;
@@ -20,7 +24,9 @@ const double kPi = Constants<double>::pi();
 
 #ifdef SPHTROCH_SANITIZED_BUILD
 constexpr int kRandomProblems = 8;  // each solve is ~5x slower under the sanitizers
+constexpr int kReferenceStride = 10, kMultistartProblems = 2;
 #else
+constexpr int kReferenceStride = 1, kMultistartProblems = 6;
 constexpr int kRandomProblems = 64;  // bench/precision_points_sweep.cpp runs 1,000 and reports the time
 #endif
 /// A work bound that keeps the test short: a problem that needs more is returned uncertified,
@@ -145,7 +151,7 @@ std::optional<GearTrain> independent_solve(const PointsProblem& pr, const Ratio&
 TEST_CASE("precision_points: no train found by an independent multistart solver is missing", "[exact][synthesis]") {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int k = 0; k < 6; ++k) {
+  for (int k = 0; k < kMultistartProblems; ++k) {
     const PointsProblem pr = random_points_problem(rng);
     const Ratio n = pr.hidden.ratio();
     const PrecisionPoints r = precision_points(pr.points, n, {kTestBoxes});
@@ -181,4 +187,41 @@ TEST_CASE("precision_points: bad points are refused naming the points", "[exact]
     }
   }
   CHECK(precision_points(good, Ratio(1, 2)).certified);
+}
+
+TEST_CASE("precision_points: the reference problems' trains (data/reference/precision_points.csv)", "[exact][synthesis]") {
+  // Trains and points made by scripts/make_precision_points_reference.py (NumPy, Eq. 4): random,
+  // a point at a z-extreme, two points 0.02 rad of carrier angle apart.
+  std::ifstream in(std::string(SPHTROCH_REFERENCE_DIR) + "/precision_points.csv");
+  REQUIRE(in);
+  std::string line;
+  int problems = 0, found = 0, certified = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("id,", 0) == 0) continue;
+    std::vector<std::string> f;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) f.push_back(cell);
+    REQUIRE(f.size() == 18);
+    if (std::stoi(f[0]) % kReferenceStride != 0) {  // under the sanitizers: every tenth problem
+      ++problems;
+      continue;
+    }
+    const Ratio n = parse_ratio(f[2], "n");
+    const PointsProblem pr{GearTrain(std::stod(f[3]), std::stod(f[4]), n, std::stod(f[5])),
+                           {Vector3d(std::stod(f[9]), std::stod(f[10]), std::stod(f[11])),
+                            Vector3d(std::stod(f[12]), std::stod(f[13]), std::stod(f[14])),
+                            Vector3d(std::stod(f[15]), std::stod(f[16]), std::stod(f[17]))}};
+    INFO("reference problem " << f[0] << " (" << f[1] << "), n = " << f[2]);
+    const PrecisionPoints r = precision_points(pr.points, n, {kTestBoxes});
+    const bool hit = std::any_of(r.solutions.begin(), r.solutions.end(),
+                                 [&](const PrecisionSolution& s) { return same_train(s.train, pr.hidden, 1e-9); });
+    CHECK((hit || !r.certified));
+    check_solutions(pr, r);
+    ++problems;
+    found += hit;
+    certified += r.certified;
+  }
+  CHECK(problems == 60);
+  WARN("reference problems: " << certified << " of " << problems << " certified complete within " << kTestBoxes
+                              << " boxes, the known train found in " << found);
 }
