@@ -64,7 +64,8 @@ void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all
           << ", phase = " << number_text(s.train.phase_given()) << "; theta2 at the points:";
       for (const double t : s.params) out << " " << number_text(t);
       out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
-          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)") << "\n"
+          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)")
+          << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
           << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg\n";
     }
   }

@@ -64,6 +64,8 @@ constexpr double kDistinctPoints = 1e-9;
 /// A box narrower than this (radians, Delta scaled by 1 + |n|) that is still undecided is
 /// reported as such: the result is then not certified.
 constexpr double kMinBoxWidth = 1e-11;
+/// A train from an undecided box is listed (isolated = false) only if it passes the points to this.
+constexpr double kUnisolatedResidual = 1e-12;
 
 struct PrecisionPointsOptions {
   std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
@@ -73,6 +75,10 @@ struct PrecisionSolution {
   GearTrain train;               // phase reduced to [0, 2 pi / q)
   std::vector<double> params;    // theta2 at each point (input order), in [0, 2 pi q)
   double residual = 0.0;         // max |P(params[i]) - points[i]| (chord), measured in double
+  /// false: Newton's limit in a box the certificate could not decide (a near-singular root, e.g.
+  /// two roots closer than the arithmetic resolves); it passes the points (residual <= 1e-12)
+  /// but is not proven to be a single root, and the list is then not certified.
+  bool isolated = true;
 };
 
 struct PrecisionPoints {
@@ -471,6 +477,7 @@ class PointsSolver {
       if (scaled_width(pr_, x, k) > scaled_width(pr_, x, widest)) widest = k;
     if (scaled_width(pr_, x, widest) < kMinBoxWidth) {
       ++result_.undecided;
+      undecided_.push_back(x);
       return;
     }
     Box other = x;
@@ -516,11 +523,11 @@ class PointsSolver {
     return true;
   }
 
-  /// The largest box y +- r (r = 2^-j, scaled) with ||I - Y J(U)||_inf < 1, Y = J(y)^-1: by the
+  /// The largest box y +- r (r = 1e-9 2^j <= 0.25, scaled) with ||I - Y J(U)||_inf < 1, Y = J(y)^-1: by the
   /// mean value theorem two roots in U would be equal. At least `tiny`.
   Box uniqueness_region(const std::array<double, 4>& y, const Box& tiny) const {
     Box best = tiny;
-    for (double r = 1.0 / 1024; r <= 0.25; r *= 2) {
+    for (double r = 1e-9; r <= 0.25; r *= 2) {
       Box u;
       for (int k = 0; k < 4; ++k) u[k] = around(y, k, r);
       if (!contraction_holds(pr_, y, u)) break;
@@ -530,7 +537,8 @@ class PointsSolver {
   }
 
   void finish() {
-    for (const Box& x : roots_) add_solution(polish(pr_, x));
+    for (const Box& x : roots_) add_solution(polish(pr_, x), true);
+    for (const Box& x : undecided_) add_solution(polish(pr_, x), false);
     std::sort(result_.solutions.begin(), result_.solutions.end(), [](const auto& a, const auto& b) {
       return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
     });
@@ -539,7 +547,7 @@ class PointsSolver {
 
   /// The train of a root (a3, phase reduced to [0, 2 pi / q), params in [0, 2 pi q)), unless it is
   /// a root of the sign-reversed system, lies outside the a3 range, or repeats a solution.
-  void add_solution(const std::array<double, 4>& y) {
+  void add_solution(const std::array<double, 4>& y, bool isolated) {
     const double two_pi = 2 * Constants<double>::pi();
     const std::int64_t q = pr_.ratio.q();
     const double ca = std::cos(y[0]), sa = std::sin(y[0]);
@@ -556,7 +564,7 @@ class PointsSolver {
     const double m = std::floor(phase / sector);
     const std::int64_t m_mod = static_cast<std::int64_t>(std::fmod(std::fmod(m, double(q)) + double(q), double(q)));
     const std::int64_t k = (m_mod * inverse_mod(pr_.ratio.p(), q)) % q;
-    PrecisionSolution s{GearTrain(y[0], a3, pr_.ratio, phase - m * sector), {}, 0.0};
+    PrecisionSolution s{GearTrain(y[0], a3, pr_.ratio, phase - m * sector), {}, 0.0, isolated};
     const double shift = two_pi * static_cast<double>(k);
     for (const double t : {y[1], y[1] + y[2], y[1] + y[3]}) {
       const double period = two_pi * static_cast<double>(q);
@@ -564,7 +572,7 @@ class PointsSolver {
     }
     const TracerCurve<double> curve(s.train);
     for (int i = 0; i < 3; ++i) s.residual = std::max(s.residual, (curve.point(s.params[i]) - pr_.p[i]).norm());
-    if (!is_new(s)) return;
+    if (!is_new(s) || (!isolated && !(s.residual <= kUnisolatedResidual))) return;
     result_.solutions.push_back(std::move(s));
   }
 
@@ -585,6 +593,7 @@ class PointsSolver {
   PrecisionPoints result_;
   std::vector<Box> roots_;    // each holds exactly one root
   std::vector<Box> regions_;  // each holds at most one root, one of roots_
+  std::vector<Box> undecided_;  // narrower than kMinBoxWidth, still undecided
 };
 
 inline Problem make_problem(const std::vector<Vector3d>& points, const Ratio& n) {

@@ -7,7 +7,8 @@
 //   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
 //
 // JSON: {"solutions": [{"n": "p/q", "a2", "a3", "phase", "params": [theta2 per point, input order],
-// "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}],
+// "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified", "isolated"
+// (false: a near-singular root the certificate could not isolate, see PrecisionSolution)}],
 // "complete": every ratio's list certified complete, "undecided_boxes": their sum}. Radians.
 #pragma once
 
@@ -54,7 +55,8 @@ inline std::string precision_solution_json(const PrecisionSolution& s, const Cla
   for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
   out << "], \"residual\": " << number_text(s.residual) << ", \"counts\": {\"nodes\": " << c.nodes.size()
       << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
-      << "}, \"census_certified\": " << (c.certified() ? "true" : "false") << "}";
+      << "}, \"census_certified\": " << (c.certified() ? "true" : "false")
+      << ", \"isolated\": " << (s.isolated ? "true" : "false") << "}";
   return out.str();
 }
 
