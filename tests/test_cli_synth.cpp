@@ -107,3 +107,30 @@ TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "
     CHECK(count_lines(r.err) == 1);
   }
 }
+
+TEST_CASE("cli synth points --shard and synth merge: the shards joined equal the unsharded run", "[cli][synth]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
+  REQUIRE(run("synth points --input pts.csv --ratios 3,2 --json -o all.json", dir, true).status == 0);
+  for (int i = 1; i <= 3; ++i)
+    REQUIRE(run("synth points --input pts.csv --ratios 3,2 --json --shard " + std::to_string(i) + "/3 -o part" +
+                    std::to_string(i) + ".json", dir, true).status == 0);
+  REQUIRE(run("synth merge part3.json part1.json part2.json -o merged.json", dir, true).status == 0);
+  CHECK(shell("cmp all.json merged.json", dir).status == 0);
+  const nlohmann::json j = nlohmann::json::parse(shell("cat all.json", dir).out);
+  CHECK(j["ratios"] == "3,2");
+  CHECK(j["solutions"].size() > 0);
+  // Refusals: a shard missing, given twice, of another run, not a shard; --shard without --ratios.
+  REQUIRE(run("synth points --input pts.csv --ratios 2,2 --json --shard 1/3 -o other.json", dir, true).status == 0);
+  for (const std::string& args : {std::string("synth merge part1.json part2.json"), std::string("synth merge part1.json part1.json part2.json"),
+                                  std::string("synth merge other.json part2.json part3.json"), std::string("synth merge pts.csv"),
+                                  std::string("synth points --input pts.csv --n 1 --shard 1/2"),
+                                  std::string("synth points --input pts.csv --ratios 3,2 --shard 4/3")}) {
+    INFO(args);
+    const Result r = run(args, dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+  }
+}

@@ -4,11 +4,17 @@
 
 #include "sphtroch/classify.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <ostream>
+#include <utility>
 
 namespace sphtroch::cli {
 
@@ -19,32 +25,57 @@ namespace {
 constexpr double kMaxPointsWork = 20000;
 
 struct PointsOptions {
-  std::string input, output, n, ratios;
+  std::string input, output, n, ratios, shard;
   bool json = false;
 };
 
 using RatioSolutions = RatioPrecisionPoints;
 
-std::vector<Ratio> requested_ratios(const PointsOptions& o) {
+/// The ratios to solve and the JSON members that name them ("ratios", "shard").
+struct RatioRequest {
+  std::vector<Ratio> ratios;
+  std::string json_fields;
+};
+
+/// --shard I/K of a ratio set of `size`: indices floor((I-1) size / K) .. floor(I size / K) - 1.
+std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::size_t size) {
+  const std::string valid = "I/K with 1 <= I <= K <= 1000000";
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
+  const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
+  const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
+  return {(i - 1) * size / k, i * size / k};
+}
+
+RatioRequest requested_ratios(const PointsOptions& o) {
   if (o.n.empty() == o.ratios.empty())
     throw UsageError{"synth points: give exactly one of --n R and --ratios P,Q (see docs/cli.md: synth points)"};
-  std::vector<Ratio> set;
+  if (!o.shard.empty() && o.ratios.empty())
+    throw UsageError{"--shard = " + o.shard + ": shards a ratio set; valid: with --ratios P,Q"};
+  RatioRequest r;
   if (!o.n.empty()) {
-    set.push_back(parse_ratio(o.n, "n"));
+    r.ratios.push_back(parse_ratio(o.n, "n"));
   } else {
     const auto comma = o.ratios.find(',');
     if (comma == std::string::npos)
       throw InvalidInput("ratios", o.ratios, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
-    set = ratio_set(static_cast<std::int64_t>(parse_count(o.ratios.substr(0, comma), "ratios", 1, 1000)),
-                    static_cast<std::int64_t>(parse_count(o.ratios.substr(comma + 1), "ratios", 1, 1000)));
+    const std::size_t p = parse_count(o.ratios.substr(0, comma), "ratios", 1, 1000);
+    const std::size_t q = parse_count(o.ratios.substr(comma + 1), "ratios", 1, 1000);
+    r.ratios = ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q));
+    r.json_fields = "\"ratios\": \"" + std::to_string(p) + "," + std::to_string(q) + "\", ";
+    if (!o.shard.empty()) {
+      const auto [begin, end] = shard_range(o.shard, r.ratios.size());
+      r.ratios = std::vector<Ratio>(r.ratios.begin() + begin, r.ratios.begin() + end);
+      r.json_fields += "\"shard\": \"" + o.shard + "\", ";
+    }
   }
   double work = 0;
-  for (const Ratio& r : set) work += std::pow(double(r.abs_p() + r.q()), 2);
+  for (const Ratio& n : r.ratios) work += std::pow(double(n.abs_p() + n.q()), 2);
   if (work > kMaxPointsWork)
     throw InvalidInput(o.n.empty() ? "ratios" : "n", o.n.empty() ? o.ratios : o.n,
-                       "estimated work " + number_text(work) + " over the bound",
-                       "sum over the ratios of (|p| + q)^2 <= 20000 (--ratios 7,7 is 4832)");
-  return set;
+                       "estimated work " + number_text(work) + " over the bound" + (o.shard.empty() ? "" : " for this shard"),
+                       "sum over the ratios of (|p| + q)^2 <= 20000 (--ratios 7,7 is 4832; --shard I/K splits a set)");
+  return r;
 }
 
 std::string train_arguments(const GearTrain& g) {
@@ -85,21 +116,113 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 }
 
 void run_points(const PointsOptions& o) {
-  const std::vector<Ratio> ratios = requested_ratios(o);
+  const RatioRequest request = requested_ratios(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
   const std::vector<RatioSolutions> all = [&] {
     try {
-      return precision_points_with_census(in.vertices, ratios);
+      return precision_points_with_census(in.vertices, request.ratios);
     } catch (const InvalidInput& e) {  // the library names its argument (points): here the file
       throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
     }
   }();
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << precision_points_json(all);
+    if (o.json) out << precision_points_json(all, request.json_fields);
     else write_points_text(out, all);
   });
   check_points_certified(all);
+}
+
+/// Bytes a shard file may hold (a shard of --ratios 7,7 with every census is ~100 KB).
+constexpr std::size_t kMaxShardBytes = std::size_t(1) << 30;
+
+/// One shard of `synth points --ratios P,Q --shard I/K --json`: its set, index and count, and its
+/// solution lines as printed (kept verbatim so that the merge equals the unsharded output).
+struct PointsShard {
+  std::string ratios;
+  std::size_t index = 0, count = 0;
+  bool complete = true;
+  std::size_t undecided = 0;
+  std::vector<std::string> solution_lines;
+};
+
+PointsShard read_points_shard(const std::string& path) {
+  const std::string text = read_whole_input(path, "shard", kMaxShardBytes);
+  const std::string valid = "the JSON of sphtroch synth points --ratios P,Q --shard I/K --json";
+  PointsShard s;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    s.ratios = j.at("ratios").get<std::string>();
+    const std::string shard = j.at("shard").get<std::string>();
+    const auto slash = shard.find('/');
+    s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
+    s.count = parse_count(slash == std::string::npos ? "" : shard.substr(slash + 1), "shard", 1, 1000000);
+    s.complete = j.at("complete").get<bool>();
+    s.undecided = j.at("undecided_boxes").get<std::size_t>();
+    const std::size_t solutions = j.at("solutions").size();
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("  {", 0) == 0) s.solution_lines.push_back(line.back() == ',' ? line.substr(0, line.size() - 1) : line);
+    if (s.solution_lines.size() != solutions) throw InvalidInput("shard", path, "not laid out as synth points prints it", valid);
+  } catch (const nlohmann::json::exception&) {
+    throw InvalidInput("shard", path, "not a synth points shard", valid);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("shard", path, e.problem(), valid);
+  }
+  return s;
+}
+
+/// The shards, in any order, joined into what the unsharded run prints.
+void run_merge(const std::vector<std::string>& paths, const std::string& output) {
+  std::vector<PointsShard> shards;
+  for (const std::string& p : paths) shards.push_back(read_points_shard(p));
+  std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  const std::string valid = "every shard I/K of one run, I = 1..K, each once";
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const PointsShard& s = shards[k];
+    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
+    if (s.ratios != shards[0].ratios || s.count != shards[0].count)
+      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
+    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
+    if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
+  }
+  if (shards.back().index != shards.back().count)
+    throw InvalidInput("shard", std::to_string(shards.size() + 1) + "/" + std::to_string(shards[0].count), "missing", valid);
+  bool complete = true;
+  std::size_t undecided = 0;
+  std::string out = "{\"ratios\": \"" + shards[0].ratios + "\", \"solutions\": [";
+  bool first = true;
+  for (const PointsShard& s : shards) {
+    complete = complete && s.complete;
+    undecided += s.undecided;
+    for (const std::string& line : s.solution_lines) {
+      out += (first ? "\n" : ",\n") + line;
+      first = false;
+    }
+  }
+  out += std::string(first ? "" : "\n") + "], \"complete\": " + (complete ? "true" : "false") +
+         ", \"undecided_boxes\": " + std::to_string(undecided) + "}\n";
+  write_output(output, [&](std::ostream& o) { o << out; });
+  if (!complete)
+    throw UncertifiedResult{"synth merge: a shard's list is not certified complete (exit status 3; see docs/cli.md: synth points)"};
+}
+
+void register_synth_merge(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto paths = std::make_shared<std::vector<std::string>>();
+  auto output = std::make_shared<std::string>();
+  CLI::App* cmd = synth.add_subcommand("merge", "join the JSON shards of synth points --ratios P,Q --shard I/K");
+  cmd->footer("Shards in any order; the result is byte for byte what the unsharded run prints.\n"
+              "Example: sphtroch synth merge -o all.json part-*.json");
+  cmd->add_option("shards", *paths, "the shard files (JSON)")->required();
+  add_output_option(*cmd, *output, "the joined JSON");
+  actions.emplace_back(cmd, [paths, output] {
+    check_distinct_files({{*output, "--output"}}, [&] {
+      std::vector<NamedFile> in;
+      for (const auto& p : *paths) in.push_back({p, "shard"});
+      return in;
+    }());
+    run_merge(*paths, *output);
+  });
 }
 
 }  // namespace
@@ -116,9 +239,11 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
   cmd->add_option("--input", o->input, "the three points (CSV x,y,z or .npy; - for standard input)")->required();
   cmd->add_option("--n", o->n, "the gear ratio p/q");
   cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
+  cmd->add_option("--shard", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\"}]}");
   add_output_option(*cmd, o->output, "the trains");
   actions.emplace_back(cmd, [o] { run_points(*o); });
+  register_synth_merge(synth, actions);
 }
 
 }  // namespace sphtroch::cli

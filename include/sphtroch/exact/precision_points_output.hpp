@@ -60,9 +60,10 @@ inline std::string precision_solution_json(const PrecisionSolution& s, const Cla
   return out.str();
 }
 
-/// The whole result as JSON (see header), one solution per line.
-inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>& all) {
-  std::string out = "{\"solutions\": [";
+/// The whole result as JSON (see header), one solution per line. `fields`, if any, are more
+/// members written first (e.g. "\"ratios\": \"7,7\", " for a ratio set).
+inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>& all, const std::string& fields = "") {
+  std::string out = "{" + fields + "\"solutions\": [";
   bool first = true, complete = true;
   std::size_t undecided = 0;
   for (const auto& rs : all) {
