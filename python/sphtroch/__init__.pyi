@@ -172,8 +172,10 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     Raises InvalidInput naming "t", "points" or "samples"."""
 
 
-def synth_points(points: npt.ArrayLike, *, n: Union[str, int, float, Tuple[int, int]]) -> Dict[str, Any]:
-    """Every gear train of ratio n whose tracer passes through the three points (a (3, 3) array of
+def synth_points(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
+                 ratios: Optional[Tuple[int, int]] = None) -> Dict[str, Any]:
+    """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7)
+    whose tracer passes through the three points (a (3, 3) array of
     unit vectors; fixed frame, sun axis Z), as `sphtroch synth points --json`: {"solutions": [{"n",
     "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual", "counts":
     {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], "complete" (the list is

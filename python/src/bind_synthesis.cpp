@@ -7,6 +7,7 @@
 #include "sphtroch/synthesis/identify.hpp"
 
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include <string>
 #include <vector>
@@ -44,7 +45,7 @@ py::dict identify_dict(py::handle t, py::handle points) {
 
 /// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
 /// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
-py::object synth_points(py::handle points, py::handle n) {
+py::object synth_points(py::handle points, py::handle n, py::handle ratios) {
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const Array pa = Array::ensure(points);
   if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
@@ -52,11 +53,23 @@ py::object synth_points(py::handle points, py::handle n) {
                        "a (3, 3) array of unit vectors x, y, z");
   std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
-  const Ratio ratio = ratio_arg(n);
+  if (n.is_none() == ratios.is_none())
+    throw InvalidInput("n", repr_of(n), "give exactly one of n and ratios", "n=R, or ratios=(P, Q) as `--ratios P,Q`");
+  std::vector<Ratio> set;
+  std::string fields;
+  if (!n.is_none()) {
+    set.push_back(ratio_arg(n));
+  } else {
+    const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
+    if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
+      throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
+    set = ratio_set(bounds.first, bounds.second);
+    fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
+  }
   std::string json;
   {
     py::gil_scoped_release release;
-    json = precision_points_json_text(p, {ratio});
+    json = precision_points_json_text(p, set, fields);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -65,7 +78,8 @@ py::object synth_points(py::handle points, py::handle n) {
 
 void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
-  m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n"));
+  m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
+        py::arg("ratios") = py::none());
 }
 
 }  // namespace sphtroch::python

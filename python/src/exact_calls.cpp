@@ -50,8 +50,9 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
       .dump();
 }
 
-std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios) {
-  return precision_points_json(precision_points_with_census(points, ratios));
+std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                      const std::string& json_fields) {
+  return precision_points_json(precision_points_with_census(points, ratios), json_fields);
 }
 
 std::string root_classification_json_text(const GearTrain& train, bool literal) {

@@ -32,7 +32,8 @@ std::string root_classification_json_text(const GearTrain& train, bool literal);
 
 /// `sphtroch synth points --json` (precision_points_output.hpp): every train of each ratio through
 /// the three points, with its census. InvalidInput "points" for bad points.
-std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios);
+std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                      const std::string& json_fields);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

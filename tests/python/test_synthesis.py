@@ -49,3 +49,17 @@ def test_synth_points_refuses_bad_points():
         sphtroch.synth_points(np.array([[1.0, 0, 0], [0, 1.0, 0]]), n=1)
     with pytest.raises(sphtroch.InvalidInput, match="points"):
         sphtroch.synth_points(np.array([[1.0, 0, 0], [0, 1.0, 0], [1.0, 0, 0]]), n=1)
+
+
+def test_synth_points_over_a_ratio_set_is_the_cli_json():
+    # The same trains as --ratios 2,1 of the CLI would list: every ratio of the set is solved.
+    train = sphtroch.GearTrain(a2=1.0, a3=2.0, n=2, phase=0.3)
+    _, P = train.trace(samples=40)
+    r = sphtroch.synth_points(P[[1, 10, 28]], ratios=(2, 1))
+    assert r["ratios"] == "2,1"
+    assert {s["n"] for s in r["solutions"]} <= {"-2", "-1", "1", "2"}
+    assert any(s["n"] == "2" and abs(s["a2"] - 1.0) < 1e-9 and abs(s["a3"] - 2.0) < 1e-9 for s in r["solutions"])
+    with pytest.raises(sphtroch.InvalidInput):
+        sphtroch.synth_points(P[[1, 10, 28]], n=2, ratios=(2, 1))
+    with pytest.raises(sphtroch.InvalidInput):
+        sphtroch.synth_points(P[[1, 10, 28]], ratios=(8, 1))
