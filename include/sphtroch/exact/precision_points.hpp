@@ -209,6 +209,29 @@ void equations(const Problem& pr, const std::array<T, 4>& x, const T& n, std::ar
   }
 }
 
+inline Eigen::Matrix4d to_matrix(const std::array<std::array<double, 4>, 4>& a) {
+  Eigen::Matrix4d m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m(r, c) = a[r][c];
+  return m;
+}
+
+inline std::array<double, 4> centre(const Box& x) {
+  std::array<double, 4> y{};
+  for (int k = 0; k < 4; ++k) y[k] = 0.5 * (x[k].inf() + x[k].sup());
+  return y;
+}
+
+/// Y = J(y)^-1 in doubles (any approximate inverse keeps the interval tests valid); none if singular.
+inline std::optional<Eigen::Matrix4d> inverse_jacobian(const Problem& pr, const std::array<double, 4>& y) {
+  std::array<double, 4> f{};
+  std::array<std::array<double, 4>, 4> jac{};
+  equations(pr, y, pr.n_value, f, jac, true);
+  const Eigen::FullPivLU<Eigen::Matrix4d> lu(to_matrix(jac));
+  if (!lu.isInvertible()) return std::nullopt;
+  return Eigen::Matrix4d(lu.inverse());
+}
+
 /// Outcome of the Krawczyk test on a box.
 enum class KrawczykOutcome { unique_root, no_root, undecided };
 
@@ -220,20 +243,15 @@ inline double scaled_width(const Problem& pr, const Box& x, int k) {
 /// K(X) = y - Y F(y) + (I - Y J(X)) (X - y) with y the centre of X and Y ~ J(y)^-1 (see header).
 /// On `undecided` x is narrowed to X intersected with K(X).
 inline KrawczykOutcome krawczyk(const Problem& pr, Box& x) {
-  std::array<double, 4> y{}, fd{};
+  const std::array<double, 4> y = centre(x);
+  const auto inverse = inverse_jacobian(pr, y);
+  if (!inverse) return KrawczykOutcome::undecided;
+  const Eigen::Matrix4d& inv = *inverse;
   std::array<Interval, 4> yi{}, fy{}, fx{};
-  std::array<std::array<double, 4>, 4> jd{};
   std::array<std::array<Interval, 4>, 4> jx{}, unused{};
-  for (int k = 0; k < 4; ++k) yi[k] = Interval(y[k] = 0.5 * (x[k].inf() + x[k].sup()));
+  for (int k = 0; k < 4; ++k) yi[k] = Interval(y[k]);
   equations(pr, yi, pr.n_interval, fy, unused, false);
-  equations(pr, y, pr.n_value, fd, jd, true);
   equations(pr, x, pr.n_interval, fx, jx, true);
-  Eigen::Matrix4d j;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) j(r, c) = jd[r][c];
-  const Eigen::FullPivLU<Eigen::Matrix4d> lu(j);
-  if (!lu.isInvertible()) return KrawczykOutcome::undecided;
-  const Eigen::Matrix4d inv = lu.inverse();
   bool inside = true;
   Box k_box;
   for (int r = 0; r < 4; ++r) {
@@ -265,20 +283,20 @@ inline std::int64_t inverse_mod(std::int64_t p, std::int64_t q) {
   return ((x0 % q) + q) % q;
 }
 
+/// One Newton step at y in doubles: the correction J(y)^-1 F(y) (non-finite if J is singular).
+inline Eigen::Vector4d newton_step(const Problem& pr, const std::array<double, 4>& y) {
+  std::array<double, 4> f{};
+  std::array<std::array<double, 4>, 4> jac{};
+  equations(pr, y, pr.n_value, f, jac, true);
+  return to_matrix(jac).fullPivLu().solve(Eigen::Vector4d(f[0], f[1], f[2], f[3]));
+}
+
 /// Newton from the centre of a box holding exactly one root (REQUIRES: Krawczyk said so).
 inline std::array<double, 4> polish(const Problem& pr, const Box& x) {
-  std::array<double, 4> y{}, f{};
-  std::array<std::array<double, 4>, 4> jac{};
-  for (int k = 0; k < 4; ++k) y[k] = 0.5 * (x[k].inf() + x[k].sup());
+  std::array<double, 4> y = centre(x);
   for (int step = 0; step < 8; ++step) {
-    equations(pr, y, pr.n_value, f, jac, true);
-    Eigen::Matrix4d j;
-    Eigen::Vector4d fv;
-    for (int r = 0; r < 4; ++r) {
-      fv(r) = f[r];
-      for (int c = 0; c < 4; ++c) j(r, c) = jac[r][c];
-    }
-    const Eigen::Vector4d dy = j.fullPivLu().solve(fv);
+    const Eigen::Vector4d dy = newton_step(pr, y);
+    if (!dy.allFinite()) break;
     for (int k = 0; k < 4; ++k) y[k] = std::clamp(y[k] - dy(k), x[k].inf(), x[k].sup());
   }
   return y;
@@ -286,18 +304,9 @@ inline std::array<double, 4> polish(const Problem& pr, const Box& x) {
 
 /// Newton in doubles from the centre of x; its limit if it converged inside x.
 inline std::optional<std::array<double, 4>> newton_in(const Problem& pr, const Box& x) {
-  std::array<double, 4> y{}, f{};
-  std::array<std::array<double, 4>, 4> jac{};
-  for (int k = 0; k < 4; ++k) y[k] = 0.5 * (x[k].inf() + x[k].sup());
+  std::array<double, 4> y = centre(x);
   for (int step = 0; step < 12; ++step) {
-    equations(pr, y, pr.n_value, f, jac, true);
-    Eigen::Matrix4d j;
-    Eigen::Vector4d fv;
-    for (int r = 0; r < 4; ++r) {
-      fv(r) = f[r];
-      for (int c = 0; c < 4; ++c) j(r, c) = jac[r][c];
-    }
-    const Eigen::Vector4d dy = j.fullPivLu().solve(fv);
+    const Eigen::Vector4d dy = newton_step(pr, y);
     if (!dy.allFinite()) return std::nullopt;
     for (int k = 0; k < 4; ++k) y[k] -= dy(k);
     if (dy.cwiseAbs().maxCoeff() < 1e-13) break;
@@ -309,18 +318,12 @@ inline std::optional<std::array<double, 4>> newton_in(const Problem& pr, const B
 
 /// Whether ||I - Y J(U)||_inf < 1 with Y = J(y)^-1 (interval J over the box U).
 inline bool contraction_holds(const Problem& pr, const std::array<double, 4>& y, const Box& u) {
-  std::array<double, 4> fd{};
+  const auto inverse = inverse_jacobian(pr, y);
+  if (!inverse) return false;
+  const Eigen::Matrix4d& inv = *inverse;
   std::array<Interval, 4> fu{};
-  std::array<std::array<double, 4>, 4> jd{};
   std::array<std::array<Interval, 4>, 4> ju{};
-  equations(pr, y, pr.n_value, fd, jd, true);
   equations(pr, u, pr.n_interval, fu, ju, true);
-  Eigen::Matrix4d j;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) j(r, c) = jd[r][c];
-  const Eigen::FullPivLU<Eigen::Matrix4d> lu(j);
-  if (!lu.isInvertible()) return false;
-  const Eigen::Matrix4d inv = lu.inverse();
   for (int r = 0; r < 4; ++r) {
     double row = 0.0;
     for (int c = 0; c < 4; ++c) {
