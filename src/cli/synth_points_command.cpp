@@ -42,9 +42,13 @@ std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::si
   const std::string valid = "I/K with 1 <= I <= K <= 1000000";
   const auto slash = text.find('/');
   if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
-  const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
-  const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
-  return {(i - 1) * size / k, i * size / k};
+  try {
+    const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
+    const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
+    return {(i - 1) * size / k, i * size / k};
+  } catch (const InvalidInput& e) {  // name the whole I/K, not the part
+    throw InvalidInput("shard", text, e.problem() + " (" + e.value() + ")", valid);
+  }
 }
 
 RatioRequest requested_ratios(const PointsOptions& o) {
