@@ -3,7 +3,6 @@
 // sine enclosures, and an independent Gauss-Newton on P(theta_i) = P_i in all six unknowns
 // (a2, a3, phase, theta_1..3) from many random starts for completeness. Seeded.
 #include "catch2/catch.hpp"
-#include <chrono>
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/mpreal_support.hpp"
 #include "sphtroch/exact/precision_points.hpp"

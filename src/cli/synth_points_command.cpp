@@ -244,7 +244,8 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
   cmd->add_option("--n", o->n, "the gear ratio p/q");
   cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
   cmd->add_option("--shard", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
-  cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\"}]}");
+  cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
+                                   "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");
   actions.emplace_back(cmd, [o] { run_points(*o); });
   register_synth_merge(synth, actions);

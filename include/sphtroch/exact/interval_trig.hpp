@@ -6,7 +6,7 @@
 //
 // Contract: for every real x in X, sin(x) lies in interval_sin(X) (the same for cos).
 // How: the extremes of sin over [lo, hi] are at the ends or at pi/2 + k pi inside. The ends are
-// evaluated by the C library in round-to-nearest and widened outward by at least kTrigUlps ulps:
+// evaluated by the C library in round-to-nearest and widened outward by at least 2 ulps:
 // this rests on the library's error bound (glibc documents at most 1 ulp for sin/cos of a double
 // on x86-64; MPFR at 200 bits confirms it in test_precision_points.cpp). Whether an interior
 // extreme lies inside is decided with a margin (1e-9 of a quarter turn) in the safe direction: a
@@ -28,12 +28,9 @@ namespace sphtroch {
 using Interval = CGAL::Interval_nt<false>;
 using RoundingGuard = CGAL::Protect_FPU_rounding<true>;
 
-/// Outward widening of a library sin/cos value, at least this many ulps (the library's bound is 1).
-constexpr int kTrigUlps = 2;
-
 namespace interval_trig_detail {
 
-/// x lowered / raised by at least kTrigUlps ulps: |x| 2^-50 is 4 to 8 ulps, and the absolute term
+/// x lowered / raised by at least 2 ulps (the library's bound is 1): |x| 2^-50 is 4 to 8 ulps, and the absolute term
 /// covers subnormals; computed in round-to-nearest (half an ulp lost), clamped to [-1, 1].
 inline double widen_down(double x) { return std::max(x - (std::fabs(x) * 0x1p-50 + 1e-300), -1.0); }
 inline double widen_up(double x) { return std::min(x + (std::fabs(x) * 0x1p-50 + 1e-300), 1.0); }
@@ -91,8 +88,6 @@ inline Interval interval_sin(const Interval& x) { return interval_sincos(x).firs
 inline Interval interval_cos(const Interval& x) { return interval_sincos(x).second; }
 
 /// The same names for doubles, so that one template evaluates a function in either type.
-inline double interval_sin(double x) { return std::sin(x); }
-inline double interval_cos(double x) { return std::cos(x); }
 inline std::pair<double, double> interval_sincos(double x) { return {std::sin(x), std::cos(x)}; }
 template <std::size_t N>
 std::array<std::pair<double, double>, N> interval_sincos_all(const std::array<double, N>& x) {

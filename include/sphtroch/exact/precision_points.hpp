@@ -166,21 +166,35 @@ struct Problem {
 
 inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
 
-/// Whether point i (1 or 2) may satisfy its equations on (a2, theta_1) x delta.
 inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
 
-inline bool point_may_hold(const Problem& pr, const Interval& a2, const Interval& ca, const Interval& sa,
-                           const CarrierView<Interval>& q1, const Interval& theta1, const Interval& delta, int i) {
-  const Interval c[3] = {centre_of(a2), centre_of(theta1), centre_of(delta)};
-  const auto trig = interval_sincos_all<6>({theta1 + delta, pr.n_interval * delta, c[0], c[1] + c[2],
-                                            pr.n_interval * c[2], c[1]});
-  const auto e = point_equations(ca, sa, q1, trig[0], trig[1], pr.n_interval, pr.p[i], true);
+/// Point 1 seen from the carrier over a box of (a2, theta_1) and at its centre: what every Delta
+/// interval of the box shares (computed once per box).
+struct BoxView {
+  Interval a2, theta1, ca, sa;
+  CarrierView<Interval> q1;
+  Interval a2_centre, theta1_centre, ca_centre, sa_centre;
+  CarrierView<Interval> q1_centre;
+};
+
+inline BoxView box_view(const Problem& pr, const Interval& a2, const Interval& theta1) {
+  const Interval a2c = centre_of(a2), t1c = centre_of(theta1);
+  const auto trig = interval_sincos_all<4>({a2, theta1, a2c, t1c});
+  const Interval &sa = trig[0].first, &ca = trig[0].second, &sac = trig[2].first, &cac = trig[2].second;
+  return {a2, theta1, ca, sa, carrier_view(ca, sa, trig[1], pr.p[0]),
+          a2c, t1c, cac, sac, carrier_view(cac, sac, trig[3], pr.p[0])};
+}
+
+/// Whether point i (1 or 2) may satisfy its equations on (a2, theta_1) x delta.
+inline bool point_may_hold(const Problem& pr, const BoxView& v, const Interval& delta, int i) {
+  const Interval dc = centre_of(delta);
+  const auto trig = interval_sincos_all<4>({v.theta1 + delta, pr.n_interval * delta, v.theta1_centre + dc,
+                                            pr.n_interval * dc});
+  const auto e = point_equations(v.ca, v.sa, v.q1, trig[0], trig[1], pr.n_interval, pr.p[i], true);
   if (!(may_vanish(e.f) && may_vanish(e.g) && e.dot.sup() > 0.0)) return false;
   // Mean-value form F(X) in F(c) + J(X) (X - c): much tighter than the plain one on small boxes.
-  const Interval &cs = trig[2].first, &cc = trig[2].second;
-  const auto q1c = carrier_view(cc, cs, trig[5], pr.p[0]);
-  const auto ec = point_equations(cc, cs, q1c, trig[3], trig[4], pr.n_interval, pr.p[i], false);
-  const Interval dx[3] = {a2 - c[0], theta1 - c[1], delta - c[2]};
+  const auto ec = point_equations(v.ca_centre, v.sa_centre, v.q1_centre, trig[2], trig[3], pr.n_interval, pr.p[i], false);
+  const Interval dx[3] = {v.a2 - v.a2_centre, v.theta1 - v.theta1_centre, delta - dc};
   Interval f = ec.f, g = ec.g;
   for (int k = 0; k < 3; ++k) {
     f += e.df[k] * dx[k];
@@ -377,14 +391,12 @@ class PointsSolver {
 
   void step(Node node, std::vector<Node>& stack) {
     ++result_.boxes;
-    const auto trig = interval_sincos_all<2>({node.a2, node.theta1});
-    const Interval &sa = trig[0].first, &ca = trig[0].second;
-    const CarrierView<Interval> q1 = carrier_view(ca, sa, trig[1], pr_.p[0]);
+    const BoxView view = box_view(pr_, node.a2, node.theta1);
     for (int i = 0; i < 2; ++i) {
       auto& list = node.delta[i];
-      list.erase(std::remove_if(list.begin(), list.end(), [&](const Interval& d) {
-                   return !point_may_hold(pr_, node.a2, ca, sa, q1, node.theta1, d, i + 1);
-                 }), list.end());
+      list.erase(std::remove_if(list.begin(), list.end(),
+                                [&](const Interval& d) { return !point_may_hold(pr_, view, d, i + 1); }),
+                 list.end());
       if (list.empty()) return;
     }
     const double wb = std::max(node.a2.sup() - node.a2.inf(), node.theta1.sup() - node.theta1.inf());
@@ -442,10 +454,8 @@ class PointsSolver {
   }
 
   bool excluded(const Box& x) const {
-    const auto trig = interval_sincos_all<2>({x[0], x[1]});
-    const Interval &sa = trig[0].first, &ca = trig[0].second;
-    const CarrierView<Interval> q1 = carrier_view(ca, sa, trig[1], pr_.p[0]);
-    return !point_may_hold(pr_, x[0], ca, sa, q1, x[1], x[2], 1) || !point_may_hold(pr_, x[0], ca, sa, q1, x[1], x[3], 2);
+    const BoxView view = box_view(pr_, x[0], x[1]);
+    return !point_may_hold(pr_, view, x[2], 1) || !point_may_hold(pr_, view, x[3], 2);
   }
 
   /// Krawczyk with bisection on one box of all four unknowns. A root found by Newton is
