@@ -28,7 +28,7 @@ LAYERS = {
     "draw": ["core", "io"],                       # SVG
     "map": ["core", "io"],                        # closed-form boundaries, criteria, g(b), events
     "census": ["core", "io", "map"],              # refinement, node assembly, the root census
-    "exact": ["core", "io", "draw", "map", "census"],  # CGAL: exact crossings, classify, scenes
+    "exact": ["core", "io", "draw", "map", "census", "synthesis"],  # CGAL: crossings, classify, scenes, certified synthesis
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
     "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
 }

@@ -68,6 +68,8 @@
 #include "sphtroch/atlas/atlas_svg.hpp"
 
 #include "sphtroch/synthesis/identify.hpp"
+#include "sphtroch/synthesis/path_distance.hpp"
+#include "sphtroch/synthesis/path_fit.hpp"
 #include "sphtroch/atlas/atlas_slices.hpp"
 
 #if defined(SPHTROCH_HAVE_EXACT)
@@ -80,6 +82,7 @@
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/exact/precision_points.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/exact/interval_trig.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"

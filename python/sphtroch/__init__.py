@@ -16,8 +16,9 @@ from ._sphtroch import (  # noqa: F401
     atlas,
     classify_a3_range,
     crossings,
+    fit,
     identify,
     synth_points,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "identify", "synth_points", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "fit", "identify", "synth_points", "__version__"]

@@ -1,6 +1,7 @@
 // python/src/bind_synthesis.cpp — the inverse question (bindings.hpp): sphtroch.identify(t, P), the
-// train of a timed trace (synthesis/identify.hpp), and sphtroch.synth_points(P, n=...), every train
-// through three points (exact/precision_points.hpp); NumPy in, a dict out, the GIL released.
+// train of a timed trace (synthesis/identify.hpp), sphtroch.synth_points(P, n=...), every train
+// through three points (exact/precision_points.hpp), and sphtroch.fit(P, n=..., nodes=..., cusps=...),
+// ranked trains nearest a path (synthesis/path_fit.hpp); NumPy in, a dict out, the GIL released.
 #include "bindings.hpp"
 #include "exact_calls.hpp"
 
@@ -9,6 +10,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,31 +49,67 @@ py::dict identify_dict(py::handle t, py::handle points) {
 
 /// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
 /// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
-py::object synth_points(py::handle points, py::handle n, py::handle ratios) {
+/// The (N, 3) points of a synthesis call.
+std::vector<Vector3d> points_arg(py::handle points, const char* valid) {
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const Array pa = Array::ensure(points);
   if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
-    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array",
-                       "a (3, 3) array of unit vectors x, y, z");
+    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array", valid);
   std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
+  return p;
+}
+
+/// n=R or ratios=(P, Q) (P, Q <= 7, the CLI's work bound), and the JSON members naming a set.
+std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, std::string& fields) {
   if (n.is_none() == ratios.is_none())
     throw InvalidInput("n", repr_of(n), "give exactly one of n and ratios", "n=R, or ratios=(P, Q) as `--ratios P,Q`");
-  std::vector<Ratio> set;
+  if (!n.is_none()) return {ratio_arg(n)};
+  const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
+  if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
+    throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
+  fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
+  return ratio_set(bounds.first, bounds.second);
+}
+
+py::object synth_points(py::handle points, py::handle n, py::handle ratios) {
+  const std::vector<Vector3d> p = points_arg(points, "a (3, 3) array of unit vectors x, y, z");
   std::string fields;
-  if (!n.is_none()) {
-    set.push_back(ratio_arg(n));
-  } else {
-    const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
-    if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
-      throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
-    set = ratio_set(bounds.first, bounds.second);
-    fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
-  }
+  const std::vector<Ratio> set = ratios_arg(n, ratios, fields);
   std::string json;
   {
     py::gil_scoped_release release;
     json = precision_points_json_text(p, set, fields);
+  }
+  return py::module_::import("json").attr("loads")(json);
+}
+
+/// A count argument: None or an int >= 0.
+std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
+  if (v.is_none()) return std::nullopt;
+  if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
+    throw InvalidInput(field, repr_of(v), "not an integer", "None or an integer >= 0");
+  const auto k = v.cast<std::int64_t>();
+  if (k < 0) throw InvalidInput(field, repr_of(v), "negative", "None or an integer >= 0");
+  return k;
+}
+
+/// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
+/// synth fit --json` prints it (a dict).
+py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle nodes, py::handle cusps,
+               std::size_t candidates, double max_deviation) {
+  const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
+  std::string fields;
+  const std::vector<Ratio> set = ratios_arg(n, ratios, fields);
+  FitOptions o;
+  o.nodes = count_arg(nodes, "nodes");
+  o.cusps = count_arg(cusps, "cusps");
+  o.max_candidates = candidates;
+  o.max_deviation = max_deviation;
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = fit_json_text(p, set, o, fields);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -80,6 +120,9 @@ void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none());
+  m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
+        py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
+        py::arg("max_deviation") = std::numeric_limits<double>::infinity());
 }
 
 }  // namespace sphtroch::python

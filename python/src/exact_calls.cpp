@@ -5,6 +5,7 @@
 #include "sphtroch/exact/classification_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 
@@ -53,6 +54,11 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
                                       const std::string& json_fields) {
   return precision_points_json(precision_points_with_census(points, ratios), json_fields);
+}
+
+std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
+                          const std::string& json_fields) {
+  return fit_json(fit_with_census(points, ratios, options), options, json_fields);
 }
 
 std::string root_classification_json_text(const GearTrain& train, bool literal) {

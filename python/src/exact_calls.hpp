@@ -7,6 +7,7 @@
 
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/synthesis/path_fit.hpp"  // FitOptions (Eigen only)
 
 #include <cstddef>
 #include <cstdint>
@@ -34,6 +35,11 @@ std::string root_classification_json_text(const GearTrain& train, bool literal);
 /// the three points, with its census. InvalidInput "points" for bad points.
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
                                       const std::string& json_fields);
+
+/// `sphtroch synth fit --json` (path_fit_output.hpp): ranked candidates of the ratios for the
+/// path's points, each confirmed by classify. InvalidInput "points", "nodes", "cusps", "n".
+std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
+                          const std::string& json_fields);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

@@ -121,7 +121,10 @@ void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 #ifdef SPHTROCH_HAVE_ANALYSIS
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
-void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth points
+void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth points, merge, fit
+void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth_fit_command.cpp
+/// `synth merge` of synth fit shards (their texts already read), synth_fit_command.cpp.
+void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std::string>& texts, const std::string& output);
 /// Parses and validates a scene's text as `sphtroch scene` does, without touching the file system
 /// (output paths unchecked, nothing computed); returns the number of trains. Throws UsageError
 /// (one line) for anything wrong. For tests/fuzz.

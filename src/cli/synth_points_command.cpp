@@ -1,6 +1,7 @@
 // sphtroch synth points — every train through three precision points (exact/precision_points.hpp),
 // each with its census (classify). Parsing and printing only. CGAL: a separate translation unit.
 #include "cli_common.hpp"
+#include "synth_ratios.hpp"
 
 #include "sphtroch/classify.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
@@ -30,62 +31,6 @@ struct PointsOptions {
 };
 
 using RatioSolutions = RatioPrecisionPoints;
-
-/// The ratios to solve and the JSON members that name them ("ratios", "shard").
-struct RatioRequest {
-  std::vector<Ratio> ratios;
-  std::string json_fields;
-};
-
-/// --shard I/K of a ratio set of `size`: indices floor((I-1) size / K) .. floor(I size / K) - 1.
-std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::size_t size) {
-  const std::string valid = "I/K with 1 <= I <= K <= 1000000";
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
-  try {
-    const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
-    const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
-    return {(i - 1) * size / k, i * size / k};
-  } catch (const InvalidInput& e) {  // name the whole I/K, not the part
-    throw InvalidInput("shard", text, e.problem() + " (" + e.value() + ")", valid);
-  }
-}
-
-RatioRequest requested_ratios(const PointsOptions& o) {
-  if (o.n.empty() == o.ratios.empty())
-    throw UsageError{"synth points: give exactly one of --n R and --ratios P,Q (see docs/cli.md: synth points)"};
-  if (!o.shard.empty() && o.ratios.empty())
-    throw UsageError{"--shard = " + o.shard + ": shards a ratio set; valid: with --ratios P,Q"};
-  RatioRequest r;
-  if (!o.n.empty()) {
-    r.ratios.push_back(parse_ratio(o.n, "n"));
-  } else {
-    const auto comma = o.ratios.find(',');
-    if (comma == std::string::npos)
-      throw InvalidInput("ratios", o.ratios, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
-    const std::size_t p = parse_count(o.ratios.substr(0, comma), "ratios", 1, 1000);
-    const std::size_t q = parse_count(o.ratios.substr(comma + 1), "ratios", 1, 1000);
-    r.ratios = ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q));
-    r.json_fields = "\"ratios\": \"" + std::to_string(p) + "," + std::to_string(q) + "\", ";
-    if (!o.shard.empty()) {
-      const auto [begin, end] = shard_range(o.shard, r.ratios.size());
-      r.ratios = std::vector<Ratio>(r.ratios.begin() + begin, r.ratios.begin() + end);
-      r.json_fields += "\"shard\": \"" + o.shard + "\", ";
-    }
-  }
-  double work = 0;
-  for (const Ratio& n : r.ratios) work += std::pow(double(n.abs_p() + n.q()), 2);
-  if (work > kMaxPointsWork)
-    throw InvalidInput(o.n.empty() ? "ratios" : "n", o.n.empty() ? o.ratios : o.n,
-                       "estimated work " + number_text(work) + " over the bound" + (o.shard.empty() ? "" : " for this shard"),
-                       "sum over the ratios of (|p| + q)^2 <= 20000 (--ratios 7,7 is 4832; --shard I/K splits a set)");
-  return r;
-}
-
-std::string train_arguments(const GearTrain& g) {
-  return "--n " + g.ratio().str() + " --a2 " + number_text(g.a2()) + " --a3 " + number_text(g.a3()) + " --phase " +
-         number_text(g.phase_given());
-}
 
 void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all) {
   std::size_t index = 0;
@@ -120,7 +65,7 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 }
 
 void run_points(const PointsOptions& o) {
-  const RatioRequest request = requested_ratios(o);
+  const RatioRequest request = requested_ratios("synth points", o.n, o.ratios, o.shard, kMaxPointsWork);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
   const std::vector<RatioSolutions> all = [&] {
@@ -137,7 +82,7 @@ void run_points(const PointsOptions& o) {
   check_points_certified(all);
 }
 
-/// Bytes a shard file may hold (a shard of --ratios 7,7 with every census is ~100 KB).
+/// Bytes a shard file may hold (a shard of points --ratios 7,7 with every census is ~100 KB).
 constexpr std::size_t kMaxShardBytes = std::size_t(1) << 30;
 
 /// One shard of `synth points --ratios P,Q --shard I/K --json`: its set, index and count, and its
@@ -150,8 +95,7 @@ struct PointsShard {
   std::vector<std::string> solution_lines;
 };
 
-PointsShard read_points_shard(const std::string& path) {
-  const std::string text = read_whole_input(path, "shard", kMaxShardBytes);
+PointsShard read_points_shard(const std::string& path, const std::string& text) {
   const std::string valid = "the JSON of sphtroch synth points --ratios P,Q --shard I/K --json";
   PointsShard s;
   try {
@@ -178,8 +122,11 @@ PointsShard read_points_shard(const std::string& path) {
 
 /// The shards, in any order, joined into what the unsharded run prints.
 void run_merge(const std::vector<std::string>& paths, const std::string& output) {
+  std::vector<std::string> texts;
+  for (const std::string& p : paths) texts.push_back(read_whole_input(p, "shard", kMaxShardBytes));
+  if (texts[0].find("\"candidates\": [") != std::string::npos) return run_fit_merge(paths, texts, output);
   std::vector<PointsShard> shards;
-  for (const std::string& p : paths) shards.push_back(read_points_shard(p));
+  for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_points_shard(paths[k], texts[k]));
   std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   const std::string valid = "every shard I/K of one run, I = 1..K, each once";
   for (std::size_t k = 0; k < shards.size(); ++k) {
@@ -214,7 +161,7 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output)
 void register_synth_merge(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto paths = std::make_shared<std::vector<std::string>>();
   auto output = std::make_shared<std::string>();
-  CLI::App* cmd = synth.add_subcommand("merge", "join the JSON shards of synth points --ratios P,Q --shard I/K");
+  CLI::App* cmd = synth.add_subcommand("merge", "join the JSON shards of synth points or synth fit --ratios P,Q --shard I/K");
   cmd->footer("Shards in any order; the result is byte for byte what the unsharded run prints.\n"
               "Example: sphtroch synth merge -o all.json part-*.json");
   cmd->add_option("shards", *paths, "the shard files (JSON)")->required();
@@ -243,12 +190,13 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
   cmd->add_option("--input", o->input, "the three points (CSV x,y,z or .npy; - for standard input)")->required();
   cmd->add_option("--n", o->n, "the gear ratio p/q");
   cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
-  cmd->add_option("--shard", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
                                    "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");
   actions.emplace_back(cmd, [o] { run_points(*o); });
   register_synth_merge(synth, actions);
+  register_synth_fit(synth, actions);
 }
 
 }  // namespace sphtroch::cli

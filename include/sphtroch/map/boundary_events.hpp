@@ -105,6 +105,10 @@ struct BoundarySet {
   std::vector<BoundaryEvent> events;  // ascending a3
 };
 
+/// Node points of the curve at (a2, a3) off every event (|p| x RootFunction::node_roots; on an
+/// event, the count of one side). Radians; REQUIRES a2, a3 in (0, pi).
+inline std::int64_t node_count_off_events(double a2, double a3, const Ratio& n);
+
 /// Every event in a3 in (0, pi) at this a2 (see header). Throws InvalidInput("a2") unless
 /// a2 is finite in (0, pi), InvalidInput("n") beyond the census cost bound (cost_bounds.hpp).
 inline BoundarySet boundary_set(double a2, const Ratio& n);
@@ -295,6 +299,12 @@ inline void check_a2(double a2) {
 }
 
 }  // namespace boundary_set_detail
+
+inline std::int64_t node_count_off_events(double a2, double a3, const Ratio& n) {
+  using Real = boundary_set_detail::Real;
+  const Real A2 = a2;
+  return boundary_set_detail::node_count(std::sin(A2), std::cos(A2), a3, n);
+}
 
 inline BoundarySet boundary_set(double a2, const Ratio& n) {
   using namespace boundary_set_detail;

@@ -1,0 +1,132 @@
+// sphtroch/exact/path_fit_output.hpp — fit over a set of ratios with every candidate confirmed by
+// classify(), and the JSON that `sphtroch synth fit --json` and Python's fit print.
+//
+//   const sphtroch::GearTrain hidden(1.1, 0.9, sphtroch::Ratio(2), 0.4);
+//   const auto points = sphtroch::sample_period(sphtroch::TracerCurve<double>(hidden), 200).points;
+//   sphtroch::FitOptions o;  o.nodes = 2;
+//   auto fits = sphtroch::fit_with_census(points, {sphtroch::Ratio(2)}, o);
+//   std::string json = sphtroch::fit_json(fits, o);   // {"candidates": [...], "reason": ""}
+//
+// The promise: with a wanted node (cusp) count, every candidate listed has exactly that count by
+// classify(), certified; a candidate whose census is not certified or differs (a shape the root
+// count put in the cell but too close to a boundary for the census to agree) is dropped and
+// counted in "dropped". Without a wanted count, candidates keep their census as it is, certified
+// or not ("census_certified").
+// JSON: {"candidates": [{"n": "p/q", "a2", "a3", "phase", "rms", "max_deviation", "margin" (radians),
+// "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], best (smallest rms)
+// first over all ratios, at most options.max_candidates; "reason": why there is none, or "";
+// "dropped": candidates removed because the census did not confirm the wanted counts}.
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/exact/path_fit_output.hpp needs CGAL: link the CMake target sphtroch::exact"
+#endif
+
+#include "sphtroch/exact/analysis.hpp"  // classify()
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/synthesis/path_fit.hpp"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphtroch {
+
+/// One candidate and its census.
+struct ConfirmedCandidate {
+  FitCandidate candidate;
+  Classification census;
+};
+
+/// The fit of one ratio, its candidates confirmed (see header).
+struct RatioFit {
+  Ratio ratio;
+  std::vector<ConfirmedCandidate> candidates;  // best first
+  std::string reason;                          // why there is none, or ""
+  std::size_t dropped = 0;                     // not confirmed by classify
+};
+
+/// True when the census has the wanted counts, certified (nothing wanted: always).
+inline bool census_confirms(const Classification& c, const FitOptions& o) {
+  if (!o.nodes && !o.cusps) return true;
+  return c.certified() && (!o.nodes || static_cast<std::int64_t>(c.nodes.size()) == *o.nodes) &&
+         (!o.cusps || static_cast<std::int64_t>(c.cusps.size()) == *o.cusps);
+}
+
+/// fit_path for each ratio, then classify() of every candidate (see header).
+inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                             const FitOptions& options = {}) {
+  std::vector<RatioFit> all;
+  for (const Ratio& n : ratios) {
+    PathFit f = fit_path(points, n, options);
+    RatioFit rf{n, {}, f.reason, 0};
+    for (FitCandidate& c : f.candidates) {
+      Classification census = classify(c.train);
+      if (census_confirms(census, options)) rf.candidates.push_back({std::move(c), std::move(census)});
+      else ++rf.dropped;
+    }
+    if (rf.candidates.empty() && rf.reason.empty() && rf.dropped > 0)
+      rf.reason = "n = " + n.str() + ": the census (classify) did not confirm the wanted counts of any of " +
+                  std::to_string(rf.dropped) + " candidate(s)";
+    all.push_back(std::move(rf));
+  }
+  return all;
+}
+
+/// The best candidates over all ratios, best first, at most options.max_candidates.
+inline std::vector<const ConfirmedCandidate*> ranked_candidates(const std::vector<RatioFit>& all, const FitOptions& options) {
+  std::vector<const ConfirmedCandidate*> out;
+  for (const RatioFit& rf : all)
+    for (const ConfirmedCandidate& c : rf.candidates) out.push_back(&c);
+  std::stable_sort(out.begin(), out.end(), [](const auto* a, const auto* b) { return a->candidate.rms < b->candidate.rms; });
+  if (out.size() > options.max_candidates) out.resize(options.max_candidates);
+  return out;
+}
+
+/// Why no ratio gave a candidate: the reason of each ratio, the same reasons once, at most five.
+inline std::string fit_reason(const std::vector<RatioFit>& all) {
+  std::vector<std::string> reasons;
+  std::set<std::string> seen;
+  for (const RatioFit& rf : all) {
+    if (!rf.candidates.empty()) return "";
+    if (seen.insert(rf.reason).second) reasons.push_back(rf.reason);
+  }
+  std::string out;
+  for (std::size_t k = 0; k < reasons.size() && k < 5; ++k) out += (k ? "; " : "") + reasons[k];
+  if (reasons.size() > 5) out += "; and " + std::to_string(reasons.size() - 5) + " more";
+  return out;
+}
+
+/// One candidate as a JSON object (see header).
+inline std::string fit_candidate_json(const ConfirmedCandidate& cc) {
+  const FitCandidate& f = cc.candidate;
+  const Classification& c = cc.census;
+  std::ostringstream out;
+  out << "{\"n\": \"" << f.train.ratio().str() << "\", \"a2\": " << number_text(f.train.a2())
+      << ", \"a3\": " << number_text(f.train.a3()) << ", \"phase\": " << number_text(f.train.phase_given())
+      << ", \"rms\": " << number_text(f.rms) << ", \"max_deviation\": " << number_text(f.max_deviation)
+      << ", \"margin\": " << number_text(f.margin) << ", \"counts\": {\"nodes\": " << c.nodes.size()
+      << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
+      << "}, \"census_certified\": " << (c.certified() ? "true" : "false") << "}";
+  return out.str();
+}
+
+/// The whole result as JSON (see header), one candidate per line. `fields`, if any, are more
+/// members written first.
+inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& options, const std::string& fields = "") {
+  std::string out = "{" + fields + "\"candidates\": [";
+  const auto ranked = ranked_candidates(all, options);
+  for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k]);
+  std::size_t dropped = 0;
+  for (const RatioFit& rf : all) dropped += rf.dropped;
+  std::string reason = fit_reason(all);
+  std::string escaped;
+  for (char ch : reason) escaped += ch == '"' || ch == '\\' ? std::string("\\") + ch : std::string(1, ch);
+  out += std::string(ranked.empty() ? "" : "\n") + "], \"reason\": \"" + escaped + "\", \"dropped\": " +
+         std::to_string(dropped) + "}\n";
+  return out;
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,631 @@
+// sphtroch/synthesis/path_fit.hpp — the inverse question for an untimed path: which trains of ratio
+// n draw a curve through (near) these points, optionally with a wanted node and/or cusp count?
+// Ranked candidates, each with its distance to the points and its margin to the nearest boundary
+// of the (a2, a3) map. Eigen only: the node count a candidate is kept to is the root count
+// (map/root_function.hpp); exact/path_fit_output.hpp confirms every candidate by classify().
+//
+//   const sphtroch::GearTrain hidden(1.1, 0.9, sphtroch::Ratio(2), 0.4);
+//   const auto points = sphtroch::sample_period(sphtroch::TracerCurve<double>(hidden), 200).points;
+//   sphtroch::FitOptions o;  o.nodes = 4;                       // or o.cusps = 2, or both, or neither
+//   sphtroch::PathFit f = sphtroch::fit_path(points, sphtroch::Ratio(2), o);
+//   f.candidates[0].train;  f.candidates[0].rms;  f.candidates[0].margin;   // best first
+//   f.reason;               // why there is none, e.g. "n = 2 has 0..4 node points (in steps of 2)"
+//
+// What is minimised: the spherical distances d_i (radians) of the points to the curve, each point
+// to its nearest curve point (path_distance.hpp), sum d_i^2. The point order is not used.
+// Unknowns: a2, a3, phase (free); a2, phase on a pitch cone (cusps wanted: a3 = a_p(a2) or pi -
+// a_p(a2), exactly, GearTrain::on_cone); the phase alone where both cones meet (a2 = acos(-n),
+// a3 = pi/2, |n| < 1: 2|p| cusps).
+//  1. Screening: every shape of a grid (kFitGrid^2 for a2, a3; kFitGrid^2 a2 on a cone), and the
+//     shapes the points' z range gives (z_max = cos(a2 - a3), z_min = cos(a2 + a3) for a full
+//     period), is scored on up to kFitScreenPoints points with the latitude estimate
+//     (path_distance.hpp): each point votes for the turn about Z that puts it on a crossing of its
+//     latitude; the best turns are scored by the estimated distances. The kFitSeeds best distinct
+//     shapes are refined.
+//  2. Refinement: Levenberg–Marquardt with the feet eliminated (variable projection: each point's
+//     theta2 is its nearest curve point's, the Jacobian is dP/d(parameters) with the tangent
+//     component removed); the feet are found again globally after convergence.
+//  3. Wanted node count K: a step is taken only to shapes whose root count is K (halved until it
+//     is), so the fit never leaves the cells of the map with K nodes; seeds come from those cells
+//     only (grid shapes with K nodes and the midpoint of every a3 interval with K nodes of the
+//     boundary set at each grid a2). A constrained candidate is moved to kFitBoundaryClearance in
+//     a3 from the boundary that bounds it (the true census there is unambiguous).
+//  4. A count no cell allows is answered with no candidate and the reason: node points come in sets
+//     of |p| (the |p|-fold symmetry); the counts the boundary set shows at the grid a2 (a cell
+//     narrower than one grid step in a2 that lies between grid columns is not seen); cusps are 0,
+//     |p| on a pitch cone, or 2|p| where both cones meet (|n| < 1).
+// Margin: the distance in the (a2, a3) plane (radians) to the nearest boundary of the map, to first
+// order: for each event of the boundary set at the candidate's a2, its a3 distance times the cosine
+// of the boundary's slope (from the boundary set at a2 + 1e-4). The cone a cusp candidate lies on
+// is not counted. Cost: about kFitGrid^2 screenings on <= 120 points, kFitSeeds refinements on
+// <= 100 points, one per candidate on <= 2000 points; kFitGrid boundary sets when a node count is wanted.
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/types.hpp"
+#include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/synthesis/path_distance.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <tuple>
+#include <string>
+#include <vector>
+
+namespace sphtroch {
+
+/// Fewest points fit accepts (three unknowns, plus one).
+constexpr std::size_t kMinFitPoints = 4;
+/// Most points fit accepts (the cost is linear in them).
+constexpr std::size_t kMaxFitPoints = 1000000;
+/// Points must be unit vectors to this.
+constexpr double kFitUnitTolerance = 1e-6;
+/// Screening grid: kFitGrid x kFitGrid shapes (a2, a3), kFitGrid a2 columns for node counts.
+constexpr int kFitGrid = 40;
+/// Shapes refined per ratio (three times as many for paths of few points, where refining is
+/// cheap and the screening less sure), and the subsets of points screening and refinement use.
+constexpr std::size_t kFitSeeds = 8, kFitFewPoints = 50, kFitScreenPoints = 120, kFitRefinePoints = 100;
+/// Points the final polish of a candidate uses (its distances are then measured on all points).
+constexpr std::size_t kFitPolishPoints = 2000;
+/// a2, a3 of every candidate lie in [kFitMinTwist, pi - kFitMinTwist] (as GearTrain requires for a2).
+constexpr double kFitMinTwist = 1e-6;
+/// a3 distance a node-constrained candidate keeps from the events bounding its cell (radians).
+constexpr double kFitBoundaryClearance = 1e-7;
+
+struct FitOptions {
+  std::optional<std::int64_t> nodes;  // wanted node points (crossings and tangencies), or any
+  std::optional<std::int64_t> cusps;  // wanted cusps, or any
+  std::size_t max_candidates = 5;     // at most this many, best first
+  double max_deviation = std::numeric_limits<double>::infinity();  // radians: drop farther candidates
+};
+
+struct FitCandidate {
+  GearTrain train;               // n, a2, a3, phase in [0, 2 pi / q)
+  double rms = 0.0;              // RMS spherical distance of the points to the curve (radians)
+  double max_deviation = 0.0;    // largest of those distances (radians)
+  double margin = 0.0;           // to the nearest boundary of the map (see header), radians
+  std::int64_t root_nodes = 0;   // node points by the root count (classify confirms, exact layer)
+  std::vector<double> params;    // theta2 of each point's nearest curve point, in [0, 2 pi q)
+};
+
+struct PathFit {
+  Ratio ratio;
+  std::vector<FitCandidate> candidates;  // best (smallest rms) first
+  std::string reason;                    // empty when there are candidates
+};
+
+/// Ranked candidate trains of ratio n for the points (see header). Throws InvalidInput naming
+/// "points" (count, not unit, NaN), "nodes" or "cusps" (negative), or "n" (beyond the census
+/// cost bound, cost_bounds.hpp).
+inline PathFit fit_path(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& options = {});
+
+/// Distance in the (a2, a3) plane to the nearest boundary of the map (see header); `on_cone`:
+/// the candidate lies on a pitch cone by design, which is not counted.
+inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone = false);
+
+// =============================================================================================
+// Implementation details follow.
+// =============================================================================================
+
+namespace path_fit_detail {
+
+constexpr double kPi = Constants<double>::pi();
+
+enum class Family { free, pitch_cone, mirror_cone, both_cones };
+
+/// The parameters x a family varies (shape parameters, then the phase) and what they mean.
+struct Parametrisation {
+  Family family = Family::free;
+  double n = 1.0;
+  int dim() const { return family == Family::free ? 3 : family == Family::both_cones ? 1 : 2; }
+  double cone(double a2) const { return std::atan2(std::sin(a2), std::cos(a2) + n); }
+  /// (a2, a3) of x.
+  std::pair<double, double> shape(const Eigen::VectorXd& x) const {
+    switch (family) {
+      case Family::free: return {x(0), x(1)};
+      case Family::pitch_cone: return {x(0), cone(x(0))};
+      case Family::mirror_cone: return {x(0), kPi - cone(x(0))};
+      case Family::both_cones: return {std::acos(-n), kPi / 2};
+    }
+    return {x(0), x(1)};
+  }
+  FitShape fit_shape(const Eigen::VectorXd& x) const {
+    const auto [a2, a3] = shape(x);
+    return {a2, a3, n, x(dim() - 1)};
+  }
+  /// d(a2, a3, phase)/dx, 3 x dim.
+  Eigen::MatrixXd chain(const Eigen::VectorXd& x) const {
+    Eigen::MatrixXd m = Eigen::MatrixXd::Zero(3, dim());
+    m(2, dim() - 1) = 1;
+    if (family == Family::free) {
+      m(0, 0) = 1;
+      m(1, 1) = 1;
+    } else if (family != Family::both_cones) {
+      const double c2 = std::cos(x(0));
+      const double slope = (1 + n * c2) / (1 + 2 * n * c2 + n * n);  // d a_p / d a2
+      m(0, 0) = 1;
+      m(1, 0) = family == Family::pitch_cone ? slope : -slope;
+    }
+    return m;
+  }
+  Eigen::VectorXd make(double a2, double a3, double phase) const {
+    Eigen::VectorXd x(dim());
+    if (family == Family::free) x << a2, a3, phase;
+    else if (family == Family::both_cones) x << phase;
+    else x << a2, phase;
+    return x;
+  }
+};
+
+/// Node points at (a2, a3) by the root count; on a pitch cone (family), the count of the side
+/// without the near-cusp loop (the smaller).
+inline std::int64_t root_nodes(double a2, double a3, const Ratio& n, Family family) {
+  if (family == Family::free) return node_count_off_events(a2, a3, n);
+  const double d = 1e-7;
+  return std::min(node_count_off_events(a2, a3 - d, n), node_count_off_events(a2, a3 + d, n));
+}
+
+/// What a candidate must satisfy besides the range of a2, a3.
+struct Constraint {
+  Ratio n;
+  Parametrisation par;
+  std::optional<std::int64_t> nodes;
+  bool avoid_cones = false;  // cusps = 0 wanted
+  bool admissible(double a2, double a3) const {
+    if (!(a2 >= kFitMinTwist && a2 <= kPi - kFitMinTwist && a3 >= kFitMinTwist && a3 <= kPi - kFitMinTwist))
+      return false;
+    const double ap = par.cone(a2);
+    const bool near_cone = std::abs(a3 - ap) < 1e-9 || std::abs(a3 - (kPi - ap)) < 1e-9;
+    if (avoid_cones && near_cone) return false;
+    if (!nodes) return true;
+    if (par.family == Family::free && (near_cone || std::abs(a3 - a2) < 1e-9 || std::abs(a3 - (kPi - a2)) < 1e-9))
+      return false;  // on a closed-form boundary the root count is that of one side
+    return root_nodes(a2, a3, n, par.family) == *nodes;
+  }
+};
+
+// ---- Screening ---------------------------------------------------------------------------
+
+struct Seed {
+  double a2 = 0, a3 = 0, phase = 0, score = 0;
+};
+
+/// Every k-th point, at most `most` of them.
+inline std::vector<Vector3d> subsample(const std::vector<Vector3d>& p, std::size_t most) {
+  if (p.size() <= most) return p;
+  std::vector<Vector3d> out;
+  for (std::size_t k = 0; k < most; ++k) out.push_back(p[k * p.size() / most]);
+  return out;
+}
+
+/// The best turns of the shape (a2, a3) about Z for the points (see header, step 1), as seeds.
+inline void screen_shape(double a2, double a3, const Ratio& ratio, const std::vector<Vector3d>& pts,
+                         std::vector<Seed>& out) {
+  const double n = ratio.value(), ring = 2 * kPi / static_cast<double>(ratio.abs_p());
+  const std::size_t bins = 64;
+  const FitShape shape(a2, a3, n, 0.0);
+  const double s2 = shape.s2, c2 = shape.c2, s3 = shape.s3;
+  const Vector3d omega(0, -n * s2, 1 + n * c2);
+  struct Vote {
+    double beta, lat, beyond, offset[2], factor[2];
+  };
+  std::vector<Vote> votes(pts.size());
+  std::vector<double> histogram(bins, 0.0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Vector3d& P = pts[i];
+    const LatitudeMatch m = latitude_match(shape, P.z());
+    Vote& v = votes[i];
+    v.beta = std::atan2(P.y(), P.x());
+    v.lat = std::hypot(P.x(), P.y());
+    v.beyond = m.beyond;
+    for (int s = 0; s < 2; ++s) {
+      const double u = s == 0 ? m.u : -m.u;
+      const Vector3d cc = planet_circle_point(shape, u);
+      v.offset[s] = u / n + std::atan2(cc.y(), cc.x());
+      const double speed = omega.cross(cc).norm(), horizontal = std::hypot(cc.x(), cc.y());
+      const double sin_gamma = std::abs(n * s2 * s3 * std::sin(u)) / std::max(horizontal * speed, 1e-300);
+      v.factor[s] = std::clamp(sin_gamma, 0.2, 1.0);
+      const double turn = std::fmod(std::fmod(v.beta - v.offset[s], ring) + ring, ring);
+      histogram[std::min(bins - 1, static_cast<std::size_t>(turn / ring * bins))] += 1;
+    }
+  }
+  auto wrap = [ring](double a) { return a - ring * std::nearbyint(a / ring); };  // into [-ring/2, ring/2]
+  auto score = [&](double turn) {
+    double sum = 0;
+    for (const Vote& v : votes) {
+      double best = 0.01;  // cap: 0.1 rad
+      for (int s = 0; s < 2; ++s) {
+        const double d = wrap(v.beta - turn - v.offset[s]) * v.lat * v.factor[s];
+        best = std::min(best, v.beyond * v.beyond + d * d);
+      }
+      sum += best;
+    }
+    return sum / static_cast<double>(votes.size());
+  };
+  std::vector<double> smooth(bins);
+  for (std::size_t b = 0; b < bins; ++b)
+    smooth[b] = histogram[(b + bins - 1) % bins] + histogram[b] + histogram[(b + 1) % bins];
+  std::vector<std::size_t> order(bins);
+  for (std::size_t b = 0; b < bins; ++b) order[b] = b;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return smooth[a] > smooth[b]; });
+  std::vector<std::size_t> peaks;
+  for (std::size_t b : order) {
+    if (peaks.size() == 2) break;
+    bool apart = true;
+    for (std::size_t p : peaks) apart = apart && std::min((b + bins - p) % bins, (p + bins - b) % bins) >= 3;
+    if (apart) peaks.push_back(b);
+  }
+  for (std::size_t b : peaks) {
+    const double width = ring / static_cast<double>(bins);
+    double best_turn = (static_cast<double>(b) + 0.5) * width, best = score(best_turn);
+    for (double step = width; step > width / 16; step /= 2)
+      for (double t : {best_turn - step, best_turn + step})
+        if (const double sc = score(t); sc < best) {
+          best = sc;
+          best_turn = t;
+        }
+    out.push_back({a2, a3, -n * best_turn, best});  // phase f turns the curve by -f/n
+  }
+}
+
+// ---- Refinement --------------------------------------------------------------------------
+
+struct Refined {
+  Eigen::VectorXd x;
+  std::vector<double> t;  // feet
+  double cost = 0;        // sum of squared chords
+};
+
+inline double cost_of(const FitShape& s, const std::vector<Vector3d>& pts, const std::vector<double>& t) {
+  double c = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) c += (curve_point(s, t[i]) - pts[i]).squaredNorm();
+  return c;
+}
+
+inline std::vector<double> global_feet(const FitShape& s, const Ratio& n, const std::vector<Vector3d>& pts) {
+  const double period = 2 * kPi * static_cast<double>(n.q());
+  std::vector<double> t(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) t[i] = nearest_param(s, n.abs_p(), period, pts[i]);
+  return t;
+}
+
+/// Levenberg–Marquardt with the feet eliminated (see header, step 2), inside the constraint.
+inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, Eigen::VectorXd x, int max_iterations) {
+  const Parametrisation& par = con.par;
+  Refined r{x, global_feet(par.fit_shape(x), con.n, pts), 0};
+  r.cost = cost_of(par.fit_shape(x), pts, r.t);
+  for (int round = 0; round < 3; ++round) {
+    double mu = 1e-3;
+    int stalled = 0;
+    for (int it = 0; it < max_iterations && mu < 1e8 && stalled < 2; ++it) {
+      const FitShape s = par.fit_shape(r.x);
+      const Eigen::MatrixXd chain = par.chain(r.x);
+      Eigen::MatrixXd H = Eigen::MatrixXd::Zero(par.dim(), par.dim());
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(par.dim());
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const CurveJet j = curve_jet(s, r.t[i]);
+        Eigen::Matrix3d d;
+        d << j.d_a2, j.d_a3, j.d_phase;
+        Eigen::MatrixXd J = d * chain;
+        const double speed = j.d_t.norm();
+        if (speed > 0) {
+          const Vector3d tangent = j.d_t / speed;
+          J -= tangent * (tangent.transpose() * J);
+        }
+        H += J.transpose() * J;
+        g += J.transpose() * (j.point - pts[i]);
+      }
+      Eigen::MatrixXd A = H;
+      A.diagonal() += mu * H.diagonal() + Eigen::VectorXd::Constant(par.dim(), 1e-15);
+      Eigen::VectorXd step = A.ldlt().solve(-g);
+      if (!step.allFinite()) break;
+      bool moved = false;
+      for (int halving = 0; halving < 40; ++halving, step /= 2) {
+        const Eigen::VectorXd trial = r.x + step;
+        const auto [a2, a3] = par.shape(trial);
+        if (con.admissible(a2, a3)) {
+          moved = true;
+          const FitShape ts = par.fit_shape(trial);
+          std::vector<double> t = r.t;
+          for (std::size_t i = 0; i < pts.size(); ++i) t[i] = nearest_param_from(ts, pts[i], t[i], 4);
+          const double c = cost_of(ts, pts, t);
+          if (c < r.cost) {
+            stalled = r.cost - c <= 1e-12 * r.cost ? stalled + 1 : 0;
+            r = {trial, std::move(t), c};
+            mu = std::max(mu / 3, 1e-12);
+          } else {
+            mu *= 4;
+          }
+          break;
+        }
+      }
+      if (!moved) mu *= 10;
+    }
+    // Feet may jump to another branch: find them again globally.
+    const std::vector<double> t = global_feet(par.fit_shape(r.x), con.n, pts);
+    const double c = cost_of(par.fit_shape(r.x), pts, t);
+    if (!(c < r.cost * (1 - 1e-9))) break;
+    r.t = t;
+    r.cost = c;
+  }
+  return r;
+}
+
+// ---- Counts the map allows ---------------------------------------------------------------
+
+inline std::string count_list(const std::set<std::int64_t>& counts, std::int64_t step) {
+  if (counts.empty()) return "none";
+  const std::int64_t lo = *counts.begin(), hi = *counts.rbegin();
+  if (static_cast<std::int64_t>(counts.size()) == (hi - lo) / step + 1 && (hi - lo) % step == 0)
+    return std::to_string(lo) + ".." + std::to_string(hi);
+  std::string s;
+  for (std::int64_t c : counts) s += (s.empty() ? "" : ", ") + std::to_string(c);
+  return s;
+}
+
+inline double grid_angle(int k) { return (static_cast<double>(k) + 0.5) * kPi / kFitGrid; }
+
+/// The cells of the boundary set at grid column i: a3 intervals (lo, hi) and their node count.
+struct ColumnCell {
+  double lo, hi;
+  std::int64_t nodes;
+};
+
+inline std::vector<ColumnCell> column(int i, const Ratio& n) {
+  const double a2 = grid_angle(i);
+  const BoundarySet b = boundary_set(a2, n);
+  std::vector<ColumnCell> cells;
+  double lo = 0;
+  std::int64_t count = b.events.empty() ? root_nodes(a2, kPi / 2, n, Family::free) : b.events.front().nodes_below;
+  for (std::size_t k = 0; k <= b.events.size(); ++k) {
+    const double hi = k < b.events.size() ? b.events[k].a3 : kPi;
+    cells.push_back({lo, hi, count});
+    if (k < b.events.size()) {
+      count = b.events[k].nodes_above;
+      lo = hi;
+    }
+  }
+  return cells;
+}
+
+/// column(i, n), computed once per process (the grid columns are the same for every fit; a
+/// design session fits one ratio many times). Thread-safe.
+inline const std::vector<ColumnCell>& cached_column(int i, const Ratio& n) {
+  static std::mutex mutex;
+  static std::map<std::tuple<std::int64_t, std::int64_t, int>, std::vector<ColumnCell>> cache;
+  const auto key = std::make_tuple(n.p(), n.q(), i);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  std::vector<ColumnCell> cells = column(i, n);  // outside the lock: another thread may do the same
+  const std::lock_guard<std::mutex> lock(mutex);
+  return cache.emplace(key, std::move(cells)).first->second;  // std::map: references stay valid
+}
+
+}  // namespace path_fit_detail
+
+inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone) {
+  const double h = a2 + 1e-4 < path_fit_detail::kPi - kFitMinTwist ? 1e-4 : -1e-4;
+  const BoundarySet here = boundary_set(a2, n), near = boundary_set(a2 + h, n);
+  double margin = std::numeric_limits<double>::infinity();
+  for (const BoundaryEvent& e : here.events) {
+    if (on_cone && e.kind == BoundaryEventKind::pitch_cone && std::abs(e.a3 - a3) < 1e-9) continue;
+    double slope = 0, nearest = 0.05;
+    for (const BoundaryEvent& f : near.events)
+      if (f.kind == e.kind && f.name == e.name && std::abs(f.a3 - e.a3) < nearest) {
+        nearest = std::abs(f.a3 - e.a3);
+        slope = (f.a3 - e.a3) / h;
+      }
+    margin = std::min(margin, std::abs(a3 - e.a3) / std::sqrt(1 + slope * slope));
+  }
+  return std::isfinite(margin) ? margin : std::min(a3, path_fit_detail::kPi - a3);
+}
+
+namespace path_fit_detail {
+
+inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& o) {
+  if (points.size() < kMinFitPoints || points.size() > kMaxFitPoints)
+    throw InvalidInput("points", std::to_string(points.size()) + " points", "too few or too many",
+                       "4 .. 1000000 points x,y,z on the unit sphere (a path: more is better)");
+  std::size_t distinct = 1;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double norm = points[i].norm();
+    if (!std::isfinite(norm) || std::abs(norm - 1.0) > kFitUnitTolerance)
+      throw InvalidInput("points", "point " + std::to_string(i + 1) + " with |P| = " + number_text(norm),
+                         "not on the unit sphere", "|P| within 1e-6 of 1");
+    if (i > 0 && distinct < kMinFitPoints && (points[i] - points[0]).norm() > 1e-9) ++distinct;
+  }
+  if (distinct < kMinFitPoints)
+    throw InvalidInput("points", std::to_string(points.size()) + " points", "fewer than 4 distinct points",
+                       "at least 4 distinct points (chord >= 1e-9)");
+  if (o.nodes && *o.nodes < 0) throw InvalidInput("nodes", std::to_string(*o.nodes), "negative", "a count >= 0");
+  if (o.cusps && *o.cusps < 0) throw InvalidInput("cusps", std::to_string(*o.cusps), "negative", "a count >= 0");
+  if (o.max_candidates < 1) throw InvalidInput("candidates", "0", "none asked for", "1 or more");
+  if (!(o.max_deviation > 0)) throw InvalidInput("max-deviation", number_text(o.max_deviation), "not positive", "radians > 0");
+  check_census_cost(n);
+}
+
+/// The families the cusp request allows, or a reason why none does.
+inline std::vector<Family> families(const Ratio& n, const FitOptions& o, std::string& reason) {
+  if (!o.cusps || *o.cusps == 0) return {Family::free};
+  const std::int64_t p = n.abs_p();
+  if (*o.cusps == p) return {Family::pitch_cone, Family::mirror_cone};
+  if (*o.cusps == 2 * p && std::abs(n.value()) < 1) return {Family::both_cones};
+  reason = "n = " + n.str() + " has 0 or " + std::to_string(p) + " cusps (" + std::to_string(p) +
+           " on a pitch cone a3 = a_p or pi - a_p" +
+           (std::abs(n.value()) < 1 ? ", " + std::to_string(2 * p) + " where both meet, a2 = acos(-n), a3 = pi/2" : "") +
+           "), not " + std::to_string(*o.cusps);
+  return {};
+}
+
+/// Seeds of one family inside the constraint; `seen` collects the node counts met.
+inline std::vector<Seed> seeds(const Constraint& con, const std::vector<Vector3d>& pts, std::set<std::int64_t>& seen) {
+  std::vector<std::pair<double, double>> shapes;
+  const Parametrisation& par = con.par;
+  if (par.family == Family::free) {
+    for (int i = 0; i < kFitGrid; ++i)
+      for (int k = 0; k < kFitGrid; ++k) shapes.push_back({grid_angle(i), grid_angle(k)});
+    double zmax = -1, zmin = 1;
+    for (const Vector3d& p : pts) {
+      zmax = std::max(zmax, p.z());
+      zmin = std::min(zmin, p.z());
+    }
+    const double d = std::acos(std::clamp(zmax, -1.0, 1.0)), s = std::acos(std::clamp(zmin, -1.0, 1.0));
+    for (double sum : {s, 2 * kPi - s})
+      for (double diff : {d, -d}) shapes.push_back({(sum + diff) / 2, (sum - diff) / 2});
+    if (con.nodes)
+      for (int i = 0; i < kFitGrid; ++i)
+        for (const ColumnCell& c : cached_column(i, con.n)) {
+          seen.insert(c.nodes);
+          if (c.nodes == *con.nodes && c.hi - c.lo > 4 * kFitBoundaryClearance)
+            shapes.push_back({grid_angle(i), (c.lo + c.hi) / 2});
+        }
+  } else if (par.family == Family::both_cones) {
+    shapes.push_back(par.shape(par.make(0, 0, 0)));
+  } else {
+    for (int i = 0; i < kFitGrid * kFitGrid; ++i) {
+      const double a2 = (static_cast<double>(i) + 0.5) * kPi / (kFitGrid * kFitGrid);
+      shapes.push_back(par.shape(par.make(a2, 0, 0)));
+    }
+  }
+  std::vector<Seed> out;
+  for (const auto& [a2, a3] : shapes) {
+    if (con.nodes && par.family != Family::free && a2 > kFitMinTwist && a2 < kPi - kFitMinTwist)
+      seen.insert(root_nodes(a2, a3, con.n, par.family));
+    if (con.admissible(a2, a3)) screen_shape(a2, a3, con.n, pts, out);
+  }
+  std::sort(out.begin(), out.end(), [](const Seed& a, const Seed& b) { return a.score < b.score; });
+  // The best seeds, at most one per neighbourhood of 1.5 grid steps (and one turn).
+  std::vector<Seed> picked;
+  const double near = 1.5 * kPi / kFitGrid;
+  for (const Seed& s : out) {
+    if (picked.size() == (pts.size() <= kFitFewPoints ? 3 * kFitSeeds : kFitSeeds)) break;
+    bool distinct = true;
+    for (const Seed& q : picked)
+      distinct = distinct && !(std::abs(q.a2 - s.a2) < near && std::abs(q.a3 - s.a3) < near &&
+                               std::abs(std::remainder((q.phase - s.phase) / con.n.value(),
+                                                       2 * kPi / static_cast<double>(con.n.abs_p()))) < 0.2);
+    if (distinct) picked.push_back(s);
+  }
+  return picked;
+}
+
+/// The same train (a2, a3, and phase modulo 2 pi / q) within tol.
+inline bool same_train(const FitCandidate& a, const FitCandidate& b, double tol) {
+  const double q = static_cast<double>(a.train.ratio().q());
+  return std::abs(a.train.a2() - b.train.a2()) < tol && std::abs(a.train.a3() - b.train.a3()) < tol &&
+         std::abs(std::remainder(a.train.phase_given() - b.train.phase_given(), 2 * kPi / q)) < tol;
+}
+
+/// The candidate of a refined x: the train (exactly on its cone), distances, feet.
+inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>& pts, const Refined& r) {
+  const Parametrisation& par = con.par;
+  const auto [a2, a3] = par.shape(r.x);
+  const double q_turn = 2 * kPi / static_cast<double>(con.n.q());
+  double phase = std::fmod(r.x(par.dim() - 1), q_turn);
+  if (phase < 0) phase += q_turn;
+  FitCandidate c;
+  switch (par.family) {
+    case Family::free: c.train = GearTrain(a2, a3, con.n, phase); break;
+    case Family::pitch_cone: c.train = GearTrain::on_cone(a2, A3Reference::pitch_cone, 0, con.n, phase); break;
+    case Family::mirror_cone: c.train = GearTrain::on_cone(a2, A3Reference::mirror_pitch_cone, 0, con.n, phase); break;
+    case Family::both_cones: c.train = GearTrain::on_cone(a2, A3Reference::pitch_cone, 0, con.n, phase); break;
+  }
+  const FitShape s{a2, a3, con.n.value(), r.x(par.dim() - 1)};
+  double sum = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double d = sphere_distance(curve_point(s, r.t[i]), pts[i]);
+    sum += d * d;
+    c.max_deviation = std::max(c.max_deviation, d);
+  }
+  c.rms = std::sqrt(sum / static_cast<double>(pts.size()));
+  c.params = r.t;
+  c.root_nodes = root_nodes(a2, a3, con.n, par.family);
+  c.margin = map_margin(a2, a3, con.n, par.family != Family::free);
+  return c;
+}
+
+/// A node-constrained free candidate closer than kFitBoundaryClearance (a3) to an event of its
+/// column is moved to that clearance, inside its cell; x unchanged if it cannot be.
+inline Eigen::VectorXd clear_of_boundaries(const Constraint& con, Eigen::VectorXd x) {
+  if (!con.nodes || con.par.family != Family::free) return x;
+  const BoundarySet b = boundary_set(x(0), con.n);
+  for (const BoundaryEvent& e : b.events) {
+    const double gap = x(1) - e.a3;
+    if (std::abs(gap) >= kFitBoundaryClearance) continue;
+    Eigen::VectorXd moved = x;
+    moved(1) = e.a3 + (gap >= 0 ? kFitBoundaryClearance : -kFitBoundaryClearance);
+    if (con.admissible(moved(0), moved(1))) x = moved;
+  }
+  return x;
+}
+
+}  // namespace path_fit_detail
+
+inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, const FitOptions& options) {
+  using namespace path_fit_detail;
+  check_fit_inputs(input, n, options);
+  std::vector<Vector3d> points;
+  for (const Vector3d& p : input) points.push_back(p / p.norm());
+  PathFit out;
+  out.ratio = n;
+  const std::int64_t p = n.abs_p();
+  if (options.nodes && *options.nodes % p != 0) {
+    out.reason = "n = " + n.str() + ": node points come in sets of |p| = " + std::to_string(p) +
+                 " (the curve's " + std::to_string(p) + "-fold symmetry about the sun axis); " +
+                 std::to_string(*options.nodes) + " is not a multiple of " + std::to_string(p);
+    return out;
+  }
+  const std::vector<Family> fams = families(n, options, out.reason);
+  const std::vector<Vector3d> screen_pts = subsample(points, kFitScreenPoints);
+  const std::vector<Vector3d> refine_pts = subsample(points, kFitRefinePoints);
+  const std::vector<Vector3d> polish_pts = subsample(points, kFitPolishPoints);
+  std::set<std::int64_t> seen;
+  std::vector<std::pair<Constraint, Refined>> refined;
+  for (Family f : fams) {
+    const Constraint con{n, Parametrisation{f, n.value()}, options.nodes, options.cusps && *options.cusps == 0};
+    for (const Seed& s : seeds(con, screen_pts, seen))
+      refined.push_back({con, refine(con, refine_pts, con.par.make(s.a2, s.a3, s.phase), 60)});
+  }
+  std::sort(refined.begin(), refined.end(), [](const auto& a, const auto& b) { return a.second.cost < b.second.cost; });
+  for (const auto& [con, r] : refined) {
+    if (out.candidates.size() == options.max_candidates) break;
+    Refined full = refine(con, polish_pts, r.x, 30);
+    full.x = clear_of_boundaries(con, full.x);
+    if (!con.admissible(con.par.shape(full.x).first, con.par.shape(full.x).second)) continue;
+    full.t = global_feet(con.par.fit_shape(full.x), n, points);
+    FitCandidate c = candidate(con, points, full);
+    if (c.max_deviation > options.max_deviation) continue;
+    bool repeated = false;
+    for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, c, 1e-6);
+    if (!repeated) out.candidates.push_back(std::move(c));
+  }
+  std::sort(out.candidates.begin(), out.candidates.end(), [](const auto& a, const auto& b) { return a.rms < b.rms; });
+  if (out.candidates.empty() && out.reason.empty()) {
+    if (options.nodes && !seen.count(*options.nodes))
+      out.reason = "n = " + n.str() + (options.cusps ? " with " + std::to_string(*options.cusps) + " cusps" : "") +
+                   " has " + count_list(seen, p) + " node points, not " + std::to_string(*options.nodes) +
+                   " (boundary set at " + std::to_string(kFitGrid) + " carrier twists a2)";
+    else if (std::isfinite(options.max_deviation))
+      out.reason = "no train of n = " + n.str() + " with the wanted counts passes within " +
+                   number_text(options.max_deviation) + " rad of every point";
+    else
+      out.reason = "no candidate of n = " + n.str() + " converged inside the wanted cells of the map";
+  }
+  return out;
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,204 @@
+// sphtroch synth fit — ranked trains whose curve passes nearest an untimed path, optionally with a
+// wanted node / cusp count confirmed by classify (synthesis/path_fit.hpp, exact/path_fit_output.hpp);
+// and the merge of its shards. Parsing and printing only. CGAL: a separate translation unit.
+#include "cli_common.hpp"
+#include "synth_ratios.hpp"
+
+#include "sphtroch/classify.hpp"
+#include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/io/input_file.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/polyline_input.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <utility>
+
+namespace sphtroch::cli {
+
+namespace {
+
+/// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
+/// screening and the census grow with |p| and q; measured in bench/: --ratios 7,7 is ~20 s).
+constexpr double kMaxFitWork = 20000;
+
+struct FitCommandOptions {
+  std::string input, output, n, ratios, shard, nodes, cusps, candidates, max_deviation;
+  bool json = false;
+};
+
+FitOptions fit_options(const FitCommandOptions& o) {
+  FitOptions f;
+  if (!o.nodes.empty()) f.nodes = static_cast<std::int64_t>(parse_count(o.nodes, "nodes", 0, 100000000));
+  if (!o.cusps.empty()) f.cusps = static_cast<std::int64_t>(parse_count(o.cusps, "cusps", 0, 100000000));
+  if (!o.candidates.empty()) f.max_candidates = parse_count(o.candidates, "candidates", 1, 1000);
+  if (!o.max_deviation.empty()) {
+    const auto v = parse_number(o.max_deviation);
+    if (!v || !(*v > 0) || !std::isfinite(*v))
+      throw InvalidInput("max-deviation", o.max_deviation, "not a positive angle", "radians > 0");
+    f.max_deviation = *v;
+  }
+  return f;
+}
+
+std::string wanted_text(const FitOptions& f) {
+  std::string s;
+  if (f.nodes) s += std::to_string(*f.nodes) + " node(s)";
+  if (f.cusps) s += (s.empty() ? "" : ", ") + std::to_string(*f.cusps) + " cusp(s)";
+  return s.empty() ? "any counts" : s + " wanted";
+}
+
+void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const FitOptions& f) {
+  const auto ranked = ranked_candidates(all, f);
+  out << "fit: " << ranked.size() << " candidate(s), " << wanted_text(f)
+      << "; distances and margins in radians, best first\n";
+  if (ranked.empty()) out << "no candidate: " << fit_reason(all) << "\n";
+  for (std::size_t k = 0; k < ranked.size(); ++k) {
+    const FitCandidate& c = ranked[k]->candidate;
+    const Classification& census = ranked[k]->census;
+    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << ", a2 = " << number_text(c.train.a2())
+        << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
+        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
+        << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
+        << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
+        << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
+  }
+}
+
+/// Shard members the merge needs besides the unsharded output: the candidate bound and every
+/// ratio's reason.
+std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f) {
+  nlohmann::json reasons = nlohmann::json::array();
+  for (const RatioFit& rf : all) reasons.push_back(rf.reason);
+  return "\"max_candidates\": " + std::to_string(f.max_candidates) + ", \"reasons\": " + reasons.dump() + ", ";
+}
+
+void run_fit(const FitCommandOptions& o) {
+  const RatioRequest request = requested_ratios("synth fit", o.n, o.ratios, o.shard, kMaxFitWork);
+  const FitOptions f = fit_options(o);
+  check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
+  const PolylineInput in = read_polyline(o.input, "input");
+  const std::vector<RatioFit> all = [&] {
+    try {
+      return fit_with_census(in.vertices, request.ratios, f);
+    } catch (const InvalidInput& e) {  // the library names its argument (points): here the file
+      if (e.field() != "points") throw;
+      throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
+    }
+  }();
+  const std::string fields = request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f));
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << fit_json(all, f, fields);
+    else write_fit_text(out, all, f);
+  });
+  for (const auto* c : ranked_candidates(all, f))
+    if (!c->census.certified())
+      throw UncertifiedResult{"synth fit: the census of a candidate of n = " + c->candidate.train.ratio().str() +
+                              " is not certified (exit status 3; see docs/cli.md: Certified counts)"};
+}
+
+struct FitShard {
+  std::string ratios;
+  std::size_t index = 0, count = 0, max_candidates = 0, dropped = 0;
+  std::vector<std::string> reasons;
+  std::vector<std::pair<double, std::string>> lines;  // (rms, the candidate's line as printed)
+};
+
+FitShard read_fit_shard(const std::string& path, const std::string& text) {
+  const std::string valid = "the JSON of sphtroch synth fit --ratios P,Q --shard I/K --json";
+  FitShard s;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    s.ratios = j.at("ratios").get<std::string>();
+    const std::string shard = j.at("shard").get<std::string>();
+    const auto slash = shard.find('/');
+    s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
+    s.count = parse_count(slash == std::string::npos ? "" : shard.substr(slash + 1), "shard", 1, 1000000);
+    s.max_candidates = j.at("max_candidates").get<std::size_t>();
+    s.reasons = j.at("reasons").get<std::vector<std::string>>();
+    s.dropped = j.at("dropped").get<std::size_t>();
+    const auto& candidates = j.at("candidates");
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("  {", 0) == 0) {
+        if (line.back() == ',') line.pop_back();
+        const double rms = nlohmann::json::parse(line).at("rms").get<double>();
+        s.lines.push_back({rms, line});
+      }
+    if (s.lines.size() != candidates.size()) throw InvalidInput("shard", path, "not laid out as synth fit prints it", valid);
+  } catch (const nlohmann::json::exception&) {
+    throw InvalidInput("shard", path, "not a synth fit shard", valid);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("shard", path, e.problem(), valid);
+  }
+  return s;
+}
+
+}  // namespace
+
+/// The shards of `synth fit --ratios P,Q --shard I/K --json`, in any order, joined into what the
+/// unsharded run prints: the candidates of all shards ranked again (stable, by rms, in ratio
+/// order), the reasons of every ratio when none is left.
+void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std::string>& texts,
+                   const std::string& output) {
+  std::vector<FitShard> shards;
+  for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_fit_shard(paths[k], texts[k]));
+  std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  const std::string valid = "every shard I/K of one run, I = 1..K, each once";
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const FitShard& s = shards[k];
+    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
+    if (s.ratios != shards[0].ratios || s.count != shards[0].count || s.max_candidates != shards[0].max_candidates)
+      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
+    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
+    if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
+  }
+  if (shards.back().index != shards.back().count)
+    throw InvalidInput("shard", std::to_string(shards.size() + 1) + "/" + std::to_string(shards[0].count), "missing", valid);
+  std::vector<std::pair<double, std::string>> lines;
+  std::vector<RatioFit> reasons;  // only the reasons matter when nothing is left
+  std::size_t dropped = 0;
+  for (const FitShard& s : shards) {
+    lines.insert(lines.end(), s.lines.begin(), s.lines.end());
+    for (const std::string& r : s.reasons) reasons.push_back(RatioFit{Ratio(1), {}, r, 0});
+    dropped += s.dropped;
+  }
+  std::stable_sort(lines.begin(), lines.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (lines.size() > shards[0].max_candidates) lines.resize(shards[0].max_candidates);
+  std::string reason = lines.empty() ? fit_reason(reasons) : "";
+  std::string out = "{\"ratios\": \"" + shards[0].ratios + "\", \"candidates\": [";
+  for (std::size_t k = 0; k < lines.size(); ++k) out += (k ? ",\n" : "\n") + lines[k].second;
+  out += std::string(lines.empty() ? "" : "\n") + "], \"reason\": " + nlohmann::json(reason).dump() +
+         ", \"dropped\": " + std::to_string(dropped) + "}\n";
+  write_output(output, [&](std::ostream& o) { o << out; });
+}
+
+void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<FitCommandOptions>();
+  CLI::App* cmd = synth.add_subcommand("fit", "ranked trains nearest an untimed path, with a wanted node / cusp count");
+  cmd->footer(
+      "--input FILE: CSV with a header x,y,z (or .npy (N, 3)), 4 or more unit vectors along the wanted\n"
+      "path (sampled or drawn, possibly noisy; their order is not used); - for standard input. The sun\n"
+      "axis is Z. For each ratio (--n R, or --ratios P,Q) it minimises the spherical distances of the\n"
+      "points to the curve. --nodes K / --cusps C keep the search inside the cells of the (a2, a3) map\n"
+      "with that census; every candidate printed has it, confirmed by classify. None possible: no\n"
+      "candidate and the reason (exit 0). Example: sphtroch synth fit --input path.csv --n 2 --nodes 2");
+  cmd->add_option("--input", o->input, "the path's points (CSV x,y,z or .npy; - for standard input)")->required();
+  cmd->add_option("--n", o->n, "the gear ratio p/q");
+  cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
+  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+  cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)");
+  cmd->add_option("--cusps", o->cusps, "wanted cusps C (0, or |p| on a pitch cone)");
+  cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");
+  cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point");
+  cmd->add_flag("--json", o->json, "{\"candidates\": [{\"n\", \"a2\", \"a3\", \"phase\", \"rms\", \"max_deviation\", "
+                                   "\"margin\", \"counts\", ...}], \"reason\", \"dropped\"} (docs/cli.md: synth fit)");
+  add_output_option(*cmd, o->output, "the candidates");
+  actions.emplace_back(cmd, [o] { run_fit(*o); });
+}
+
+}  // namespace sphtroch::cli
