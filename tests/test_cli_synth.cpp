@@ -134,3 +134,86 @@ TEST_CASE("cli synth points --shard and synth merge: the shards joined equal the
     CHECK(count_lines(r.err) == 1);
   }
 }
+
+TEST_CASE("cli synth fit: a trace's path gives back its train first; a wanted count holds for every candidate", "[cli][synth]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 2 --a2 1.1 --a3 0.9 --phase 0.4 --samples 300 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);
+  const Result r = run("synth fit --input path.csv --n 2 --json", dir, true);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  REQUIRE(j["candidates"].size() >= 1);
+  const auto& best = j["candidates"][0];
+  CHECK(std::abs(best["a2"].get<double>() - 1.1) < 1e-7);
+  CHECK(std::abs(best["a3"].get<double>() - 0.9) < 1e-7);
+  CHECK(std::abs(std::remainder(best["phase"].get<double>() - 0.4, M_PI)) < 1e-7);
+  CHECK(best["rms"].get<double>() < 1e-9);
+  CHECK(j["reason"] == "");
+  // The census of the hidden train, by `classify --json`, is the best candidate's.
+  const nlohmann::json hidden = nlohmann::json::parse(run("classify --n 2 --a2 1.1 --a3 0.9 --json", dir, true).out);
+  CHECK(best["counts"]["nodes"].get<std::size_t>() == hidden["nodes"].size());
+  // Another count that exists at this a2 (boundaries: 0, 2 and 4 node points): every candidate has it.
+  const nlohmann::json other = nlohmann::json::parse(run("synth fit --input path.csv --n 2 --nodes 4 --json", dir, true).out);
+  REQUIRE(other["candidates"].size() >= 1);
+  for (const auto& c : other["candidates"]) {
+    CHECK(c["counts"]["nodes"] == 4);
+    CHECK(c["census_certified"] == true);
+    CHECK(c["margin"].get<double>() >= 0);
+  }
+  const Result cusps = run("synth fit --input path.csv --n 2 --cusps 2 --candidates 2", dir, true);
+  REQUIRE(cusps.status == 0);
+  CHECK(contains(cusps.out, "2 cusp(s) (certified)"));
+  CHECK(contains(cusps.out, "plot it: sphtroch plot --n 2 --a2 "));
+  // Impossible requests: no candidate, the reason, exit 0.
+  for (const std::string& args : {std::string("--nodes 3"), std::string("--nodes 8"), std::string("--cusps 1")}) {
+    INFO(args);
+    const Result none = run("synth fit --input path.csv --n 2 --json " + args, dir, true);
+    CHECK(none.status == 0);
+    const nlohmann::json n = nlohmann::json::parse(none.out);
+    CHECK(n["candidates"].empty());
+    CHECK_FALSE(n["reason"].get<std::string>().empty());
+  }
+}
+
+TEST_CASE("cli synth fit: bad input is one stderr line, exit 2, no stdout", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > three.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0,0,1.00001\\n' > off.csv && "
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\nnan,0,1\\n' > nan.csv && printf 'x,y,z\\n1,0,0\\n1,0,0\\n0,1,0\\n0,1,0\\n' > dup.csv && "
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0.6,0.8,0\\n' > ok.csv",
+                dir).status == 0);
+  for (const std::string& args :
+       {std::string("--input three.csv --n 1"), std::string("--input off.csv --n 1"), std::string("--input nan.csv --n 1"),
+        std::string("--input dup.csv --n 1"), std::string("--input ok.csv"), std::string("--input ok.csv --n 1 --ratios 2,2"),
+        std::string("--input ok.csv --ratios 30,30"), std::string("--input ok.csv --n 1 --nodes -1"),
+        std::string("--input ok.csv --n 1 --cusps x"), std::string("--input ok.csv --n 1 --candidates 0"),
+        std::string("--input ok.csv --n 1 --max-deviation 0"), std::string("--input ok.csv --n 1001")}) {
+    INFO(args);
+    const Result r = run("synth fit " + args, dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+  }
+}
+
+TEST_CASE("cli synth fit --slice and synth merge: the shards joined equal the unsharded run", "[cli][synth]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 60 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);
+  REQUIRE(run("synth fit --input path.csv --ratios 2,2 --json -o all.json", dir, true).status == 0);
+  for (int i = 1; i <= 2; ++i)
+    REQUIRE(run("synth fit --input path.csv --ratios 2,2 --json --slice " + std::to_string(i) + "/2 -o part" + std::to_string(i) +
+                    ".json", dir, true).status == 0);
+  REQUIRE(run("synth merge part2.json part1.json -o merged.json", dir, true).status == 0);
+  CHECK(shell("cmp all.json merged.json", dir).status == 0);
+  const nlohmann::json j = nlohmann::json::parse(shell("cat all.json", dir).out);
+  // n = 1/2 and n = -1/2 at (pi - a2, pi - a3) draw the same curve: both pass the points exactly.
+  CHECK(j["candidates"][0]["rms"].get<double>() < 1e-9);
+  bool hidden = false;
+  for (const auto& c : j["candidates"])
+    hidden = hidden || (c["n"] == "1/2" && std::abs(c["a2"].get<double>() - 1) < 1e-7 && c["rms"].get<double>() < 1e-9);
+  CHECK(hidden);
+  const Result missing = run("synth merge part1.json", dir, true);
+  CHECK(missing.status == 2);
+  CHECK(missing.out.empty());
+}

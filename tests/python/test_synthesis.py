@@ -63,3 +63,35 @@ def test_synth_points_over_a_ratio_set_is_the_cli_json():
         sphtroch.synth_points(P[[1, 10, 28]], n=2, ratios=(2, 1))
     with pytest.raises(sphtroch.InvalidInput):
         sphtroch.synth_points(P[[1, 10, 28]], ratios=(8, 1))
+
+
+def test_fit_gives_back_the_train_of_a_path_and_keeps_a_wanted_count():
+    # A noisy sampled path of a known train (the forward model through trace()); expected: that
+    # train first, within the noise; a wanted count is the census of every candidate (classify).
+    train = sphtroch.GearTrain(a2=1.1, a3=0.9, n=2, phase=0.4)
+    _, P = train.trace(samples=300)
+    rng = np.random.default_rng(3)
+    noisy = P + 1e-4 * rng.standard_normal(P.shape)
+    noisy /= np.linalg.norm(noisy, axis=1)[:, None]
+    r = sphtroch.fit(noisy, n=2)
+    best = r["candidates"][0]
+    assert r["reason"] == ""
+    assert abs(best["a2"] - 1.1) < 1e-3 and abs(best["a3"] - 0.9) < 1e-3
+    assert best["rms"] <= 2e-4
+    hidden = train.classify()
+    assert best["counts"]["nodes"] == len(hidden["nodes"])
+    other = sphtroch.fit(noisy, n=2, nodes=4, candidates=3)
+    assert 1 <= len(other["candidates"]) <= 3
+    assert all(c["counts"]["nodes"] == 4 and c["census_certified"] for c in other["candidates"])
+    none = sphtroch.fit(noisy, n=2, nodes=3)
+    assert none["candidates"] == [] and "multiple of 2" in none["reason"]
+
+
+def test_fit_refuses_bad_input():
+    good = np.array([[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0], [0.6, 0.8, 0]])
+    for args, field in [((good[:3],), "points"), ((good * 1.01,), "points"), ((good, ), "nodes")]:
+        with pytest.raises(sphtroch.InvalidInput) as info:
+            sphtroch.fit(*args, n=1, nodes=-1 if field == "nodes" else None)
+        assert info.value.field == field
+    with pytest.raises(sphtroch.InvalidInput):
+        sphtroch.fit(good, n=1, ratios=(2, 2))
