@@ -81,6 +81,9 @@ constexpr std::size_t kFitSeeds = 8, kFitFewPoints = 50, kFitScreenPoints = 120,
 constexpr std::size_t kFitPolishPoints = 2000;
 /// a2, a3 of every candidate lie in [kFitMinTwist, pi - kFitMinTwist] (as GearTrain requires for a2).
 constexpr double kFitMinTwist = 1e-6;
+/// Candidates closer than this in a2, a3 and phase (modulo 2 pi / q), radians, are one design: the
+/// better is kept (a flat minimum ends refinements from different seeds a little apart).
+constexpr double kFitSameDesign = 1e-4;
 /// a3 distance a node-constrained candidate keeps from the events bounding its cell (radians).
 constexpr double kFitBoundaryClearance = 1e-7;
 
@@ -371,7 +374,11 @@ inline std::string count_list(const std::set<std::int64_t>& counts, std::int64_t
   if (static_cast<std::int64_t>(counts.size()) == (hi - lo) / step + 1 && (hi - lo) % step == 0)
     return std::to_string(lo) + ".." + std::to_string(hi);
   std::string s;
-  for (std::int64_t c : counts) s += (s.empty() ? "" : ", ") + std::to_string(c);
+  std::size_t k = 0;
+  for (auto it = counts.begin(); it != counts.end(); ++it, ++k) {
+    if (k == 8 && counts.size() > 10) return s + ", ... (" + std::to_string(counts.size()) + " counts up to " + std::to_string(hi) + ")";
+    s += (s.empty() ? "" : ", ") + std::to_string(*it);
+  }
   return s;
 }
 
@@ -610,7 +617,7 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
     FitCandidate c = candidate(con, points, full);
     if (c.max_deviation > options.max_deviation) continue;
     bool repeated = false;
-    for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, c, 1e-6);
+    for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, c, kFitSameDesign);
     if (!repeated) out.candidates.push_back(std::move(c));
   }
   std::sort(out.candidates.begin(), out.candidates.end(), [](const auto& a, const auto& b) { return a.rms < b.rms; });
