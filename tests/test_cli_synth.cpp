@@ -135,7 +135,7 @@ TEST_CASE("cli synth points --shard and synth merge: the shards joined equal the
   }
 }
 
-TEST_CASE("cli synth fit: a trace's path gives back its train first; a wanted count holds for every candidate", "[cli][synth]") {
+TEST_CASE("cli synth fit: a trace's path gives back its train first, and a wanted count holds for every candidate", "[cli][synth]") {
   TempDir dir;
   REQUIRE(run("trace --n 2 --a2 1.1 --a3 0.9 --phase 0.4 --samples 300 -o t.csv", dir, true).status == 0);
   REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);

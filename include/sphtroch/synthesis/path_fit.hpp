@@ -83,7 +83,7 @@ constexpr std::size_t kFitPolishPoints = 2000;
 constexpr double kFitMinTwist = 1e-6;
 /// Candidates closer than this in a2, a3 and phase (modulo 2 pi / q), radians, are one design: the
 /// better is kept (a flat minimum ends refinements from different seeds a little apart).
-constexpr double kFitSameDesign = 1e-4;
+constexpr double kFitSameDesign = 1e-3;
 /// a3 distance a node-constrained candidate keeps from the events bounding its cell (radians).
 constexpr double kFitBoundaryClearance = 1e-7;
 
@@ -471,10 +471,11 @@ inline std::vector<Family> families(const Ratio& n, const FitOptions& o, std::st
   const std::int64_t p = n.abs_p();
   if (*o.cusps == p) return {Family::pitch_cone, Family::mirror_cone};
   if (*o.cusps == 2 * p && std::abs(n.value()) < 1) return {Family::both_cones};
-  reason = "n = " + n.str() + " has 0 or " + std::to_string(p) + " cusps (" + std::to_string(p) +
-           " on a pitch cone a3 = a_p or pi - a_p" +
-           (std::abs(n.value()) < 1 ? ", " + std::to_string(2 * p) + " where both meet, a2 = acos(-n), a3 = pi/2" : "") +
-           "), not " + std::to_string(*o.cusps);
+  const bool both = std::abs(n.value()) < 1;  // the cones meet at a2 = acos(-n), a3 = pi/2
+  reason = "n = " + n.str() + " has " + (both ? "0, " + std::to_string(p) + " or " + std::to_string(2 * p) : "0 or " + std::to_string(p)) +
+           " cusps (" + std::to_string(p) + " on a pitch cone a3 = a_p or pi - a_p" +
+           (both ? ", " + std::to_string(2 * p) + " where both meet, a2 = acos(-n), a3 = pi/2" : "") + "), not " +
+           std::to_string(*o.cusps);
   return {};
 }
 
