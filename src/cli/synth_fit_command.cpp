@@ -148,17 +148,9 @@ void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std:
   std::vector<FitShard> shards;
   for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_fit_shard(paths[k], texts[k]));
   std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
-  const std::string valid = "every shard I/K of one run, I = 1..K, each once";
-  for (std::size_t k = 0; k < shards.size(); ++k) {
-    const FitShard& s = shards[k];
-    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
-    if (s.ratios != shards[0].ratios || s.count != shards[0].count || s.max_candidates != shards[0].max_candidates)
-      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
-    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
-    if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
-  }
-  if (shards.back().index != shards.back().count)
-    throw InvalidInput("shard", std::to_string(shards.size() + 1) + "/" + std::to_string(shards[0].count), "missing", valid);
+  std::vector<ShardName> names;
+  for (const FitShard& s : shards) names.push_back({s.ratios, s.index, s.count, std::to_string(s.max_candidates)});
+  check_shard_set(names);
   std::vector<std::pair<double, std::string>> lines;
   std::vector<RatioFit> reasons;  // only the reasons matter when nothing is left
   std::size_t dropped = 0;
@@ -187,10 +179,7 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
       "points to the curve. --nodes K / --cusps C keep the search inside the cells of the (a2, a3) map\n"
       "with that census; every candidate printed has it, confirmed by classify. None possible: no\n"
       "candidate and the reason (exit 0). Example: sphtroch synth fit --input path.csv --n 2 --nodes 2");
-  cmd->add_option("--input", o->input, "the path's points (CSV x,y,z or .npy; - for standard input)")->required();
-  cmd->add_option("--n", o->n, "the gear ratio p/q");
-  cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
-  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->shard, "the path's points");
   cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)");
   cmd->add_option("--cusps", o->cusps, "wanted cusps C (0, or |p| on a pitch cone)");
   cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");

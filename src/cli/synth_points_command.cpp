@@ -128,17 +128,9 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output)
   std::vector<PointsShard> shards;
   for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_points_shard(paths[k], texts[k]));
   std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
-  const std::string valid = "every shard I/K of one run, I = 1..K, each once";
-  for (std::size_t k = 0; k < shards.size(); ++k) {
-    const PointsShard& s = shards[k];
-    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
-    if (s.ratios != shards[0].ratios || s.count != shards[0].count)
-      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
-    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
-    if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
-  }
-  if (shards.back().index != shards.back().count)
-    throw InvalidInput("shard", std::to_string(shards.size() + 1) + "/" + std::to_string(shards[0].count), "missing", valid);
+  std::vector<ShardName> names;
+  for (const PointsShard& s : shards) names.push_back({s.ratios, s.index, s.count, ""});
+  check_shard_set(names);
   bool complete = true;
   std::size_t undecided = 0;
   std::string out = "{\"ratios\": \"" + shards[0].ratios + "\", \"solutions\": [";
@@ -187,10 +179,7 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
       "both signs) it prints ALL trains with a2, a3 in [1e-6, pi - 1e-6] whose tracer passes through the\n"
       "three points, with theta2 at each point, the residual and the census. Exit 3 if the list is not\n"
       "certified complete. Example: sphtroch synth points --input pts.csv --n 1/2 --json");
-  cmd->add_option("--input", o->input, "the three points (CSV x,y,z or .npy; - for standard input)")->required();
-  cmd->add_option("--n", o->n, "the gear ratio p/q");
-  cmd->add_option("--ratios", o->ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
-  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->shard, "the three points");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
                                    "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");

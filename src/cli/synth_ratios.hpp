@@ -71,6 +71,39 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
   return r;
 }
 
+/// What names one shard of a ratio-set run: the set, I of K, and `run` (anything else that
+/// must agree between the shards of one run, e.g. the candidate bound).
+struct ShardName {
+  std::string ratios;
+  std::size_t index = 0, count = 0;
+  std::string run;
+};
+
+/// Refuses (InvalidInput "shard") a set of shards, sorted by index, that is not I = 1..K of one
+/// run, each once.
+inline void check_shard_set(const std::vector<ShardName>& shards) {
+  const std::string valid = "every shard I/K of one run, I = 1..K, each once";
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const ShardName& s = shards[k];
+    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
+    if (s.ratios != shards[0].ratios || s.count != shards[0].count || s.run != shards[0].run)
+      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
+    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
+    if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
+  }
+  if (shards.back().index != shards.back().count)
+    throw InvalidInput("shard", std::to_string(shards.size() + 1) + "/" + std::to_string(shards[0].count), "missing", valid);
+}
+
+/// --input, --n, --ratios and --shard (--slice) of a synth command over a ratio set.
+inline void add_ratio_set_options(CLI::App& cmd, std::string& input, std::string& n, std::string& ratios,
+                                  std::string& shard, const std::string& what) {
+  cmd.add_option("--input", input, what + " (CSV x,y,z or .npy; - for standard input)")->required();
+  cmd.add_option("--n", n, "the gear ratio p/q");
+  cmd.add_option("--ratios", ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
+  cmd.add_option("--shard,--slice", shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+}
+
 /// The arguments that make `sphtroch trace` / `plot` draw this train.
 inline std::string train_arguments(const GearTrain& g) {
   return "--n " + g.ratio().str() + " --a2 " + number_text(g.a2()) + " --a3 " + number_text(g.a3()) + " --phase " +
