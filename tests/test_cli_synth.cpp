@@ -180,11 +180,12 @@ TEST_CASE("cli synth fit: bad input is one stderr line, exit 2, no stdout", "[cl
   TempDir dir;
   REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > three.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0,0,1.00001\\n' > off.csv && "
                 "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\nnan,0,1\\n' > nan.csv && printf 'x,y,z\\n1,0,0\\n1,0,0\\n0,1,0\\n0,1,0\\n' > dup.csv && "
-                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0.6,0.8,0\\n' > ok.csv",
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,1,0\\n0,1,0\\n' > two.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0.6,0.8,0\\n' > ok.csv",
                 dir).status == 0);
   for (const std::string& args :
        {std::string("--input three.csv --n 1"), std::string("--input off.csv --n 1"), std::string("--input nan.csv --n 1"),
-        std::string("--input dup.csv --n 1"), std::string("--input ok.csv"), std::string("--input ok.csv --n 1 --ratios 2,2"),
+        std::string("--input dup.csv --n 1"), std::string("--input two.csv --n 1"), std::string("--input ok.csv"),
+        std::string("--input ok.csv --n 1 --ratios 2,2"),
         std::string("--input ok.csv --ratios 30,30"), std::string("--input ok.csv --n 1 --nodes -1"),
         std::string("--input ok.csv --n 1 --cusps x"), std::string("--input ok.csv --n 1 --candidates 0"),
         std::string("--input ok.csv --n 1 --max-deviation 0"), std::string("--input ok.csv --n 1001")}) {
@@ -213,7 +214,15 @@ TEST_CASE("cli synth fit --slice and synth merge: the shards joined equal the un
   for (const auto& c : j["candidates"])
     hidden = hidden || (c["n"] == "1/2" && std::abs(c["a2"].get<double>() - 1) < 1e-7 && c["rms"].get<double>() < 1e-9);
   CHECK(hidden);
-  const Result missing = run("synth merge part1.json", dir, true);
-  CHECK(missing.status == 2);
-  CHECK(missing.out.empty());
+  // Refused: a part missing, a part of another run (other options), a part edited by hand.
+  REQUIRE(run("synth fit --input path.csv --ratios 2,2 --nodes 2 --json --slice 2/2 -o other.json", dir, true).status == 0);
+  REQUIRE(shell("sed '2s/\"a2\": [0-9.]*/\"a2\": 7/' part1.json > edited.json", dir).status == 0);
+  for (const std::string& args : {std::string("synth merge part1.json"), std::string("synth merge part1.json other.json"),
+                                  std::string("synth merge edited.json part2.json")}) {
+    INFO(args);
+    const Result r = run(args, dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+  }
 }

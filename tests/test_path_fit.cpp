@@ -227,6 +227,8 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
   CHECK(field_of({ok[0], ok[1], ok[2], Vector3d(0, 0, 1.00001)}) == "points");
   CHECK(field_of({ok[0], ok[1], ok[2], Vector3d(NAN, 0, 1)}) == "points");
   CHECK(field_of({ok[0], ok[0], ok[0], ok[0], ok[1]}) == "points");  // 2 distinct points
+  CHECK(field_of({ok[0], ok[1], ok[1], ok[2], ok[2]}) == "points");  // 3 distinct points
+  CHECK(field_of({ok[0], ok[1], ok[1], ok[2], ok[3]}) == "none");    // 4 distinct points
   FitOptions neg;
   neg.nodes = -1;
   CHECK(field_of(ok, neg) == "nodes");

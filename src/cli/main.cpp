@@ -65,6 +65,13 @@ std::optional<std::string> flag_with_value(const CLI::App& app, int argc, char**
   return std::nullopt;
 }
 
+/// "sphtroch synth fit": the names from the tool down to this command.
+std::string command_path(const CLI::App& command) {
+  std::string path = command.get_name();
+  for (const CLI::App* a = command.get_parent(); a != nullptr; a = a->get_parent()) path = a->get_name() + " " + path;
+  return path;
+}
+
 /// An option given with an empty value ("--samples ''") is an error, never the default.
 void check_no_empty_values(const CLI::App& app) {
   for (const CLI::App* sub : all_commands(app))
@@ -72,7 +79,7 @@ void check_no_empty_values(const CLI::App& app) {
       if (opt->count() > 0 && opt->get_expected_min() > 0)
         for (const std::string& v : opt->results())
           if (v.empty())
-            throw UsageError{opt->get_name() + " = \"\": an empty value; valid: see sphtroch " + sub->get_name() +
+            throw UsageError{opt->get_name() + " = \"\": an empty value; valid: see " + command_path(*sub) +
                              " --help (leave the option out for its default)"};
 }
 

@@ -23,8 +23,11 @@ namespace sphtroch::cli {
 namespace {
 
 /// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
-/// screening and the census grow with |p| and q; measured in bench/: --ratios 7,7 is ~20 s).
+/// screening and the census grow with |p| and q; measured: --ratios 7,7 on 300 points 11 s).
 constexpr double kMaxFitWork = 20000;
+/// Bound on points x ratios (each candidate's distances are measured on every point: ~16 us per
+/// point and ratio here, so 2e6 is ~30 s).
+constexpr double kMaxFitPointRatios = 2e6;
 
 struct FitCommandOptions {
   std::string input, output, n, ratios, shard, nodes, cusps, candidates, max_deviation;
@@ -37,10 +40,9 @@ FitOptions fit_options(const FitCommandOptions& o) {
   if (!o.cusps.empty()) f.cusps = static_cast<std::int64_t>(parse_count(o.cusps, "cusps", 0, 100000000));
   if (!o.candidates.empty()) f.max_candidates = parse_count(o.candidates, "candidates", 1, 1000);
   if (!o.max_deviation.empty()) {
-    const auto v = parse_number(o.max_deviation);
-    if (!v || !(*v > 0) || !std::isfinite(*v))
-      throw InvalidInput("max-deviation", o.max_deviation, "not a positive angle", "radians > 0");
-    f.max_deviation = *v;
+    const double v = parse_angle(o.max_deviation, "max-deviation");
+    if (!(v > 0)) throw InvalidInput("max-deviation", o.max_deviation, "not a positive angle", "an angle > 0 (radians, or e.g. 1deg, pi/180)");
+    f.max_deviation = v;
   }
   return f;
 }
@@ -69,12 +71,19 @@ void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const F
   }
 }
 
-/// Shard members the merge needs besides the unsharded output: the candidate bound and every
-/// ratio's reason.
-std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f) {
+/// The options a fit computed with, as text (part of the run's fingerprint).
+std::string options_text(const FitOptions& f) {
+  return "nodes " + (f.nodes ? std::to_string(*f.nodes) : "any") + " cusps " + (f.cusps ? std::to_string(*f.cusps) : "any") +
+         " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates);
+}
+
+/// Shard members the merge needs besides the unsharded output: the run's fingerprint, the
+/// candidate bound and every ratio's reason.
+std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f, const std::string& run) {
   nlohmann::json reasons = nlohmann::json::array();
   for (const RatioFit& rf : all) reasons.push_back(rf.reason);
-  return "\"max_candidates\": " + std::to_string(f.max_candidates) + ", \"reasons\": " + reasons.dump() + ", ";
+  return "\"run\": \"" + run + "\", \"max_candidates\": " + std::to_string(f.max_candidates) + ", \"reasons\": " +
+         reasons.dump() + ", ";
 }
 
 void run_fit(const FitCommandOptions& o) {
@@ -82,6 +91,12 @@ void run_fit(const FitCommandOptions& o) {
   const FitOptions f = fit_options(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
+  const double point_ratios = double(in.vertices.size()) * double(request.ratios.size());
+  if (point_ratios > kMaxFitPointRatios)
+    throw InvalidInput("input", o.input,
+                       std::to_string(in.vertices.size()) + " points x " + std::to_string(request.ratios.size()) +
+                           " ratio(s) over the bound",
+                       "points x ratios <= 2000000 (e.g. 28000 points for --ratios 7,7; fewer points, or --shard I/K)");
   const std::vector<RatioFit> all = [&] {
     try {
       return fit_with_census(in.vertices, request.ratios, f);
@@ -90,7 +105,8 @@ void run_fit(const FitCommandOptions& o) {
       throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
     }
   }();
-  const std::string fields = request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f));
+  const std::string fields =
+      request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
   write_output(o.output, [&](std::ostream& out) {
     if (o.json) out << fit_json(all, f, fields);
     else write_fit_text(out, all, f);
@@ -102,11 +118,43 @@ void run_fit(const FitCommandOptions& o) {
 }
 
 struct FitShard {
-  std::string ratios;
+  std::string ratios, run;
   std::size_t index = 0, count = 0, max_candidates = 0, dropped = 0;
   std::vector<std::string> reasons;
   std::vector<std::pair<double, std::string>> lines;  // (rms, the candidate's line as printed)
 };
+
+/// A count member: an unsigned integer (not -3, 2.5 or 1e20).
+std::size_t count_member(const nlohmann::json& j, const char* key) {
+  const nlohmann::json& v = j.at(key);
+  if (!v.is_number_unsigned()) throw InvalidInput("shard", key, "not a count", "an integer >= 0");
+  return v.get<std::size_t>();
+}
+
+/// One candidate line as synth fit prints it, its values checked; returns its rms.
+double checked_candidate(const std::string& line) {
+  const nlohmann::json c = nlohmann::json::parse(line);
+  const Ratio n = parse_ratio(c.at("n").get<std::string>(), "n");
+  const double pi = Constants<double>::pi();
+  auto number = [&](const char* key, double lo, double hi) {
+    const double v = c.at(key).get<double>();
+    if (!(v >= lo && v <= hi)) throw InvalidInput("shard", std::string(key) + " " + number_text(v), "out of range", "as synth fit prints it");
+    return v;
+  };
+  number("a2", 0, pi);
+  number("a3", 0, pi);
+  number("phase", 0, 2 * pi / double(n.q()));
+  const double rms = number("rms", 0, pi);
+  number("max_deviation", rms, pi);
+  number("margin", 0, pi);
+  const nlohmann::json& k = c.at("counts");
+  if (count_member(k, "nodes") != count_member(k, "crossings") + count_member(k, "tangencies"))
+    throw InvalidInput("shard", "counts", "nodes != crossings + tangencies", "as synth fit prints it");
+  count_member(k, "cusps");
+  if (!c.at("census_certified").is_boolean() || c.size() != 9 || k.size() != 4)
+    throw InvalidInput("shard", "candidate", "not as synth fit prints it", "the members of docs/cli.md: synth fit");
+  return rms;
+}
 
 FitShard read_fit_shard(const std::string& path, const std::string& text) {
   const std::string valid = "the JSON of sphtroch synth fit --ratios P,Q --shard I/K --json";
@@ -115,25 +163,31 @@ FitShard read_fit_shard(const std::string& path, const std::string& text) {
     const nlohmann::json j = nlohmann::json::parse(text);
     s.ratios = j.at("ratios").get<std::string>();
     const std::string shard = j.at("shard").get<std::string>();
+    const std::size_t ratios_here = shard_ratio_count(s.ratios, shard);
     const auto slash = shard.find('/');
     s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
-    s.count = parse_count(slash == std::string::npos ? "" : shard.substr(slash + 1), "shard", 1, 1000000);
-    s.max_candidates = j.at("max_candidates").get<std::size_t>();
+    s.count = parse_count(shard.substr(slash + 1), "shard", 1, 1000000);
+    s.run = j.at("run").get<std::string>();
+    s.max_candidates = count_member(j, "max_candidates");
     s.reasons = j.at("reasons").get<std::vector<std::string>>();
-    s.dropped = j.at("dropped").get<std::size_t>();
+    s.dropped = count_member(j, "dropped");
     const auto& candidates = j.at("candidates");
+    if (s.reasons.size() != ratios_here || candidates.size() > s.max_candidates || s.max_candidates < 1 ||
+        s.max_candidates > 1000)
+      throw InvalidInput("shard", path, "its reasons or candidates do not fit its ratios", valid);
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);)
       if (line.rfind("  {", 0) == 0) {
         if (line.back() == ',') line.pop_back();
-        const double rms = nlohmann::json::parse(line).at("rms").get<double>();
+        const double rms = checked_candidate(line);
+        if (!s.lines.empty() && rms < s.lines.back().first) throw InvalidInput("shard", path, "candidates not best first", valid);
         s.lines.push_back({rms, line});
       }
     if (s.lines.size() != candidates.size()) throw InvalidInput("shard", path, "not laid out as synth fit prints it", valid);
   } catch (const nlohmann::json::exception&) {
     throw InvalidInput("shard", path, "not a synth fit shard", valid);
   } catch (const InvalidInput& e) {
-    throw InvalidInput("shard", path, e.problem(), valid);
+    throw InvalidInput("shard", path, e.value() + ": " + e.problem(), valid);
   }
   return s;
 }
@@ -149,7 +203,7 @@ void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std:
   for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_fit_shard(paths[k], texts[k]));
   std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   std::vector<ShardName> names;
-  for (const FitShard& s : shards) names.push_back({s.ratios, s.index, s.count, std::to_string(s.max_candidates)});
+  for (const FitShard& s : shards) names.push_back({s.ratios, s.index, s.count, s.run + " " + std::to_string(s.max_candidates)});
   check_shard_set(names);
   std::vector<std::pair<double, std::string>> lines;
   std::vector<RatioFit> reasons;  // only the reasons matter when nothing is left
@@ -167,6 +221,9 @@ void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std:
   out += std::string(lines.empty() ? "" : "\n") + "], \"reason\": " + nlohmann::json(reason).dump() +
          ", \"dropped\": " + std::to_string(dropped) + "}\n";
   write_output(output, [&](std::ostream& o) { o << out; });
+  for (const auto& line : lines)
+    if (!nlohmann::json::parse(line.second).at("census_certified").get<bool>())
+      throw UncertifiedResult{"synth merge: the census of a candidate is not certified (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
 void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions) {

@@ -75,8 +75,11 @@ void run_points(const PointsOptions& o) {
       throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
     }
   }();
+  // A shard names its run (points and ratio set), so that synth merge joins only one run's shards.
+  const std::string fields =
+      request.json_fields + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, "points") + "\", ");
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << precision_points_json(all, request.json_fields);
+    if (o.json) out << precision_points_json(all, fields);
     else write_points_text(out, all);
   });
   check_points_certified(all);
@@ -88,7 +91,7 @@ constexpr std::size_t kMaxShardBytes = std::size_t(1) << 30;
 /// One shard of `synth points --ratios P,Q --shard I/K --json`: its set, index and count, and its
 /// solution lines as printed (kept verbatim so that the merge equals the unsharded output).
 struct PointsShard {
-  std::string ratios;
+  std::string ratios, run;
   std::size_t index = 0, count = 0;
   bool complete = true;
   std::size_t undecided = 0;
@@ -105,6 +108,8 @@ PointsShard read_points_shard(const std::string& path, const std::string& text) 
     const auto slash = shard.find('/');
     s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
     s.count = parse_count(slash == std::string::npos ? "" : shard.substr(slash + 1), "shard", 1, 1000000);
+    s.run = j.at("run").get<std::string>();
+    shard_ratio_count(s.ratios, shard);  // the canonical I/K of its set
     s.complete = j.at("complete").get<bool>();
     s.undecided = j.at("undecided_boxes").get<std::size_t>();
     const std::size_t solutions = j.at("solutions").size();
@@ -129,7 +134,7 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output)
   for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_points_shard(paths[k], texts[k]));
   std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   std::vector<ShardName> names;
-  for (const PointsShard& s : shards) names.push_back({s.ratios, s.index, s.count, ""});
+  for (const PointsShard& s : shards) names.push_back({s.ratios, s.index, s.count, s.run});
   check_shard_set(names);
   bool complete = true;
   std::size_t undecided = 0;

@@ -7,9 +7,12 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/types.hpp"
 #include "sphtroch/io/parse.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,6 +74,35 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
   return r;
 }
 
+/// A fingerprint (FNV-1a, 64 bits, hex) of what a run of a synth command computed from: its
+/// points and `options` (the options as parsed), so that `synth merge` joins only shards of one run.
+inline std::string run_fingerprint(const std::vector<Vector3d>& points, const std::string& options) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto mix = [&h](const void* data, std::size_t size) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  for (const Vector3d& p : points) mix(p.data(), 3 * sizeof(double));
+  mix(options.data(), options.size());
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+/// The number of ratios of shard I/K of --ratios P,Q, or refuses (InvalidInput) a shard name
+/// that is not the canonical "I/K" of that set.
+inline std::size_t shard_ratio_count(const std::string& ratios, const std::string& shard) {
+  const auto comma = ratios.find(',');
+  const std::size_t p = parse_count(ratios.substr(0, comma), "ratios", 1, 1000);
+  const std::size_t q = parse_count(comma == std::string::npos ? "" : ratios.substr(comma + 1), "ratios", 1, 1000);
+  if (ratios != std::to_string(p) + "," + std::to_string(q)) throw InvalidInput("ratios", ratios, "not P,Q", "P,Q as written by the run");
+  const auto [begin, end] = shard_range(shard, ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q)).size());
+  const auto slash = shard.find('/');
+  if (shard != std::to_string(parse_count(shard.substr(0, slash), "shard", 1, 1000000)) + shard.substr(slash))
+    throw InvalidInput("shard", shard, "not written as the run writes it", "I/K");
+  return end - begin;
+}
+
 /// What names one shard of a ratio-set run: the set, I of K, and `run` (anything else that
 /// must agree between the shards of one run, e.g. the candidate bound).
 struct ShardName {
@@ -86,8 +118,11 @@ inline void check_shard_set(const std::vector<ShardName>& shards) {
   for (std::size_t k = 0; k < shards.size(); ++k) {
     const ShardName& s = shards[k];
     const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
-    if (s.ratios != shards[0].ratios || s.count != shards[0].count || s.run != shards[0].run)
+    if (s.ratios != shards[0].ratios || s.count != shards[0].count)
       throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
+    if (s.run != shards[0].run)
+      throw InvalidInput("shard", name, "from another run (other points or options than shard " +
+                                            std::to_string(shards[0].index) + "/" + std::to_string(shards[0].count) + ")", valid);
     if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
     if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
   }

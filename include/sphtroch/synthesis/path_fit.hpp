@@ -447,15 +447,17 @@ inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n
   if (points.size() < kMinFitPoints || points.size() > kMaxFitPoints)
     throw InvalidInput("points", std::to_string(points.size()) + " points", "too few or too many",
                        "4 .. 1000000 points x,y,z on the unit sphere (a path: more is better)");
-  std::size_t distinct = 1;
+  std::vector<Vector3d> distinct;  // up to kMinFitPoints pairwise distinct points
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double norm = points[i].norm();
     if (!std::isfinite(norm) || std::abs(norm - 1.0) > kFitUnitTolerance)
       throw InvalidInput("points", "point " + std::to_string(i + 1) + " with |P| = " + number_text(norm),
                          "not on the unit sphere", "|P| within 1e-6 of 1");
-    if (i > 0 && distinct < kMinFitPoints && (points[i] - points[0]).norm() > 1e-9) ++distinct;
+    if (distinct.size() < kMinFitPoints &&
+        std::all_of(distinct.begin(), distinct.end(), [&](const Vector3d& d) { return (points[i] - d).norm() > 1e-9; }))
+      distinct.push_back(points[i]);
   }
-  if (distinct < kMinFitPoints)
+  if (distinct.size() < kMinFitPoints)
     throw InvalidInput("points", std::to_string(points.size()) + " points", "fewer than 4 distinct points",
                        "at least 4 distinct points (chord >= 1e-9)");
   if (o.nodes && *o.nodes < 0) throw InvalidInput("nodes", std::to_string(*o.nodes), "negative", "a count >= 0");
