@@ -7,6 +7,7 @@
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/exact/self_crossings.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -71,20 +72,44 @@ std::vector<std::int64_t> counts_at(double a2, const Ratio& n) {
   return out;
 }
 
-/// Every returned train has the wanted counts, certified: its census as returned, and for the
-/// best one a fresh classify() of the train as returned.
+/// Every returned train has the wanted counts, certified (its census as returned); and, an
+/// independent count, the exact self-crossings of a dense polyline of the best train
+/// (self_crossings.hpp) equal its crossing node points, when it is at least 1e-3 from every
+/// boundary (closer, a near-tangent crossing needs a finer polyline) and has no tangency node.
 void check_counts(const std::vector<RatioFit>& fits, const FitOptions& o) {
   for (const RatioFit& rf : fits)
     for (std::size_t k = 0; k < rf.candidates.size(); ++k) {
       const ConfirmedCandidate& c = rf.candidates[k];
-      const Classification again = k == 0 ? classify(c.candidate.train) : c.census;
+      const Classification& census = c.census;
       INFO("candidate a2 = " << c.candidate.train.a2() << " a3 = " << c.candidate.train.a3());
-      CHECK(c.census.input.a3() == c.candidate.train.a3());
-      CHECK(again.certified());
-      if (o.nodes) CHECK(static_cast<std::int64_t>(again.nodes.size()) == *o.nodes);
-      if (o.cusps) CHECK(static_cast<std::int64_t>(again.cusps.size()) == *o.cusps);
+      CHECK(census.input.a3() == c.candidate.train.a3());
+      CHECK(census.certified());
+      if (o.nodes) CHECK(static_cast<std::int64_t>(census.nodes.size()) == *o.nodes);
+      if (o.cusps) CHECK(static_cast<std::int64_t>(census.cusps.size()) == *o.cusps);
       CHECK(c.candidate.margin >= 0);
+      if (k == 0 && c.candidate.margin > 1e-3 && census.tangencies == 0 && census.cusps.empty()) {
+        const auto polyline = sample_period(TracerCurve<double>(c.candidate.train),
+                                            20000 * static_cast<std::size_t>(c.candidate.train.ratio().q()));
+        CHECK(find_self_crossings(polyline.points, true).crossings.size() == census.crossings);
+      }
     }
+}
+
+/// Each point lies within the candidate's max_deviation of its train's curve point at params[i]
+/// (the forward model), and the RMS is that of those distances.
+void check_params(const PathFit& f, const std::vector<Vector3d>& points) {
+  for (const FitCandidate& c : f.candidates) {
+    REQUIRE(c.params.size() == points.size());
+    const TracerCurve<double> curve(c.train);
+    double sum = 0, worst = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double d = sphere_distance(curve.point(c.params[i]), points[i]);
+      sum += d * d;
+      worst = std::max(worst, d);
+    }
+    CHECK(worst <= c.max_deviation + 1e-12);
+    CHECK(std::abs(std::sqrt(sum / double(points.size())) - c.rms) <= 1e-12 + 1e-9 * c.rms);
+  }
 }
 
 }  // namespace
@@ -149,6 +174,7 @@ TEST_CASE("fit: exact points give back the hidden train first", "[exact][synthes
     CHECK(std::abs(best.a3() - t.hidden.a3()) < 1e-7);
     CHECK(std::abs(std::remainder(best.phase() - t.hidden.phase(), 2 * kPi / double(best.ratio().q()))) < 1e-7);
     for (std::size_t i = 1; i < f.candidates.size(); ++i) CHECK(f.candidates[i].rms >= f.candidates[i - 1].rms);
+    check_params(f, t.points);
   }
 }
 
@@ -213,6 +239,30 @@ TEST_CASE("fit with a node count on noisy targets (2 of 4)", "[exact][synthesis]
 TEST_CASE("fit with a node count on noisy targets (3 of 4)", "[exact][synthesis]") { fit_noisy_targets(2028); }
 TEST_CASE("fit with a node count on noisy targets (4 of 4)", "[exact][synthesis]") { fit_noisy_targets(2029); }
 
+TEST_CASE("fit with cusps: |p| on a pitch cone, 2|p| where both cones meet (|n| < 1)", "[exact][synthesis]") {
+  const GearTrain hidden(1.0, 2.0, Ratio(1, 2), 0.3);
+  const std::vector<Vector3d> points = sample_period(TracerCurve<double>(hidden), 200).points;
+  for (std::int64_t cusps : {1, 2}) {
+    FitOptions o;
+    o.cusps = cusps;
+    o.max_candidates = 2;
+    const auto f = fit_with_census(points, {hidden.ratio()}, o);
+    INFO("cusps " << cusps);
+    REQUIRE_FALSE(f[0].candidates.empty());
+    check_counts(f, o);
+    for (const auto& c : f[0].candidates) {
+      const ConeMargins m = cone_margins(c.candidate.train);  // on a cone (both for 2|p|), exactly
+      CHECK((m.on_pitch_cone(0) || m.on_mirror_cone(0)));
+      if (cusps == 2) CHECK((m.on_pitch_cone(1e-12) && m.on_mirror_cone(1e-12)));
+    }
+  }
+  FitOptions three;
+  three.cusps = 3;
+  const auto none = fit_with_census(points, {hidden.ratio()}, three);
+  CHECK(none[0].candidates.empty());
+  CHECK(none[0].reason.find("0, 1 or 2 cusps") != std::string::npos);
+}
+
 TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][errors]") {
   const std::vector<Vector3d> ok{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, Vector3d(1, 1, 0).normalized()};
   auto field_of = [](const std::vector<Vector3d>& p, const FitOptions& o = {}, Ratio n = Ratio(1)) {
@@ -236,4 +286,14 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
   neg.cusps = -2;
   CHECK(field_of(ok, neg) == "cusps");
   CHECK(field_of(ok, {}, Ratio(1001)) == "n");
+  std::vector<Vector3d> many(1000000, ok[0]);
+  std::copy(ok.begin(), ok.end(), many.begin());
+  try {  // over the work that grows with the points: refused before any
+    fit_path(many, Ratio(97));
+    FAIL("not refused");
+  } catch (const InvalidInput& e) {
+    CHECK(e.field() == "points");
+    CHECK(e.problem().find("too many") != std::string::npos);
+  }
+  CHECK_THROWS_AS(map_margin(1.0, std::nan(""), Ratio(2)), InvalidInput);
 }

@@ -89,7 +89,12 @@ std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
   if (v.is_none()) return std::nullopt;
   if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
     throw InvalidInput(field, repr_of(v), "not an integer", "None or an integer >= 0");
-  const auto k = v.cast<std::int64_t>();
+  std::int64_t k = 0;
+  try {
+    k = v.cast<std::int64_t>();
+  } catch (const py::cast_error&) {
+    throw InvalidInput(field, repr_of(v), "too large", "None or an integer >= 0 below 2**63");
+  }
   if (k < 0) throw InvalidInput(field, repr_of(v), "negative", "None or an integer >= 0");
   return k;
 }
@@ -97,14 +102,17 @@ std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle nodes, py::handle cusps,
-               std::size_t candidates, double max_deviation) {
+               py::handle candidates, double max_deviation) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
   std::string fields;
   const std::vector<Ratio> set = ratios_arg(n, ratios, fields);
   FitOptions o;
   o.nodes = count_arg(nodes, "nodes");
   o.cusps = count_arg(cusps, "cusps");
-  o.max_candidates = candidates;
+  const auto wanted = count_arg(candidates, "candidates");
+  if (!wanted || *wanted < 1 || *wanted > 1000)
+    throw InvalidInput("candidates", repr_of(candidates), "outside the valid range", "an integer 1 .. 1000 (the CLI's --candidates)");
+  o.max_candidates = static_cast<std::size_t>(*wanted);
   o.max_deviation = max_deviation;
   std::string json;
   {

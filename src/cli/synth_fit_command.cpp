@@ -25,9 +25,6 @@ namespace {
 /// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
 /// screening and the census grow with |p| and q; measured: --ratios 7,7 on 300 points 11 s).
 constexpr double kMaxFitWork = 20000;
-/// Bound on points x ratios (each candidate's distances are measured on every point: ~16 us per
-/// point and ratio here, so 2e6 is ~30 s).
-constexpr double kMaxFitPointRatios = 2e6;
 
 struct FitCommandOptions {
   std::string input, output, n, ratios, shard, nodes, cusps, candidates, max_deviation;
@@ -91,12 +88,6 @@ void run_fit(const FitCommandOptions& o) {
   const FitOptions f = fit_options(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
-  const double point_ratios = double(in.vertices.size()) * double(request.ratios.size());
-  if (point_ratios > kMaxFitPointRatios)
-    throw InvalidInput("input", o.input,
-                       std::to_string(in.vertices.size()) + " points x " + std::to_string(request.ratios.size()) +
-                           " ratio(s) over the bound",
-                       "points x ratios <= 2000000 (e.g. 28000 points for --ratios 7,7; fewer points, or --shard I/K)");
   const std::vector<RatioFit> all = [&] {
     try {
       return fit_with_census(in.vertices, request.ratios, f);
@@ -238,7 +229,7 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
       "candidate and the reason (exit 0). Example: sphtroch synth fit --input path.csv --n 2 --nodes 2");
   add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->shard, "the path's points");
   cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)");
-  cmd->add_option("--cusps", o->cusps, "wanted cusps C (0, or |p| on a pitch cone)");
+  cmd->add_option("--cusps", o->cusps, "wanted cusps C (0; |p| on a pitch cone; 2|p| where both meet, |n| < 1)");
   cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");
   cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point");
   cmd->add_flag("--json", o->json, "{\"candidates\": [{\"n\", \"a2\", \"a3\", \"phase\", \"rms\", \"max_deviation\", "

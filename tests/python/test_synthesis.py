@@ -95,3 +95,8 @@ def test_fit_refuses_bad_input():
         assert info.value.field == field
     with pytest.raises(sphtroch.InvalidInput):
         sphtroch.fit(good, n=1, ratios=(2, 2))
+    for kwargs, field in [({"candidates": 0}, "candidates"), ({"candidates": -1}, "candidates"),
+                          ({"nodes": 2**70}, "nodes"), ({"cusps": 1.5}, "cusps")]:
+        with pytest.raises(sphtroch.InvalidInput) as info:
+            sphtroch.fit(good, n=1, **kwargs)
+        assert info.value.field == field

@@ -34,6 +34,9 @@
 
 namespace sphtroch {
 
+/// Candidates fit_with_census asks for beyond the wanted number (replacements for dropped ones).
+constexpr std::size_t kFitSpareCandidates = 3;
+
 /// One candidate and its census.
 struct ConfirmedCandidate {
   FitCandidate candidate;
@@ -59,10 +62,15 @@ inline bool census_confirms(const Classification& c, const FitOptions& o) {
 inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
                                              const FitOptions& options = {}) {
   std::vector<RatioFit> all;
+  // A few more than wanted, so that a candidate the census does not confirm leaves room for the next.
+  check_fit_cost(points.size(), ratios);
+  FitOptions more = options;
+  more.max_candidates = options.max_candidates + kFitSpareCandidates;
   for (const Ratio& n : ratios) {
-    PathFit f = fit_path(points, n, options);
+    PathFit f = fit_path(points, n, more);
     RatioFit rf{n, {}, f.reason, 0};
     for (FitCandidate& c : f.candidates) {
+      if (rf.candidates.size() == options.max_candidates) break;
       Classification census = classify(c.train);
       if (census_confirms(census, options)) rf.candidates.push_back({std::move(c), std::move(census)});
       else ++rf.dropped;

@@ -9,7 +9,7 @@
 //   sphtroch::FitOptions o;  o.nodes = 4;                       // or o.cusps = 2, or both, or neither
 //   sphtroch::PathFit f = sphtroch::fit_path(points, sphtroch::Ratio(2), o);
 //   f.candidates[0].train;  f.candidates[0].rms;  f.candidates[0].margin;   // best first
-//   f.reason;               // why there is none, e.g. "n = 2 has 0..4 node points (in steps of 2)"
+//   f.reason;               // why there is none, e.g. "n = 2: node points come in sets of |p| = 2 ..."
 //
 // What is minimised: the spherical distances d_i (radians) of the points to the curve, each point
 // to its nearest curve point (path_distance.hpp), sum d_i^2. The point order is not used.
@@ -114,8 +114,27 @@ struct PathFit {
 /// cost bound, cost_bounds.hpp).
 inline PathFit fit_path(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& options = {});
 
+/// Bound on the work that grows with the points: points x sum over the ratios of (2|p| + 30)
+/// (each candidate's distances are measured on every point, 2|p| latitude crossings and a few
+/// Newton steps each; ~0.5 us per unit here, so the bound is ~30 s).
+constexpr double kMaxFitPointWork = 6e7;
+
+/// Refuses (InvalidInput "points") a fit of this many points over these ratios beyond
+/// kMaxFitPointWork, before any work.
+inline void check_fit_cost(std::size_t points, const std::vector<Ratio>& ratios) {
+  double per_point = 0;
+  for (const Ratio& n : ratios) per_point += 2 * static_cast<double>(n.abs_p()) + 30;
+  if (static_cast<double>(points) * per_point > kMaxFitPointWork)
+    throw InvalidInput("points", std::to_string(points) + " points",
+                       "too many for these ratios (points x sum (2|p| + 30) = " +
+                           number_text(static_cast<double>(points) * per_point) + ")",
+                       "points x sum over the ratios of (2|p| + 30) <= 6e7 (e.g. 1e6 points for n = 2, 22000 for --ratios 7,7)");
+}
+
 /// Distance in the (a2, a3) plane to the nearest boundary of the map (see header); `on_cone`:
-/// the candidate lies on a pitch cone by design, which is not counted.
+/// the candidate lies on a pitch cone by design, which is not counted. First order, an upper
+/// estimate: a boundary that does not cross this a2 (a tangency locus's fold just beyond it) is
+/// not seen. Throws InvalidInput naming "a2" or "a3" outside (0, pi).
 inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone = false);
 
 // =============================================================================================
@@ -192,6 +211,11 @@ struct Constraint {
     const double ap = par.cone(a2);
     const bool near_cone = std::abs(a3 - ap) < 1e-9 || std::abs(a3 - (kPi - ap)) < 1e-9;
     if (avoid_cones && near_cone) return false;
+    // GearTrain refuses a3 on or near the pitch cone where the planet barely turns in space.
+    const double nv = par.n, speed = std::sqrt(std::max(0.0, 1 + nv * nv + 2 * nv * std::cos(a2)));
+    if (!(speed >= kMinPlanetSpeed) && (par.family != Family::free || std::abs(a3 - ap) < kPitchConeGuard ||
+                                        std::abs(a3 - (kPi - ap)) < kPitchConeGuard))
+      return false;
     if (!nodes) return true;
     if (par.family == Family::free && (near_cone || std::abs(a3 - a2) < 1e-9 || std::abs(a3 - (kPi - a2)) < 1e-9))
       return false;  // on a closed-form boundary the root count is that of one side
@@ -371,8 +395,9 @@ inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, E
 inline std::string count_list(const std::set<std::int64_t>& counts, std::int64_t step) {
   if (counts.empty()) return "none";
   const std::int64_t lo = *counts.begin(), hi = *counts.rbegin();
+  if (counts.size() == 1) return std::to_string(lo);
   if (static_cast<std::int64_t>(counts.size()) == (hi - lo) / step + 1 && (hi - lo) % step == 0)
-    return std::to_string(lo) + ".." + std::to_string(hi);
+    return std::to_string(lo) + ".." + std::to_string(hi) + (step > 1 ? " in steps of " + std::to_string(step) : "");
   std::string s;
   std::size_t k = 0;
   for (auto it = counts.begin(); it != counts.end(); ++it, ++k) {
@@ -407,6 +432,19 @@ inline std::vector<ColumnCell> column(int i, const Ratio& n) {
   return cells;
 }
 
+/// Columns kept at most (100 ratios' grids); beyond, a column lives until the next overflow.
+constexpr std::size_t kFitColumnCache = 100 * kFitGrid;
+
+/// Storage for a column computed when the cache is full: the last kFitGrid of them stay valid
+/// (the reference is used within one seeds() call, which asks for kFitGrid columns).
+inline const std::vector<ColumnCell>* new_column_overflow(std::vector<ColumnCell>&& cells) {
+  static std::vector<std::vector<ColumnCell>> ring(kFitGrid);
+  static std::size_t next = 0;
+  std::vector<ColumnCell>& slot = ring[next++ % kFitGrid];
+  slot = std::move(cells);
+  return &slot;
+}
+
 /// column(i, n), computed once per process (the grid columns are the same for every fit; a
 /// design session fits one ratio many times). Thread-safe.
 inline const std::vector<ColumnCell>& cached_column(int i, const Ratio& n) {
@@ -419,12 +457,15 @@ inline const std::vector<ColumnCell>& cached_column(int i, const Ratio& n) {
   }
   std::vector<ColumnCell> cells = column(i, n);  // outside the lock: another thread may do the same
   const std::lock_guard<std::mutex> lock(mutex);
+  if (const auto it = cache.find(key); it != cache.end()) return it->second;
+  if (cache.size() >= kFitColumnCache) return *new_column_overflow(std::move(cells));
   return cache.emplace(key, std::move(cells)).first->second;  // std::map: references stay valid
 }
 
 }  // namespace path_fit_detail
 
 inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone) {
+  if (!(a3 > 0 && a3 < path_fit_detail::kPi)) throw InvalidInput("a3", number_text(a3), "outside the valid range", "(0, pi) radians");
   const double h = a2 + 1e-4 < path_fit_detail::kPi - kFitMinTwist ? 1e-4 : -1e-4;
   const BoundarySet here = boundary_set(a2, n), near = boundary_set(a2 + h, n);
   double margin = std::numeric_limits<double>::infinity();
@@ -540,13 +581,22 @@ inline bool same_train(const FitCandidate& a, const FitCandidate& b, double tol)
          std::abs(std::remainder(a.train.phase_given() - b.train.phase_given(), 2 * kPi / q)) < tol;
 }
 
-/// The candidate of a refined x: the train (exactly on its cone), distances, feet.
-inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>& pts, const Refined& r) {
+/// x with its phase reduced to [0, 2 pi / q) (the same curve; the feet found after it fit it).
+inline Eigen::VectorXd with_reduced_phase(const Constraint& con, Eigen::VectorXd x) {
+  const double q_turn = 2 * kPi / static_cast<double>(con.n.q());
+  double& phase = x(con.par.dim() - 1);
+  phase = std::fmod(phase, q_turn);
+  if (phase < 0) phase += q_turn;
+  if (!(phase < q_turn)) phase = 0;  // -tiny + q_turn rounds to q_turn
+  return x;
+}
+
+/// The candidate of a refined x (phase reduced): the train (exactly on its cone), distances,
+/// feet, and the margin when `with_margin`.
+inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>& pts, const Refined& r, bool with_margin) {
   const Parametrisation& par = con.par;
   const auto [a2, a3] = par.shape(r.x);
-  const double q_turn = 2 * kPi / static_cast<double>(con.n.q());
-  double phase = std::fmod(r.x(par.dim() - 1), q_turn);
-  if (phase < 0) phase += q_turn;
+  const double phase = r.x(par.dim() - 1);
   FitCandidate c;
   switch (par.family) {
     case Family::free: c.train = GearTrain(a2, a3, con.n, phase); break;
@@ -554,7 +604,7 @@ inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>
     case Family::mirror_cone: c.train = GearTrain::on_cone(a2, A3Reference::mirror_pitch_cone, 0, con.n, phase); break;
     case Family::both_cones: c.train = GearTrain::on_cone(a2, A3Reference::pitch_cone, 0, con.n, phase); break;
   }
-  const FitShape s{a2, a3, con.n.value(), r.x(par.dim() - 1)};
+  const FitShape s(a2, a3, con.n.value(), phase);
   double sum = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const double d = sphere_distance(curve_point(s, r.t[i]), pts[i]);
@@ -564,7 +614,7 @@ inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>
   c.rms = std::sqrt(sum / static_cast<double>(pts.size()));
   c.params = r.t;
   c.root_nodes = root_nodes(a2, a3, con.n, par.family);
-  c.margin = map_margin(a2, a3, con.n, par.family != Family::free);
+  if (with_margin) c.margin = map_margin(a2, a3, con.n, par.family != Family::free);
   return c;
 }
 
@@ -588,6 +638,7 @@ inline Eigen::VectorXd clear_of_boundaries(const Constraint& con, Eigen::VectorX
 inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, const FitOptions& options) {
   using namespace path_fit_detail;
   check_fit_inputs(input, n, options);
+  check_fit_cost(input.size(), {n});
   std::vector<Vector3d> points;
   for (const Vector3d& p : input) points.push_back(p / p.norm());
   PathFit out;
@@ -614,21 +665,32 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
   for (const auto& [con, r] : refined) {
     if (out.candidates.size() == options.max_candidates) break;
     Refined full = refine(con, polish_pts, r.x, 30);
-    full.x = clear_of_boundaries(con, full.x);
-    if (!con.admissible(con.par.shape(full.x).first, con.par.shape(full.x).second)) continue;
-    full.t = global_feet(con.par.fit_shape(full.x), n, points);
-    FitCandidate c = candidate(con, points, full);
-    if (c.max_deviation > options.max_deviation) continue;
+    full.x = with_reduced_phase(con, clear_of_boundaries(con, full.x));
+    const auto [a2, a3] = con.par.shape(full.x);
+    if (!con.admissible(a2, a3)) continue;
+    // The same design as a kept one, or farther than allowed from a polish point (a subset of
+    // the points, so the full maximum is at least as large): skipped before the full pass.
+    full.t = global_feet(con.par.fit_shape(full.x), n, polish_pts);
+    FitCandidate sketch;
+    try {
+      sketch = candidate(con, polish_pts, full, false);
+    } catch (const InvalidInput&) {  // a shape GearTrain refuses (admissible() should have kept it out)
+      continue;
+    }
     bool repeated = false;
-    for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, c, kFitSameDesign);
-    if (!repeated) out.candidates.push_back(std::move(c));
+    for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, sketch, kFitSameDesign);
+    if (repeated || sketch.max_deviation > options.max_deviation) continue;
+    full.t = global_feet(con.par.fit_shape(full.x), n, points);
+    FitCandidate c = candidate(con, points, full, true);
+    if (c.max_deviation <= options.max_deviation) out.candidates.push_back(std::move(c));
   }
   std::sort(out.candidates.begin(), out.candidates.end(), [](const auto& a, const auto& b) { return a.rms < b.rms; });
   if (out.candidates.empty() && out.reason.empty()) {
     if (options.nodes && !seen.count(*options.nodes))
       out.reason = "n = " + n.str() + (options.cusps ? " with " + std::to_string(*options.cusps) + " cusps" : "") +
-                   " has " + count_list(seen, p) + " node points, not " + std::to_string(*options.nodes) +
-                   " (boundary set at " + std::to_string(kFitGrid) + " carrier twists a2)";
+                   ": the boundary set at " + std::to_string(kFitGrid) + " carrier twists a2 shows " + count_list(seen, p) +
+                   " node points, not " + std::to_string(*options.nodes) + " (a cell narrower than pi/" +
+                   std::to_string(kFitGrid) + " in a2 between them is not seen)";
     else if (std::isfinite(options.max_deviation))
       out.reason = "no train of n = " + n.str() + " with the wanted counts passes within " +
                    number_text(options.max_deviation) + " rad of every point";
