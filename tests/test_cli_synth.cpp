@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 using namespace sphtroch::test;
@@ -224,5 +225,58 @@ TEST_CASE("cli synth fit --slice and synth merge: the shards joined equal the un
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
+  }
+}
+
+TEST_CASE("cli synth fit / points --teeth: ZS:ZP is n = ZS/ZP and is echoed, MIN..MAX is every ratio of two counts in it",
+          "[cli][synth]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 13/5 --a2 1.1 --a3 0.9 --phase 0.2 --samples 300 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);
+  const Result r = run("synth fit --input path.csv --teeth 39:15 --candidates 1 --json", dir, true);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["teeth"] == "39:15");
+  REQUIRE(j["candidates"].size() == 1);
+  CHECK(j["candidates"][0]["n"] == "13/5");
+  CHECK(j["candidates"][0]["teeth"] == "39:15");
+  CHECK(std::abs(j["candidates"][0]["a3"].get<double>() - 0.9) < 1e-7);
+  CHECK(contains(run("synth fit --input path.csv --teeth 39:15 --candidates 1", dir, true).out, "n = 13/5 (teeth 39:15), "));
+  // Three points of another path: the hidden train is among synth points' trains, each echoing 12:24.
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 60 -o h.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '2p;22p;42p' h.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
+  const Result pts = run("synth points --input pts.csv --teeth 12:24 --json", dir, true);
+  REQUIRE(pts.status == 0);
+  bool hidden = false;
+  const nlohmann::json solutions = nlohmann::json::parse(pts.out)["solutions"];
+  REQUIRE_FALSE(solutions.empty());
+  for (const auto& s : solutions) {
+    CHECK(s["teeth"] == "12:24");
+    hidden = hidden || (std::abs(s["a2"].get<double>() - 1) < 1e-9 && std::abs(s["a3"].get<double>() - 2) < 1e-9);
+  }
+  CHECK(hidden);
+  // A range set, sharded and merged: byte for byte the unsharded run; every candidate's teeth in range.
+  REQUIRE(run("synth fit --input path.csv --teeth 2..3 --json -o all.json", dir, true).status == 0);
+  for (int i = 1; i <= 2; ++i)
+    REQUIRE(run("synth fit --input path.csv --teeth 2..3 --json --slice " + std::to_string(i) + "/2 -o part" +
+                    std::to_string(i) + ".json", dir, true).status == 0);
+  REQUIRE(run("synth merge part2.json part1.json -o merged.json", dir, true).status == 0);
+  CHECK(shell("cmp all.json merged.json", dir).status == 0);
+  const nlohmann::json all = nlohmann::json::parse(shell("cat all.json", dir).out);
+  CHECK(all["teeth"] == "2..3");
+  REQUIRE_FALSE(all["candidates"].empty());
+  for (const auto& c : all["candidates"]) {
+    const std::string t = c["teeth"];
+    const long zs = std::labs(std::stol(t.substr(0, t.find(':')))), zp = std::stol(t.substr(t.find(':') + 1));
+    CHECK((zs >= 2 && zs <= 3 && zp >= 2 && zp <= 3));
+  }
+  for (const std::string& args : {std::string("--teeth 39:0"), std::string("--teeth 0..3"), std::string("--teeth 3..2"),
+                                  std::string("--teeth 39:15 --n 13/5"), std::string("--teeth 39:15 --slice 1/2"),
+                                  std::string("--teeth 1..60")}) {
+    INFO(args);
+    const Result bad = run("synth fit --input path.csv " + args, dir, true);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
   }
 }

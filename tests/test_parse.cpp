@@ -6,8 +6,12 @@
 #include "sphtroch/io/parse.hpp"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdlib>
 #include <limits>
+#include <set>
 #include <string>
+#include <utility>
 
 using namespace sphtroch;
 
@@ -150,4 +154,47 @@ TEST_CASE("an angle below the smallest subnormal reads as zero, like every numbe
   CHECK(std::signbit(sphtroch::parse_angle("-1e-906", "phase")));
   CHECK(sphtroch::parse_angle("1e-906deg", "phase") == 0.0);
   sphtroch::test::expect_invalid([] { sphtroch::parse_angle("1e906", "phase"); });
+}
+
+TEST_CASE("teeth: ZS:ZP is n = ZS/ZP, a range's ratio set is every pair of counts in it, reduced", "[teeth]") {
+  CHECK(sphtroch::parse_teeth("39:15").ratio() == sphtroch::Ratio(13, 5));
+  CHECK(sphtroch::parse_teeth("-24:12").ratio() == sphtroch::Ratio(-2));
+  CHECK(sphtroch::parse_teeth("39:15").str() == "39:15");
+  for (const char* bad : {"39", "39:0", "0:15", "39:-15", "1001:1", "a:b", "39:15:2", ""}) {
+    INFO(bad);
+    CHECK_THROWS_AS(sphtroch::parse_teeth(bad), sphtroch::InvalidInput);
+  }
+  for (const char* bad : {"12", "0..5", "7..6", "1..1001", "x..9", "3..."}) {
+    INFO(bad);
+    CHECK_THROWS_AS(sphtroch::parse_tooth_range(bad), sphtroch::InvalidInput);
+  }
+  // Independent: every pair (Zs, Zp) of counts in the range, both signs, reduced by hand.
+  for (const auto& [lo, hi] : {std::pair<long, long>{1, 7}, {12, 30}, {17, 17}, {5, 11}}) {
+    std::set<std::pair<long, long>> expected;
+    for (long zs = lo; zs <= hi; ++zs)
+      for (long zp = lo; zp <= hi; ++zp) {
+        long a = zs, b = zp;
+        while (b) a = std::exchange(b, a % b);  // a = gcd
+        expected.insert({zs / a, zp / a});
+        expected.insert({-zs / a, zp / a});
+      }
+    const auto set = sphtroch::ratio_set(sphtroch::ToothRange{lo, hi});
+    std::set<std::pair<long, long>> got;
+    for (const auto& n : set) got.insert({n.p(), n.q()});
+    CHECK(got == expected);
+    CHECK(got.size() == set.size());  // no ratio twice
+    for (std::size_t k = 1; k < set.size(); ++k) CHECK(set[k - 1].value() < set[k].value());
+    // The echoed teeth are in the range, give n, and no smaller multiple is in the range.
+    for (const auto& n : set) {
+      const auto t = sphtroch::smallest_teeth(n, {lo, hi});
+      REQUIRE(t);
+      CHECK(t->ratio() == n);
+      CHECK(std::min(std::labs(t->sun), t->planet) >= lo);
+      CHECK(std::max(std::labs(t->sun), t->planet) <= hi);
+      const long k = t->planet / n.q();
+      CHECK((k == 1 || std::min(n.abs_p(), n.q()) * (k - 1) < lo));
+    }
+  }
+  CHECK(sphtroch::ratio_set(sphtroch::ToothRange{1, 4}).size() == sphtroch::ratio_set(4, 4).size());
+  CHECK_FALSE(sphtroch::smallest_teeth(sphtroch::Ratio(13, 5), {12, 30}));  // 26:10 has a 10, 39:15 a 39
 }

@@ -113,6 +113,23 @@ TEST_CASE("precision_points: the hidden train is among the certified solutions o
                  << found);
 }
 
+TEST_CASE("precision_points: a point at carrier angle 0 (a trace's first sample) is certified like any other",
+          "[exact][synthesis]") {
+  // theta_1 = 2 pi k is the edge of theta_1's period; a root there was left undecided before.
+  std::mt19937_64 rng(7);
+  for (int k = 0; k < 12; ++k) {
+    PointsProblem pr = random_points_problem(rng);
+    const double start = 2 * kPi * double(rng() % static_cast<std::uint64_t>(pr.hidden.ratio().q()));
+    pr.points[k % 3] = TracerCurve<double>(pr.hidden).point(start);
+    const PrecisionPoints r = precision_points(pr.points, pr.hidden.ratio(), {kTestBoxes});
+    INFO("problem " << k << ": n = " << pr.hidden.ratio().str() << " a2 = " << pr.hidden.a2() << " a3 = " << pr.hidden.a3());
+    CHECK(r.certified);
+    CHECK(std::any_of(r.solutions.begin(), r.solutions.end(),
+                      [&](const PrecisionSolution& s) { return same_train(s.train, pr.hidden, 1e-9); }));
+    check_solutions(pr, r);
+  }
+}
+
 namespace {
 
 /// Gauss-Newton on the nine equations P(theta_i; a2, a3, phase) = P_i (numeric Jacobian, forward

@@ -173,22 +173,26 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
 
 
 def synth_points(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
-                 ratios: Optional[Tuple[int, int]] = None) -> Dict[str, Any]:
-    """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7)
+                 ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None) -> Dict[str, Any]:
+    """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7;
+    or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
+    as `--teeth`, each solution then echoing its "teeth")
     whose tracer passes through the three points (a (3, 3) array of
     unit vectors; fixed frame, sun axis Z), as `sphtroch synth points --json`: {"solutions": [{"n",
     "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual", "counts":
     {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], "complete" (the list is
-    certified to hold every train), "undecided_boxes"}. Raises InvalidInput naming "points" or "n"."""
+    certified to hold every train), "undecided_boxes"}. Raises InvalidInput naming "points", "n" or
+    "teeth"."""
 
 
 def fit(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
-        ratios: Optional[Tuple[int, int]] = None, nodes: Optional[int] = None, cusps: Optional[int] = None,
-        candidates: int = 5, max_deviation: float = float("inf")) -> Dict[str, Any]:
-    """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7) whose curve
+        ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None, nodes: Optional[int] = None,
+        cusps: Optional[int] = None, candidates: int = 5, max_deviation: float = float("inf")) -> Dict[str, Any]:
+    """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7; or teeth="ZS:ZP"
+    or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),
     as `sphtroch synth fit --json`: {"candidates": [{"n", "a2", "a3", "phase", "rms",
     "max_deviation", "margin" (radians), "counts": {"nodes", "crossings", "tangencies", "cusps"},
     "census_certified"}] best first, "reason" (why there is none, else ""), "dropped"}. With nodes
     and/or cusps, every candidate has exactly those counts (confirmed by classify). Raises
-    InvalidInput naming "points", "n", "nodes", "cusps", "candidates" or "max-deviation"."""
+    InvalidInput naming "points", "n", "teeth", "nodes", "cusps", "candidates" or "max-deviation"."""

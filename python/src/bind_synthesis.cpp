@@ -5,6 +5,9 @@
 #include "bindings.hpp"
 #include "exact_calls.hpp"
 
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/teeth.hpp"
+#include "sphtroch/io/parse.hpp"
 #include "sphtroch/synthesis/identify.hpp"
 
 #include <pybind11/numpy.h>
@@ -60,11 +63,35 @@ std::vector<Vector3d> points_arg(py::handle points, const char* valid) {
   return p;
 }
 
-/// n=R or ratios=(P, Q) (P, Q <= 7, the CLI's work bound), and the JSON members naming a set.
-std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, std::string& fields) {
-  if (n.is_none() == ratios.is_none())
-    throw InvalidInput("n", repr_of(n), "give exactly one of n and ratios", "n=R, or ratios=(P, Q) as `--ratios P,Q`");
+/// Bound on the sum over a teeth range's ratios of (|p| + q)^2: the CLI's work bound.
+constexpr double kMaxTeethWork = 20000;
+
+/// n=R, teeth="ZS:ZP" | "MIN..MAX" (the CLI's --teeth) or ratios=(P, Q) (P, Q <= 7, the CLI's
+/// work bound); sets `fields` (the JSON members naming a set) and `teeth` (what is echoed).
+std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, std::string& fields, TeethSpec& teeth) {
+  if (int(!n.is_none()) + int(!ratios.is_none()) + int(!teeth_text.is_none()) != 1)
+    throw InvalidInput("n", repr_of(n), "give exactly one of n, teeth and ratios",
+                       "n=R, teeth='ZS:ZP' or 'MIN..MAX', or ratios=(P, Q) as `--ratios P,Q`");
   if (!n.is_none()) return {ratio_arg(n)};
+  if (!teeth_text.is_none()) {
+    if (!py::isinstance<py::str>(teeth_text))
+      throw InvalidInput("teeth", repr_of(teeth_text), "not a string", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
+    const std::string text = teeth_text.cast<std::string>();
+    if (text.find("..") == std::string::npos) {
+      teeth.pair = parse_teeth(text, "teeth");
+      fields = "\"teeth\": \"" + teeth.pair->str() + "\", ";
+      return {teeth.pair->ratio()};
+    }
+    teeth.range = parse_tooth_range(text, "teeth");
+    std::vector<Ratio> set = ratio_set(*teeth.range);
+    double work = 0;
+    for (const Ratio& k : set) work += double(k.abs_p() + k.q()) * double(k.abs_p() + k.q());
+    if (work > kMaxTeethWork)
+      throw InvalidInput("teeth", text, "estimated work " + number_text(work) + " over the bound",
+                         "sum over the ratios of (|p| + q)^2 <= 20000 (the CLI's bound; 1..7 is 4832)");
+    fields = "\"teeth\": \"" + teeth.range->str() + "\", ";
+    return set;
+  }
   const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
   if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
     throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
@@ -72,14 +99,15 @@ std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, std::string& fiel
   return ratio_set(bounds.first, bounds.second);
 }
 
-py::object synth_points(py::handle points, py::handle n, py::handle ratios) {
+py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text) {
   const std::vector<Vector3d> p = points_arg(points, "a (3, 3) array of unit vectors x, y, z");
   std::string fields;
-  const std::vector<Ratio> set = ratios_arg(n, ratios, fields);
+  TeethSpec teeth;
+  const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
   std::string json;
   {
     py::gil_scoped_release release;
-    json = precision_points_json_text(p, set, fields);
+    json = precision_points_json_text(p, set, fields, teeth);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -101,11 +129,12 @@ std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
 
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
-py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle nodes, py::handle cusps,
-               py::handle candidates, double max_deviation) {
+py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
+               py::handle cusps, py::handle candidates, double max_deviation) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
   std::string fields;
-  const std::vector<Ratio> set = ratios_arg(n, ratios, fields);
+  TeethSpec teeth;
+  const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
   FitOptions o;
   o.nodes = count_arg(nodes, "nodes");
   o.cusps = count_arg(cusps, "cusps");
@@ -117,7 +146,7 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle no
   std::string json;
   {
     py::gil_scoped_release release;
-    json = fit_json_text(p, set, o, fields);
+    json = fit_json_text(p, set, o, fields, teeth);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -127,9 +156,9 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle no
 void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
-        py::arg("ratios") = py::none());
+        py::arg("ratios") = py::none(), py::arg("teeth") = py::none());
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
-        py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
+        py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity());
 }
 

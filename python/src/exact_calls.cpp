@@ -52,13 +52,13 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
 }
 
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields) {
-  return precision_points_json(precision_points_with_census(points, ratios), json_fields);
+                                      const std::string& json_fields, const TeethSpec& teeth) {
+  return precision_points_json(precision_points_with_census(points, ratios), json_fields, teeth);
 }
 
 std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                          const std::string& json_fields) {
-  return fit_json(fit_with_census(points, ratios, options), options, json_fields);
+                          const std::string& json_fields, const TeethSpec& teeth) {
+  return fit_json(fit_with_census(points, ratios, options), options, json_fields, teeth);
 }
 
 std::string root_classification_json_text(const GearTrain& train, bool literal) {

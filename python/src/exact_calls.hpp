@@ -6,6 +6,7 @@
 #include "sphtroch/io/train_text.hpp"  // TrainText: the angles as text, as `classify --json` reports them
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"  // FitOptions (Eigen only)
 
@@ -34,12 +35,12 @@ std::string root_classification_json_text(const GearTrain& train, bool literal);
 /// `sphtroch synth points --json` (precision_points_output.hpp): every train of each ratio through
 /// the three points, with its census. InvalidInput "points" for bad points.
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields);
+                                      const std::string& json_fields, const TeethSpec& teeth);
 
 /// `sphtroch synth fit --json` (path_fit_output.hpp): ranked candidates of the ratios for the
 /// path's points, each confirmed by classify. InvalidInput "points", "nodes", "cusps", "n".
 std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                          const std::string& json_fields);
+                          const std::string& json_fields, const TeethSpec& teeth);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

@@ -27,7 +27,7 @@ namespace {
 constexpr double kMaxFitWork = 20000;
 
 struct FitCommandOptions {
-  std::string input, output, n, ratios, shard, nodes, cusps, candidates, max_deviation;
+  std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation;
   bool json = false;
 };
 
@@ -51,7 +51,7 @@ std::string wanted_text(const FitOptions& f) {
   return s.empty() ? "any counts" : s + " wanted";
 }
 
-void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const FitOptions& f) {
+void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const FitOptions& f, const TeethSpec& teeth) {
   const auto ranked = ranked_candidates(all, f);
   out << "fit: " << ranked.size() << " candidate(s), " << wanted_text(f)
       << "; distances and margins in radians, best first\n";
@@ -59,7 +59,7 @@ void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const F
   for (std::size_t k = 0; k < ranked.size(); ++k) {
     const FitCandidate& c = ranked[k]->candidate;
     const Classification& census = ranked[k]->census;
-    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << ", a2 = " << number_text(c.train.a2())
+    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << number_text(c.train.a2())
         << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
         << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
         << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
@@ -84,7 +84,7 @@ std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f, 
 }
 
 void run_fit(const FitCommandOptions& o) {
-  const RatioRequest request = requested_ratios("synth fit", o.n, o.ratios, o.shard, kMaxFitWork);
+  const RatioRequest request = requested_ratios("synth fit", o.n, o.ratios, o.teeth, o.shard, kMaxFitWork);
   const FitOptions f = fit_options(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
@@ -99,8 +99,8 @@ void run_fit(const FitCommandOptions& o) {
   const std::string fields =
       request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << fit_json(all, f, fields);
-    else write_fit_text(out, all, f);
+    if (o.json) out << fit_json(all, f, fields, request.teeth);
+    else write_fit_text(out, all, f, request.teeth);
   });
   for (const auto* c : ranked_candidates(all, f))
     if (!c->census.certified())
@@ -142,7 +142,9 @@ double checked_candidate(const std::string& line) {
   if (count_member(k, "nodes") != count_member(k, "crossings") + count_member(k, "tangencies"))
     throw InvalidInput("shard", "counts", "nodes != crossings + tangencies", "as synth fit prints it");
   count_member(k, "cusps");
-  if (!c.at("census_certified").is_boolean() || c.size() != 9 || k.size() != 4)
+  if (c.contains("teeth") && parse_teeth(c.at("teeth").get<std::string>()).ratio() != n)
+    throw InvalidInput("shard", "teeth", "not the teeth of n = " + n.str(), "as synth fit prints it");
+  if (!c.at("census_certified").is_boolean() || c.size() != 9u + c.contains("teeth") || k.size() != 4)
     throw InvalidInput("shard", "candidate", "not as synth fit prints it", "the members of docs/cli.md: synth fit");
   return rms;
 }
@@ -152,12 +154,11 @@ FitShard read_fit_shard(const std::string& path, const std::string& text) {
   FitShard s;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
-    s.ratios = j.at("ratios").get<std::string>();
-    const std::string shard = j.at("shard").get<std::string>();
-    const std::size_t ratios_here = shard_ratio_count(s.ratios, shard);
-    const auto slash = shard.find('/');
-    s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
-    s.count = parse_count(shard.substr(slash + 1), "shard", 1, 1000000);
+    const ShardHeader header = read_shard_header(j);
+    s.ratios = header.set;
+    s.index = header.index;
+    s.count = header.count;
+    const std::size_t ratios_here = header.ratios;
     s.run = j.at("run").get<std::string>();
     s.max_candidates = count_member(j, "max_candidates");
     s.reasons = j.at("reasons").get<std::vector<std::string>>();
@@ -207,7 +208,7 @@ void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std:
   std::stable_sort(lines.begin(), lines.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   if (lines.size() > shards[0].max_candidates) lines.resize(shards[0].max_candidates);
   std::string reason = lines.empty() ? fit_reason(reasons) : "";
-  std::string out = "{\"ratios\": \"" + shards[0].ratios + "\", \"candidates\": [";
+  std::string out = "{" + shards[0].ratios + ", \"candidates\": [";
   for (std::size_t k = 0; k < lines.size(); ++k) out += (k ? ",\n" : "\n") + lines[k].second;
   out += std::string(lines.empty() ? "" : "\n") + "], \"reason\": " + nlohmann::json(reason).dump() +
          ", \"dropped\": " + std::to_string(dropped) + "}\n";
@@ -223,11 +224,11 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
   cmd->footer(
       "--input FILE: CSV with a header x,y,z (or .npy (N, 3)), 4 or more unit vectors along the wanted\n"
       "path (sampled or drawn, possibly noisy; their order is not used); - for standard input. The sun\n"
-      "axis is Z. For each ratio (--n R, or --ratios P,Q) it minimises the spherical distances of the\n"
+      "axis is Z. For each ratio (--n R, --teeth, --ratios P,Q) it minimises the spherical distances of the\n"
       "points to the curve. --nodes K / --cusps C keep the search inside the cells of the (a2, a3) map\n"
       "with that census; every candidate printed has it, confirmed by classify. None possible: no\n"
       "candidate and the reason (exit 0). Example: sphtroch synth fit --input path.csv --n 2 --nodes 2");
-  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->shard, "the path's points");
+  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the path's points");
   cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)");
   cmd->add_option("--cusps", o->cusps, "wanted cusps C (0; |p| on a pitch cone; 2|p| where both meet, |n| < 1)");
   cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");

@@ -26,16 +26,16 @@ namespace {
 constexpr double kMaxPointsWork = 20000;
 
 struct PointsOptions {
-  std::string input, output, n, ratios, shard;
+  std::string input, output, n, ratios, teeth, shard;
   bool json = false;
 };
 
 using RatioSolutions = RatioPrecisionPoints;
 
-void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all) {
+void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all, const TeethSpec& teeth) {
   std::size_t index = 0;
   for (const auto& rs : all) {
-    out << "n = " << rs.ratio.str() << ": " << rs.result.solutions.size() << " train(s)"
+    out << "n = " << rs.ratio.str() << teeth_text(teeth, rs.ratio) << ": " << rs.result.solutions.size() << " train(s)"
         << (rs.result.certified ? ", all of them (certified)" : ", NOT certified complete") << "\n";
     for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
       const PrecisionSolution& s = rs.result.solutions[k];
@@ -65,7 +65,7 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 }
 
 void run_points(const PointsOptions& o) {
-  const RatioRequest request = requested_ratios("synth points", o.n, o.ratios, o.shard, kMaxPointsWork);
+  const RatioRequest request = requested_ratios("synth points", o.n, o.ratios, o.teeth, o.shard, kMaxPointsWork);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
   const std::vector<RatioSolutions> all = [&] {
@@ -79,8 +79,8 @@ void run_points(const PointsOptions& o) {
   const std::string fields =
       request.json_fields + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, "points") + "\", ");
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << precision_points_json(all, fields);
-    else write_points_text(out, all);
+    if (o.json) out << precision_points_json(all, fields, request.teeth);
+    else write_points_text(out, all, request.teeth);
   });
   check_points_certified(all);
 }
@@ -103,13 +103,11 @@ PointsShard read_points_shard(const std::string& path, const std::string& text) 
   PointsShard s;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
-    s.ratios = j.at("ratios").get<std::string>();
-    const std::string shard = j.at("shard").get<std::string>();
-    const auto slash = shard.find('/');
-    s.index = parse_count(shard.substr(0, slash), "shard", 1, 1000000);
-    s.count = parse_count(slash == std::string::npos ? "" : shard.substr(slash + 1), "shard", 1, 1000000);
+    const ShardHeader header = read_shard_header(j);
+    s.ratios = header.set;
+    s.index = header.index;
+    s.count = header.count;
     s.run = j.at("run").get<std::string>();
-    shard_ratio_count(s.ratios, shard);  // the canonical I/K of its set
     s.complete = j.at("complete").get<bool>();
     s.undecided = j.at("undecided_boxes").get<std::size_t>();
     const std::size_t solutions = j.at("solutions").size();
@@ -138,7 +136,7 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output)
   check_shard_set(names);
   bool complete = true;
   std::size_t undecided = 0;
-  std::string out = "{\"ratios\": \"" + shards[0].ratios + "\", \"solutions\": [";
+  std::string out = "{" + shards[0].ratios + ", \"solutions\": [";
   bool first = true;
   for (const PointsShard& s : shards) {
     complete = complete && s.complete;
@@ -184,7 +182,7 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
       "both signs) it prints ALL trains with a2, a3 in [1e-6, pi - 1e-6] whose tracer passes through the\n"
       "three points, with theta2 at each point, the residual and the census. Exit 3 if the list is not\n"
       "certified complete. Example: sphtroch synth points --input pts.csv --n 1/2 --json");
-  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->shard, "the three points");
+  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the three points");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
                                    "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");

@@ -1,5 +1,6 @@
-// The ratio set of a synth command (--n R | --ratios P,Q [--shard I/K]), shared by `synth points`
-// and `synth fit`, with the work bound each command states. Parsing only.
+// The ratio set of a synth command (--n R | --teeth ZS:ZP | --ratios P,Q | --teeth MIN..MAX, with
+// --shard I/K for a set), shared by `synth points` and `synth fit`, with the work bound each
+// command states. Parsing only.
 #pragma once
 
 #include "cli_common.hpp"
@@ -7,8 +8,11 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/io/parse.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -19,11 +23,18 @@
 
 namespace sphtroch::cli {
 
-/// The ratios to solve and the JSON members that name them ("ratios", "shard").
+/// The ratios to solve, the JSON members that name them ("ratios" or "teeth", "shard"), and the
+/// teeth each report echoes.
 struct RatioRequest {
   std::vector<Ratio> ratios;
   std::string json_fields;
+  TeethSpec teeth;
 };
+
+/// The JSON member that names a ratio set in a run's output: "ratios": "P,Q" or "teeth": "MIN..MAX".
+inline std::string set_member(const std::string& name, const std::string& text) {
+  return "\"" + name + "\": \"" + text + "\"";
+}
 
 /// --shard I/K of a ratio set of `size`: indices floor((I-1) size / K) .. floor(I size / K) - 1.
 inline std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::size_t size) {
@@ -39,25 +50,56 @@ inline std::pair<std::size_t, std::size_t> shard_range(const std::string& text, 
   }
 }
 
-/// The ratios of --n or --ratios [--shard]; refused (InvalidInput) when the sum over them of
-/// (|p| + q)^2 exceeds max_work, the estimate of `command`'s cost.
+/// The set of --ratios P,Q (name "ratios") or --teeth MIN..MAX (name "teeth"), refused
+/// (InvalidInput) unless `text` is written as a run writes it (canonical), so shards compare by text.
+inline std::vector<Ratio> named_ratio_set(const std::string& name, const std::string& text) {
+  if (name == "teeth") {
+    const ToothRange range = parse_tooth_range(text, "teeth");
+    if (text != range.str()) throw InvalidInput("teeth", text, "not MIN..MAX", "MIN..MAX as written by the run");
+    return ratio_set(range);
+  }
+  const auto comma = text.find(',');
+  if (comma == std::string::npos)
+    throw InvalidInput("ratios", text, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
+  const std::size_t p = parse_count(text.substr(0, comma), "ratios", 1, 1000);
+  const std::size_t q = parse_count(text.substr(comma + 1), "ratios", 1, 1000);
+  if (text != std::to_string(p) + "," + std::to_string(q)) throw InvalidInput("ratios", text, "not P,Q", "P,Q as written by the run");
+  return ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q));
+}
+
+/// The ratios of --n, --teeth (ZS:ZP, or a range MIN..MAX) or --ratios [--shard]; refused
+/// (InvalidInput) when the sum over them of (|p| + q)^2 exceeds max_work, the estimate of `command`'s cost.
 inline RatioRequest requested_ratios(const std::string& command, const std::string& n, const std::string& ratios,
-                                     const std::string& shard, double max_work) {
-  if (n.empty() == ratios.empty())
-    throw UsageError{command + ": give exactly one of --n R and --ratios P,Q (see docs/cli.md: " + command + ")"};
-  if (!shard.empty() && ratios.empty())
-    throw UsageError{"--shard = " + shard + ": shards a ratio set; valid: with --ratios P,Q"};
+                                     const std::string& teeth, const std::string& shard, double max_work) {
+  if (int(!n.empty()) + int(!ratios.empty()) + int(!teeth.empty()) != 1)
+    throw UsageError{command + ": give exactly one of --n R, --teeth ZS:ZP|MIN..MAX and --ratios P,Q (see docs/cli.md: " +
+                     command + ")"};
+  const bool is_set = !ratios.empty() || teeth.find("..") != std::string::npos;
+  if (!shard.empty() && !is_set)
+    throw UsageError{"--shard = " + shard + ": shards a ratio set; valid: with --ratios P,Q or --teeth MIN..MAX"};
   RatioRequest r;
+  const std::string field = !n.empty() ? "n" : !ratios.empty() ? "ratios" : "teeth";
+  const std::string& given = !n.empty() ? n : !ratios.empty() ? ratios : teeth;
   if (!n.empty()) {
     r.ratios.push_back(parse_ratio(n, "n"));
+  } else if (!is_set) {
+    r.teeth.pair = parse_teeth(teeth, "teeth");
+    r.ratios.push_back(r.teeth.pair->ratio());
+    r.json_fields = set_member("teeth", r.teeth.pair->str()) + ", ";
   } else {
-    const auto comma = ratios.find(',');
-    if (comma == std::string::npos)
-      throw InvalidInput("ratios", ratios, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
-    const std::size_t p = parse_count(ratios.substr(0, comma), "ratios", 1, 1000);
-    const std::size_t q = parse_count(ratios.substr(comma + 1), "ratios", 1, 1000);
-    r.ratios = ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q));
-    r.json_fields = "\"ratios\": \"" + std::to_string(p) + "," + std::to_string(q) + "\", ";
+    std::string canonical = ratios;
+    if (!teeth.empty()) {
+      r.teeth.range = parse_tooth_range(teeth, "teeth");
+      canonical = r.teeth.range->str();
+    } else {
+      const auto comma = ratios.find(',');
+      if (comma == std::string::npos)
+        throw InvalidInput("ratios", ratios, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
+      canonical = std::to_string(parse_count(ratios.substr(0, comma), "ratios", 1, 1000)) + "," +
+                  std::to_string(parse_count(ratios.substr(comma + 1), "ratios", 1, 1000));
+    }
+    r.ratios = named_ratio_set(field, canonical);
+    r.json_fields = set_member(field, canonical) + ", ";
     if (!shard.empty()) {
       const auto [begin, end] = shard_range(shard, r.ratios.size());
       r.ratios = std::vector<Ratio>(r.ratios.begin() + begin, r.ratios.begin() + end);
@@ -67,7 +109,7 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
   double work = 0;
   for (const Ratio& k : r.ratios) work += std::pow(double(k.abs_p() + k.q()), 2);
   if (work > max_work)
-    throw InvalidInput(n.empty() ? "ratios" : "n", n.empty() ? ratios : n,
+    throw InvalidInput(field, given,
                        "estimated work " + number_text(work) + " over the bound" + (shard.empty() ? "" : " for this shard"),
                        "sum over the ratios of (|p| + q)^2 <= " + number_text(max_work) +
                            " (--ratios 7,7 is 4832; --shard I/K splits a set)");
@@ -89,24 +131,32 @@ inline std::string run_fingerprint(const std::vector<Vector3d>& points, const st
   return hex;
 }
 
-/// The number of ratios of shard I/K of --ratios P,Q, or refuses (InvalidInput) a shard name
-/// that is not the canonical "I/K" of that set.
-inline std::size_t shard_ratio_count(const std::string& ratios, const std::string& shard) {
-  const auto comma = ratios.find(',');
-  const std::size_t p = parse_count(ratios.substr(0, comma), "ratios", 1, 1000);
-  const std::size_t q = parse_count(comma == std::string::npos ? "" : ratios.substr(comma + 1), "ratios", 1, 1000);
-  if (ratios != std::to_string(p) + "," + std::to_string(q)) throw InvalidInput("ratios", ratios, "not P,Q", "P,Q as written by the run");
-  const auto [begin, end] = shard_range(shard, ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q)).size());
+/// What a shard's JSON says of itself: its set (as its JSON member, set_member), I of K, and how
+/// many ratios of the set are its own.
+struct ShardHeader {
+  std::string set;
+  std::size_t index = 0, count = 0, ratios = 0;
+};
+
+/// The header of a shard of synth points / fit (member "ratios" or "teeth", "shard"), checked:
+/// the set and "I/K" written as a run writes them; InvalidInput or a JSON exception otherwise.
+inline ShardHeader read_shard_header(const nlohmann::json& j) {
+  const std::string name = j.contains("teeth") ? "teeth" : "ratios";
+  const std::string text = j.at(name).get<std::string>();
+  const std::string shard = j.at("shard").get<std::string>();
+  const auto [begin, end] = shard_range(shard, named_ratio_set(name, text).size());
   const auto slash = shard.find('/');
-  if (shard != std::to_string(parse_count(shard.substr(0, slash), "shard", 1, 1000000)) + shard.substr(slash))
+  ShardHeader h{set_member(name, text), parse_count(shard.substr(0, slash), "shard", 1, 1000000),
+                parse_count(shard.substr(slash + 1), "shard", 1, 1000000), end - begin};
+  if (shard != std::to_string(h.index) + "/" + std::to_string(h.count))
     throw InvalidInput("shard", shard, "not written as the run writes it", "I/K");
-  return end - begin;
+  return h;
 }
 
 /// What names one shard of a ratio-set run: the set, I of K, and `run` (anything else that
 /// must agree between the shards of one run, e.g. the candidate bound).
 struct ShardName {
-  std::string ratios;
+  std::string ratios;  // the set's JSON member (set_member)
   std::size_t index = 0, count = 0;
   std::string run;
 };
@@ -119,7 +169,7 @@ inline void check_shard_set(const std::vector<ShardName>& shards) {
     const ShardName& s = shards[k];
     const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
     if (s.ratios != shards[0].ratios || s.count != shards[0].count)
-      throw InvalidInput("shard", name, "from another run (--ratios " + s.ratios + ", not " + shards[0].ratios + ")", valid);
+      throw InvalidInput("shard", name, "from another run (" + s.ratios + ", not " + shards[0].ratios + ")", valid);
     if (s.run != shards[0].run)
       throw InvalidInput("shard", name, "from another run (other points or options than shard " +
                                             std::to_string(shards[0].index) + "/" + std::to_string(shards[0].count) + ")", valid);
@@ -132,11 +182,20 @@ inline void check_shard_set(const std::vector<ShardName>& shards) {
 
 /// --input, --n, --ratios and --shard (--slice) of a synth command over a ratio set.
 inline void add_ratio_set_options(CLI::App& cmd, std::string& input, std::string& n, std::string& ratios,
-                                  std::string& shard, const std::string& what) {
+                                  std::string& teeth, std::string& shard, const std::string& what) {
   cmd.add_option("--input", input, what + " (CSV x,y,z or .npy; - for standard input)")->required();
   cmd.add_option("--n", n, "the gear ratio p/q");
   cmd.add_option("--ratios", ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
+  cmd.add_option("--teeth", teeth,
+                 "ZS:ZP, sun:planet tooth counts (n = ZS/ZP; ZS < 0: internal), or MIN..MAX: every n = +-ZS/ZP "
+                 "with both counts in the range");
   cmd.add_option("--shard,--slice", shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+}
+
+/// " (teeth 39:15)" when the report echoes teeth for n, else "".
+inline std::string teeth_text(const TeethSpec& teeth, const Ratio& n) {
+  const auto t = teeth.of(n);
+  return t ? " (teeth " + t->str() + ")" : "";
 }
 
 /// The arguments that make `sphtroch trace` / `plot` draw this train.

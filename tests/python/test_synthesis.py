@@ -100,3 +100,26 @@ def test_fit_refuses_bad_input():
         with pytest.raises(sphtroch.InvalidInput) as info:
             sphtroch.fit(good, n=1, **kwargs)
         assert info.value.field == field
+
+
+def test_teeth_as_the_cli_reads_them():
+    # teeth="ZS:ZP" is n = ZS/ZP and is echoed; "MIN..MAX" is every ratio of two counts in it.
+    train = sphtroch.GearTrain(a2=1.0, a3=2.0, n="1/2", phase=0.3)
+    _, P = train.trace(samples=40)
+    pts = P[[1, 10, 28]]
+    r = sphtroch.synth_points(pts, teeth="12:24")
+    assert r["teeth"] == "12:24" and r["complete"] is True
+    assert all(s["n"] == "1/2" and s["teeth"] == "12:24" for s in r["solutions"])
+    assert any(abs(s["a2"] - 1.0) < 1e-9 and abs(s["a3"] - 2.0) < 1e-9 for s in r["solutions"])
+    f = sphtroch.fit(P, teeth="1..2", candidates=2)
+    assert f["teeth"] == "1..2"
+    assert f["candidates"][0]["rms"] < 1e-9
+    for c in f["candidates"]:
+        zs, zp = (int(v) for v in c["teeth"].split(":"))
+        assert 1 <= abs(zs) <= 2 and 1 <= zp <= 2 and sphtroch.GearTrain(1, 1, f"{zs}/{zp}").ratio == c["n"]
+    for bad in ["39:0", "0..3", "1..60", 39]:
+        with pytest.raises(sphtroch.InvalidInput) as info:
+            sphtroch.fit(P, teeth=bad)
+        assert info.value.field == "teeth"
+    with pytest.raises(sphtroch.InvalidInput):
+        sphtroch.fit(P, n=1, teeth="1:1")

@@ -12,7 +12,8 @@
 // count put in the cell but too close to a boundary for the census to agree) is dropped and
 // counted in "dropped". Without a wanted count, candidates keep their census as it is, certified
 // or not ("census_certified").
-// JSON: {"candidates": [{"n": "p/q", "a2", "a3", "phase", "rms", "max_deviation", "margin" (radians),
+// JSON: {"candidates": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
+// "rms", "max_deviation", "margin" (radians),
 // "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], best (smallest rms)
 // first over all ratios, at most options.max_candidates; "reason": why there is none, or "";
 // "dropped": candidates removed because the census did not confirm the wanted counts}.
@@ -24,6 +25,7 @@
 
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <algorithm>
@@ -108,11 +110,13 @@ inline std::string fit_reason(const std::vector<RatioFit>& all) {
 }
 
 /// One candidate as a JSON object (see header).
-inline std::string fit_candidate_json(const ConfirmedCandidate& cc) {
+inline std::string fit_candidate_json(const ConfirmedCandidate& cc, const TeethSpec& teeth = {}) {
   const FitCandidate& f = cc.candidate;
   const Classification& c = cc.census;
   std::ostringstream out;
-  out << "{\"n\": \"" << f.train.ratio().str() << "\", \"a2\": " << number_text(f.train.a2())
+  out << "{\"n\": \"" << f.train.ratio().str() << "\", ";
+  if (const auto t = teeth.of(f.train.ratio())) out << "\"teeth\": \"" << t->str() << "\", ";
+  out << "\"a2\": " << number_text(f.train.a2())
       << ", \"a3\": " << number_text(f.train.a3()) << ", \"phase\": " << number_text(f.train.phase_given())
       << ", \"rms\": " << number_text(f.rms) << ", \"max_deviation\": " << number_text(f.max_deviation)
       << ", \"margin\": " << number_text(f.margin) << ", \"counts\": {\"nodes\": " << c.nodes.size()
@@ -123,10 +127,11 @@ inline std::string fit_candidate_json(const ConfirmedCandidate& cc) {
 
 /// The whole result as JSON (see header), one candidate per line. `fields`, if any, are more
 /// members written first.
-inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& options, const std::string& fields = "") {
+inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& options, const std::string& fields = "",
+                            const TeethSpec& teeth = {}) {
   std::string out = "{" + fields + "\"candidates\": [";
   const auto ranked = ranked_candidates(all, options);
-  for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k]);
+  for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k], teeth);
   std::size_t dropped = 0;
   for (const RatioFit& rf : all) dropped += rf.dropped;
   std::string reason = fit_reason(all);

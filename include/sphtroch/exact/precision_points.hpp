@@ -16,7 +16,8 @@
 // a3 = acos(Q_1z) and theta_p = atan2(Q_1x, -Q_1y) - n theta_1 follow. Both sides are unit
 // vectors, so each i gives two equations: f = Q_iz - W_z = 0 and g = (Q_i x W)_z = 0, with W
 // the right side, plus the sign condition Q_i . W > 0. Four regular equations in the four
-// unknowns x = (a2, theta_1, Delta_2, Delta_3) in [1e-6, pi - 1e-6] x [0, 2 pi] x [0, 2 pi q]^2:
+// unknowns x = (a2, theta_1, Delta_2, Delta_3) in [1e-6, pi - 1e-6] x [0, 2 pi] x [0, 2 pi q]^2
+// (theta_1's domain overlapping itself a little at both ends, so no root sits on its edge):
 // no arccos of z, so nothing folds at the z-extremes. The curve is the same set for theta_p and
 // theta_p + 2 pi / q; shifting every theta_i by 2 pi k is that change, hence theta_1 in [0, 2 pi].
 //
@@ -358,8 +359,11 @@ class PointsSolver {
       : pr_(problem), options_(options) {}
 
   PrecisionPoints run() {
+    // theta_1 is periodic: the domain overlaps itself by kTheta1Overlap at both ends, so that a
+    // root at theta_1 = 0 (a point at the trace's first sample) lies inside it, not on an edge a
+    // box cannot be certified across; its copy at 2 pi is the same train (is_new drops it).
     Node all{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist),
-             Interval(0.0, 2 * Constants<double>::pi()), {}};
+             Interval(-kTheta1Overlap, 2 * Constants<double>::pi() + kTheta1Overlap), {}};
     for (auto& d : all.delta) d.push_back(Interval(0.0, pr_.delta_max));
     std::vector<Node> stack{all};
     {
@@ -381,6 +385,8 @@ class PointsSolver {
  private:
   /// Widths at which the outer loop hands its boxes to the Krawczyk test.
   static constexpr double kIsolateWidth = 1.0 / 64;
+  /// How far the theta_1 domain reaches past each end of [0, 2 pi] (see run()).
+  static constexpr double kTheta1Overlap = 1.0 / 16;
 
   struct Node {
     Interval a2, theta1;

@@ -6,7 +6,8 @@
 //   auto all = sphtroch::precision_points_with_census(pts, {sphtroch::Ratio(1, 2)});
 //   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
 //
-// JSON: {"solutions": [{"n": "p/q", "a2", "a3", "phase", "params": [theta2 per point, input order],
+// JSON: {"solutions": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
+// "params": [theta2 per point, input order],
 // "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified", "isolated"
 // (false: a near-singular root the certificate could not isolate, see PrecisionSolution)}],
 // "complete": every ratio's list certified complete, "undecided_boxes": their sum}. Radians.
@@ -18,6 +19,7 @@
 
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/exact/precision_points.hpp"
 
 #include <sstream>
@@ -47,9 +49,12 @@ inline std::vector<RatioPrecisionPoints> precision_points_with_census(const std:
 }
 
 /// One solution as a JSON object (see header).
-inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c) {
+inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c,
+                                           const TeethSpec& teeth = {}) {
   std::ostringstream out;
-  out << "{\"n\": \"" << s.train.ratio().str() << "\", \"a2\": " << number_text(s.train.a2())
+  out << "{\"n\": \"" << s.train.ratio().str() << "\", ";
+  if (const auto t = teeth.of(s.train.ratio())) out << "\"teeth\": \"" << t->str() << "\", ";
+  out << "\"a2\": " << number_text(s.train.a2())
       << ", \"a3\": " << number_text(s.train.a3()) << ", \"phase\": " << number_text(s.train.phase_given())
       << ", \"params\": [";
   for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
@@ -62,7 +67,8 @@ inline std::string precision_solution_json(const PrecisionSolution& s, const Cla
 
 /// The whole result as JSON (see header), one solution per line. `fields`, if any, are more
 /// members written first (e.g. "\"ratios\": \"7,7\", " for a ratio set).
-inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>& all, const std::string& fields = "") {
+inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>& all, const std::string& fields = "",
+                                         const TeethSpec& teeth = {}) {
   std::string out = "{" + fields + "\"solutions\": [";
   bool first = true, complete = true;
   std::size_t undecided = 0;
@@ -70,7 +76,7 @@ inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>
     complete = complete && rs.result.certified;
     undecided += rs.result.undecided;
     for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
-      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k]);
+      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k], teeth);
       first = false;
     }
   }

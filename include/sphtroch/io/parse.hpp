@@ -3,11 +3,14 @@
 //   sphtroch::parse_angle("2pi/3", "a2");        // 2 pi / 3; also "90deg", "-pi/4", "1.25", "pi-1e-6"
 //   sphtroch::parse_ratio("5/2", "n");           // Ratio(5, 2); also "2.5", "-3", "10/4"
 //   sphtroch::parse_a3("ap+1e-6", "a3");         // {A3Reference::pitch_cone, 1e-6}; "pi-ap-1e-9", "a2"
+//   sphtroch::parse_teeth("39:15", "teeth");     // Teeth{39, 15}: n = 13/5 (core/teeth.hpp)
+//   sphtroch::parse_tooth_range("12..60", "teeth");   // ToothRange{12, 60}
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
 //   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
 //   ratio  := [sign] integer ["/" integer] | [sign] digits "." digits     (decimal, <= 9 places)
 //   a3     := angle | ref [("+" | "-") angle]     ref := "ap" | "pi-ap" | "a2" | "pi-a2"
+//   teeth  := [sign] integer ":" integer          tooth range := integer ".." integer
 // Every failure throws InvalidInput naming the field, the text and the accepted forms.
 // Range checks (a2 in (0, pi) ...) are the GearTrain's; parsing only rejects non-numbers,
 // NaN and infinities.
@@ -18,6 +21,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <cctype>
@@ -236,6 +240,38 @@ inline double parse_turns(std::string_view text) {
   if (!k) throw InvalidInput("turns", std::string(text), "outside the valid range", kTurnsRange);
   check_turns(*k, std::string(text));
   return *k;
+}
+
+constexpr const char* kTeethForms = "ZS:ZP, sun:planet tooth counts (39:15; ZS < 0: internal gearing)";
+constexpr const char* kToothRangeForms = "MIN..MAX, tooth counts of either gear (12..60)";
+
+/// "ZS:ZP" as tooth counts (checked_teeth's range).
+inline Teeth parse_teeth(std::string_view text, const std::string& field = "teeth") {
+  const std::string_view s = detail::trim(text);
+  const auto colon = s.find(':');
+  const auto sun = colon == std::string_view::npos ? std::nullopt : detail::strict_int(s.substr(0, colon));
+  const auto planet = colon == std::string_view::npos ? std::nullopt : detail::strict_int(s.substr(colon + 1));
+  if (!sun || !planet || s[colon + 1] == '+' || s[colon + 1] == '-')
+    throw InvalidInput(field, std::string(text), "not two tooth counts", kTeethForms);
+  try {
+    return checked_teeth(*sun, *planet);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(field, std::string(text), e.problem(), e.valid_range());
+  }
+}
+
+/// "MIN..MAX" as a range of tooth counts (checked_range's bounds).
+inline ToothRange parse_tooth_range(std::string_view text, const std::string& field = "teeth") {
+  const std::string_view s = detail::trim(text);
+  const auto dots = s.find("..");
+  const auto min = dots == std::string_view::npos ? std::nullopt : detail::strict_int(s.substr(0, dots));
+  const auto max = dots == std::string_view::npos ? std::nullopt : detail::strict_int(s.substr(dots + 2));
+  if (!min || !max) throw InvalidInput(field, std::string(text), "not a range of tooth counts", kToothRangeForms);
+  try {
+    return checked_range(*min, *max);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(field, std::string(text), e.problem(), e.valid_range());
+  }
 }
 
 }  // namespace sphtroch
