@@ -280,3 +280,33 @@ TEST_CASE("cli synth fit / points --teeth: ZS:ZP is n = ZS/ZP and is echoed, MIN
     CHECK(count_lines(bad.err) == 1);
   }
 }
+
+TEST_CASE("cli synth fit --node-at: a node of the traced train gives it back, with the node there by the census",
+          "[cli][synth]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 2 --a2 1.1 --a3 0.9 --phase 0.4 --samples 300 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);
+  // The node point as `sphtroch nodes` prints it (kind,x,y,z,...): the expected node.
+  REQUIRE(run("nodes --n 2 --a2 1.1 --a3 0.9 --phase 0.4 -o nodes.csv", dir, true).status == 0);
+  const std::string node = shell("sed -n 2p nodes.csv | cut -d, -f2-4", dir).out;
+  REQUIRE(count_lines(node) == 1);
+  const std::string at = node.substr(0, node.size() - 1);
+  const Result r = run("synth fit --input path.csv --n 2 --node-at " + at + " --json", dir, true);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  REQUIRE_FALSE(j["candidates"].empty());
+  const auto& best = j["candidates"][0];
+  CHECK(std::abs(best["a2"].get<double>() - 1.1) < 1e-7);
+  CHECK(std::abs(best["a3"].get<double>() - 0.9) < 1e-7);
+  for (const auto& c : j["candidates"]) CHECK(c["node_distance"].get<double>() <= 1e-6);
+  CHECK(contains(run("synth fit --input path.csv --n 2 --node-at " + at, dir, true).out, " rad away (certified)"));
+  for (const std::string& args : {std::string("--node-at 0.97,-0.2,0.14"), std::string("--node-at 1,0"),
+                                  std::string("--node-at 1,0,x"), std::string("--node-tolerance 1e-3"),
+                                  std::string("--node-at 1,0,0 --node-tolerance 0")}) {
+    INFO(args);
+    const Result bad = run("synth fit --input path.csv --n 2 " + args, dir, true);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+  }
+}

@@ -296,4 +296,57 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
     CHECK(e.problem().find("too many") != std::string::npos);
   }
   CHECK_THROWS_AS(map_margin(1.0, std::nan(""), Ratio(2)), InvalidInput);
+  FitOptions node;
+  node.node_at = Vector3d(0, 0, 1.01);
+  CHECK(field_of(ok, node) == "node-at");
+  node.node_at = Vector3d(NAN, 0, 1);
+  CHECK(field_of(ok, node) == "node-at");
+  node.node_at = Vector3d(0, 0, 1);
+  node.node_tolerance = 0;
+  CHECK(field_of(ok, node) == "node-tolerance");
+}
+
+namespace {
+
+/// Distance (radians) from `at` to the nearest node of classify()'s census of the train, run here.
+double nearest_census_node(const GearTrain& train, const Vector3d& at) {
+  const Classification c = classify(train);
+  REQUIRE(c.certified());
+  double best = 1e300;
+  for (const Node& node : c.nodes) best = std::min(best, std::atan2(node.position.cross(at).norm(), node.position.dot(at)));
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("fit with a node point: the hidden train's node gives it back, and every candidate has a node there",
+          "[exact][synthesis]") {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int tried = 0, hits = 0;
+  while (tried < kNoisyTargets / 25 + 2) {
+    const Target t = random_target(rng, kSigma);
+    if (t.hidden.ratio().abs_p() > 4 || t.hidden.ratio().q() > 3) continue;  // a few nodes: keeps the census quick
+    const Classification hidden = classify(t.hidden);
+    if (hidden.nodes.empty() || !hidden.certified()) continue;
+    ++tried;
+    const Vector3d at = hidden.nodes[rng() % hidden.nodes.size()].position;
+    FitOptions o;
+    o.node_at = at;
+    o.max_candidates = 3;
+    const auto fits = fit_with_census(t.points, {t.hidden.ratio()}, o);
+    INFO("n = " << t.hidden.ratio().str() << " a2 = " << t.hidden.a2() << " a3 = " << t.hidden.a3());
+    REQUIRE_FALSE(fits[0].candidates.empty());
+    hits += fits[0].candidates[0].candidate.rms <= 2 * kSigma;
+    for (const ConfirmedCandidate& c : fits[0].candidates) CHECK(nearest_census_node(c.candidate.train, at) <= o.node_tolerance);
+    // A point 0.01 rad off that node: a compromise, but still a node there, by the census.
+    const Vector3d off = (at + 0.01 * at.cross(Vector3d(u(rng), u(rng), u(rng))).normalized()).normalized();
+    o.node_at = off;
+    const auto off_fits = fit_with_census(t.points, {t.hidden.ratio()}, o);
+    for (const ConfirmedCandidate& c : off_fits[0].candidates) {
+      CHECK(nearest_census_node(c.candidate.train, off) <= o.node_tolerance);
+      CHECK(c.candidate.node_distance <= o.node_tolerance);
+    }
+  }
+  CHECK(hits == tried);
 }

@@ -130,7 +130,7 @@ std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
-               py::handle cusps, py::handle candidates, double max_deviation) {
+               py::handle cusps, py::handle candidates, double max_deviation, py::handle node_at, double node_tolerance) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
   std::string fields;
   TeethSpec teeth;
@@ -143,6 +143,14 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
     throw InvalidInput("candidates", repr_of(candidates), "outside the valid range", "an integer 1 .. 1000 (the CLI's --candidates)");
   o.max_candidates = static_cast<std::size_t>(*wanted);
   o.max_deviation = max_deviation;
+  if (!node_at.is_none()) {
+    using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+    const Array a = Array::ensure(node_at);
+    if (!a || a.ndim() != 1 || a.shape(0) != 3)
+      throw InvalidInput("node-at", repr_of(node_at), "not three numbers", "None or (x, y, z), a unit vector");
+    o.node_at = Vector3d(a.at(0), a.at(1), a.at(2));
+  }
+  o.node_tolerance = node_tolerance;
   std::string json;
   {
     py::gil_scoped_release release;
@@ -159,7 +167,8 @@ void bind_synthesis(py::module_& m) {
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none());
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
-        py::arg("max_deviation") = std::numeric_limits<double>::infinity());
+        py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
+        py::arg("node_tolerance") = 1e-6);
 }
 
 }  // namespace sphtroch::python

@@ -27,7 +27,7 @@ namespace {
 constexpr double kMaxFitWork = 20000;
 
 struct FitCommandOptions {
-  std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation;
+  std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation, node_at, node_tolerance;
   bool json = false;
 };
 
@@ -41,6 +41,14 @@ FitOptions fit_options(const FitCommandOptions& o) {
     if (!(v > 0)) throw InvalidInput("max-deviation", o.max_deviation, "not a positive angle", "an angle > 0 (radians, or e.g. 1deg, pi/180)");
     f.max_deviation = v;
   }
+  if (!o.node_at.empty()) f.node_at = parse_unit_point(o.node_at, "node-at");
+  if (!o.node_tolerance.empty()) {
+    if (o.node_at.empty()) throw UsageError{"--node-tolerance = " + o.node_tolerance + ": applies to a node point; valid: with --node-at X,Y,Z"};
+    const double v = parse_angle(o.node_tolerance, "node-tolerance");
+    if (!(v > 0 && v <= Constants<double>::pi()))
+      throw InvalidInput("node-tolerance", o.node_tolerance, "not an angle in (0, pi]", "an angle in (0, pi] (radians, or e.g. 0.01deg)");
+    f.node_tolerance = v;
+  }
   return f;
 }
 
@@ -48,6 +56,9 @@ std::string wanted_text(const FitOptions& f) {
   std::string s;
   if (f.nodes) s += std::to_string(*f.nodes) + " node(s)";
   if (f.cusps) s += (s.empty() ? "" : ", ") + std::to_string(*f.cusps) + " cusp(s)";
+  if (f.node_at)
+    s += (s.empty() ? "" : ", ") + std::string("a node within ") + number_text(f.node_tolerance) + " rad of " +
+         number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z());
   return s.empty() ? "any counts" : s + " wanted";
 }
 
@@ -63,6 +74,7 @@ void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const F
         << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
         << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
         << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
+        << (f.node_at ? "; node point " + number_text(c.node_distance) + " rad away" : "")
         << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
         << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
   }
@@ -70,8 +82,12 @@ void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const F
 
 /// The options a fit computed with, as text (part of the run's fingerprint).
 std::string options_text(const FitOptions& f) {
+  std::string node = "anywhere";
+  if (f.node_at)
+    node = number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z()) + " within " +
+           number_text(f.node_tolerance);
   return "nodes " + (f.nodes ? std::to_string(*f.nodes) : "any") + " cusps " + (f.cusps ? std::to_string(*f.cusps) : "any") +
-         " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates);
+         " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates) + " node " + node;
 }
 
 /// Shard members the merge needs besides the unsharded output: the run's fingerprint, the
@@ -144,7 +160,8 @@ double checked_candidate(const std::string& line) {
   count_member(k, "cusps");
   if (c.contains("teeth") && parse_teeth(c.at("teeth").get<std::string>()).ratio() != n)
     throw InvalidInput("shard", "teeth", "not the teeth of n = " + n.str(), "as synth fit prints it");
-  if (!c.at("census_certified").is_boolean() || c.size() != 9u + c.contains("teeth") || k.size() != 4)
+  if (c.contains("node_distance")) number("node_distance", 0, pi);
+  if (!c.at("census_certified").is_boolean() || c.size() != 9u + c.contains("teeth") + c.contains("node_distance") || k.size() != 4)
     throw InvalidInput("shard", "candidate", "not as synth fit prints it", "the members of docs/cli.md: synth fit");
   return rms;
 }
@@ -233,6 +250,8 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
   cmd->add_option("--cusps", o->cusps, "wanted cusps C (0; |p| on a pitch cone; 2|p| where both meet, |n| < 1)");
   cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");
   cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point");
+  cmd->add_option("--node-at", o->node_at, "X,Y,Z: a node (self-crossing) wanted at this point of the sphere");
+  cmd->add_option("--node-tolerance", o->node_tolerance, "how near --node-at the certified node must be (default 1e-6 rad)");
   cmd->add_flag("--json", o->json, "{\"candidates\": [{\"n\", \"a2\", \"a3\", \"phase\", \"rms\", \"max_deviation\", "
                                    "\"margin\", \"counts\", ...}], \"reason\", \"dropped\"} (docs/cli.md: synth fit)");
   add_output_option(*cmd, o->output, "the candidates");

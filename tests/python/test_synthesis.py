@@ -123,3 +123,21 @@ def test_teeth_as_the_cli_reads_them():
         assert info.value.field == "teeth"
     with pytest.raises(sphtroch.InvalidInput):
         sphtroch.fit(P, n=1, teeth="1:1")
+
+
+def test_fit_with_a_node_point():
+    # A node of the hidden train (its census through classify()) as the node point: that train
+    # first, and every candidate's certified census has a node there.
+    train = sphtroch.GearTrain(a2=1.1, a3=0.9, n=2, phase=0.4)
+    _, P = train.trace(samples=300)
+    node = np.array(train.classify()["nodes"][0]["position"], dtype=float)
+    r = sphtroch.fit(P, n=2, node_at=node, candidates=3)
+    assert r["candidates"], r["reason"]
+    best = r["candidates"][0]
+    assert abs(best["a2"] - 1.1) < 1e-7 and abs(best["a3"] - 0.9) < 1e-7
+    assert all(c["node_distance"] <= 1e-6 for c in r["candidates"])
+    for kwargs, field in [({"node_at": (0, 0, 1.1)}, "node-at"), ({"node_at": (1, 0)}, "node-at"),
+                          ({"node_at": (1, 0, 0), "node_tolerance": 0.0}, "node-tolerance")]:
+        with pytest.raises(sphtroch.InvalidInput) as info:
+            sphtroch.fit(P, n=2, **kwargs)
+        assert info.value.field == field

@@ -11,9 +11,10 @@
 // classify(), certified; a candidate whose census is not certified or differs (a shape the root
 // count put in the cell but too close to a boundary for the census to agree) is dropped and
 // counted in "dropped". Without a wanted count, candidates keep their census as it is, certified
-// or not ("census_certified").
+// or not ("census_certified"). With a node point (options.node_at), every candidate's certified
+// census has a node within options.node_tolerance of it ("node_distance": to the nearest node).
 // JSON: {"candidates": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
-// "rms", "max_deviation", "margin" (radians),
+// "rms", "max_deviation", "margin", "node_distance" (only with node_at) (radians),
 // "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], best (smallest rms)
 // first over all ratios, at most options.max_candidates; "reason": why there is none, or "";
 // "dropped": candidates removed because the census did not confirm the wanted counts}.
@@ -29,6 +30,7 @@
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -53,6 +55,13 @@ struct RatioFit {
   std::size_t dropped = 0;                     // not confirmed by classify
 };
 
+/// Spherical distance (radians) from `at` to the nearest node of the census, or infinity.
+inline double census_node_distance(const Classification& c, const Vector3d& at) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Node& node : c.nodes) best = std::min(best, sphere_distance(node.position, at.normalized()));
+  return best;
+}
+
 /// True when the census has the wanted counts, certified (nothing wanted: always).
 inline bool census_confirms(const Classification& c, const FitOptions& o) {
   if (!o.nodes && !o.cusps) return true;
@@ -74,11 +83,13 @@ inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points
     for (FitCandidate& c : f.candidates) {
       if (rf.candidates.size() == options.max_candidates) break;
       Classification census = classify(c.train);
-      if (census_confirms(census, options)) rf.candidates.push_back({std::move(c), std::move(census)});
+      if (options.node_at) c.node_distance = census_node_distance(census, *options.node_at);
+      const bool node_held = !options.node_at || (census.certified() && c.node_distance <= options.node_tolerance);
+      if (census_confirms(census, options) && node_held) rf.candidates.push_back({std::move(c), std::move(census)});
       else ++rf.dropped;
     }
     if (rf.candidates.empty() && rf.reason.empty() && rf.dropped > 0)
-      rf.reason = "n = " + n.str() + ": the census (classify) did not confirm the wanted counts of any of " +
+      rf.reason = "n = " + n.str() + ": the census (classify) did not confirm the wanted counts (or node point) of any of " +
                   std::to_string(rf.dropped) + " candidate(s)";
     all.push_back(std::move(rf));
   }
@@ -110,7 +121,7 @@ inline std::string fit_reason(const std::vector<RatioFit>& all) {
 }
 
 /// One candidate as a JSON object (see header).
-inline std::string fit_candidate_json(const ConfirmedCandidate& cc, const TeethSpec& teeth = {}) {
+inline std::string fit_candidate_json(const ConfirmedCandidate& cc, const TeethSpec& teeth = {}, bool node_at = false) {
   const FitCandidate& f = cc.candidate;
   const Classification& c = cc.census;
   std::ostringstream out;
@@ -119,7 +130,9 @@ inline std::string fit_candidate_json(const ConfirmedCandidate& cc, const TeethS
   out << "\"a2\": " << number_text(f.train.a2())
       << ", \"a3\": " << number_text(f.train.a3()) << ", \"phase\": " << number_text(f.train.phase_given())
       << ", \"rms\": " << number_text(f.rms) << ", \"max_deviation\": " << number_text(f.max_deviation)
-      << ", \"margin\": " << number_text(f.margin) << ", \"counts\": {\"nodes\": " << c.nodes.size()
+      << ", \"margin\": " << number_text(f.margin);
+  if (node_at) out << ", \"node_distance\": " << number_text(f.node_distance);
+  out << ", \"counts\": {\"nodes\": " << c.nodes.size()
       << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
       << "}, \"census_certified\": " << (c.certified() ? "true" : "false") << "}";
   return out.str();
@@ -131,7 +144,7 @@ inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& 
                             const TeethSpec& teeth = {}) {
   std::string out = "{" + fields + "\"candidates\": [";
   const auto ranked = ranked_candidates(all, options);
-  for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k], teeth);
+  for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k], teeth, options.node_at.has_value());
   std::size_t dropped = 0;
   for (const RatioFit& rf : all) dropped += rf.dropped;
   std::string reason = fit_reason(all);

@@ -5,6 +5,7 @@
 //   sphtroch::parse_a3("ap+1e-6", "a3");         // {A3Reference::pitch_cone, 1e-6}; "pi-ap-1e-9", "a2"
 //   sphtroch::parse_teeth("39:15", "teeth");     // Teeth{39, 15}: n = 13/5 (core/teeth.hpp)
 //   sphtroch::parse_tooth_range("12..60", "teeth");   // ToothRange{12, 60}
+//   sphtroch::parse_unit_point("0.6,0,0.8", "node-at");  // Vector3d(0.6, 0, 0.8)
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
 //   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
@@ -272,6 +273,22 @@ inline ToothRange parse_tooth_range(std::string_view text, const std::string& fi
   } catch (const InvalidInput& e) {
     throw InvalidInput(field, std::string(text), e.problem(), e.valid_range());
   }
+}
+
+/// "X,Y,Z": a point on the unit sphere (|P| within 1e-6 of 1), returned normalised.
+inline Vector3d parse_unit_point(std::string_view text, const std::string& field) {
+  const std::string_view s = detail::trim(text);
+  const auto c1 = s.find(','), c2 = c1 == std::string_view::npos ? c1 : s.find(',', c1 + 1);
+  const std::string valid = "X,Y,Z, a unit vector (|P| within 1e-6 of 1), e.g. 0.6,0,0.8";
+  if (c2 == std::string_view::npos || s.find(',', c2 + 1) != std::string_view::npos)
+    throw InvalidInput(field, std::string(text), "not three numbers X,Y,Z", valid);
+  const auto x = detail::strict_double(s.substr(0, c1)), y = detail::strict_double(s.substr(c1 + 1, c2 - c1 - 1)),
+             z = detail::strict_double(s.substr(c2 + 1));
+  if (!x || !y || !z) throw InvalidInput(field, std::string(text), "not three numbers X,Y,Z", valid);
+  const Vector3d p(*x, *y, *z);
+  if (!(std::abs(p.norm() - 1.0) <= 1e-6))
+    throw InvalidInput(field, std::string(text), "not on the unit sphere (|P| = " + number_text(p.norm()) + ")", valid);
+  return p.normalized();
 }
 
 }  // namespace sphtroch

@@ -29,6 +29,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace sphtroch {
@@ -162,6 +163,28 @@ inline double nearest_param(const FitShape& s, std::int64_t abs_p, double period
   }
   const double r = std::fmod(t_best, period);
   return r < 0 ? r + period : r;
+}
+
+/// The two curve points nearest `target` on different branches (see header: the 2|p| crossings
+/// of its latitude, each refined by Newton), as theta2 in [0, 2 pi q): where a node at `target`
+/// has its two branches. The second is the first again when no other branch comes near.
+inline std::pair<double, double> two_branch_feet(const FitShape& s, std::int64_t abs_p, double period,
+                                                 const Vector3d& target) {
+  const double two_pi = Constants<double>::two_pi();
+  const LatitudeMatch m = latitude_match(s, target.z());
+  std::vector<std::pair<double, double>> feet;  // (squared distance, t)
+  for (int sign = -1; sign <= 1; sign += 2)
+    for (std::int64_t j = 0; j < abs_p; ++j) {
+      double t = std::fmod((sign * m.u + two_pi * static_cast<double>(j) - s.phase) / s.n, period);
+      t = std::fmod(nearest_param_from(s, target, t < 0 ? t + period : t), period);
+      if (t < 0) t += period;
+      feet.push_back({(curve_point(s, t) - target).squaredNorm(), t});
+    }
+  std::sort(feet.begin(), feet.end());
+  for (std::size_t k = 1; k < feet.size(); ++k)
+    if (std::abs(std::remainder(feet[k].second - feet[0].second, period)) > 1e-6)
+      return {feet[0].second, feet[k].second};
+  return {feet[0].second, feet[0].second};
 }
 
 /// Spherical distance (radians) between two unit vectors.

@@ -34,6 +34,10 @@
 //     of |p| (the |p|-fold symmetry); the counts the boundary set shows at the grid a2 (a cell
 //     narrower than one grid step in a2 that lies between grid columns is not seen); cusps are 0,
 //     |p| on a pitch cone, or 2|p| where both cones meet (|n| < 1).
+//  5. A node at a given point N (FitOptions::node_at): the squared distances of N to the curve on
+//     its two nearest branches (two_branch_feet) join the sum, weighted kFitNodeWeights[k] times
+//     the point count in turn, so a self-crossing is pulled onto N; a candidate whose two branches
+//     pass farther than node_tolerance from N is dropped (the census confirms it, exact layer).
 // Margin: the distance in the (a2, a3) plane (radians) to the nearest boundary of the map, to first
 // order: for each event of the boundary set at the candidate's a2, its a3 distance times the cosine
 // of the boundary's slope (from the boundary set at a2 + 1e-4). The cone a cusp candidate lies on
@@ -86,12 +90,17 @@ constexpr double kFitMinTwist = 1e-6;
 constexpr double kFitSameDesign = 1e-3;
 /// a3 distance a node-constrained candidate keeps from the events bounding its cell (radians).
 constexpr double kFitBoundaryClearance = 1e-7;
+/// A node at a given point: weights of its two branch distances, per point of the fit, in turn
+/// (the first finds the node, the last holds it to ~1e-6 of the path's residual).
+constexpr double kFitNodeWeights[] = {1e2, 1e6};
 
 struct FitOptions {
   std::optional<std::int64_t> nodes;  // wanted node points (crossings and tangencies), or any
   std::optional<std::int64_t> cusps;  // wanted cusps, or any
   std::size_t max_candidates = 5;     // at most this many, best first
   double max_deviation = std::numeric_limits<double>::infinity();  // radians: drop farther candidates
+  std::optional<Vector3d> node_at;    // a node wanted at this point (unit vector), or anywhere
+  double node_tolerance = 1e-6;       // radians: how near node_at the curve's node must be
 };
 
 struct FitCandidate {
@@ -101,6 +110,10 @@ struct FitCandidate {
   double margin = 0.0;           // to the nearest boundary of the map (see header), radians
   std::int64_t root_nodes = 0;   // node points by the root count (classify confirms, exact layer)
   std::vector<double> params;    // theta2 of each point's nearest curve point, in [0, 2 pi q)
+  /// With node_at: the larger distance (radians) from node_at to the curve on its two nearest
+  /// branches (0 when the curve crosses itself there); exact/path_fit_output.hpp measures the
+  /// distance to the census's node instead.
+  double node_distance = 0.0;
 };
 
 struct PathFit {
@@ -205,6 +218,7 @@ struct Constraint {
   Parametrisation par;
   std::optional<std::int64_t> nodes;
   bool avoid_cones = false;  // cusps = 0 wanted
+  std::optional<Vector3d> node_at;
   bool admissible(double a2, double a3) const {
     if (!(a2 >= kFitMinTwist && a2 <= kPi - kFitMinTwist && a3 >= kFitMinTwist && a3 <= kPi - kFitMinTwist))
       return false;
@@ -311,8 +325,9 @@ inline void screen_shape(double a2, double a3, const Ratio& ratio, const std::ve
 
 struct Refined {
   Eigen::VectorXd x;
-  std::vector<double> t;  // feet
-  double cost = 0;        // sum of squared chords
+  std::vector<double> t;                 // feet
+  double cost = 0;                       // sum of squared chords (+ the node's, weighted)
+  std::pair<double, double> node_t{};    // with node_at: the feet of its two branches
 };
 
 inline double cost_of(const FitShape& s, const std::vector<Vector3d>& pts, const std::vector<double>& t) {
@@ -328,11 +343,49 @@ inline std::vector<double> global_feet(const FitShape& s, const Ratio& n, const 
   return t;
 }
 
-/// Levenberg–Marquardt with the feet eliminated (see header, step 2), inside the constraint.
-inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, Eigen::VectorXd x, int max_iterations) {
+inline std::pair<double, double> node_feet(const Constraint& con, const FitShape& s) {
+  return two_branch_feet(s, con.n.abs_p(), 2 * kPi * static_cast<double>(con.n.q()), *con.node_at);
+}
+
+/// The node's feet followed locally from `from`, or found again when they merge.
+inline std::pair<double, double> follow_node_feet(const Constraint& con, const FitShape& s, std::pair<double, double> from) {
+  const double a = nearest_param_from(s, *con.node_at, from.first, 4), b = nearest_param_from(s, *con.node_at, from.second, 4);
+  if (std::abs(std::remainder(a - b, 2 * kPi * static_cast<double>(con.n.q()))) > 1e-6) return {a, b};
+  return node_feet(con, s);
+}
+
+inline double node_cost(const Constraint& con, const FitShape& s, std::pair<double, double> t) {
+  if (!con.node_at) return 0;
+  return (curve_point(s, t.first) - *con.node_at).squaredNorm() + (curve_point(s, t.second) - *con.node_at).squaredNorm();
+}
+
+/// Adds the Gauss–Newton terms of the foot t of `target` (weight w) to H and g.
+inline void add_foot_terms(const FitShape& s, const Eigen::MatrixXd& chain, double t, const Vector3d& target, double w,
+                           Eigen::MatrixXd& H, Eigen::VectorXd& g) {
+  const CurveJet j = curve_jet(s, t);
+  Eigen::Matrix3d d;
+  d << j.d_a2, j.d_a3, j.d_phase;
+  Eigen::MatrixXd J = d * chain;
+  const double speed = j.d_t.norm();
+  if (speed > 0) {
+    const Vector3d tangent = j.d_t / speed;
+    J -= tangent * (tangent.transpose() * J);
+  }
+  H += w * J.transpose() * J;
+  g += w * J.transpose() * (j.point - target);
+}
+
+/// Levenberg–Marquardt with the feet eliminated (see header, step 2), inside the constraint;
+/// with node_at, its two branch distances weighted by `node_weight`.
+inline Refined refine_with(const Constraint& con, const std::vector<Vector3d>& pts, Eigen::VectorXd x, int max_iterations,
+                           double node_weight) {
   const Parametrisation& par = con.par;
-  Refined r{x, global_feet(par.fit_shape(x), con.n, pts), 0};
-  r.cost = cost_of(par.fit_shape(x), pts, r.t);
+  auto total = [&](const FitShape& s, const std::vector<double>& t, std::pair<double, double> nt) {
+    return cost_of(s, pts, t) + node_weight * node_cost(con, s, nt);
+  };
+  Refined r{x, global_feet(par.fit_shape(x), con.n, pts), 0, {}};
+  if (con.node_at) r.node_t = node_feet(con, par.fit_shape(x));
+  r.cost = total(par.fit_shape(x), r.t, r.node_t);
   for (int round = 0; round < 3; ++round) {
     double mu = 1e-3;
     int stalled = 0;
@@ -341,19 +394,9 @@ inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, E
       const Eigen::MatrixXd chain = par.chain(r.x);
       Eigen::MatrixXd H = Eigen::MatrixXd::Zero(par.dim(), par.dim());
       Eigen::VectorXd g = Eigen::VectorXd::Zero(par.dim());
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        const CurveJet j = curve_jet(s, r.t[i]);
-        Eigen::Matrix3d d;
-        d << j.d_a2, j.d_a3, j.d_phase;
-        Eigen::MatrixXd J = d * chain;
-        const double speed = j.d_t.norm();
-        if (speed > 0) {
-          const Vector3d tangent = j.d_t / speed;
-          J -= tangent * (tangent.transpose() * J);
-        }
-        H += J.transpose() * J;
-        g += J.transpose() * (j.point - pts[i]);
-      }
+      for (std::size_t i = 0; i < pts.size(); ++i) add_foot_terms(s, chain, r.t[i], pts[i], 1.0, H, g);
+      if (con.node_at)
+        for (double t : {r.node_t.first, r.node_t.second}) add_foot_terms(s, chain, t, *con.node_at, node_weight, H, g);
       Eigen::MatrixXd A = H;
       A.diagonal() += mu * H.diagonal() + Eigen::VectorXd::Constant(par.dim(), 1e-15);
       Eigen::VectorXd step = A.ldlt().solve(-g);
@@ -367,10 +410,11 @@ inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, E
           const FitShape ts = par.fit_shape(trial);
           std::vector<double> t = r.t;
           for (std::size_t i = 0; i < pts.size(); ++i) t[i] = nearest_param_from(ts, pts[i], t[i], 4);
-          const double c = cost_of(ts, pts, t);
+          const auto nt = con.node_at ? follow_node_feet(con, ts, r.node_t) : r.node_t;
+          const double c = total(ts, t, nt);
           if (c < r.cost) {
             stalled = r.cost - c <= 1e-12 * r.cost ? stalled + 1 : 0;
-            r = {trial, std::move(t), c};
+            r = {trial, std::move(t), c, nt};
             mu = std::max(mu / 3, 1e-12);
           } else {
             mu *= 4;
@@ -381,11 +425,23 @@ inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, E
       if (!moved) mu *= 10;
     }
     // Feet may jump to another branch: find them again globally.
-    const std::vector<double> t = global_feet(par.fit_shape(r.x), con.n, pts);
-    const double c = cost_of(par.fit_shape(r.x), pts, t);
+    const FitShape s = par.fit_shape(r.x);
+    const std::vector<double> t = global_feet(s, con.n, pts);
+    const auto nt = con.node_at ? node_feet(con, s) : r.node_t;
+    const double c = total(s, t, nt);
     if (!(c < r.cost * (1 - 1e-9))) break;
-    r.t = t;
-    r.cost = c;
+    r = {r.x, t, c, nt};
+  }
+  return r;
+}
+
+/// refine_with, in turn at each node weight (kFitNodeWeights, per point) when a node is wanted.
+inline Refined refine(const Constraint& con, const std::vector<Vector3d>& pts, Eigen::VectorXd x, int max_iterations) {
+  if (!con.node_at) return refine_with(con, pts, std::move(x), max_iterations, 0);
+  Refined r;
+  for (double w : kFitNodeWeights) {
+    r = refine_with(con, pts, std::move(x), max_iterations, w * static_cast<double>(pts.size()));
+    x = r.x;
   }
   return r;
 }
@@ -505,6 +561,11 @@ inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n
   if (o.cusps && *o.cusps < 0) throw InvalidInput("cusps", std::to_string(*o.cusps), "negative", "a count >= 0");
   if (o.max_candidates < 1) throw InvalidInput("candidates", "0", "none asked for", "1 or more");
   if (!(o.max_deviation > 0)) throw InvalidInput("max-deviation", number_text(o.max_deviation), "not positive", "radians > 0");
+  if (o.node_at && !(std::abs(o.node_at->norm() - 1.0) <= kFitUnitTolerance))
+    throw InvalidInput("node-at", number_text(o.node_at->x()) + "," + number_text(o.node_at->y()) + "," + number_text(o.node_at->z()),
+                       "not on the unit sphere", "x,y,z with |P| within 1e-6 of 1");
+  if (!(o.node_tolerance > 0 && o.node_tolerance <= kPi))
+    throw InvalidInput("node-tolerance", number_text(o.node_tolerance), "not an angle in (0, pi]", "radians in (0, pi]");
   check_census_cost(n);
 }
 
@@ -613,6 +674,10 @@ inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>
   }
   c.rms = std::sqrt(sum / static_cast<double>(pts.size()));
   c.params = r.t;
+  if (con.node_at) {
+    const auto [ta, tb] = node_feet(con, s);
+    c.node_distance = std::max(sphere_distance(curve_point(s, ta), *con.node_at), sphere_distance(curve_point(s, tb), *con.node_at));
+  }
   c.root_nodes = root_nodes(a2, a3, con.n, par.family);
   if (with_margin) c.margin = map_margin(a2, a3, con.n, par.family != Family::free);
   return c;
@@ -657,7 +722,8 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
   std::set<std::int64_t> seen;
   std::vector<std::pair<Constraint, Refined>> refined;
   for (Family f : fams) {
-    const Constraint con{n, Parametrisation{f, n.value()}, options.nodes, options.cusps && *options.cusps == 0};
+    const Constraint con{n, Parametrisation{f, n.value()}, options.nodes, options.cusps && *options.cusps == 0,
+                         options.node_at ? std::optional<Vector3d>(options.node_at->normalized()) : std::nullopt};
     for (const Seed& s : seeds(con, screen_pts, seen))
       refined.push_back({con, refine(con, refine_pts, con.par.make(s.a2, s.a3, s.phase), 60)});
   }
@@ -680,6 +746,7 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
     bool repeated = false;
     for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, sketch, kFitSameDesign);
     if (repeated || sketch.max_deviation > options.max_deviation) continue;
+    if (options.node_at && !(sketch.node_distance <= options.node_tolerance)) continue;
     full.t = global_feet(con.par.fit_shape(full.x), n, points);
     FitCandidate c = candidate(con, points, full, true);
     if (c.max_deviation <= options.max_deviation) out.candidates.push_back(std::move(c));
@@ -691,6 +758,9 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
                    ": the boundary set at " + std::to_string(kFitGrid) + " carrier twists a2 shows " + count_list(seen, p) +
                    " node points, not " + std::to_string(*options.nodes) + " (a cell narrower than pi/" +
                    std::to_string(kFitGrid) + " in a2 between them is not seen)";
+    else if (options.node_at)
+      out.reason = "no train of n = " + n.str() + " with the wanted counts found with a node within " +
+                   number_text(options.node_tolerance) + " rad of the node point (a search, not a proof that none exists)";
     else if (std::isfinite(options.max_deviation))
       out.reason = "no train of n = " + n.str() + " with the wanted counts passes within " +
                    number_text(options.max_deviation) + " rad of every point";
