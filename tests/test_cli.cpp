@@ -142,6 +142,32 @@ TEST_CASE("cli: trace -o FILE writes the same CSV to the file and nothing to std
   CHECK(dir.entries() == std::vector<std::string>{"fig3.csv"});
 }
 
+TEST_CASE("cli: --teeth ZS:ZP is n = ZS/ZP, the same curve, and is echoed as given", "[cli][teeth]") {
+  TempDir dir;
+  // n = 39/15 = 13/5: the same bytes as --n 13/5 (trace), and 39:15 kept where the report has words.
+  const Result teeth = run("trace --teeth 39:15 --a2 1 --a3 2 --samples 50", dir);
+  REQUIRE(teeth.status == 0);
+  CHECK(teeth.out == run("trace --n 13/5 --a2 1 --a3 2 --samples 50", dir).out);
+  const Result internal = run("trace --teeth -24:12 --a2 1 --a3 2 --samples 50", dir);
+  CHECK(internal.out == run("trace --n -2 --a2 1 --a3 2 --samples 50", dir).out);
+  const Result text = run("classify --teeth 39:15 --a2 1 --a3 2", dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "n = 13/5 (teeth 39:15), phase = 0 rad"));
+  const Result json = run("classify --teeth 39:15 --a2 1 --a3 2 --json", dir);
+  CHECK(contains(json.out, "\"teeth\": \"39:15\""));
+  CHECK(contains(json.out, "\"n\": \"13/5\""));
+  CHECK(contains(run("plot --teeth 39:15 --a2 1 --a3 2", dir).out, "n = 13/5 (teeth 39:15)"));
+  for (const std::string& args : {std::string("trace --teeth 39:15 --n 13/5 --a2 1 --a3 2"), std::string("trace --a2 1 --a3 2"),
+                                  std::string("classify --teeth 39:0 --a2 1 --a3 2"), std::string("classify --teeth 39 --a2 1 --a3 2"),
+                                  std::string("nodes --teeth 1001:1 --a2 1 --a3 2")}) {
+    INFO(args);
+    const Result bad = run(args, dir);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+  }
+}
+
 TEST_CASE("cli: defaults: phase 0 and 360 (q + |p|) samples per closed curve", "[cli][trace]") {
   TempDir dir;
   const Result r = run(kFig3, dir);

@@ -20,7 +20,10 @@ void TrainOptions::add_to(CLI::App& command) {
   command.add_option("--a2", a2, "carrier twist a2 in (0, pi): 1.25, pi/2, 2pi/3, 0.75pi, 90deg")->required();
   command.add_option("--a3", a3, "tracer twist a3 in (0, pi); also ap, pi-ap, a2, pi-a2 with an offset (ap+1e-6)")
       ->required();
-  command.add_option("--n", n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5")->required();
+  CLI::Option* ratio = command.add_option("--n", n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (sun-to-planet tooth ratio)");
+  CLI::Option* gears = command.add_option("--teeth", teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; ZS < 0: internal)");
+  ratio->excludes(gears);
+  gears->excludes(ratio);
   command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
 }
 

@@ -123,9 +123,11 @@ inline double latitude(const Vector3d& p) { return std::asin(std::clamp(p.z(), -
 
 inline nlohmann::json inputs_json(const TrainText& text, const Classification& c) {
   const GearTrain& in = c.input;
-  return {{"a2", in.a2()},          {"a3", in.a3()},       {"a2_text", text.a2},
-          {"a3_text", text.a3},     {"n", in.ratio().str()}, {"n_value", in.n()},
-          {"phase", in.phase_given()}, {"phase_reduced", in.phase()}, {"literal", c.literal}};
+  nlohmann::json j = {{"a2", in.a2()},          {"a3", in.a3()},       {"a2_text", text.a2},
+                      {"a3_text", text.a3},     {"n", in.ratio().str()}, {"n_value", in.n()},
+                      {"phase", in.phase_given()}, {"phase_reduced", in.phase()}, {"literal", c.literal}};
+  if (!text.teeth.empty()) j["teeth"] = parse_teeth(text.teeth, "teeth").str();  // as given: 39:15, not 13:5
+  return j;
 }
 
 inline nlohmann::json nodes_json(const std::vector<Node>& nodes) {
@@ -251,7 +253,7 @@ inline void text_inputs(std::ostream& out, const TrainText& text, const Classifi
   out << "inputs\n";
   out << "  a2 = " << text.a2 << " = " << number_text(in.a2()) << " rad (" << number_text(degrees(in.a2())) << " deg)\n";
   out << "  a3 = " << text.a3 << " = " << number_text(in.a3()) << " rad (" << number_text(degrees(in.a3())) << " deg)\n";
-  out << "  n = " << in.ratio().str() << ", phase = " << number_text(in.phase_given()) << " rad";
+  out << "  n = " << in.ratio().str() << text.teeth_note() << ", phase = " << number_text(in.phase_given()) << " rad";
   if (in.phase() != in.phase_given()) out << " (reduced to " << number_text(in.phase()) << ")";
   out << "\n";
   out << "  reading: " << (c.literal ? "literal (the given doubles)" : "default (boundaries within tolerance are snapped)")
@@ -406,7 +408,7 @@ inline std::string plot_caption(const TrainText& text, const GearTrain& analysed
   std::size_t crossings = 0, tangencies = 0;
   for (const Node& n : nodes) (n.kind == NodeKind::crossing ? crossings : tangencies)++;
   std::ostringstream caption;
-  caption << "a2 = " << text.a2 << ", a3 = " << text.a3 << ", n = " << analysed.ratio().str();
+  caption << "a2 = " << text.a2 << ", a3 = " << text.a3 << ", n = " << analysed.ratio().str() << text.teeth_note();
   if (analysed.phase() != 0.0) caption << ", phase = " << text.phase;
   caption << " — " << nodes.size() << " node(s)";
   if (!nodes.empty()) caption << " (" << crossings << " crossing, " << tangencies << " tangency)";
