@@ -168,6 +168,36 @@ TEST_CASE("cli: --teeth ZS:ZP is n = ZS/ZP, the same curve, and is echoed as giv
   }
 }
 
+TEST_CASE("cli: errors name what the user typed: a misspelt option, a picture format plot does not write, n as read",
+          "[cli][errors]") {
+  TempDir dir;
+  const Result typo = run("trace --n 2 --a2 1 --a3 2 --sample 5", dir);
+  CHECK(typo.status == 2);
+  CHECK(typo.out.empty());
+  CHECK(count_lines(typo.err) == 1);
+  CHECK(contains(typo.err, "--sample: not an option of sphtroch trace; did you mean --samples?"));
+  CHECK(contains(run("synth fit --input x.csv --n 2 --node 3", dir).err, "did you mean --nodes?"));
+  const Result far = run("classify --n 2 --a2 1 --a3 2 --zzzzzz", dir);
+  CHECK(far.status == 2);
+  CHECK_FALSE(contains(far.err, "did you mean"));
+  // plot writes SVG: a .png (any case) or .pdf name is refused, and no file is made.
+  for (const std::string& name : {std::string("x.png"), std::string("x.PNG"), std::string("x.pdf")}) {
+    INFO(name);
+    const Result png = run("plot --n 2 --a2 1 --a3 2 -o " + name, dir, true);
+    CHECK(png.status == 2);
+    CHECK(count_lines(png.err) == 1);
+    CHECK(contains(png.err, "plot writes SVG"));
+  }
+  CHECK(dir.entries().empty());
+  REQUIRE(run("plot --n 2 --a2 1 --a3 2 -o x.svg", dir, true).status == 0);
+  CHECK(contains(slurp(dir.path / "x.svg"), "<svg"));
+  // A decimal n is read exactly: the refusal says how it was read.
+  const Result decimal = run("trace --n 0.333333 --a2 1 --a3 2", dir);
+  CHECK(decimal.status == 2);
+  CHECK(decimal.out.empty());
+  CHECK(contains(decimal.err, "n = 333333/1000000 (as read"));
+}
+
 TEST_CASE("cli: defaults: phase 0 and 360 (q + |p|) samples per closed curve", "[cli][trace]") {
   TempDir dir;
   const Result r = run(kFig3, dir);

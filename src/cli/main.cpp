@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -72,6 +73,55 @@ std::string command_path(const CLI::App& command) {
   return path;
 }
 
+/// Edit distance (insertions, deletions, substitutions) between two short words.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+/// The command the words name (the deepest parsed one), or the tool.
+const CLI::App& parsed_command(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands({}))
+    if (sub->parsed()) return parsed_command(*sub);
+  return app;
+}
+
+/// For a word "--xyz" the command has no option for: "--xyz: not an option of sphtroch trace;
+/// did you mean --samples?" (the nearest option within a third of its length), or nothing.
+std::optional<std::string> misspelt_option(const CLI::App& app, int argc, char** argv) {
+  const CLI::App& command = parsed_command(app);
+  std::vector<std::string> names{"help"};
+  for (const CLI::Option* opt : command.get_options())
+    for (const std::string& name : opt->get_lnames()) names.push_back(name);
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.rfind("--", 0) != 0 || word.size() < 3) continue;
+    const std::string name = word.substr(2, word.find('=') - 2);
+    if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+    std::string best;
+    std::size_t best_distance = name.size() / 3 + 1;
+    for (const std::string& n : names)
+      if (const std::size_t d = edit_distance(name, n); d < best_distance) {
+        best_distance = d;
+        best = n;
+      }
+    const std::string path = command.get_parent() ? command_path(command) : "sphtroch";
+    return "--" + name + ": not an option of " + path + (best.empty() ? "" : "; did you mean --" + best + "?") +
+           " (see " + path + " --help)";
+  }
+  return std::nullopt;
+}
+
 /// An option given with an empty value ("--samples ''") is an error, never the default.
 void check_no_empty_values(const CLI::App& app) {
   for (const CLI::App* sub : all_commands(app))
@@ -115,6 +165,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     app.exit(e);
     return std::cout.flush() ? 0 : fail("--version: the version could not be written to stdout");
+  } catch (const CLI::ExtrasError& e) {
+    if (const auto bad = misspelt_option(app, argc, argv)) return fail(*bad);
+    return fail(std::string(e.what()) + " (see sphtroch --help)");
   } catch (const CLI::ParseError& e) {
     return fail(std::string(e.what()) + " (see sphtroch --help)");
   }
