@@ -177,6 +177,9 @@ TEST_CASE("cli: errors name what the user typed: a misspelt option, a picture fo
   CHECK(count_lines(typo.err) == 1);
   CHECK(contains(typo.err, "--sample: not an option of sphtroch trace; did you mean --samples?"));
   CHECK(contains(run("synth fit --input x.csv --n 2 --node 3", dir).err, "did you mean --nodes?"));
+  // A misspelt required option: named as misspelt, not as missing.
+  CHECK(contains(run("synth fit --inptu x.csv --n 2", dir).err, "--inptu: not an option of sphtroch synth fit; did you mean --input?"));
+  CHECK(contains(run("trace --n 2 --a2 1 --a33 2", dir).err, "did you mean --a3?"));
   const Result far = run("classify --n 2 --a2 1 --a3 2 --zzzzzz", dir);
   CHECK(far.status == 2);
   CHECK_FALSE(contains(far.err, "did you mean"));
@@ -186,8 +189,11 @@ TEST_CASE("cli: errors name what the user typed: a misspelt option, a picture fo
     const Result png = run("plot --n 2 --a2 1 --a3 2 -o " + name, dir, true);
     CHECK(png.status == 2);
     CHECK(count_lines(png.err) == 1);
-    CHECK(contains(png.err, "plot writes SVG"));
+    CHECK(contains(png.err, "SVG is written"));
   }
+  const Result map = run("atlas --n 2 --grid 2 -o map.csv --svg map.png", dir, true);
+  CHECK(map.status == 2);
+  CHECK(contains(map.err, "SVG is written"));
   CHECK(dir.entries().empty());
   REQUIRE(run("plot --n 2 --a2 1 --a3 2 -o x.svg", dir, true).status == 0);
   CHECK(contains(slurp(dir.path / "x.svg"), "<svg"));

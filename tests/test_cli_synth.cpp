@@ -262,6 +262,12 @@ TEST_CASE("cli synth fit / points --teeth: ZS:ZP is n = ZS/ZP and is echoed, MIN
                     std::to_string(i) + ".json", dir, true).status == 0);
   REQUIRE(run("synth merge part2.json part1.json -o merged.json", dir, true).status == 0);
   CHECK(shell("cmp all.json merged.json", dir).status == 0);
+  // A part whose echoed teeth were edited is refused (the run writes the smallest pair in range).
+  REQUIRE(shell("sed '2s/\"teeth\": \"[-0-9]*:[0-9]*\"/\"teeth\": \"9:9\"/' part1.json > edited.json", dir).status == 0);
+  REQUIRE(shell("grep -q '9:9' edited.json", dir).status == 0);
+  const Result edited = run("synth merge edited.json part2.json", dir, true);
+  CHECK(edited.status == 2);
+  CHECK(count_lines(edited.err) == 1);
   const nlohmann::json all = nlohmann::json::parse(shell("cat all.json", dir).out);
   CHECK(all["teeth"] == "2..3");
   REQUIRE_FALSE(all["candidates"].empty());

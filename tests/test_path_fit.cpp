@@ -343,6 +343,7 @@ TEST_CASE("fit with a node point: the hidden train's node gives it back, and eve
     const Vector3d off = (at + 0.01 * at.cross(Vector3d(u(rng), u(rng), u(rng))).normalized()).normalized();
     o.node_at = off;
     const auto off_fits = fit_with_census(t.points, {t.hidden.ratio()}, o);
+    REQUIRE_FALSE(off_fits[0].candidates.empty());
     for (const ConfirmedCandidate& c : off_fits[0].candidates) {
       CHECK(nearest_census_node(c.candidate.train, off) <= o.node_tolerance);
       CHECK(c.candidate.node_distance <= o.node_tolerance);

@@ -188,15 +188,15 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tu
 def fit(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
         ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None, nodes: Optional[int] = None,
         cusps: Optional[int] = None, candidates: int = 5, max_deviation: float = float("inf"),
-        node_at: Optional[npt.ArrayLike] = None, node_tolerance: float = 1e-6) -> Dict[str, Any]:
+        node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[float] = None) -> Dict[str, Any]:
     """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7; or teeth="ZS:ZP"
     or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),
     as `sphtroch synth fit --json`: {"candidates": [{"n", "a2", "a3", "phase", "rms",
     "max_deviation", "margin" (radians), "counts": {"nodes", "crossings", "tangencies", "cusps"},
     "census_certified"}] best first, "reason" (why there is none, else ""), "dropped"}. With nodes
-    and/or cusps, every candidate has exactly those counts (confirmed by classify). Raises
-    With node_at=(x, y, z), every candidate's certified census has a node within node_tolerance
-    (radians) of that point ("node_distance": to its nearest node). Raises InvalidInput naming
-    "points", "n", "teeth", "nodes", "cusps", "candidates", "max-deviation", "node-at" or
-    "node-tolerance"."""
+    and/or cusps, every candidate has exactly those counts (confirmed by classify). With
+    node_at=(x, y, z), every candidate's certified census has a node within node_tolerance
+    (radians, default 1e-6; only with node_at) of that point ("node_distance": to its nearest
+    node). Raises InvalidInput naming "points", "n", "teeth", "nodes", "cusps", "candidates",
+    "max-deviation", "node-at" or "node-tolerance"."""

@@ -63,40 +63,53 @@ std::vector<Vector3d> points_arg(py::handle points, const char* valid) {
   return p;
 }
 
-/// Bound on the sum over a teeth range's ratios of (|p| + q)^2: the CLI's work bound.
-constexpr double kMaxTeethWork = 20000;
+/// Bound on the sum over the ratios of (|p| + q)^2: the CLI's work bound (synth points / fit).
+constexpr double kMaxRatioWork = 20000;
 
-/// n=R, teeth="ZS:ZP" | "MIN..MAX" (the CLI's --teeth) or ratios=(P, Q) (P, Q <= 7, the CLI's
-/// work bound); sets `fields` (the JSON members naming a set) and `teeth` (what is echoed).
+/// Refuses (InvalidInput `field`) a set of ratios beyond the CLI's work bound.
+void check_ratio_work(const std::vector<Ratio>& set, const char* field, const std::string& value) {
+  double work = 0;
+  for (const Ratio& k : set) work += double(k.abs_p() + k.q()) * double(k.abs_p() + k.q());
+  if (work > kMaxRatioWork)
+    throw InvalidInput(field, value, "estimated work " + number_text(work) + " over the bound",
+                       "sum over the ratios of (|p| + q)^2 <= 20000 (the CLI's bound; ratios=(7, 7) is 4832)");
+}
+
+/// The ratios of n=R, teeth="ZS:ZP" | "MIN..MAX" (the CLI's --teeth) or ratios=(P, Q) (P, Q <= 7),
+/// within the CLI's work bound; sets `fields` (the JSON members naming a set) and `teeth` (what
+/// is echoed).
 std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, std::string& fields, TeethSpec& teeth) {
-  if (int(!n.is_none()) + int(!ratios.is_none()) + int(!teeth_text.is_none()) != 1)
-    throw InvalidInput("n", repr_of(n), "give exactly one of n, teeth and ratios",
+  if (int(!n.is_none()) + int(!ratios.is_none()) + int(!teeth_text.is_none()) != 1) {
+    const bool by_teeth = !teeth_text.is_none();
+    throw InvalidInput(by_teeth ? "teeth" : "n", repr_of(by_teeth ? teeth_text : n), "give exactly one of n, teeth and ratios",
                        "n=R, teeth='ZS:ZP' or 'MIN..MAX', or ratios=(P, Q) as `--ratios P,Q`");
-  if (!n.is_none()) return {ratio_arg(n)};
-  if (!teeth_text.is_none()) {
+  }
+  std::vector<Ratio> set;
+  if (!n.is_none()) {
+    set = {ratio_arg(n)};
+    check_ratio_work(set, "n", set[0].str());
+  } else if (!teeth_text.is_none()) {
     if (!py::isinstance<py::str>(teeth_text))
       throw InvalidInput("teeth", repr_of(teeth_text), "not a string", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
     const std::string text = teeth_text.cast<std::string>();
     if (text.find("..") == std::string::npos) {
       teeth.pair = parse_teeth(text, "teeth");
       fields = "\"teeth\": \"" + teeth.pair->str() + "\", ";
-      return {teeth.pair->ratio()};
+      set = {teeth.pair->ratio()};
+    } else {
+      teeth.range = parse_tooth_range(text, "teeth");
+      fields = "\"teeth\": \"" + teeth.range->str() + "\", ";
+      set = ratio_set(*teeth.range);
     }
-    teeth.range = parse_tooth_range(text, "teeth");
-    std::vector<Ratio> set = ratio_set(*teeth.range);
-    double work = 0;
-    for (const Ratio& k : set) work += double(k.abs_p() + k.q()) * double(k.abs_p() + k.q());
-    if (work > kMaxTeethWork)
-      throw InvalidInput("teeth", text, "estimated work " + number_text(work) + " over the bound",
-                         "sum over the ratios of (|p| + q)^2 <= 20000 (the CLI's bound; 1..7 is 4832)");
-    fields = "\"teeth\": \"" + teeth.range->str() + "\", ";
-    return set;
+    check_ratio_work(set, "teeth", text);
+  } else {
+    const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
+    if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
+      throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
+    fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
+    set = ratio_set(bounds.first, bounds.second);
   }
-  const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
-  if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
-    throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
-  fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
-  return ratio_set(bounds.first, bounds.second);
+  return set;
 }
 
 py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text) {
@@ -130,7 +143,7 @@ std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
-               py::handle cusps, py::handle candidates, double max_deviation, py::handle node_at, double node_tolerance) {
+               py::handle cusps, py::handle candidates, double max_deviation, py::handle node_at, py::handle node_tolerance) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
   std::string fields;
   TeethSpec teeth;
@@ -150,7 +163,10 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
       throw InvalidInput("node-at", repr_of(node_at), "not three numbers", "None or (x, y, z), a unit vector");
     o.node_at = Vector3d(a.at(0), a.at(1), a.at(2));
   }
-  o.node_tolerance = node_tolerance;
+  if (!node_tolerance.is_none()) {
+    if (!o.node_at) throw InvalidInput("node-tolerance", repr_of(node_tolerance), "without node_at", "None, or an angle with node_at");
+    o.node_tolerance = node_tolerance.cast<double>();
+  }
   std::string json;
   {
     py::gil_scoped_release release;
@@ -168,7 +184,7 @@ void bind_synthesis(py::module_& m) {
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = 1e-6);
+        py::arg("node_tolerance") = py::none());
 }
 
 }  // namespace sphtroch::python

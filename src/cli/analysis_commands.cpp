@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 
 namespace sphtroch::cli {
@@ -69,21 +68,8 @@ void run_nodes(const AnalysisOptions& o) {
   check_certified(a.certificate());
 }
 
-/// Refuses (InvalidInput "output") a plot file named as another picture format: plot writes SVG,
-/// and SVG bytes in a .png are a file no viewer opens (a name without such an extension is kept).
-void check_svg_name(const std::string& path) {
-  const auto slash = path.rfind('/'), dot = path.rfind('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return;
-  std::string ext = path.substr(dot + 1);
-  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  for (const char* other : {"png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps", "emf"})
-    if (ext == other)
-      throw InvalidInput("output", path, "plot writes SVG, not ." + ext,
-                         "FILE.svg (a picture in another format: convert it, e.g. rsvg-convert FILE.svg -o FILE.png)");
-}
-
 void run_plot(const AnalysisOptions& o) {
-  check_svg_name(o.output);
+  check_svg_name(o.output, "output");
   const GearTrain train = o.train.train();
   const Analysis a(train, analysis_settings(o));
   const std::string svg = plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate());

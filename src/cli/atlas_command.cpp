@@ -152,6 +152,7 @@ void run_atlas(const AtlasOptions& o) {
     throw UsageError{"--svg = " + o.svg + ": cannot be combined with --shard = " + o.shard +
                      "; valid: draw the whole atlas (sphtroch atlas-merge --svg FILE slices...)"};
   check_writable(o.output, "--output");
+  check_svg_name(o.svg, "svg");
   check_writable(o.svg, "--svg");
   check_distinct_files({{o.output, "--output"}, {o.svg, "--svg"}}, {});
 

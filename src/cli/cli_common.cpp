@@ -4,6 +4,7 @@
 #include "sphtroch/io/parse.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <thread>
 
 #include <cerrno>
@@ -25,6 +26,17 @@ void TrainOptions::add_to(CLI::App& command) {
   ratio->excludes(gears);
   gears->excludes(ratio);
   command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
+}
+
+void check_svg_name(const std::string& path, const std::string& field) {
+  const auto slash = path.rfind('/'), dot = path.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return;
+  std::string ext = path.substr(dot + 1);
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  for (const char* other : {"png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps", "emf"})
+    if (ext == other)
+      throw InvalidInput(field, path, "SVG is written, not ." + ext,
+                         "FILE.svg (a picture in another format: convert it, e.g. rsvg-convert FILE.svg -o FILE.png)");
 }
 
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {

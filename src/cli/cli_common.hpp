@@ -63,6 +63,10 @@ struct TrainOptions : TrainText {
 /// Adds "-o,--output FILE" to a command.
 void add_output_option(CLI::App& command, std::string& path, const std::string& what);
 
+/// Refuses (InvalidInput `field`) an SVG output named as another picture format (.png, .pdf, ...
+/// in any case): SVG bytes in a .png are a file no viewer opens. Other names pass.
+void check_svg_name(const std::string& path, const std::string& field);
+
 /// Writes text produced by `write` to stdout (path empty or "-"), or to `path` (see
 /// OutputFile: a file appears complete or not at all). `field` names the option in errors.
 /// Validate before calling: on stdout the bytes go out as they are written.

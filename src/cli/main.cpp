@@ -73,20 +73,17 @@ std::string command_path(const CLI::App& command) {
   return path;
 }
 
-/// Edit distance (insertions, deletions, substitutions) between two short words.
+/// Edit distance (insertions, deletions, substitutions, swaps of neighbours) between two short words.
 std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-  }
-  return row[b.size()];
+  return d[a.size()][b.size()];
 }
 
 /// The command the words name (the deepest parsed one), or the tool.
@@ -105,7 +102,8 @@ std::optional<std::string> misspelt_option(const CLI::App& app, int argc, char**
     for (const std::string& name : opt->get_lnames()) names.push_back(name);
   for (int i = 1; i < argc; ++i) {
     const std::string word = argv[i];
-    if (word.rfind("--", 0) != 0 || word.size() < 3) continue;
+    if (word == "--") break;  // what follows is not an option
+    if (word.rfind("--", 0) != 0 || word.size() < 3 || word[2] == '=') continue;
     const std::string name = word.substr(2, word.find('=') - 2);
     if (std::find(names.begin(), names.end(), name) != names.end()) continue;
     std::string best;
@@ -166,6 +164,9 @@ int main(int argc, char** argv) {
     app.exit(e);
     return std::cout.flush() ? 0 : fail("--version: the version could not be written to stdout");
   } catch (const CLI::ExtrasError& e) {
+    if (const auto bad = misspelt_option(app, argc, argv)) return fail(*bad);
+    return fail(std::string(e.what()) + " (see sphtroch --help)");
+  } catch (const CLI::RequiredError& e) {  // checked before the extras: "--inptu" leaves --input missing
     if (const auto bad = misspelt_option(app, argc, argv)) return fail(*bad);
     return fail(std::string(e.what()) + " (see sphtroch --help)");
   } catch (const CLI::ParseError& e) {

@@ -139,7 +139,7 @@ std::size_t count_member(const nlohmann::json& j, const char* key) {
 }
 
 /// One candidate line as synth fit prints it, its values checked; returns its rms.
-double checked_candidate(const std::string& line) {
+double checked_candidate(const std::string& line, const std::optional<ToothRange>& range) {
   const nlohmann::json c = nlohmann::json::parse(line);
   const Ratio n = parse_ratio(c.at("n").get<std::string>(), "n");
   const double pi = Constants<double>::pi();
@@ -158,8 +158,7 @@ double checked_candidate(const std::string& line) {
   if (count_member(k, "nodes") != count_member(k, "crossings") + count_member(k, "tangencies"))
     throw InvalidInput("shard", "counts", "nodes != crossings + tangencies", "as synth fit prints it");
   count_member(k, "cusps");
-  if (c.contains("teeth") && parse_teeth(c.at("teeth").get<std::string>()).ratio() != n)
-    throw InvalidInput("shard", "teeth", "not the teeth of n = " + n.str(), "as synth fit prints it");
+  check_train_teeth(c, n, range);
   if (c.contains("node_distance")) number("node_distance", 0, pi);
   if (!c.at("census_certified").is_boolean() || c.size() != 9u + c.contains("teeth") + c.contains("node_distance") || k.size() != 4)
     throw InvalidInput("shard", "candidate", "not as synth fit prints it", "the members of docs/cli.md: synth fit");
@@ -167,7 +166,7 @@ double checked_candidate(const std::string& line) {
 }
 
 FitShard read_fit_shard(const std::string& path, const std::string& text) {
-  const std::string valid = "the JSON of sphtroch synth fit --ratios P,Q --shard I/K --json";
+  const std::string valid = "the JSON of sphtroch synth fit --ratios P,Q | --teeth MIN..MAX --shard I/K --json";
   FitShard s;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
@@ -188,7 +187,7 @@ FitShard read_fit_shard(const std::string& path, const std::string& text) {
     for (std::string line; std::getline(lines, line);)
       if (line.rfind("  {", 0) == 0) {
         if (line.back() == ',') line.pop_back();
-        const double rms = checked_candidate(line);
+        const double rms = checked_candidate(line, header.teeth);
         if (!s.lines.empty() && rms < s.lines.back().first) throw InvalidInput("shard", path, "candidates not best first", valid);
         s.lines.push_back({rms, line});
       }

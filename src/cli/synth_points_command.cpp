@@ -99,7 +99,7 @@ struct PointsShard {
 };
 
 PointsShard read_points_shard(const std::string& path, const std::string& text) {
-  const std::string valid = "the JSON of sphtroch synth points --ratios P,Q --shard I/K --json";
+  const std::string valid = "the JSON of sphtroch synth points --ratios P,Q | --teeth MIN..MAX --shard I/K --json";
   PointsShard s;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
@@ -113,7 +113,11 @@ PointsShard read_points_shard(const std::string& path, const std::string& text) 
     const std::size_t solutions = j.at("solutions").size();
     std::istringstream lines(text);
     for (std::string line; std::getline(lines, line);)
-      if (line.rfind("  {", 0) == 0) s.solution_lines.push_back(line.back() == ',' ? line.substr(0, line.size() - 1) : line);
+      if (line.rfind("  {", 0) == 0) {
+        s.solution_lines.push_back(line.back() == ',' ? line.substr(0, line.size() - 1) : line);
+        const nlohmann::json train = nlohmann::json::parse(s.solution_lines.back());
+        check_train_teeth(train, parse_ratio(train.at("n").get<std::string>(), "n"), header.teeth);
+      }
     if (s.solution_lines.size() != solutions) throw InvalidInput("shard", path, "not laid out as synth points prints it", valid);
   } catch (const nlohmann::json::exception&) {
     throw InvalidInput("shard", path, "not a synth points shard", valid);

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -136,21 +137,33 @@ inline std::string run_fingerprint(const std::vector<Vector3d>& points, const st
 struct ShardHeader {
   std::string set;
   std::size_t index = 0, count = 0, ratios = 0;
+  std::optional<ToothRange> teeth;  // the set is a tooth range: what each train echoes
 };
 
 /// The header of a shard of synth points / fit (member "ratios" or "teeth", "shard"), checked:
 /// the set and "I/K" written as a run writes them; InvalidInput or a JSON exception otherwise.
 inline ShardHeader read_shard_header(const nlohmann::json& j) {
+  if (j.contains("teeth") && j.contains("ratios"))
+    throw InvalidInput("shard", "teeth and ratios", "two ratio sets", "one of \"ratios\" and \"teeth\", as the run writes it");
   const std::string name = j.contains("teeth") ? "teeth" : "ratios";
   const std::string text = j.at(name).get<std::string>();
   const std::string shard = j.at("shard").get<std::string>();
   const auto [begin, end] = shard_range(shard, named_ratio_set(name, text).size());
   const auto slash = shard.find('/');
   ShardHeader h{set_member(name, text), parse_count(shard.substr(0, slash), "shard", 1, 1000000),
-                parse_count(shard.substr(slash + 1), "shard", 1, 1000000), end - begin};
+                parse_count(shard.substr(slash + 1), "shard", 1, 1000000), end - begin, std::nullopt};
   if (shard != std::to_string(h.index) + "/" + std::to_string(h.count))
     throw InvalidInput("shard", shard, "not written as the run writes it", "I/K");
+  if (name == "teeth") h.teeth = parse_tooth_range(text, "teeth");
   return h;
+}
+
+/// Refuses (InvalidInput "shard") a train's "teeth" member that is not what the run writes: the
+/// smallest pair of the range for its n, and none without a range.
+inline void check_train_teeth(const nlohmann::json& train, const Ratio& n, const std::optional<ToothRange>& range) {
+  const auto expected = range ? smallest_teeth(n, *range) : std::nullopt;
+  const bool ok = expected ? train.contains("teeth") && train.at("teeth") == expected->str() : !train.contains("teeth");
+  if (!ok) throw InvalidInput("shard", "teeth of n = " + n.str(), "not what the run writes", "the smallest tooth pair in the range");
 }
 
 /// What names one shard of a ratio-set run: the set, I of K, and `run` (anything else that

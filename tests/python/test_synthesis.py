@@ -121,8 +121,12 @@ def test_teeth_as_the_cli_reads_them():
         with pytest.raises(sphtroch.InvalidInput) as info:
             sphtroch.fit(P, teeth=bad)
         assert info.value.field == "teeth"
-    with pytest.raises(sphtroch.InvalidInput):
+    with pytest.raises(sphtroch.InvalidInput) as info:
         sphtroch.fit(P, n=1, teeth="1:1")
+    assert info.value.field == "teeth"
+    with pytest.raises(sphtroch.InvalidInput) as info:
+        sphtroch.synth_points(pts, teeth="1:1000")  # the CLI's work bound, as for --teeth
+    assert info.value.field == "teeth"
 
 
 def test_fit_with_a_node_point():
@@ -137,7 +141,8 @@ def test_fit_with_a_node_point():
     assert abs(best["a2"] - 1.1) < 1e-7 and abs(best["a3"] - 0.9) < 1e-7
     assert all(c["node_distance"] <= 1e-6 for c in r["candidates"])
     for kwargs, field in [({"node_at": (0, 0, 1.1)}, "node-at"), ({"node_at": (1, 0)}, "node-at"),
-                          ({"node_at": (1, 0, 0), "node_tolerance": 0.0}, "node-tolerance")]:
+                          ({"node_at": (1, 0, 0), "node_tolerance": 0.0}, "node-tolerance"),
+                          ({"node_tolerance": 1e-3}, "node-tolerance")]:
         with pytest.raises(sphtroch.InvalidInput) as info:
             sphtroch.fit(P, n=2, **kwargs)
         assert info.value.field == field

@@ -85,7 +85,7 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
                          "needs 360 (1 + |n|) K + 1 = " + number_text(std::ceil(n)) + " samples, more than 1000000",
                          "K <= " + number_text(max_default_turns(train)) + " carrier turns for this n");
     throw InvalidInput("samples", "(default)",
-                       "n = " + r.str() + " (as read; a decimal is read exactly) needs 360 (q + |p|) = " +
+                       "n = " + r.str() + " (as read: a decimal n is read exactly) needs 360 (q + |p|) = " +
                            number_text(std::ceil(n)) + " samples per period, more than 1000000",
                        "give the number of samples explicitly (3 .. 10000000), or a ratio with smaller terms");
   }

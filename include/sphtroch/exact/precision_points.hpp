@@ -19,7 +19,8 @@
 // unknowns x = (a2, theta_1, Delta_2, Delta_3) in [1e-6, pi - 1e-6] x [0, 2 pi] x [0, 2 pi q]^2
 // (theta_1's domain overlapping itself a little at both ends, so no root sits on its edge):
 // no arccos of z, so nothing folds at the z-extremes. The curve is the same set for theta_p and
-// theta_p + 2 pi / q; shifting every theta_i by 2 pi k is that change, hence theta_1 in [0, 2 pi].
+// theta_p + 2 pi / q; shifting every theta_i by 2 pi k is that change, hence theta_1 in [0, 2 pi]
+// (searched over [-1/16, 2 pi + 1/16], boxes wholly outside [0, 2 pi] dropped: no root on an edge).
 //
 // Certificate. Branch and bound over boxes of x in interval arithmetic (CGAL::Interval_nt; sin
 // and cos from interval_trig.hpp). A box is discarded when f, g or the sign condition excludes
@@ -361,7 +362,8 @@ class PointsSolver {
   PrecisionPoints run() {
     // theta_1 is periodic: the domain overlaps itself by kTheta1Overlap at both ends, so that a
     // root at theta_1 = 0 (a point at the trace's first sample) lies inside it, not on an edge a
-    // box cannot be certified across; its copy at 2 pi is the same train (is_new drops it).
+    // box cannot be certified across; its copy at 2 pi is the same train (is_new drops it), and
+    // boxes wholly outside [0, 2 pi] are dropped (step()).
     Node all{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist),
              Interval(-kTheta1Overlap, 2 * Constants<double>::pi() + kTheta1Overlap), {}};
     for (auto& d : all.delta) d.push_back(Interval(0.0, pr_.delta_max));
@@ -396,6 +398,9 @@ class PointsSolver {
   bool over_budget() const { return result_.boxes >= options_.max_boxes; }
 
   void step(Node node, std::vector<Node>& stack) {
+    // A box wholly outside [0, 2 pi] in theta_1 holds only copies of roots inside it (see run()):
+    // dropped, so that a root on the overlap's own edge is never left undecided there.
+    if (node.theta1.sup() < 0.0 || node.theta1.inf() > 2 * Constants<double>::pi()) return;
     ++result_.boxes;
     const BoxView view = box_view(pr_, node.a2, node.theta1);
     for (int i = 0; i < 2; ++i) {
