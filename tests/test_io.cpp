@@ -145,6 +145,56 @@ TEST_CASE("number_text: a magnitude below the smallest subnormal reads as a sign
   CHECK(parse_number("0e-99999") == 0.0);
 }
 
+TEST_CASE("number_text: the fallback without floating-point to_chars writes and reads what the standard library does", "[io][numbers]") {
+  // The WebAssembly build (emscripten's libc++) has no floating-point to_chars/from_chars and uses
+  // detail::shortest_text / detail::read_decimal: they must agree byte for byte with libstdc++'s.
+  std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1e-5, 1e-4, 1e-3, 1e15, 1e16, 1e21, 1e22, 1e23, 123456.0,
+                                1234567.0, 0.000123, 5e-324, DBL_MIN, DBL_MAX, -DBL_MAX, 9007199254740993.0,
+                                std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::quiet_NaN()};
+  for (int e = -1074; e <= 1023; ++e) {  // powers of two: the lopsided round-trip intervals
+    const double p = std::ldexp(1.0, e);
+    values.insert(values.end(), {p, std::nextafter(p, 0.0), std::nextafter(p, HUGE_VAL), 3 * p, -p});
+  }
+  for (int k = -30; k <= 30; ++k) values.push_back(std::pow(10.0, k));
+  std::mt19937_64 rng(20261125);
+  for (int i = 0; i < 200000; ++i) {  // random bit patterns: every exponent, subnormals included
+    std::uint64_t b = rng();
+    double v;
+    std::memcpy(&v, &b, sizeof v);
+    values.push_back(v);
+  }
+  std::uniform_int_distribution<int> small(-100000, 100000);
+  for (int i = 0; i < 20000; ++i) values.push_back(small(rng) / 1000.0);
+  std::size_t differing = 0;
+  std::vector<std::string> texts;
+  for (const double v : values) {
+    char expected[64], got[64];
+    const std::string want(expected, std::to_chars(expected, expected + sizeof expected, v).ptr);
+    const std::string have(got, detail::shortest_text(got, v));
+    if (want != have && ++differing <= 10) FAIL_CHECK(want << " written as " << have);
+    texts.push_back(want);
+  }
+  CHECK(differing == 0);
+  // Reading: every text above, and texts that end early, overflow, underflow or are not numbers.
+  for (const char* odd : {"1e", "1e+", "1e-x", ".5", "5.", ".", "-", "-.e1", "e5", "0x1p3", "00012.500", "1E5",
+                          "1e-400", "-1e-400", "2e-324", "3e-324", "1e999", "-1e999", "1e-99999999999", "INF",
+                          "-Infinity", "infinit", "nan(123)", "NaN(", "nan(x", "+1", " 1", "1.2.3",
+                          "123456789012345678901234567890e-40", "4.9406564584124654e-324"})
+    texts.emplace_back(odd);
+  for (const std::string& t : texts) {
+    const char* first = t.data();
+    const char* last = first + t.size();
+    double want = 42.0, have = 42.0;
+    const auto a = std::from_chars(first, last, want);
+    const auto b = detail::read_decimal(first, last, have);
+    INFO('"' << t << '"');
+    REQUIRE(b.ptr - first == a.ptr - first);
+    REQUIRE(b.ec == a.ec);
+    if (a.ec == std::errc()) REQUIRE((bits(want) == bits(have) || (std::isnan(want) && std::isnan(have))));
+  }
+}
+
 TEST_CASE("npy: the header is the documented dict, padded to 64 bytes, and parses back", "[io][npy]") {
   const std::string h = npy_header(1000, 4);
   CHECK(h.size() % 64 == 0);

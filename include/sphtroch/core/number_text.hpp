@@ -11,13 +11,22 @@
 // 2-20% shorter than 17 significant digits, so files are smaller and faster to write and read.
 // Non-finite values are written "nan", "inf", "-inf" (the tool never writes them in data rows).
 // Parsing is std::from_chars (general format, round-to-nearest): exact inverse of the above.
+//
+// Where the standard library has no floating-point to_chars/from_chars (__cpp_lib_to_chars unset:
+// emscripten's libc++, the explorer's WebAssembly build) the same texts come from
+// detail::shortest_text and detail::read_decimal (snprintf/strtod in the "C" locale, digit
+// counts tried upward): byte-identical to std::to_chars / std::from_chars, tested against them
+// natively on random and extreme doubles (tests/test_io.cpp).
 #pragma once
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,9 +37,29 @@ namespace sphtroch {
 /// Characters write_number may write: "-2.2250738585072014e-308" has 24.
 constexpr std::size_t kMaxNumberChars = 24;
 
+namespace detail {
+
+/// The shortest round-trip text of v, as std::to_chars(first, last, v) writes it: the fewest
+/// significant digits that read back as v (the nearest such decimal), then fixed or scientific
+/// notation, whichever is shorter (fixed on a tie); "nan", "-nan", "inf", "-inf", "0", "-0".
+/// Writes at most kMaxNumberChars characters at out and returns the end.
+inline char* shortest_text(char* out, double v) noexcept;
+
+/// std::from_chars(first, last, v) for doubles in the general format: [-]digits[.digits][e[+-]digits]
+/// (a decimal point needs a digit on one side; a bare exponent mark is not part of the number),
+/// or inf, infinity, nan, nan(chars) in any case. Out-of-range (beyond the largest double, or a
+/// nonzero decimal that rounds to zero): ec = result_out_of_range, v unchanged.
+inline std::from_chars_result read_decimal(const char* first, const char* last, double& v) noexcept;
+
+}  // namespace detail
+
 /// Writes the shortest round-trip form of v at out (room for kMaxNumberChars) and returns the end.
 inline char* write_number(char* out, double v) noexcept {
+#if defined(__cpp_lib_to_chars)
   return std::to_chars(out, out + kMaxNumberChars, v).ptr;
+#else
+  return detail::shortest_text(out, v);
+#endif
 }
 
 /// The shortest round-trip form of v as a string.
@@ -88,7 +117,11 @@ inline const char* parse_number_prefix(const char* first, const char* last, doub
     ++first;
     if (first == last || *first == '-' || *first == '+') return nullptr;
   }
+#if defined(__cpp_lib_to_chars)
   const auto [end, ec] = std::from_chars(first, last, value);
+#else
+  const auto [end, ec] = detail::read_decimal(first, last, value);
+#endif
   if (ec == std::errc::result_out_of_range) {
     // Too large (1e999: not a double, refused) or too small (1e-400: rounds to zero, read as
     // a signed zero, as strtod and JSON readers do).
@@ -106,5 +139,167 @@ inline std::optional<double> parse_number(std::string_view text) noexcept {
   if (end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
   return v;
 }
+
+// ---------------------------------------------------------------------------------------------
+// Implementation details follow.
+// ---------------------------------------------------------------------------------------------
+
+namespace detail {
+
+/// The digits of |v| (no trailing zeros) and its decimal exponent (|v| = d.ddd x 10^exponent)
+/// in the fewest significant digits that read back as v; the nearest such decimal.
+struct ShortestDigits {
+  char digits[18];
+  int count = 0;
+  int exponent = 0;
+};
+
+/// The P-digit decimal nearest |v| (correctly rounded, snprintf "%.*e") as digits and exponent.
+inline ShortestDigits rounded_digits(double magnitude, int precision) noexcept {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*e", precision - 1, magnitude);
+  ShortestDigits d;
+  const char* p = buf;
+  for (; *p != 'e'; ++p)
+    if (*p != '.') d.digits[d.count++] = *p;
+  d.exponent = std::atoi(p + 1);
+  return d;
+}
+
+/// The decimal digits.exponent read back as a double.
+inline double digits_value(const ShortestDigits& d) noexcept {
+  char buf[48];
+  std::memcpy(buf, d.digits, static_cast<std::size_t>(d.count));
+  std::snprintf(buf + d.count, sizeof buf - static_cast<std::size_t>(d.count), "e%d",
+                d.exponent - (d.count - 1));
+  return std::strtod(buf, nullptr);
+}
+
+/// d with its last digit moved by +1 or -1 (carrying; a result of fewer digits is not formed).
+inline bool step_last_digit(ShortestDigits& d, int step) noexcept {
+  int i = d.count - 1;
+  if (step > 0) {
+    while (i >= 0 && d.digits[i] == '9') d.digits[i--] = '0';
+    if (i < 0) return false;
+    ++d.digits[i];
+  } else {
+    while (i >= 0 && d.digits[i] == '0') d.digits[i--] = '9';
+    if (i < 0 || (i == 0 && d.digits[0] == '1' && d.count > 1)) return false;
+    --d.digits[i];
+  }
+  return true;
+}
+
+inline ShortestDigits shortest_digits(double magnitude) noexcept {
+  for (int precision = 1; precision < 17; ++precision) {
+    const ShortestDigits nearest = rounded_digits(magnitude, precision);
+    if (digits_value(nearest) == magnitude) return nearest;
+    // Next to a power of two the round-trip interval is lopsided: a neighbour of the nearest
+    // decimal may read back as v although the nearest does not.
+    for (const int step : {1, -1}) {
+      ShortestDigits other = nearest;
+      if (step_last_digit(other, step) && digits_value(other) == magnitude) return other;
+    }
+  }
+  return rounded_digits(magnitude, 17);
+}
+
+inline char* shortest_text(char* out, double v) noexcept {
+  if (std::signbit(v)) *out++ = '-';
+  if (std::isnan(v) || std::isinf(v)) {
+    const char* word = std::isnan(v) ? "nan" : "inf";
+    return std::copy(word, word + 3, out);
+  }
+  const double magnitude = std::fabs(v);
+  if (magnitude == 0.0) {
+    *out++ = '0';
+    return out;
+  }
+  ShortestDigits d = shortest_digits(magnitude);
+  while (d.count > 1 && d.digits[d.count - 1] == '0') --d.count;
+  // Scientific: d[.ddd]e+XX (two exponent digits at least).
+  char sci[32];
+  int sci_len = 0;
+  sci[sci_len++] = d.digits[0];
+  if (d.count > 1) {
+    sci[sci_len++] = '.';
+    for (int i = 1; i < d.count; ++i) sci[sci_len++] = d.digits[i];
+  }
+  sci_len += std::snprintf(sci + sci_len, sizeof sci - static_cast<std::size_t>(sci_len), "e%c%02d",
+                           d.exponent < 0 ? '-' : '+', d.exponent < 0 ? -d.exponent : d.exponent);
+  // Fixed: the digits placed by the exponent, zeros filled in.
+  const int fixed_len = d.exponent >= 0 ? std::max(d.count, d.exponent + 1) + (d.count > d.exponent + 1 ? 1 : 0)
+                                        : 2 + (-d.exponent - 1) + d.count;
+  if (sci_len < fixed_len) return std::copy(sci, sci + sci_len, out);
+  if (d.exponent >= d.count) {
+    // An integer written out: of the equally long texts that read back as v the exact one is
+    // the nearest (to_chars writes 2^56 as 72057594037927936, not ...940).
+    char whole[kMaxNumberChars + 1];
+    std::snprintf(whole, sizeof whole, "%.0f", magnitude);
+    return std::copy(whole, whole + d.exponent + 1, out);
+  }
+  if (d.exponent >= 0) {
+    for (int i = 0; i <= d.exponent || i < d.count; ++i) {
+      if (i == d.exponent + 1) *out++ = '.';
+      *out++ = i < d.count ? d.digits[i] : '0';
+    }
+    return out;
+  }
+  *out++ = '0';
+  *out++ = '.';
+  for (int i = 0; i < -d.exponent - 1; ++i) *out++ = '0';
+  return std::copy(d.digits, d.digits + d.count, out);
+}
+
+/// Case-insensitive match of the word at [p, last).
+inline bool starts_with_word(const char* p, const char* last, const char* word) noexcept {
+  for (; *word != '\0'; ++p, ++word)
+    if (p == last || (*p | 0x20) != *word) return false;
+  return true;
+}
+
+inline std::from_chars_result read_decimal(const char* first, const char* last, double& v) noexcept {
+  const char* p = first;
+  const bool negative = p != last && *p == '-';
+  if (negative) ++p;
+  if (starts_with_word(p, last, "inf")) {
+    v = negative ? -HUGE_VAL : HUGE_VAL;
+    return {p + (starts_with_word(p, last, "infinity") ? 8 : 3), std::errc()};
+  }
+  if (starts_with_word(p, last, "nan")) {
+    const char* end = p + 3;
+    if (end != last && *end == '(') {
+      const char* q = end + 1;
+      while (q != last && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+      if (q != last && *q == ')') end = q + 1;
+    }
+    v = negative ? -std::nan("") : std::nan("");
+    return {end, std::errc()};
+  }
+  const char* q = p;
+  while (q != last && *q >= '0' && *q <= '9') ++q;
+  bool any_digit = q != p;
+  if (q != last && *q == '.') {
+    const char* fraction = ++q;
+    while (q != last && *q >= '0' && *q <= '9') ++q;
+    any_digit = any_digit || q != fraction;
+  }
+  if (!any_digit) return {first, std::errc::invalid_argument};
+  if (q != last && (*q == 'e' || *q == 'E')) {
+    const char* e = q + 1;
+    if (e != last && (*e == '+' || *e == '-')) ++e;
+    const char* exponent_digits = e;
+    while (e != last && *e >= '0' && *e <= '9') ++e;
+    if (e != exponent_digits) q = e;
+  }
+  const std::string text(first, q);  // strtod needs a terminated copy
+  errno = 0;
+  const double value = std::strtod(text.c_str(), nullptr);
+  if (errno == ERANGE && (std::isinf(value) || value == 0.0)) return {q, std::errc::result_out_of_range};
+  v = value;
+  return {q, std::errc()};
+}
+
+}  // namespace detail
 
 }  // namespace sphtroch

@@ -24,6 +24,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -109,8 +110,11 @@ inline std::string svg_number(double value, int decimals) {
   char buf[64];
   // Fixed notation; huge values would overflow the buffer, and nothing on a page is that big.
   if (!(std::fabs(value) < 1e30)) value = value < 0 ? -1e30 : 1e30;
-  const auto res = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals);
-  std::string s(buf, res.ptr);
+#if defined(__cpp_lib_to_chars)
+  std::string s(buf, std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals).ptr);
+#else
+  std::string s(buf, static_cast<std::size_t>(std::snprintf(buf, sizeof buf, "%.*f", decimals, value)));
+#endif
   if (s.find('.') != std::string::npos) {
     while (!s.empty() && s.back() == '0') s.pop_back();
     if (!s.empty() && s.back() == '.') s.pop_back();
