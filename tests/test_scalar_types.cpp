@@ -20,6 +20,7 @@
 #include "sphtroch/core/sampling.hpp"
 
 #include <cmath>
+#include <random>
 #include <thread>
 #include <utility>
 #include <limits>
@@ -223,4 +224,24 @@ TEST_CASE("MPFR precision is per thread: a worker gets 256-bit results only with
   const InvalidInput e = sphtroch::test::expect_invalid([] { sphtroch::MpfrPrecision bad(0); });
   CHECK(e.field() == "precision");
   CHECK_THROWS_AS(sphtroch::MpfrPrecision(2000000), InvalidInput);
+}
+
+TEST_CASE("reduce_phase: within an ulp of the true phase mod 2 pi, by IEEE operations alone below 2^30", "[scalar][phase]") {
+  // The reduction must not depend on the C library (the WebAssembly build's musl and glibc give
+  // the same double only for IEEE operations): checked here against MPFR at 256 bits.
+  mpfr::mpreal::set_default_prec(256);
+  const mpfr::mpreal two_pi = 2 * mpfr::const_pi();
+  std::mt19937_64 rng(20261125);
+  std::vector<double> phases = {3.1415926535897936, -3.1415926535897936, 2 * sphtroch::Constants<double>::pi(), 4.029605,
+                                -4.029605, 1e3, 123456.789, 0x1p30 - 1, -(0x1p30 - 1)};
+  std::uniform_real_distribution<double> log_scale(std::log(3.2), std::log(0x1p30));
+  for (int i = 0; i < 20000; ++i) phases.push_back((i % 2 ? -1 : 1) * std::exp(log_scale(rng)));
+  for (const double p : phases) {
+    const double got = sphtroch::reduce_phase(p);
+    mpfr::mpreal exact = mpfr::mpreal(p) - two_pi * mpfr::round(mpfr::mpreal(p) / two_pi);
+    const double want = exact.toDouble();
+    INFO("phase " << sphtroch::number_text(p) << ": " << sphtroch::number_text(got) << " vs " << sphtroch::number_text(want));
+    REQUIRE(std::fabs(got) <= sphtroch::Constants<double>::pi());
+    REQUIRE(std::fabs(got - want) <= std::max(std::nextafter(std::fabs(want), 4.0) - std::fabs(want), 1e-300));
+  }
 }

@@ -6,20 +6,21 @@
 #include "sphtroch/map/boundary_events_output.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/train_text.hpp"
 
 namespace sphtroch::cli {
 
 namespace {
 
 struct BoundariesOptions {
-  std::string n, a2 = "0:pi", steps, threads, output;
+  std::string n, teeth, a2 = "0:pi", steps, threads, output;
   bool json = false;
 };
 
 const char* const kA2Forms = "one angle in (0, pi) (1.2, pi/2, 90deg) for the events, or LO:HI with 0 <= LO < HI <= pi for the curves";
 
 void run_boundaries(const BoundariesOptions& o) {
-  const Ratio n = parse_ratio(o.n, "n");
+  const Ratio n = TrainText{"", "", o.n, "0", o.teeth}.ratio();  // --n, or --teeth ZS:ZP
   const auto colon = o.a2.find(':');
   if (colon == std::string::npos) {  // one a2: the events
     if (!o.steps.empty())
@@ -52,7 +53,10 @@ void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>
       "An a2 range (--a2 LO:HI, default 0:pi): the boundary curves as CSV\n"
       "locus,kind,m,label,a2,a3,b at --steps a2 samples (cell centres; default 720, 1 .. 10000).\n"
       "Example: sphtroch boundaries --n 3 --a2 pi/2");
-  cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2")->required();
+  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2");
+  CLI::Option* gears = cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5)");
+  ratio->excludes(gears);
+  gears->excludes(ratio);
   cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)");
   cmd->add_flag("--json", o->json, "the events as JSON (one a2 only)");
   cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 10000; default 720)");

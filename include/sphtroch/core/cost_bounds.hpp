@@ -15,7 +15,9 @@
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/ratio.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace sphtroch {
@@ -38,7 +40,9 @@ constexpr double kMaxCensusNodes = 2e5;
 constexpr std::size_t kDefaultMaxCrossings = 10'000'000;
 constexpr std::size_t kDefaultMaxCrossingWork = 50'000'000;
 /// The largest value either limit accepts.
-constexpr std::size_t kMaxCrossingLimit = 1'000'000'000'000'000;
+/// (On a 32-bit size_t, e.g. WebAssembly, the largest size_t.)
+constexpr std::size_t kMaxCrossingLimit =
+    static_cast<std::size_t>(std::min<std::uint64_t>(1'000'000'000'000'000ULL, SIZE_MAX));
 
 /// Throws InvalidInput(field, n, ...) when a census of this ratio would exceed kMaxCensusNodes.
 inline void check_census_cost(const Ratio& n, const std::string& field = "n") {

@@ -63,13 +63,23 @@ inline bool carrier_twist_in_range(double a2) {
 constexpr double kMinPlanetSpeed = 1e-3;
 constexpr double kPitchConeGuard = 0.01;
 
-/// The phase reduced to [-pi, pi]: unchanged when already there, else atan2(sin p, cos p) — the
-/// C library's sin and cos reduce any double argument exactly (Payne-Hanek), so the result is
-/// within a few ulp of the true p mod 2 pi even for p = 1e300. Adding 2 pi k to the phase turns
-/// theta3 by 2 pi k and leaves every point of the curve where it was (Eq. 3, 4).
+/// The phase reduced to [-pi, pi]: unchanged when already there; for |p| < 2^30 p - 2 pi k with
+/// k = round(p / 2 pi), 2 pi in two parts and each step one fma (IEEE operations only, so every
+/// C library — glibc natively, musl in the WebAssembly build — gives the same double, within an
+/// ulp of the true p mod 2 pi); beyond, atan2(sin p, cos p) — the C library's sin and cos reduce
+/// any double exactly (Payne-Hanek), so the result is within a few ulp even for p = 1e300.
+/// Adding 2 pi k to the phase turns theta3 by 2 pi k and leaves every point of the curve where it
+/// was (Eq. 3, 4).
 inline double reduce_phase(double phase) {
   const double pi = Constants<double>::pi();
   if (phase >= -pi && phase <= pi) return phase;
+  if (std::fabs(phase) < 0x1p30) {
+    constexpr double two_pi_high = 6.283185307179586;        // 2 pi rounded to double
+    constexpr double two_pi_low = 2.4492935982947064e-16;    // 2 pi - two_pi_high
+    const double k = std::nearbyint(phase / two_pi_high);
+    const double r = std::fma(-k, two_pi_low, std::fma(-k, two_pi_high, phase));
+    return std::min(pi, std::max(-pi, r));
+  }
   return std::atan2(std::sin(phase), std::cos(phase));
 }
 

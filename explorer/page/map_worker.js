@@ -1,0 +1,22 @@
+// map_worker.js — the design map's worker (run from a Blob with sphtroch.js before it; see
+// bundle_worker.js): node counts of the (a2, a3) cells for one n, grid after grid, coarse to
+// fine, each posted as {size, counts, max, done, seconds} (counts row-major from the lowest a3;
+// -1: no train there), or {error}.
+'use strict';
+self.onmessage = (ev) => {
+  const { n, teeth, sizes } = ev.data;
+  createSphtroch().then((lib) => {
+    const start = performance.now();
+    for (const size of sizes) {
+      const r = lib.mapCounts(n, teeth, 0, Math.PI, 0, Math.PI, size, size);
+      if (r.error) {
+        self.postMessage({ error: r.error });
+        return;
+      }
+      let max = 0;
+      for (const c of r.counts) max = Math.max(max, c);
+      const done = size === sizes[sizes.length - 1];
+      self.postMessage({ size, counts: r.counts, max, done, seconds: (performance.now() - start) / 1000 });
+    }
+  });
+};

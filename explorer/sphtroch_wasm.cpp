@@ -1,0 +1,245 @@
+// explorer/sphtroch_wasm.cpp — the Eigen-only library as a WebAssembly module for the explorer
+// page (embind; built by the CMake target `explorer` with emscripten's em++).
+//
+// Every function takes the CLI's texts ("pi/3", "ap+1e-6", "5/2", teeth "39:15") through the same
+// parsers (io/train_text.hpp), so a URL, a scene, the CLI and the page read a train alike. No
+// exception reaches JavaScript: a refused input returns {error: "<the CLI's one line>"} (the
+// field, the value, the valid range), and the page shows that line instead of any number.
+// Nothing here starts a thread.
+#include "sphtroch/census/root_classification.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/train_text.hpp"
+#include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/map/criteria.hpp"
+#include "sphtroch/map/extremes_and_symmetry.hpp"
+
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+using emscripten::val;
+using sphtroch::GearTrain;
+using sphtroch::Ratio;
+
+/// The page's error line: what `sphtroch` prints on stderr for the same texts.
+val error_object(const std::string& line) {
+  val out = val::object();
+  out.set("error", "sphtroch: " + sphtroch::one_line_text(line));
+  return out;
+}
+
+/// Runs body() and turns every exception into {error: ...}: InvalidInput as the CLI words it
+/// ("--a2 = 7: ...; valid: ..."), anything else as an internal error (never thrown to JS).
+template <typename Body>
+val guarded(Body body) {
+  try {
+    return body();
+  } catch (const sphtroch::InvalidInput& e) {
+    return error_object(std::string("--") + e.what());
+  } catch (const std::exception& e) {
+    return error_object(std::string("internal error: ") + e.what());
+  }
+}
+
+val float64_array(const std::vector<double>& values) {
+  return val::global("Float64Array").new_(emscripten::typed_memory_view(values.size(), values.data()));
+}
+
+val string_list(const std::vector<std::string>& items) {
+  val out = val::array();
+  for (const std::string& s : items) out.call<void>("push", s);
+  return out;
+}
+
+sphtroch::TrainText train_text(const std::string& a2, const std::string& a3, const std::string& n,
+                               const std::string& phase, const std::string& teeth) {
+  return sphtroch::TrainText{a2, a3, n, phase.empty() ? "0" : phase, teeth};
+}
+
+val train_object(const GearTrain& t) {
+  val out = val::object();
+  out.set("a2", t.a2());
+  out.set("a3", t.a3());
+  out.set("phase", t.phase());
+  out.set("n", t.ratio().str());
+  out.set("p", static_cast<double>(t.ratio().p()));
+  out.set("q", static_cast<double>(t.ratio().q()));
+  out.set("period", t.period());
+  out.set("planetCone", t.planet_cone());
+  return out;
+}
+
+val node_positions(const std::vector<sphtroch::Node>& nodes) {
+  std::vector<double> xyz;
+  for (const sphtroch::Node& node : nodes) xyz.insert(xyz.end(), node.position.data(), node.position.data() + 3);
+  return float64_array(xyz);
+}
+
+val node_list(const std::vector<sphtroch::Node>& nodes) {
+  val out = val::array();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const sphtroch::Node& node = nodes[i];
+    val item = val::object();
+    item.set("id", static_cast<double>(i + 1));
+    item.set("kind", std::string(sphtroch::to_string(node.kind)));
+    item.set("x", node.position.x());
+    item.set("y", node.position.y());
+    item.set("z", node.position.z());
+    item.set("params", float64_array(node.params));
+    out.call<void>("push", item);
+  }
+  return out;
+}
+
+val criteria_list(const std::vector<sphtroch::Criterion>& criteria) {
+  val out = val::array();
+  for (const sphtroch::Criterion& c : criteria) {
+    val item = val::object();
+    item.set("equation", c.equation);
+    item.set("statement", c.statement);
+    item.set("status", std::string(sphtroch::to_string(c.status)));
+    item.set("lowerMargin", c.lower_margin);
+    item.set("upperMargin", c.upper_margin);
+    item.set("prediction", c.prediction);
+    out.call<void>("push", item);
+  }
+  return out;
+}
+
+/// The class, counts and node points of one train by the root census (classify_roots), with the
+/// second count of the boundary set (node_count_off_events) as its check: `certified` is true
+/// when the two independent counts agree (a train on an event has no second count: false).
+val classify(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+             const std::string& teeth) {
+  return guarded([&] {
+    const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
+    const sphtroch::RootClassification c = sphtroch::classify_roots(t);
+    // The cusps where classify_roots finds them: on the train read onto its boundaries.
+    const sphtroch::SnappedTrain snapped = sphtroch::snap_to_boundaries(t, sphtroch::Reading{}.boundary());
+    const sphtroch::ZExtremes z = sphtroch::z_extremes(t);
+    const sphtroch::AnalyticClassification a = sphtroch::classify_analytic(t);
+    const std::int64_t second = sphtroch::node_count_off_events(c.a2, c.a3, t.ratio());
+    val out = train_object(t);
+    out.set("class", std::string(sphtroch::to_string(c.curve_class)));
+    out.set("nodes", static_cast<double>(c.nodes));
+    out.set("crossings", static_cast<double>(c.crossings));
+    out.set("tangencies", static_cast<double>(c.tangencies));
+    out.set("cusps", static_cast<double>(c.cusps));
+    out.set("boundaryCount", static_cast<double>(second));
+    out.set("certified", c.boundaries.empty() && c.tangencies == 0 && second == static_cast<std::int64_t>(c.nodes));
+    out.set("readOn", string_list(c.boundaries));
+    out.set("nodePoints", node_list(c.node_points));
+    out.set("nodePositions", node_positions(c.node_points));
+    std::vector<double> cusp_xyz;
+    for (const sphtroch::AnalyticCusp& cusp : sphtroch::pitch_cone_cusps(snapped.train, sphtroch::kCuspResolution))
+      cusp_xyz.insert(cusp_xyz.end(), cusp.position.data(), cusp.position.data() + 3);
+    out.set("cuspPositions", float64_array(cusp_xyz));
+    out.set("zMax", z.z_max);
+    out.set("zMin", z.z_min);
+    out.set("criteria", criteria_list(a.criteria));
+    out.set("reportClass", a.curve_class);
+    return out;
+  });
+}
+
+/// `samples` points of one period (the CLI's trace --samples), as x0 y0 z0 x1 ... (unit vectors).
+val trace(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+          const std::string& teeth, double samples) {
+  return guarded([&] {
+    const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
+    if (!(samples >= 3 && samples <= 1e6 && samples == static_cast<double>(static_cast<std::int64_t>(samples))))
+      throw sphtroch::InvalidInput("samples", sphtroch::number_text(samples), "outside the valid range",
+                                   "integer 3 .. 1000000");
+    const sphtroch::TracerCurve<double> curve(t);
+    const auto sampled = sphtroch::sample_period(curve, static_cast<std::size_t>(samples));
+    std::vector<double> xyz;
+    xyz.reserve(sampled.points.size() * 3);
+    for (const sphtroch::Vector3d& p : sampled.points) xyz.insert(xyz.end(), p.data(), p.data() + 3);
+    val out = val::object();
+    out.set("points", float64_array(xyz));
+    out.set("params", float64_array(sampled.t));
+    return out;
+  });
+}
+
+/// The boundary events of the a3 ruler at one a2 (`sphtroch boundaries`): ascending a3, each with
+/// its shortest round-trip text, kind, name and the node counts on both sides.
+val events(const std::string& a2, const std::string& n, const std::string& teeth) {
+  return guarded([&] {
+    const double a2v = sphtroch::parse_angle(a2, "a2");
+    const Ratio ratio = train_text(a2, "1", n, "0", teeth).ratio();
+    const sphtroch::BoundarySet set = sphtroch::boundary_set(a2v, ratio);
+    val list = val::array();
+    for (const sphtroch::BoundaryEvent& e : set.events) {
+      val item = val::object();
+      item.set("a3", e.a3);
+      item.set("text", sphtroch::number_text(e.a3));
+      item.set("kind", std::string(sphtroch::to_string(e.kind)));
+      item.set("name", e.name);
+      item.set("nodesBelow", static_cast<double>(e.nodes_below));
+      item.set("nodesAbove", static_cast<double>(e.nodes_above));
+      item.set("cuspsAbove", static_cast<double>(e.cusps_above));
+      list.call<void>("push", item);
+    }
+    val out = val::object();
+    out.set("a2", a2v);
+    out.set("n", ratio.str());
+    out.set("events", list);
+    return out;
+  });
+}
+
+/// The node count of one map cell, or -1 where the ratio has no train (e.g. n = -1 at a2 = pi/2).
+std::int32_t cell_count(double a2, double a3, const Ratio& ratio) {
+  try {
+    return static_cast<std::int32_t>(sphtroch::node_count_off_events(a2, a3, ratio));
+  } catch (const sphtroch::InvalidInput&) {
+    return -1;
+  }
+}
+
+/// Node counts off events on a grid of cell centres (the design map): a2 along columns, a3 along
+/// rows, row-major from the lowest a3 (Int32Array of nx * ny; -1 where no train exists).
+val map_counts(const std::string& n, const std::string& teeth, double a2_lo, double a2_hi, double a3_lo,
+               double a3_hi, double nx, double ny) {
+  return guarded([&] {
+    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    if (!(nx >= 1 && ny >= 1 && nx * ny <= 1 << 22))
+      throw sphtroch::InvalidInput("map", sphtroch::number_text(nx) + "x" + sphtroch::number_text(ny),
+                                   "outside the valid range", "1 .. 4194304 cells");
+    const auto columns = static_cast<std::size_t>(nx), rows = static_cast<std::size_t>(ny);
+    std::vector<std::int32_t> counts(columns * rows);
+    for (std::size_t j = 0; j < rows; ++j)
+      for (std::size_t i = 0; i < columns; ++i) {
+        const double a2 = a2_lo + (a2_hi - a2_lo) * (static_cast<double>(i) + 0.5) / nx;
+        const double a3 = a3_lo + (a3_hi - a3_lo) * (static_cast<double>(j) + 0.5) / ny;
+        counts[j * columns + i] = cell_count(a2, a3, ratio);
+      }
+    val out = val::object();
+    out.set("counts", val::global("Int32Array").new_(emscripten::typed_memory_view(counts.size(), counts.data())));
+    return out;
+  });
+}
+
+/// A shortest round-trip text of a double (what the CLI prints for it).
+std::string number_text(double v) { return sphtroch::number_text(v); }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
+  emscripten::function("classify", &classify);
+  emscripten::function("trace", &trace);
+  emscripten::function("events", &events);
+  emscripten::function("mapCounts", &map_counts);
+  emscripten::function("numberText", &number_text);
+}

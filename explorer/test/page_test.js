@@ -1,0 +1,201 @@
+// node page_test.js WEB_DIR SPHTROCH_EXE OUT_DIR — the explorer page in headless Chromium (Debian's,
+// driven by playwright-core), opened from disk (file://), against the native tool:
+//  - 20 random states from the URL hash: counts and class equal `sphtroch classify --json`, the
+//    ruler's events equal `sphtroch boundaries --json` (a3 within 1e-9, kinds), node points
+//    within 1e-9 of `sphtroch nodes`, the hash round-trips;
+//  - bad input: the CLI's one-line message and no number left from before;
+//  - a drag on the a2 slider and a click on the design map move the state as they should;
+//  - no console error; a screenshot where the sphere and the map are drawn (not blank).
+// Exit status 0 when every check holds; each failure is printed.
+'use strict';
+const path = require('path');
+const { execFileSync, spawnSync } = require('child_process');
+const { chromium } = require('playwright-core');
+
+const [webDir, exe, outDir] = process.argv.slice(2);
+const pageUrl = 'file://' + path.resolve(webDir, 'index.html');
+const failures = [];
+const check = (ok, what) => { if (!ok) failures.push(what); };
+
+// A small seeded generator (mulberry32), so a failing state can be reproduced.
+function rng(seed) {
+  return () => {
+    seed |= 0; seed = (seed + 0x6d2b79f5) | 0;
+    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+function randomStates(count) {
+  const r = rng(20261125), states = [];
+  const gcd = (a, b) => (b === 0 ? a : gcd(b, a % b));
+  while (states.length < count) {
+    let p = 1 + Math.floor(r() * 7), q = 1 + Math.floor(r() * 7);
+    const g = gcd(p, q); p /= g; q /= g;
+    const sign = r() < 0.3 ? -1 : 1;
+    const angle = () => (0.05 + r() * (Math.PI - 0.1)).toFixed(5);
+    states.push({ a2: angle(), a3: angle(), n: (sign * p) + (q === 1 ? '' : '/' + q), phase: (r() * 6).toFixed(4) });
+  }
+  states.push({ a2: 'pi/3', a3: 'ap', n: '2', phase: '0' });  // cusps, given relative to the pitch cone
+  states.push({ a2: '60deg', a3: 'pi/2', n: '', teeth: '39:15', phase: '0' });
+  return states;
+}
+
+function hashOf(s) {
+  const enc = (v) => encodeURIComponent(v).replace(/%2F/g, '/').replace(/%3A/g, ':');
+  const ratio = s.teeth ? 'teeth=' + enc(s.teeth) : 'n=' + enc(s.n);
+  return '#a2=' + enc(s.a2) + '&a3=' + enc(s.a3) + '&' + ratio + '&phase=' + enc(s.phase);
+}
+
+function cli(args) {
+  const r = spawnSync(exe, args, { encoding: 'utf8' });
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr.trim() };
+}
+
+const ratioArgs = (s) => (s.teeth ? ['--teeth', s.teeth] : ['--n', s.n]);
+const trainArgs = (s) => ['--a2', s.a2, '--a3', s.a3, ...ratioArgs(s), '--phase', s.phase];
+
+async function readPage(page) {
+  return page.evaluate(() => {
+    const text = (id) => document.querySelector('[data-testid="' + id + '"]').textContent;
+    const events = Array.from(document.querySelectorAll('[data-testid="event"]')).map((e) => ({
+      a3: e.getAttribute('data-a3'), kind: e.getAttribute('data-kind') }));
+    const out = { error: text('error'), events, hash: window.location.hash };
+    for (const id of ['nodes', 'crossings', 'tangencies', 'cusps', 'class']) out[id] = text(id);
+    out.nodePoints = window.sphtrochExplorer.nodePositions();
+    out.cuspPoints = window.sphtrochExplorer.cuspPositions();
+    return out;
+  });
+}
+
+async function open(page, hash) {
+  await page.goto(pageUrl + hash);
+  await page.waitForSelector('body[data-ready="1"]');
+}
+
+async function checkState(page, s) {
+  const hash = hashOf(s);
+  await open(page, hash);
+  const got = await readPage(page);
+  const where = JSON.stringify(s);
+  check(decodeURIComponent(got.hash) === decodeURIComponent(hash), where + ': hash ' + got.hash + ' != ' + hash);
+  const classify = cli(['classify', ...trainArgs(s), '--json']);
+  if (classify.status === 2) {
+    check(got.error === classify.stderr, where + ': page error "' + got.error + '" != CLI "' + classify.stderr + '"');
+    check(got.nodes === '' && got.events.length === 0, where + ': numbers shown with an error');
+    return;
+  }
+  const c = JSON.parse(classify.stdout);
+  check(got.error === '', where + ': unexpected error ' + got.error);
+  if (c.certified) {
+    for (const k of ['nodes', 'crossings', 'tangencies', 'cusps'])
+      check(Number(got[k]) === c.counts[k], where + ': ' + k + ' ' + got[k] + ' != CLI ' + c.counts[k]);
+    check(got.class === c.class, where + ': class ' + got.class + ' != CLI ' + c.class);
+  }
+  const bounds = JSON.parse(cli(['boundaries', '--a2', s.a2, ...ratioArgs(s), '--json']).stdout);
+  check(bounds.events.length === got.events.length, where + ': ' + got.events.length + ' events != CLI ' + bounds.events.length);
+  bounds.events.forEach((e, i) => {
+    const g = got.events[i];
+    if (!g) return;
+    check(Math.abs(Number(g.a3) - e.a3) <= 1e-9, where + ': event ' + i + ' a3 ' + g.a3 + ' != CLI ' + e.a3);
+    check(g.kind === e.kind, where + ': event ' + i + ' kind ' + g.kind + ' != CLI ' + e.kind);
+  });
+  // `sphtroch nodes` lists node points and cusps (kind column): each must be on the page.
+  const rows = cli(['nodes', ...trainArgs(s)]).stdout.trim().split('\n').slice(1).filter((l) => l);
+  for (const [kind, points] of [['node', got.nodePoints], ['cusp', got.cuspPoints]]) {
+    const mine = rows.filter((r) => (r.startsWith('cusp,') ? 'cusp' : 'node') === kind);
+    check(mine.length === points.length / 3, where + ': ' + points.length / 3 + ' ' + kind + ' points != CLI ' + mine.length);
+    for (const row of mine) {
+      const [, x, y, z] = row.split(',').map(Number);
+      let best = Infinity;
+      for (let i = 0; i < points.length; i += 3)
+        best = Math.min(best, Math.hypot(points[i] - x, points[i + 1] - y, points[i + 2] - z));
+      check(best <= 1e-9, where + ': CLI ' + kind + ' ' + row + ' is ' + best + ' from every page ' + kind);
+    }
+  }
+}
+
+async function checkBadInput(page) {
+  await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }));
+  for (const [field, value, args] of [['a2', '7', ['--a2', '7', '--a3', 'pi/2', '--n', '2', '--phase', '0']],
+    ['n', 'abc', ['--a2', 'pi/3', '--a3', 'pi/2', '--n', 'abc', '--phase', '0']]]) {
+    await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }));
+    await page.fill('[data-testid="' + field + '-text"]', value);
+    const got = await readPage(page);
+    const want = cli(['classify', ...args]);
+    check(want.status === 2 && got.error === want.stderr, 'bad ' + field + ': page "' + got.error + '" != CLI "' + want.stderr + '"');
+    check(got.nodes === '' && got.class === '' && got.events.length === 0 && got.nodePoints.length === 0,
+      'bad ' + field + ': a number from before is still shown');
+  }
+}
+
+async function checkSliderAndMap(page) {
+  await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }));
+  const slider = await page.locator('[data-testid="a2-slider"]').boundingBox();
+  // Drag the a2 thumb (at pi/3, a third of the track) left by 8% of the slider's width: a2 drops
+  // by 8% of the range or a little more (the thumb's own width shortens the track).
+  await page.mouse.move(slider.x + slider.width * 0.33, slider.y + slider.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(slider.x + slider.width * 0.25, slider.y + slider.height / 2, { steps: 5 });
+  await page.mouse.up();
+  let got = await readPage(page);
+  const a2 = Number(await page.inputValue('[data-testid="a2-text"]'));
+  check(a2 < Math.PI / 3 - 0.08 * 3.14 && a2 > Math.PI / 3 - 0.12 * 3.14, 'slider drag: a2 = ' + a2 + ', expected 0.08..0.12 pi below pi/3');
+  check(Number(await page.inputValue('[data-testid="a2-slider"]')) === a2, 'slider drag: the text field does not show the slider value');
+  check(got.hash.includes('a2=' + a2), 'slider drag: the hash ' + got.hash + ' does not carry a2 = ' + a2);
+  let want = JSON.parse(cli(['classify', '--a2', String(a2), '--a3', 'pi/2', '--n', '2', '--json']).stdout);
+  check(Number(got.nodes) === want.counts.nodes, 'slider drag: nodes ' + got.nodes + ' != CLI ' + want.counts.nodes);
+  // Click on the map at 30% across, 20% down: a2 = 0.3 pi, a3 = 0.8 pi.
+  const map = await page.locator('[data-testid="map"]').boundingBox();
+  await page.mouse.click(map.x + map.width * 0.3, map.y + map.height * 0.2);
+  got = await readPage(page);
+  const a2m = Number(await page.inputValue('[data-testid="a2-text"]'));
+  const a3m = Number(await page.inputValue('[data-testid="a3-text"]'));
+  check(Math.abs(a2m - 0.3 * Math.PI) < 0.02 && Math.abs(a3m - 0.8 * Math.PI) < 0.02,
+    'map click: (a2, a3) = (' + a2m + ', ' + a3m + '), expected about (0.3 pi, 0.8 pi)');
+  want = JSON.parse(cli(['classify', '--a2', String(a2m), '--a3', String(a3m), '--n', '2', '--json']).stdout);
+  check(Number(got.nodes) === want.counts.nodes, 'map click: nodes ' + got.nodes + ' != CLI ' + want.counts.nodes);
+}
+
+async function checkDrawn(page) {
+  await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
+  await page.waitForFunction(() => /s$/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 30000 });
+  await page.screenshot({ path: path.join(outDir, 'explorer.png'), fullPage: true });
+  const inked = await page.evaluate(() => {
+    const count = (id) => {
+      const c = document.querySelector('[data-testid="' + id + '"]');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      const colours = new Set();
+      let dark = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        if (d[i] + d[i + 1] + d[i + 2] < 300 && d[i + 3] > 0) ++dark;
+        if (colours.size < 50) colours.add(d[i] + ',' + d[i + 1] + ',' + d[i + 2]);
+      }
+      return { dark, colours: colours.size };
+    };
+    return { sphere: count('sphere'), map: count('map') };
+  });
+  check(inked.sphere.dark > 2000, 'the sphere view is blank: ' + JSON.stringify(inked.sphere));
+  check(inked.map.colours >= 5, 'the design map is blank: ' + JSON.stringify(inked.map));
+}
+
+(async () => {
+  const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
+  const page = await browser.newPage({ viewport: { width: 1400, height: 1100 } });
+  const consoleErrors = [];
+  page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(m.text()); });
+  page.on('pageerror', (e) => consoleErrors.push(e.message));
+  try {
+    for (const s of randomStates(20)) await checkState(page, s);
+    await checkBadInput(page);
+    await checkSliderAndMap(page);
+    await checkDrawn(page);
+  } finally {
+    await browser.close();
+  }
+  check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
+  for (const f of failures) console.log('FAIL ' + f);
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, drawn' : failures.length + ' failures');
+  process.exit(failures.length === 0 ? 0 : 1);
+})().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

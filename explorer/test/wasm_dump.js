@@ -1,0 +1,21 @@
+// node wasm_dump.js SPHTROCH_JS < trains.json > results.json — what the explorer's WebAssembly
+// module computes for each train {a2, a3, n, phase} (the CLI's texts): the root census counts,
+// class, node points, and trace(samples) points; or {error}. Used by test_wasm_vs_native.py.
+'use strict';
+const fs = require('fs');
+const create = require(require('path').resolve(process.argv[2]));
+const trains = JSON.parse(fs.readFileSync(0, 'utf8'));
+create().then((lib) => {
+  const out = trains.map((t) => {
+    const c = lib.classify(t.a2, t.a3, t.n, t.phase, '');
+    if (c.error) return { error: c.error };
+    const tr = lib.trace(t.a2, t.a3, t.n, t.phase, '', t.samples);
+    if (tr.error) return { error: tr.error };
+    return {
+      class: c.class, nodes: c.nodes, crossings: c.crossings, tangencies: c.tangencies, cusps: c.cusps,
+      certified: c.certified, nodePositions: Array.from(c.nodePositions), points: Array.from(tr.points),
+      params: Array.from(tr.params),
+    };
+  });
+  process.stdout.write(JSON.stringify(out));
+});
