@@ -20,6 +20,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <string>
@@ -231,6 +232,30 @@ val map_counts(const std::string& n, const std::string& teeth, double a2_lo, dou
   });
 }
 
+/// The boundary curves of the map for one n (`sphtroch boundaries --a2 0:pi --steps S`): each
+/// {kind, name, points: Float64Array a2 a3 a2 a3 ...}. One thread (no thread is started).
+val loci(const std::string& n, const std::string& teeth, double steps) {
+  return guarded([&] {
+    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    if (!(steps >= 1 && steps <= static_cast<double>(sphtroch::kMaxLocusSteps) && steps == std::floor(steps)))
+      throw sphtroch::InvalidInput("steps", sphtroch::number_text(steps), "outside the valid range", "integer 1 .. 10000");
+    const double pi = sphtroch::Constants<double>::pi();
+    val list = val::array();
+    for (const sphtroch::Locus& locus : sphtroch::boundary_loci(ratio, 0.0, pi, static_cast<std::size_t>(steps), 1)) {
+      std::vector<double> xy;
+      for (const sphtroch::LocusPoint& p : locus.points) xy.insert(xy.end(), {p.a2, p.a3});
+      val item = val::object();
+      item.set("kind", std::string(sphtroch::to_string(locus.kind)));
+      item.set("name", locus.name);
+      item.set("points", float64_array(xy));
+      list.call<void>("push", item);
+    }
+    val out = val::object();
+    out.set("loci", list);
+    return out;
+  });
+}
+
 /// A shortest round-trip text of a double (what the CLI prints for it).
 std::string number_text(double v) { return sphtroch::number_text(v); }
 
@@ -241,5 +266,6 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("trace", &trace);
   emscripten::function("events", &events);
   emscripten::function("mapCounts", &map_counts);
+  emscripten::function("loci", &loci);
   emscripten::function("numberText", &number_text);
 }

@@ -25,11 +25,14 @@ jobs=${JOBS:-$(nproc)}
 # What the library and the tool need; the tests add python3-numpy (numpy.load/numpy.save round
 # trips of the .npy files), libbenchmark-dev (bench/, built by bench/run) and the Python module's
 # build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example),
-# and jq (a console example of docs/cli.md pipes classify --json through it; ctest docs:console_examples).
+# and jq (a console example of docs/cli.md pipes classify --json through it; ctest docs:console_examples),
+# and for the explorer (explorer/, ctest label browser) emscripten, chromium and Node.js with npm
+# (Node >= 20 for playwright-core; the npm packages come from explorer/test/package-lock.json).
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
           libcli11-dev nlohmann-json3-dev)
 if [[ $mode == test ]]; then
-  packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq)
+  packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
+             emscripten chromium nodejs)
 fi
 
 install_missing_packages() {
@@ -63,7 +66,7 @@ configure_and_build() {
   # serve), and asks for it explicitly: a module that cannot be built fails here, never skipped.
   local python=()
   if [[ $mode == test ]]; then
-    python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3)
+    python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 -DSPHTROCH_BUILD_EXPLORER=ON)
   fi
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${python[@]}"
   if [[ $mode == run ]]; then
@@ -74,7 +77,20 @@ configure_and_build() {
 }
 
 install_missing_packages
+# The browser tests' npm packages, exactly as locked (npm ci), unless already installed from this lockfile.
+install_npm_packages() {
+  local dir=explorer/test
+  if ! command -v npm >/dev/null; then
+    echo "dev.sh: npm not found (Debian's nodejs >= 20 brings it; NodeSource's package does)" >&2
+    exit 1
+  fi
+  if [[ ! -f $dir/node_modules/.package-lock.json || $dir/package-lock.json -nt $dir/node_modules/.package-lock.json ]]; then
+    npm ci --prefix "$dir" --no-audit --no-fund
+  fi
+}
+
 if [[ $mode == test ]]; then
+  install_npm_packages
   # The cluster test (ctest label `cluster`) runs a real one-node Slurm: slurm-wlm and munge.
   bash tests/cluster/install_slurm.sh
 fi

@@ -58,19 +58,33 @@
     return Math.min(200000, Math.max(2000, 600 * r.q * Math.min(40, Math.abs(r.p) + r.q)));
   }
 
+  // The ruler's events depend on a2 and n only: kept while a3 or the phase moves.
+  let eventsCache = { key: null, value: null };
+
+  function eventsOf(s) {
+    const key = s.a2 + '|' + s.n + '|' + s.teeth;
+    if (eventsCache.key !== key) eventsCache = { key, value: lib.events(s.a2, s.n, s.teeth) };
+    return eventsCache.value;
+  }
+
   function compute() {
     const s = state;
     const c = lib.classify(s.a2, s.a3, s.n, s.phase, s.teeth);
     if (c.error) return { error: c.error };
     const t = lib.trace(s.a2, s.a3, s.n, s.phase, s.teeth, samplesFor(c));
     if (t.error) return { error: t.error };
-    const e = lib.events(s.a2, s.n, s.teeth);
+    const e = eventsOf(s);
     if (e.error) return { error: e.error };
     return { c, t, e };
   }
 
+  // Timings of the last update (ms), for bench/explorer.js: compute (the library) and all of it.
+  const timing = { compute: 0, total: 0 };
+
   function update(pushHash) {
+    const start = performance.now();
     const out = compute();
+    timing.compute = performance.now() - start;
     if (out.error) {
       result = curve = ruler = null;
       byTestId('error').textContent = out.error;
@@ -88,6 +102,7 @@
     renderRuler();
     drawSphere();
     drawMap();
+    timing.total = performance.now() - start;
   }
 
   function syncSliders() {
@@ -328,17 +343,28 @@
   // ---- the design map (node counts from a worker, coarse to fine) ------------------------------
   let worker = null;
   let map = null; // { size, counts, max, n }
+  let loci = null; // the boundary curves: [{kind, name, points: a2 a3 ...}]
 
   function startMap() {
     if (worker) worker.terminate();
     map = null;
+    loci = null;
+    mapImage = null;
     byTestId('map-status').textContent = 'computing';
     const blob = new Blob([SPHTROCH_WORKER_SOURCE], { type: 'text/javascript' });
     worker = new Worker(URL.createObjectURL(blob));
     worker.onmessage = (ev) => {
       const m = ev.data;
       if (m.error) { byTestId('map-status').textContent = m.error; return; }
+      if (m.loci) {
+        loci = m.loci;
+        byTestId('map-status').textContent = map.size + '² cells and the boundary curves, ' + m.seconds.toFixed(1) + ' s';
+        mapImage = null;
+        drawMap();
+        return;
+      }
       map = m;
+      mapImage = null;
       byTestId('map-status').textContent = m.done ? m.size + '² cells, ' + m.seconds.toFixed(1) + ' s' : m.size + '² cells so far';
       drawMap();
     };
@@ -353,9 +379,16 @@
     return 'hsl(' + hue + ',70%,' + light + '%)';
   }
 
-  function drawMap() {
+  // The cells and the boundary curves are drawn once per worker message into an offscreen
+  // canvas; a state change only copies it and draws the cross.
+  let mapImage = null;
+
+  function renderMapImage() {
     const canvas = $('map');
-    const ctx = canvas.getContext('2d');
+    mapImage = document.createElement('canvas');
+    mapImage.width = canvas.width;
+    mapImage.height = canvas.height;
+    const ctx = mapImage.getContext('2d');
     ctx.fillStyle = '#eef0f3';
     ctx.fillRect(0, 0, canvas.width, canvas.height);
     if (map) {
@@ -367,12 +400,37 @@
         }
       renderLegend();
     }
+    if (loci) drawLoci(ctx, canvas);
+  }
+
+  function drawMap() {
+    const canvas = $('map');
+    const ctx = canvas.getContext('2d');
+    if (!mapImage) renderMapImage();
+    ctx.drawImage(mapImage, 0, 0);
     if (result) {
       const x = result.a2 / Math.PI * canvas.width, y = canvas.height - result.a3 / Math.PI * canvas.height;
       ctx.strokeStyle = '#000';
       ctx.lineWidth = 2;
       ctx.beginPath();
       ctx.moveTo(x - 8, y); ctx.lineTo(x + 8, y); ctx.moveTo(x, y - 8); ctx.lineTo(x, y + 8);
+      ctx.stroke();
+    }
+  }
+
+  // The boundary curves over the cells: a sample step apart in a2, a polyline runs on while its
+  // points are consecutive samples (a locus resolved to the step: no line across a gap).
+  function drawLoci(ctx, canvas) {
+    const step = Math.PI / 64 * 1.5;  // map_worker.js: LOCUS_STEPS samples across (0, pi)
+    ctx.lineWidth = 1;
+    for (const locus of loci) {
+      ctx.strokeStyle = locus.kind === 'tangency' ? 'rgba(0,0,0,0.55)' : 'rgba(29,111,216,0.8)';
+      ctx.beginPath();
+      const p = locus.points;
+      for (let i = 0; i < p.length; i += 2) {
+        const x = p[i] / Math.PI * canvas.width, y = canvas.height - p[i + 1] / Math.PI * canvas.height;
+        if (i === 0 || p[i] - p[i - 2] > step) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+      }
       ctx.stroke();
     }
   }
@@ -475,7 +533,8 @@
     update(false);
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, state), nodePositions: () => (result ? Array.from(result.nodePositions) : []),
-      cuspPositions: () => (result ? Array.from(result.cuspPositions) : []), lib };
+      cuspPositions: () => (result ? Array.from(result.cuspPositions) : []),
+      timing: () => Object.assign({}, timing), lib };
     document.body.dataset.ready = '1';
     window.requestAnimationFrame(animate);
   });

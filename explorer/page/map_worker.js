@@ -1,8 +1,10 @@
 // map_worker.js — the design map's worker (run from a Blob with sphtroch.js before it; see
 // bundle_worker.js): node counts of the (a2, a3) cells for one n, grid after grid, coarse to
 // fine, each posted as {size, counts, max, done, seconds} (counts row-major from the lowest a3;
-// -1: no train there), or {error}.
+// -1: no train there), then the boundary curves as {loci, seconds}; or {error}.
 'use strict';
+// a2 samples of the boundary curves: ~50 ms each here (long double is software quad in wasm).
+const LOCUS_STEPS = 64;
 self.onmessage = (ev) => {
   const { n, teeth, sizes } = ev.data;
   createSphtroch().then((lib) => {
@@ -18,5 +20,7 @@ self.onmessage = (ev) => {
       const done = size === sizes[sizes.length - 1];
       self.postMessage({ size, counts: r.counts, max, done, seconds: (performance.now() - start) / 1000 });
     }
+    const l = lib.loci(n, teeth, LOCUS_STEPS);
+    if (!l.error) self.postMessage({ loci: l.loci, seconds: (performance.now() - start) / 1000 });
   });
 };

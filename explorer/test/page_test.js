@@ -160,7 +160,7 @@ async function checkSliderAndMap(page) {
 
 async function checkDrawn(page) {
   await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
-  await page.waitForFunction(() => /s$/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 30000 });
+  await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 60000 });
   await page.screenshot({ path: path.join(outDir, 'explorer.png'), fullPage: true });
   const inked = await page.evaluate(() => {
     const count = (id) => {

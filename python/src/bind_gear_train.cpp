@@ -18,6 +18,16 @@
 namespace sphtroch::python {
 namespace {
 
+/// What makes two trains the same train: the doubles a2, a3, the reduced phase, n = p/q, and how a3
+/// is given (a reference such as the pitch cone and the offset from it: "ap" stays on the cone
+/// whatever a2's rounding, the double it names does not). Texts that read as the same values
+/// ("60deg", "pi/3") give equal keys; -0.0 and 0.0 hash alike (Python floats).
+py::tuple value_key(const Train& t) {
+  const GearTrain& g = t.train;
+  return py::make_tuple(g.a2(), g.a3(), g.phase(), g.ratio().p(), g.ratio().q(), static_cast<int>(g.a3_reference()),
+                        g.a3_offset(), g.a2_is_right_angle());
+}
+
 py::tuple trace(const Train& self, py::handle samples, py::handle turns, py::handle velocity_flag) {
   const bool velocity = flag_arg(velocity_flag, "velocity");
   std::optional<double> k;
@@ -119,13 +129,13 @@ void bind_gear_train(py::module_& m) {
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false)
       .def("__repr__", &train_repr)
-      // Another type: NotImplemented (so train == 5 is False, and the other operand may decide).
+      // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:
+      // NotImplemented (so train == 5 is False, and the other operand may decide).
       .def("__eq__", [](const Train& a, py::handle other) -> py::object {
         if (!py::isinstance<Train>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        const Train& b = other.cast<const Train&>();
-        return py::bool_(a.text.a2 == b.text.a2 && a.text.a3 == b.text.a3 && a.text.n == b.text.n &&
-                         a.text.phase == b.text.phase);
+        return py::bool_(value_key(a).equal(value_key(other.cast<const Train&>())));
       })
+      .def("__hash__", [](const Train& t) { return py::hash(value_key(t)); })
       // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
       // texts: a tampered pickle is validated like any other input (InvalidInput).
       .def("__reduce__", [](py::object self) {

@@ -165,3 +165,19 @@ def test_ranges_as_the_cli_writes_them():
     assert (a["a2"] == b["a2"]).all() and (a["a3"] == b["a3"]).all() and (a["nodes"] == b["nodes"]).all()
     r = sphtroch.classify_a3_range(1.0, 2, "0.5:2.5", count=11)
     assert r == sphtroch.classify_a3_range(1.0, 2, (0.5, 2.5), count=11)
+
+
+def test_trains_are_equal_and_hash_alike_by_value():
+    # The same angle written two ways is the same train (issue 21); a3 on the pitch cone ("ap") is
+    # not the double it rounds to (the reference is kept), and another phase or n is another train.
+    a = sphtroch.GearTrain("60deg", 1.2, "13/5")
+    b = sphtroch.GearTrain("pi/3", 1.2, "13/5")
+    assert a == b and hash(a) == hash(b) and len({a, b}) == 1
+    assert {a: "x"}[b] == "x"
+    assert sphtroch.GearTrain("pi/3", 1.2, "26/10") == b  # n in lowest terms
+    assert sphtroch.GearTrain("pi/3", 1.2, "13/5", 0.1) != b
+    assert sphtroch.GearTrain("pi/3", 1.2, "13/4") != b
+    cone = sphtroch.GearTrain("pi/3", "ap", 2)
+    assert cone == sphtroch.GearTrain("pi/3", "ap", 2) and hash(cone) == hash(sphtroch.GearTrain("pi/3", "ap", 2))
+    assert cone != sphtroch.GearTrain("pi/3", cone.a3, 2)  # the same double, not on the cone by definition
+    assert (a == 5) is False and a != "pi/3"
