@@ -14,6 +14,8 @@ from ._sphtroch import (  # noqa: F401
     UncertifiedResult,
     __version__,
     atlas,
+    boundaries,
+    boundary_loci,
     classify_a3_range,
     crossings,
     fit,
@@ -21,4 +23,4 @@ from ._sphtroch import (  # noqa: F401
     synth_points,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "classify_a3_range", "crossings", "fit", "identify", "synth_points", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "synth_points", "__version__"]

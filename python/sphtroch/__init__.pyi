@@ -170,6 +170,21 @@ def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
     (radians). The class changes between the last sample of a run and the first of the next.
     Raises InvalidInput: "a3" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""
 
+def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:
+    """Where the node count changes in a3 at one a2 (`sphtroch boundaries --n N --a2 A --json`,
+    the same doubles): {"n", "n_value", "a2", "accuracy" (1e-12 rad), "events": [{"a3", "kind"
+    ("pitch_cone", "pole", "tangency"), "name", "nodes_below", "nodes_above", "cusps_below",
+    "cusps_above", "b", "m", "label"}]}, events by ascending a3 (m, label None except for
+    tangencies). No bisection of classify_roots is needed: the events are refined to 1e-12 rad.
+    Raises InvalidInput: "n" (0, or beyond the census cost bound), "a2" outside [1e-6, pi - 1e-6]."""
+
+def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps: int = 720,
+                  threads: Optional[int] = None) -> List[Dict[str, Any]]:
+    """The boundary curves of the (a2, a3) map over an a2 range (`sphtroch boundaries --a2 LO:HI`):
+    a list of {"kind", "name", "m", "label", "a2", "a3", "b"} with a2, a3, b float64 arrays (radians)
+    sampled at the cell centres lo + (hi - lo)(k + 1/2)/steps. steps: 1 .. 10000; threads: 1 .. 1024
+    (default: all cores)."""
+
 def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     """The gear train of a timed trace (as `sphtroch synth identify`): t (N,) carrier angles,
     points (N, 3) unit vectors over one period, dense enough that the planet turns by less than

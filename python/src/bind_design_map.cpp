@@ -1,9 +1,14 @@
 // python/src/bind_design_map.cpp — the design map (bindings.hpp): classify_a3_range (the class
-// intervals of an a3 sweep) and atlas (the (a2, a3) map as NumPy arrays).
+// intervals of an a3 sweep), atlas (the (a2, a3) map as NumPy arrays), boundaries (the events at
+// one a2, as `sphtroch boundaries --json`) and boundary_loci (the boundary curves over an a2 range).
 #include "bindings.hpp"
 
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/census/root_classification.hpp"
+#include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/map/boundary_events_output.hpp"
+
+#include <sstream>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -107,9 +112,60 @@ py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::
   return d;
 }
 
+/// The events at one a2: the dict `sphtroch boundaries --json` prints, read back from the same
+/// writer (the same doubles, bit for bit).
+py::object boundaries(py::handle n, py::handle a2) {
+  std::string ignored;
+  const Ratio nv = ratio_arg(n);
+  const double a2v = angle_arg(a2, "a2", ignored);
+  std::ostringstream json;
+  {
+    py::gil_scoped_release release;
+    write_boundary_json(json, boundary_set(a2v, nv));
+  }
+  return from_json(json.str());
+}
+
+py::list boundary_loci_list(py::handle n, py::handle a2, py::handle steps, py::handle threads) {
+  const Ratio nv = ratio_arg(n);
+  const auto [lo, hi] = range_arg(a2, "a2");
+  const std::size_t k = count_arg(steps, "steps", 1, kMaxLocusSteps);
+  const std::size_t workers =
+      threads.is_none() ? std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kAtlasMaxThreads)
+                        : count_arg(threads, "threads", 1, kAtlasMaxThreads);
+  std::vector<Locus> loci;
+  {
+    py::gil_scoped_release release;
+    loci = boundary_loci(nv, lo, hi, k, workers);
+  }
+  py::list out;
+  for (const Locus& locus : loci) {
+    py::dict d;
+    d["kind"] = to_string(locus.kind);
+    d["name"] = locus.name;
+    const bool tangency = locus.kind == BoundaryEventKind::tangency;
+    d["m"] = tangency ? py::object(py::int_(locus.m)) : py::object(py::none());
+    d["label"] = tangency ? py::object(py::int_(locus.label)) : py::object(py::none());
+    std::vector<double> a2s, a3s, bs;
+    for (const LocusPoint& p : locus.points) {
+      a2s.push_back(p.a2);
+      a3s.push_back(p.a3);
+      bs.push_back(p.b);
+    }
+    d["a2"] = py::array_t<double>(static_cast<py::ssize_t>(a2s.size()), a2s.data());
+    d["a3"] = py::array_t<double>(static_cast<py::ssize_t>(a3s.size()), a3s.data());
+    d["b"] = py::array_t<double>(static_cast<py::ssize_t>(bs.size()), bs.data());
+    out.append(d);
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_design_map(py::module_& m) {
+  m.def("boundaries", &boundaries, py::arg("n"), py::arg("a2"));
+  m.def("boundary_loci", &boundary_loci_list, py::arg("n"), py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
+        py::arg("steps") = 720, py::arg("threads") = py::none());
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
         py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
         py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),

@@ -4,9 +4,11 @@ import csv
 import io
 import math
 
+import pytest
+
 import numpy as np
 import sphtroch
-from conftest import run_cli
+from conftest import cli_json, run_cli
 
 
 def test_shapes_dtypes_and_cell_centres():
@@ -50,3 +52,28 @@ def test_same_cells_as_the_tool(tmp_path):
     for row in rows:
         i, j = int(row["i"]), int(row["j"])
         assert int(row["nodes"]) == a["nodes"][i, j] and int(row["cusps"]) == a["cusps"][i, j]
+
+
+def test_boundaries_equal_the_cli_json_exactly():
+    # The same doubles as `sphtroch boundaries --json` (issue 21): no bisection needed.
+    for n, a2 in [("2", "pi/3"), ("13/5", "0.7"), ("-7/3", "1.9"), ("1", "0.3")]:
+        assert sphtroch.boundaries(n, a2) == cli_json("boundaries", "--n", n, "--a2", a2, "--json")
+    events = sphtroch.boundaries(2, math.pi / 3)["events"]
+    assert [e["kind"] for e in events] == ["pitch_cone", "pole", "pole", "pitch_cone"]
+    assert events[1]["a3"] == math.pi / 3  # a3 = a2: the north pole on the curve (closed form)
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        sphtroch.boundaries(2, 4.0)
+    assert e.value.field == "a2"
+
+
+def test_boundary_loci_equal_the_cli_csv():
+    rows = run_cli("boundaries", "--n", "3", "--a2", "0.2:3", "--steps", "40").splitlines()
+    assert rows[1] == "locus,kind,m,label,a2,a3,b"
+    loci = sphtroch.boundary_loci(3, (0.2, 3.0), steps=40, threads=1)
+    mine = [f"{i},{l['kind']},{'' if l['m'] is None else l['m']},{'' if l['label'] is None else l['label']},"
+            f"{a2!r},{a3!r},{b!r}" for i, l in enumerate(loci) for a2, a3, b in zip(l["a2"], l["a3"], l["b"])]
+    parsed = [r.split(",") for r in rows[2:]]
+    assert len(mine) == len(parsed)
+    for got, want in zip(mine, parsed):
+        g = got.split(",")
+        assert g[:4] == want[:4] and [float(x) for x in g[4:]] == [float(x) for x in want[4:]]
