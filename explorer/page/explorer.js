@@ -421,7 +421,7 @@
   // The boundary curves over the cells: a sample step apart in a2, a polyline runs on while its
   // points are consecutive samples (a locus resolved to the step: no line across a gap).
   function drawLoci(ctx, canvas) {
-    const step = Math.PI / 64 * 1.5;  // map_worker.js: LOCUS_STEPS samples across (0, pi)
+    const step = Math.PI / 180 * 1.5;  // map_worker.js: LOCUS_STEPS samples across (0, pi)
     ctx.lineWidth = 1;
     for (const locus of loci) {
       ctx.strokeStyle = locus.kind === 'tangency' ? 'rgba(0,0,0,0.55)' : 'rgba(29,111,216,0.8)';

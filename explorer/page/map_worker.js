@@ -3,8 +3,8 @@
 // fine, each posted as {size, counts, max, done, seconds} (counts row-major from the lowest a3;
 // -1: no train there), then the boundary curves as {loci, seconds}; or {error}.
 'use strict';
-// a2 samples of the boundary curves: ~50 ms each here (long double is software quad in wasm).
-const LOCUS_STEPS = 64;
+// a2 samples of the boundary curves: ~10 ms each here (boundary_events.hpp: the scan in double).
+const LOCUS_STEPS = 180;
 self.onmessage = (ev) => {
   const { n, teeth, sizes } = ev.data;
   createSphtroch().then((lib) => {

@@ -1,6 +1,6 @@
 // node wasm_dump.js SPHTROCH_JS < trains.json > results.json — what the explorer's WebAssembly
 // module computes for each train {a2, a3, n, phase} (the CLI's texts): the root census counts,
-// class, node points, and trace(samples) points; or {error}. Used by test_wasm_vs_native.py.
+// class, node points, trace(samples) points and the boundary events at its a2; or {error}. Used by test_wasm_vs_native.py.
 'use strict';
 const fs = require('fs');
 const create = require(require('path').resolve(process.argv[2]));
@@ -11,7 +11,9 @@ create().then((lib) => {
     if (c.error) return { error: c.error };
     const tr = lib.trace(t.a2, t.a3, t.n, t.phase, '', t.samples);
     if (tr.error) return { error: tr.error };
+    const ev = lib.events(t.a2, t.n, '');
     return {
+      events: ev.error ? null : ev.events.map((e) => ({ a3: e.a3, kind: e.kind, below: e.nodesBelow, above: e.nodesAbove })),
       class: c.class, nodes: c.nodes, crossings: c.crossings, tangencies: c.tangencies, cusps: c.cusps,
       certified: c.certified, nodePositions: Array.from(c.nodePositions), points: Array.from(tr.points),
       params: Array.from(tr.params),

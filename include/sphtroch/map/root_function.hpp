@@ -123,6 +123,16 @@ class RootFunction {
     return label == 0 ? std::min(r1, r2) : std::max(r1, r2);
   }
 
+  /// How far the quadratic of stationary_cos is from a double root, relative: disc / (B^2 + |4AC|)
+  /// (0 when A = 0). Below a few ulp the roots' existence and values are not resolved in Real.
+  Real stationary_margin() const {
+    const Real A = -q_ * sa2_ * sa2_ * sa3_ * sa3_;
+    const Real B = sa2_ * sa3_ * ca3_ * (2 * q_ * ca2_ + p_);
+    const Real C = q_ * (sa2_ * sa2_ + ca2_ * ca2_ * sa3_ * sa3_) + p_ * sa3_ * sa3_ * ca2_;
+    const Real scale = B * B + std::abs(4 * A * C);
+    return A == 0 || !(scale > 0) ? Real(0) : std::abs(B * B - 4 * A * C) / scale;
+  }
+
   /// The stationary point b* in (0, pi) of this label, or nothing.
   std::optional<Real> stationary(int label) const {
     const auto c = stationary_cos(label);
