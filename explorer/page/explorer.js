@@ -134,11 +134,41 @@
     set('pitch-cone', fmt(r.planetCone) + ' rad (' + (r.planetCone * 180 / Math.PI).toFixed(4) + '°)');
     set('nearest-event', nearestEventText());
     set('command', commandLine());
+    renderNodeList();
     for (const c of r.criteria) {
       const li = document.createElement('li');
       li.textContent = c.equation + ': ' + c.statement + ' — ' + c.status + ', margins ' + fmt(c.lowerMargin) +
         ' / ' + fmt(c.upperMargin) + (c.prediction ? ' (' + c.prediction + ')' : '');
       $('criteria').appendChild(li);
+    }
+  }
+
+  // The node points (ids N1.., in the root census's order: by position, not matched to the ids of
+  // `sphtroch plot`) and the cusps
+  // (C1..); at most NODE_ROWS rows, the count says how many there are.
+  const NODE_ROWS = 300;
+
+  function renderNodeList() {
+    const body = $('node-list').querySelector('tbody');
+    body.textContent = '';
+    const rows = [];
+    result.nodePoints.forEach((node, i) => rows.push(['N' + (i + 1), node.kind, node.x, node.y, node.z]));
+    const cp = result.cuspPositions;
+    for (let i = 0; i < cp.length / 3; ++i) rows.push(['C' + (i + 1), 'cusp', cp[3 * i], cp[3 * i + 1], cp[3 * i + 2]]);
+    byTestId('node-list-count').textContent = String(rows.length);
+    for (const row of rows.slice(0, NODE_ROWS)) {
+      const tr = document.createElement('tr');
+      for (const v of row) {
+        const td = document.createElement('td');
+        td.textContent = typeof v === 'number' ? v.toFixed(9) : v;
+        tr.appendChild(td);
+      }
+      body.appendChild(tr);
+    }
+    if (rows.length > NODE_ROWS) {
+      const tr = document.createElement('tr');
+      tr.innerHTML = '<td colspan="5">… ' + (rows.length - NODE_ROWS) + ' more: export the scene and run it for all</td>';
+      body.appendChild(tr);
     }
   }
 
@@ -493,7 +523,18 @@
       download('trace.csv', lines.join('\n') + '\n', 'text/csv');
     });
     $('export-svg').addEventListener('click', () => download('sphere.svg', sphereSvg(), 'image/svg+xml'));
+    $('export-scene').addEventListener('click', () => download('explorer_scene.json', sceneJson(), 'application/json'));
     $('copy-command').addEventListener('click', () => navigator.clipboard && navigator.clipboard.writeText(commandLine()));
+  }
+
+  // The current train as a scene for `sphtroch scene FILE.json` (docs/cli.md): its texts as typed
+  // (n as p/q when given as teeth), the trace, nodes, classification and plot as files.
+  function sceneJson() {
+    const s = state;
+    const train = { name: 'explorer', a2: s.a2, a3: s.a3, n: s.teeth !== '' && result ? result.n : s.n, phase: s.phase,
+      effects: { trace: 'explorer_trace.csv', nodes: 'explorer_nodes.csv', classification: 'explorer.json',
+        plot: 'explorer.svg' } };
+    return JSON.stringify({ description: 'from the sphtroch explorer: ' + window.location.hash, trains: [train] }, null, 1) + '\n';
   }
 
   function download(name, text, type) {

@@ -5,6 +5,7 @@
 //    within 1e-9 of `sphtroch nodes`, the hash round-trips;
 //  - bad input: the CLI's one-line message and no number left from before;
 //  - a drag on the a2 slider and a click on the design map move the state as they should;
+//  - the exported scene JSON runs with `sphtroch scene` and gives the page's counts;
 //  - no console error; a screenshot where the sphere and the map are drawn (not blank).
 // Exit status 0 when every check holds; each failure is printed.
 'use strict';
@@ -158,6 +159,25 @@ async function checkSliderAndMap(page) {
   check(Number(got.nodes) === want.counts.nodes, 'map click: nodes ' + got.nodes + ' != CLI ' + want.counts.nodes);
 }
 
+// The exported scene runs with the tool, and its classification has the page's counts.
+async function checkSceneExport(page) {
+  const fs = require('fs');
+  await open(page, hashOf({ a2: '60deg', a3: 'pi/2', n: '', teeth: '39:15', phase: '0.25' }));
+  const got = await readPage(page);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-testid="export-scene"]')]);
+  const dir = fs.mkdtempSync(path.join(outDir, 'scene-'));
+  const file = path.join(dir, 'scene.json');
+  await download.saveAs(file);
+  const run = cli(['scene', file, '--output-dir', dir]);
+  check(run.status === 0, 'scene export: sphtroch scene exited ' + run.status + ': ' + run.stderr);
+  if (run.status !== 0) return;
+  const c = JSON.parse(fs.readFileSync(path.join(dir, 'explorer.json'), 'utf8'));
+  check(c.counts.nodes === Number(got.nodes) && c.counts.cusps === Number(got.cusps),
+    'scene export: the scene counts ' + JSON.stringify(c.counts) + ' differ from the page (' + got.nodes + ' nodes)');
+  const listed = await page.textContent('[data-testid="node-list-count"]');
+  check(Number(listed) === Number(got.nodes) + Number(got.cusps), 'node list: ' + listed + ' rows for ' + got.nodes + ' nodes');
+}
+
 async function checkDrawn(page) {
   await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
   await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 60000 });
@@ -190,12 +210,13 @@ async function checkDrawn(page) {
     for (const s of randomStates(20)) await checkState(page, s);
     await checkBadInput(page);
     await checkSliderAndMap(page);
+    await checkSceneExport(page);
     await checkDrawn(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, drawn' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });
