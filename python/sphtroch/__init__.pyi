@@ -22,7 +22,8 @@ AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" t
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
     even after escalation (docs/cli.md: Certified counts; the tool's exit status 3). Raised by
-    GearTrain.nodes(); classify() returns its dict with "certified": False instead."""
+    GearTrain.nodes(); classify() returns its dict with "certified": False instead.
+    Attributes: .nodes (the polyline census's uncertified list), .polyline_nodes, .root_nodes."""
 
     nodes: List[Dict[str, Any]]
     """The polyline census's node list, uncertified."""
@@ -32,7 +33,8 @@ class UncertifiedResult(RuntimeError):
     """The root-count census's node count."""
 
 class InvalidInput(ValueError):
-    """Bad input. str(e) reads "<field> = <value>: <problem>; valid: <valid>", on one line
+    """Bad input: .field (the argument), .value (as given), .valid (the valid range), .problem.
+    str(e) reads "<field> = <value>: <problem>; valid: <valid>", on one line
     (newlines and other control characters escaped as the tool does: \\n, \\t, \\xHH)."""
 
     field: str
@@ -66,9 +68,11 @@ class GearTrain:
     def ratio(self) -> str:
         """The gear ratio in lowest terms, "p/q" or "p"."""
     @property
-    def p(self) -> int: ...
+    def p(self) -> int:
+        """n = p/q in lowest terms: the numerator (it carries the sign of n)."""
     @property
-    def q(self) -> int: ...
+    def q(self) -> int:
+        """n = p/q in lowest terms: the denominator (>= 1)."""
     @property
     def phase(self) -> float:
         """The phase reduced to [-pi, pi], radians."""

@@ -1,12 +1,15 @@
 // python/src/arguments.cpp — Python values to C++ values (bindings.hpp), each refusal an
 // InvalidInput naming the argument with its valid range.
 #include "bindings.hpp"
+#include "docstrings.hpp"  // generated: python/gen_docstrings.py
 
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/parse.hpp"
 
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace sphtroch::python {
 
@@ -137,5 +140,11 @@ Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
 
 /// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
 py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+const char* doc(const char* name) {
+  for (const stub_docs::Entry& e : stub_docs::kEntries)
+    if (std::string_view(e.name) == name) return e.text;
+  throw std::logic_error(std::string("sphtroch: no docstring for ") + name + " in python/sphtroch/__init__.pyi");
+}
 
 }  // namespace sphtroch::python

@@ -100,7 +100,7 @@ py::dict crossings(py::handle points, py::handle closed_flag, py::handle pairs_f
 
 void bind_crossings(py::module_& m) {
   m.def("crossings", &crossings, py::arg("points"), py::arg("closed") = true, py::kw_only(), py::arg("pairs") = false,
-        py::arg("max_crossings") = sphtroch::kDefaultMaxCrossings, py::arg("max_work") = sphtroch::kDefaultMaxCrossingWork);
+        py::arg("max_crossings") = sphtroch::kDefaultMaxCrossings, py::arg("max_work") = sphtroch::kDefaultMaxCrossingWork, doc("crossings"));
 }
 
 }  // namespace sphtroch::python

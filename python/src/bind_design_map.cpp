@@ -163,15 +163,15 @@ py::list boundary_loci_list(py::handle n, py::handle a2, py::handle steps, py::h
 }  // namespace
 
 void bind_design_map(py::module_& m) {
-  m.def("boundaries", &boundaries, py::arg("n"), py::arg("a2"));
+  m.def("boundaries", &boundaries, py::arg("n"), py::arg("a2"), doc("boundaries"));
   m.def("boundary_loci", &boundary_loci_list, py::arg("n"), py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
-        py::arg("steps") = 720, py::arg("threads") = py::none());
+        py::arg("steps") = 720, py::arg("threads") = py::none(), doc("boundary_loci"));
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
         py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
         py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),
-        py::arg("literal") = false);
+        py::arg("literal") = false, doc("atlas"));
   m.def("classify_a3_range", &classify_a3_range_list, py::arg("a2"), py::arg("n"), py::arg("a3"),
-        py::arg("count") = 721, py::arg("literal") = false);
+        py::arg("count") = 721, py::arg("literal") = false, doc("classify_a3_range"));
 }
 
 }  // namespace sphtroch::python

@@ -104,38 +104,38 @@ std::string train_repr(const Train& t) {
 }  // namespace
 
 void bind_gear_train(py::module_& m) {
-  py::class_<Train>(m, "GearTrain")
+  py::class_<Train>(m, "GearTrain", doc("GearTrain"))
       .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),
            py::arg("a2"), py::arg("a3"), py::arg("n"), py::arg("phase") = 0.0)
-      .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); })
-      .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); })
-      .def_property_readonly("n", [](const Train& t) { return t.train.n(); })
-      .def_property_readonly("ratio", [](const Train& t) { return t.train.ratio().str(); })
-      .def_property_readonly("p", [](const Train& t) { return t.train.ratio().p(); })
-      .def_property_readonly("q", [](const Train& t) { return t.train.ratio().q(); })
-      .def_property_readonly("phase", [](const Train& t) { return t.train.phase(); })
-      .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); })
-      .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); })
-      .def_property_readonly("period", [](const Train& t) { return t.train.period(); })
+      .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); }, doc("GearTrain.a2"))
+      .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); }, doc("GearTrain.a3"))
+      .def_property_readonly("n", [](const Train& t) { return t.train.n(); }, doc("GearTrain.n"))
+      .def_property_readonly("ratio", [](const Train& t) { return t.train.ratio().str(); }, doc("GearTrain.ratio"))
+      .def_property_readonly("p", [](const Train& t) { return t.train.ratio().p(); }, doc("GearTrain.p"))
+      .def_property_readonly("q", [](const Train& t) { return t.train.ratio().q(); }, doc("GearTrain.q"))
+      .def_property_readonly("phase", [](const Train& t) { return t.train.phase(); }, doc("GearTrain.phase"))
+      .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); }, doc("GearTrain.planet_cone"))
+      .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); }, doc("GearTrain.sun_cone"))
+      .def_property_readonly("period", [](const Train& t) { return t.train.period(); }, doc("GearTrain.period"))
       .def_property_readonly("texts", [](const Train& t) {
         return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase);
-      })
+      }, doc("GearTrain.texts"))
       .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
-           py::arg("velocity") = false)
-      .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+           py::arg("velocity") = false, doc("GearTrain.trace"))
+      .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.classify"))
       .def("nodes", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
-           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.nodes"))
       .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
-           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none())
-      .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false)
+           py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.cusps"))
+      .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
       .def("__repr__", &train_repr)
       // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:
       // NotImplemented (so train == 5 is False, and the other operand may decide).
       .def("__eq__", [](const Train& a, py::handle other) -> py::object {
         if (!py::isinstance<Train>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
         return py::bool_(value_key(a).equal(value_key(other.cast<const Train&>())));
-      })
-      .def("__hash__", [](const Train& t) { return py::hash(value_key(t)); })
+      }, doc("GearTrain.__eq__"))
+      .def("__hash__", [](const Train& t) { return py::hash(value_key(t)); }, doc("GearTrain.__hash__"))
       // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
       // texts: a tampered pickle is validated like any other input (InvalidInput).
       .def("__reduce__", [](py::object self) {

@@ -178,13 +178,13 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
 }  // namespace
 
 void bind_synthesis(py::module_& m) {
-  m.def("identify", &identify_dict, py::arg("t"), py::arg("points"));
+  m.def("identify", &identify_dict, py::arg("t"), py::arg("points"), doc("identify"));
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
-        py::arg("ratios") = py::none(), py::arg("teeth") = py::none());
+        py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), doc("synth_points"));
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = py::none());
+        py::arg("node_tolerance") = py::none(), doc("fit"));
 }
 
 }  // namespace sphtroch::python

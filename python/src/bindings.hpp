@@ -31,6 +31,13 @@ namespace sphtroch::python {
 
 namespace py = pybind11;
 
+// --- docstrings (arguments.cpp) -------------------------------------------------------------
+/// The docstring the stub (python/sphtroch/__init__.pyi, the one source) gives `name` ("atlas",
+/// "GearTrain", "GearTrain.trace"), from the header python/gen_docstrings.py generates at build
+/// time. Throws std::logic_error for a name the stub does not document (the import fails: the
+/// stub and the bindings cannot drift apart).
+const char* doc(const char* name);
+
 // --- errors.cpp ---------------------------------------------------------------------------
 /// sphtroch.InvalidInput (a ValueError) and sphtroch.UncertifiedResult (a RuntimeError), with the
 /// translator that raises the first for the library's InvalidInput.

@@ -34,15 +34,13 @@ void translate_invalid_input(std::exception_ptr p) {
 void bind_errors(py::module_& m) {
   static py::exception<sphtroch::InvalidInput> invalid_input(m, "InvalidInput", PyExc_ValueError);
   g_invalid_input = invalid_input;
-  invalid_input.attr("__doc__") = "Bad input: .field (the argument), .value (as given), .valid (the valid range), .problem.";
+  invalid_input.attr("__doc__") = doc("InvalidInput");
   invalid_input.attr("__module__") = "sphtroch";
   for (const char* a : {"field", "value", "problem", "valid"}) invalid_input.attr(a) = py::none();
   py::register_exception_translator(&translate_invalid_input);
   static py::exception<UncertifiedMarker> uncertified(m, "UncertifiedResult", PyExc_RuntimeError);
   g_uncertified = uncertified;
-  uncertified.attr("__doc__") =
-      "A node count the two censuses do not agree on (docs/cli.md: Certified counts): .nodes (the polyline census's "
-      "uncertified list), .polyline_nodes, .root_nodes.";
+  uncertified.attr("__doc__") = doc("UncertifiedResult");
   uncertified.attr("__module__") = "sphtroch";
 }
 

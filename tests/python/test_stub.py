@@ -1,7 +1,9 @@
 """The typing stub (__init__.pyi, next to the module) names exactly what the module defines, and
 py.typed marks the package as typed."""
 import ast
+import inspect
 import os
+import pydoc
 
 import sphtroch
 
@@ -35,3 +37,25 @@ def test_stub_documents_every_function():
             if ast.get_docstring(node):
                 documented.add(node.name)  # an overloaded function: on one of its overloads
     assert seen == documented, seen - documented
+
+
+def test_every_stub_docstring_is_the_runtime_docstring():
+    # One source (issue 21): python/gen_docstrings.py compiles the stub's docstrings into the module,
+    # so help() and Jupyter's ? show them; pybind11 puts the signature line(s) first.
+    tree = stub_tree()
+    checked = 0
+    for node in tree.body:
+        if not isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            continue
+        obj = getattr(sphtroch, node.name)
+        text = ast.get_docstring(node)
+        if text:
+            assert inspect.cleandoc(text) in (obj.__doc__ or ""), node.name
+            checked += 1
+        for member in getattr(node, "body", []):
+            text = isinstance(member, ast.FunctionDef) and ast.get_docstring(member)
+            if text:
+                assert inspect.cleandoc(text) in (getattr(obj, member.name).__doc__ or ""), node.name + "." + member.name
+                checked += 1
+    assert checked >= 29  # 10 functions, 3 classes, 16 members of GearTrain (when this was written)
+    assert "trajectory P(theta2)" in pydoc.render_doc(sphtroch.GearTrain.trace)
