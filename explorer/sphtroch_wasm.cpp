@@ -200,7 +200,8 @@ val events(const std::string& a2, const std::string& n, const std::string& teeth
   });
 }
 
-/// The node count of one map cell, or -1 where the ratio has no train (e.g. n = -1 at a2 = pi/2).
+/// The node count of one map cell (-1 if the library ever refused a cell: none is refused today,
+/// every cell centre lies inside (0, pi)^2; the page greys such a cell).
 std::int32_t cell_count(double a2, double a3, const Ratio& ratio) {
   try {
     return static_cast<std::int32_t>(sphtroch::node_count_off_events(a2, a3, ratio));

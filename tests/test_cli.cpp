@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -891,4 +892,95 @@ TEST_CASE("cli: D1 reproducers: 52/35 near the mirror cone prints the certified 
   CHECK(j["certified"] == true);
   CHECK(j["counts"]["nodes"] == 832);  // the root census's count (16 roots x 52), found independently in the issue
   for (const auto& n : j["nodes"]) CHECK(n["branches"].get<int>() >= 2);
+}
+
+namespace {
+
+/// The numeric attribute `name` of the SVG element starting at `from` ("cx", "x", ...).
+double svg_attribute(const std::string& svg, std::size_t from, const std::string& name) {
+  const auto at = svg.find(" " + name + "=\"", from);
+  REQUIRE(at != std::string::npos);
+  return std::stod(svg.substr(at + name.size() + 3));
+}
+
+/// Every label of a mark in a plot: its text, the baseline start (x, y), anchor and font size.
+struct SvgLabel {
+  std::string text;
+  double x, y, font;
+  bool anchor_end;
+};
+
+std::vector<SvgLabel> plot_labels(const std::string& svg) {
+  std::vector<SvgLabel> out;
+  for (auto at = svg.find("<text"); at != std::string::npos; at = svg.find("<text", at + 1)) {
+    const auto close = svg.find('>', at), end = svg.find("</text>", at);
+    const std::string text = svg.substr(close + 1, end - close - 1);
+    const std::string tag = svg.substr(at, close - at);
+    if (text.size() < 2 || (text[0] != 'N' && text[0] != 'C') || !std::isdigit(static_cast<unsigned char>(text[1])) ||
+        contains(tag, "stroke:#ffffff"))  // the halo copy of a label
+      continue;
+    const auto font_at = tag.find("font-size:");
+    out.push_back({text, svg_attribute(svg, at, "x"), svg_attribute(svg, at, "y"), std::stod(tag.substr(font_at + 10)),
+                   contains(tag, "text-anchor=\"end\"") || contains(tag, "text-anchor:end")});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("cli: plot --view top looks along the sun axis and --labels auto leaves no two labels overlapping",
+          "[cli][plot][svg]") {
+  TempDir dir;
+  // --view top: +X right, +Y up, so node N1 (the first row of `sphtroch nodes`) is drawn at
+  // centre + R (x, -y) with (x, y) its position (centre and R: the sphere's disc, the first circle).
+  const std::string train = "--a2 0.7 --a3 2.5 --n 13/5";
+  const Result top = run("plot " + train + " --view top", dir);
+  REQUIRE(top.status == 0);
+  const std::string& svg = top.out;
+  const auto disc = svg.find("<circle");
+  const double cx = svg_attribute(svg, disc, "cx"), cy = svg_attribute(svg, disc, "cy"), r = svg_attribute(svg, disc, "r");
+  const Result nodes = run("nodes " + train, dir);
+  REQUIRE(nodes.status == 0);
+  std::istringstream rows(nodes.out);
+  std::string header, row;
+  std::getline(rows, header);
+  std::getline(rows, row);
+  std::vector<double> xyz;
+  std::istringstream fields(row.substr(row.find(',') + 1));
+  for (std::string f; xyz.size() < 3 && std::getline(fields, f, ',');) xyz.push_back(std::stod(f));
+  const auto n1 = svg.find("<circle", svg.find("id=\"nodes\""));
+  CHECK(std::fabs(svg_attribute(svg, n1, "cx") - (cx + r * xyz[0])) < 0.03);  // 2 decimals printed
+  CHECK(std::fabs(svg_attribute(svg, n1, "cy") - (cy - r * xyz[1])) < 0.03);
+  // --labels auto (the default): no two label boxes overlap, with each glyph taken 0.6 em wide and
+  // the box 0.7 em high (a lower bound on sans-serif bold; the browser test measures real glyphs).
+  for (const std::string view : {"", " --view top", " --view 30deg,10deg"}) {
+    const Result r2 = run("plot " + train + view, dir);
+    REQUIRE(r2.status == 0);
+    const std::vector<SvgLabel> labels = plot_labels(r2.out);
+    INFO("view" << view << ": " << labels.size() << " labels");
+    CHECK(labels.size() >= 40);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      for (std::size_t j = i + 1; j < labels.size(); ++j) {
+        auto box = [](const SvgLabel& l) {
+          const double w = 0.6 * l.font * static_cast<double>(l.text.size());
+          return std::array<double, 4>{l.anchor_end ? l.x - w : l.x, l.y - 0.7 * l.font, w, 0.7 * l.font};
+        };
+        const auto a = box(labels[i]), b = box(labels[j]);
+        const bool overlap = a[0] < b[0] + b[2] && b[0] < a[0] + a[2] && a[1] < b[1] + b[3] && b[1] < a[1] + a[3];
+        if (overlap) FAIL_CHECK(labels[i].text << " overlaps " << labels[j].text);
+      }
+  }
+  // --labels numbers labels all 169 nodes; none labels none; both say nothing about skipping.
+  CHECK(plot_labels(run("plot " + train + " --labels numbers", dir).out).size() == 169);
+  const Result none = run("plot " + train + " --labels none", dir);
+  CHECK(plot_labels(none.out).empty());
+  CHECK(contains(top.out, " of 169 labels"));
+  CHECK_FALSE(contains(none.out, " of 169 labels"));
+  // Bad values: one line naming the option.
+  for (const std::string bad : {"--view up", "--view 1,2", "--labels most", "--size 10"}) {
+    const Result b = run("plot " + train + " " + bad, dir);
+    CHECK(b.status == 2);
+    CHECK(b.out.empty());
+    CHECK(contains(b.err, bad.substr(0, bad.find(' ')) + " = "));
+  }
 }

@@ -24,11 +24,13 @@
     const s = Object.assign({}, DEFAULT_STATE);
     const hash = window.location.hash.replace(/^#/, '');
     if (hash === '') return s;
+    // A malformed escape ("50%") is kept as typed: the parser then names it in the error line.
+    const decode = (t) => { try { return decodeURIComponent(t); } catch (e) { return t; } };
     for (const part of hash.split('&')) {
       const eq = part.indexOf('=');
       if (eq < 0) continue;
-      const key = decodeURIComponent(part.slice(0, eq));
-      if (FIELDS.includes(key)) s[key] = decodeURIComponent(part.slice(eq + 1));
+      const key = decode(part.slice(0, eq));
+      if (FIELDS.includes(key)) s[key] = decode(part.slice(eq + 1));
     }
     if (s.teeth !== '' && !/[#&]n=/.test('&' + hash)) s.n = ''; // teeth given instead of n
     return s;
@@ -120,6 +122,8 @@
     for (const id of ['class', 'nodes', 'crossings', 'tangencies', 'cusps', 'certified', 'ratio', 'period',
       'z-range', 'pitch-cone', 'nearest-event', 'command']) set(id, '');
     $('criteria').textContent = '';
+    $('node-list').querySelector('tbody').textContent = '';
+    byTestId('node-list-count').textContent = '0';
     if (!r) return;
     set('class', r.class);
     set('nodes', String(r.nodes));
@@ -210,9 +214,8 @@
     const x = (a3) => left + (right - left) * a3 / Math.PI;
     svg.appendChild(svgElement('line', { x1: left, y1: 50, x2: right, y2: 50, class: 'axis' }));
     const cuts = [0].concat(ruler.events.map((e) => e.a3), [Math.PI]);
-    for (let i = 0; i + 1 < cuts.length; ++i) {
+    for (let i = 0; i + 1 < cuts.length && ruler.events.length > 0; ++i) {
       const count = i < ruler.events.length ? ruler.events[i].nodesBelow : ruler.events[i - 1].nodesAbove;
-      if (ruler.events.length === 0) break;
       const mid = (x(cuts[i]) + x(cuts[i + 1])) / 2;
       if (x(cuts[i + 1]) - x(cuts[i]) > 18) svg.appendChild(svgElement('text', { x: mid, y: 42, class: 'count' }, String(count)));
     }

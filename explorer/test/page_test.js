@@ -126,9 +126,16 @@ async function checkBadInput(page) {
     const got = await readPage(page);
     const want = cli(['classify', ...args]);
     check(want.status === 2 && got.error === want.stderr, 'bad ' + field + ': page "' + got.error + '" != CLI "' + want.stderr + '"');
-    check(got.nodes === '' && got.class === '' && got.events.length === 0 && got.nodePoints.length === 0,
-      'bad ' + field + ': a number from before is still shown');
+    const listed = await page.textContent('[data-testid="node-list-count"]');
+    const rows = await page.locator('[data-testid="node-list"] tbody tr').count();
+    check(got.nodes === '' && got.class === '' && got.events.length === 0 && got.nodePoints.length === 0 &&
+      listed === '0' && rows === 0, 'bad ' + field + ': a number from before is still shown');
   }
+  // A malformed escape in the hash ("50%"): the page still loads and names the text.
+  await open(page, '#a2=pi/3&a3=50%&n=2&phase=0');
+  const odd = await readPage(page);
+  const want = cli(['classify', '--a2', 'pi/3', '--a3', '50%', '--n', '2', '--phase', '0']);
+  check(odd.error === want.stderr && odd.nodes === '', 'hash "a3=50%": page "' + odd.error + '" != CLI "' + want.stderr + '"');
 }
 
 async function checkSliderAndMap(page) {

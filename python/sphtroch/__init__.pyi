@@ -124,9 +124,9 @@ class GearTrain:
         agrees_with_report, node_points (the same node dicts as classify()["nodes"]: position,
         longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs)."""
     def __eq__(self, other: object) -> bool:
-        """Equal trains have the same doubles a2, a3, reduced phase, the same n = p/q, and a3 given
-        the same way (a cone reference such as "ap" and its offset): GearTrain("60deg", 1.2, "13/5")
-        == GearTrain("pi/3", 1.2, "13/5"). Texts are not compared."""
+        """Equal trains have the same doubles a2, a3, reduced phase (in [-pi, pi], -pi taken as pi),
+        the same n = p/q, and a3 given the same way (a cone reference such as "ap" and its offset):
+        GearTrain("60deg", 1.2, "13/5") == GearTrain("pi/3", 1.2, "13/5"). Texts are not compared."""
     def __hash__(self) -> int:
         """Consistent with ==: trains can key a dict or a set (memoising a sweep)."""
     def __reduce__(self) -> Any: ...

@@ -21,10 +21,13 @@ namespace {
 /// What makes two trains the same train: the doubles a2, a3, the reduced phase, n = p/q, and how a3
 /// is given (a reference such as the pitch cone and the offset from it: "ap" stays on the cone
 /// whatever a2's rounding, the double it names does not). Texts that read as the same values
-/// ("60deg", "pi/3") give equal keys; -0.0 and 0.0 hash alike (Python floats).
+/// ("60deg", "pi/3") give equal keys; -0.0 and 0.0 hash alike (Python floats). The phase is the
+/// reduced double in [-pi, pi] with -pi taken as pi (one angle); phases that differ by a rounding
+/// (0 and the double 2pi, which reduces to -2.4e-16) are different trains.
 py::tuple value_key(const Train& t) {
   const GearTrain& g = t.train;
-  return py::make_tuple(g.a2(), g.a3(), g.phase(), g.ratio().p(), g.ratio().q(), static_cast<int>(g.a3_reference()),
+  const double pi = Constants<double>::pi();
+  return py::make_tuple(g.a2(), g.a3(), g.phase() == -pi ? pi : g.phase(), g.ratio().p(), g.ratio().q(), static_cast<int>(g.a3_reference()),
                         g.a3_offset(), g.a2_is_right_angle());
 }
 

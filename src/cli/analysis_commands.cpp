@@ -22,7 +22,39 @@ struct AnalysisOptions {
   std::string samples, output;
   bool literal = false;
   bool json = false;
+  std::string view, size, labels;  // plot only
 };
+
+/// plot's --view: top (along the sun axis Z, +X right, +Y up), front (from -Y, +X right, +Z up),
+/// side (from +X, +Y right, +Z up), or AZ,EL (angles: the viewer's azimuth about Z from +X and
+/// elevation); --size PX; --labels auto|numbers|none (svg_plot.hpp, contract 4).
+PlotOptions plot_options(const AnalysisOptions& o) {
+  const double pi = Constants<double>::pi();
+  PlotOptions p;
+  if (o.view == "top") {
+    p.azimuth = -pi / 2;
+    p.elevation = pi / 2;
+  } else if (o.view == "front") {
+    p.azimuth = -pi / 2;
+    p.elevation = 0;
+  } else if (o.view == "side") {
+    p.azimuth = 0;
+    p.elevation = 0;
+  } else if (!o.view.empty()) {
+    const auto comma = o.view.find(',');
+    const char* const forms = "top, front, side, or AZ,EL: azimuth (any angle) and elevation in [-pi/2, pi/2] (30deg,45deg)";
+    if (comma == std::string::npos) throw InvalidInput("view", o.view, "not a view", forms);
+    p.azimuth = parse_angle(o.view.substr(0, comma), "view");
+    p.elevation = parse_angle(o.view.substr(comma + 1), "view");
+    if (!(std::fabs(p.elevation) <= pi / 2)) throw InvalidInput("view", o.view, "elevation outside the valid range", forms);
+  }
+  if (!o.size.empty()) p.size_px = static_cast<double>(parse_count(o.size, "size", 64, 8192));
+  if (o.labels == "numbers") p.labels = PlotLabels::numbers;
+  else if (o.labels == "none") p.labels = PlotLabels::none;
+  else if (!o.labels.empty() && o.labels != "auto")
+    throw InvalidInput("labels", o.labels, "not a label mode", "auto (no overlaps), numbers (all), none");
+  return p;
+}
 
 void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
   o.train.add_to(cmd);
@@ -72,7 +104,9 @@ void run_plot(const AnalysisOptions& o) {
   check_svg_name(o.output, "output");
   const GearTrain train = o.train.train();
   const Analysis a(train, analysis_settings(o));
-  const std::string svg = plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate());
+  const PlotOptions options = plot_options(o);
+  const std::string svg =
+      plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate(), options);
   write_output(o.output, [&](std::ostream& out) { out << svg; });
   check_certified(a.certificate());
 }
@@ -149,7 +183,11 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("plot", "the curve on the sphere as SVG, nodes and cusps marked");
     add_analysis_options(*cmd, *o);
-    cmd->footer("Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
+    cmd->add_option("--view", o->view, "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
+    cmd->add_option("--size", o->size, "width and height of the picture in px (64 .. 8192; default 520)");
+    cmd->add_option("--labels", o->labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
+    cmd->footer("Labels N<i>, C<j> are the rows of `sphtroch nodes` (nodes, then cusps).\n"
+                "Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
     actions.emplace_back(cmd, [o] { run_plot(*o); });
   }
   {

@@ -176,6 +176,8 @@ def test_trains_are_equal_and_hash_alike_by_value():
     assert {a: "x"}[b] == "x"
     assert sphtroch.GearTrain("pi/3", 1.2, "26/10") == b  # n in lowest terms
     assert sphtroch.GearTrain("pi/3", 1.2, "13/5", 0.1) != b
+    assert sphtroch.GearTrain("pi/3", 1.2, "13/5", "pi") == sphtroch.GearTrain("pi/3", 1.2, "13/5", "-pi")  # one angle
+    assert hash(sphtroch.GearTrain("pi/3", 1.2, "13/5", "pi")) == hash(sphtroch.GearTrain("pi/3", 1.2, "13/5", "-pi"))
     assert sphtroch.GearTrain("pi/3", 1.2, "13/4") != b
     cone = sphtroch.GearTrain("pi/3", "ap", 2)
     assert cone == sphtroch.GearTrain("pi/3", "ap", 2) and hash(cone) == hash(sphtroch.GearTrain("pi/3", "ap", 2))

@@ -64,20 +64,24 @@ constexpr double kMinPlanetSpeed = 1e-3;
 constexpr double kPitchConeGuard = 0.01;
 
 /// The phase reduced to [-pi, pi]: unchanged when already there; for |p| < 2^30 p - 2 pi k with
-/// k = round(p / 2 pi), 2 pi in two parts and each step one fma (IEEE operations only, so every
-/// C library — glibc natively, musl in the WebAssembly build — gives the same double, within an
-/// ulp of the true p mod 2 pi); beyond, atan2(sin p, cos p) — the C library's sin and cos reduce
-/// any double exactly (Payne-Hanek), so the result is within a few ulp even for p = 1e300.
-/// Adding 2 pi k to the phase turns theta3 by 2 pi k and leaves every point of the curve where it
-/// was (Eq. 3, 4).
+/// k = round(p / 2 pi) (moved by one when the rounded quotient puts the result past -pi or pi),
+/// 2 pi in two parts and each step one fma: IEEE operations only, so every C library — glibc
+/// natively, musl in the WebAssembly build — gives the same double, within an ulp of the true
+/// p mod 2 pi or, next to a multiple of 2 pi, within 1e-23 rad (the two parts' own error times k);
+/// beyond 2^30, atan2(sin p, cos p) — the C library's sin and cos reduce any double exactly
+/// (Payne-Hanek), so the result is within a few ulp even for p = 1e300. Adding 2 pi k to the
+/// phase turns theta3 by 2 pi k and leaves every point of the curve where it was (Eq. 3, 4).
 inline double reduce_phase(double phase) {
   const double pi = Constants<double>::pi();
   if (phase >= -pi && phase <= pi) return phase;
   if (std::fabs(phase) < 0x1p30) {
     constexpr double two_pi_high = 6.283185307179586;        // 2 pi rounded to double
     constexpr double two_pi_low = 2.4492935982947064e-16;    // 2 pi - two_pi_high
-    const double k = std::nearbyint(phase / two_pi_high);
-    const double r = std::fma(-k, two_pi_low, std::fma(-k, two_pi_high, phase));
+    const auto reduced = [&](double k) { return std::fma(-k, two_pi_low, std::fma(-k, two_pi_high, phase)); };
+    double k = std::nearbyint(phase / two_pi_high);
+    double r = reduced(k);
+    if (r > pi) r = reduced(++k);   // the quotient rounded down across a half (an odd multiple of pi)
+    if (r < -pi) r = reduced(--k);  // ... or up
     return std::min(pi, std::max(-pi, r));
   }
   return std::atan2(std::sin(phase), std::cos(phase));

@@ -32,8 +32,14 @@
 //     the file size follows the picture, not the sample count (2e3 or 2e6 samples of a
 //     n = 13/5 curve: about 22 kB either way; 2e6 samples render in 0.7 s).
 //  4. Node i (0-based) is drawn as a ring at its projected position and labelled "N<i+1>";
-//     cusp j as a triangle labelled "C<j+1>"; markers on the back half are faded. Ring colour
-//     tells the node kind (crossing / tangency); a legend explains the marks.
+//     cusp j as a triangle labelled "C<j+1>" (the order of the node and cusp lists, i.e. the rows
+//     of `sphtroch nodes`); markers on the back half are faded. Ring colour tells the node kind
+//     (crossing / tangency); a legend explains the marks. PlotOptions::labels: `numbers` labels
+//     every mark; `none` none; `automatic` (the default) labels the marks in order, front half
+//     first, skipping a label whose box would overlap one already placed (boxes from the font
+//     size: 0.86 em for the letter, 0.72 em per digit, 1.2 em high, bounds on the boxes a browser
+//     lays sans-serif bold out in), so a dense curve stays readable; the legend then says how many
+//     labels it shows.
 //  5. The caption is escaped (svg.hpp), so any text is safe; the document is valid SVG 1.1.
 //  REQUIRES: trajectory points, node and cusp positions finite (assertion); options valid
 //  (InvalidInput naming the field otherwise).
@@ -72,6 +78,9 @@ inline std::size_t plot_sample_count(const GearTrain& train) {
   return std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
 }
 
+/// Which marks get their N<i>/C<j> label (contract 4).
+enum class PlotLabels { automatic, numbers, none };
+
 struct PlotOptions {
   /// Direction of the viewer, radians: azimuth about +Z from +X towards +Y, elevation above
   /// the XY plane. Default: looking from (1, 0.6, 0.5) normalised. Must be finite; elevation
@@ -85,6 +94,7 @@ struct PlotOptions {
   bool draw_axes = true;    // X, Y, Z from the centre, with labels
   bool draw_grid = true;    // equator and prime meridian, faint
   bool draw_legend = true;  // what the marks mean (only the kinds present)
+  PlotLabels labels = PlotLabels::automatic;  // contract 4
   /// Digits after the decimal point of every coordinate. Valid: [0, 6].
   int decimals = 2;
   /// Longest great-circle arc drawn as one straight segment, radians. Valid: (0, 0.5].
@@ -479,8 +489,17 @@ class SphereCanvas {
       const char* colour = node.kind == NodeKind::crossing ? kCrossingColour : kTangencyColour;
       (node.kind == NodeKind::crossing ? have_crossing_ : have_tangency_) = true;
       svg_.circle(s.x, s.y, L_.marker_radius, stroke(colour, 1.6) + (front ? "" : back_mark()));
-      marker_label(s, "N" + std::to_string(i + 1), colour, front);
     }
+    svg_.end_group();
+    svg_.begin_group("", "id=\"node-labels\"");
+    for (const bool front_half : {true, false})  // front labels first: they win a place
+      for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const ScreenPoint s = cam_.project(nodes[i].position);
+        const bool front = s.depth >= -kSilhouetteTolerance;
+        if (front != front_half) continue;
+        const char* colour = nodes[i].kind == NodeKind::crossing ? kCrossingColour : kTangencyColour;
+        marker_label(s, "N" + std::to_string(i + 1), colour, front);
+      }
     svg_.end_group();
   }
 
@@ -501,6 +520,11 @@ class SphereCanvas {
   /// Legend: one line along the top, only for what is drawn.
   void legend(bool with_cusps) {
     if (!opt_.draw_legend) return;
+    if (label_boxes_.size() < labels_wanted_ && opt_.labels == PlotLabels::automatic)
+      svg_.text(L_.width - 0.4 * L_.font_px, L_.caption_y - 1.3 * L_.font_px,
+                std::to_string(label_boxes_.size()) + " of " + std::to_string(labels_wanted_) +
+                    " labels (no overlaps; all: --labels numbers, the list: sphtroch nodes)",
+                "font-family:sans-serif;font-size:" + num(0.8 * L_.font_px) + "px;fill:#555555", "end");
     LegendPen pen{0.6 * L_.font_px, 1.1 * L_.font_px};
     const double r = 0.8 * L_.marker_radius;
     legend_line(pen, std::string("stroke:") + kCurveColour + ";stroke-width:" + num(1.7 * lw_), "front");
@@ -533,6 +557,14 @@ class SphereCanvas {
   std::string finish() { return svg_.finish(); }
 
  private:
+  /// A label's box in picture px (x, y: top left).
+  struct LabelBox {
+    double x, y, w, h;
+    bool overlaps(const LabelBox& o) const { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
+  };
+  std::vector<LabelBox> label_boxes_;
+  std::size_t labels_wanted_ = 0;
+
   /// Where the next legend item goes: x advances, y is the text baseline.
   struct LegendPen {
     double x, y;
@@ -563,8 +595,19 @@ class SphereCanvas {
     svg_.text(x, y, text, style + ";stroke:#ffffff;stroke-width:" + num(2.5 * lw_) + ";stroke-linejoin:round", anchor);
     svg_.text(x, y, text, style, anchor);
   }
+  /// A mark's label, unless PlotOptions::labels leaves it out (contract 4).
   void marker_label(const ScreenPoint& s, const std::string& text, const char* colour, bool front) {
+    ++labels_wanted_;
+    if (opt_.labels == PlotLabels::none) return;
     const LabelPlacement lp = label_position(L_, s);
+    // The box a browser lays the text out in (sans-serif bold, e.g. DejaVu Sans Bold: N 0.84 em,
+    // digits 0.70 em, ascent 0.93 em, descent 0.24 em), rounded up.
+    const double w = L_.font_px * (0.86 + 0.72 * static_cast<double>(text.size() - 1));
+    const LabelBox box{lp.anchor_end ? lp.x - w : lp.x, lp.y - 0.95 * L_.font_px, w, 1.2 * L_.font_px};
+    if (opt_.labels == PlotLabels::automatic &&
+        std::any_of(label_boxes_.begin(), label_boxes_.end(), [&](const LabelBox& b) { return b.overlaps(box); }))
+      return;
+    label_boxes_.push_back(box);
     label(lp.x, lp.y, text,
           "font-family:sans-serif;font-weight:bold;font-size:" + num(L_.font_px) + "px;fill:" + colour +
               (front ? "" : ";fill-opacity:0.6"),

@@ -73,10 +73,11 @@ inline nlohmann::json z_extremes_json(const ZExtremes& z);
 inline std::string plot_caption(const TrainText& text, const GearTrain& analysed, const std::vector<Node>& nodes,
                                 const std::vector<Cusp>& cusps, const CensusCertificate* certificate = nullptr);
 
-/// `plot`: the sphere picture of `trajectory` with nodes, cusps and plot_caption (svg_plot.hpp).
+/// `plot`: the sphere picture of `trajectory` with nodes, cusps and plot_caption (svg_plot.hpp),
+/// drawn with `options` (view, size, labels; its caption is replaced).
 inline std::string plot_svg(const TrainText& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
                             const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
-                            const CensusCertificate* certificate = nullptr);
+                            const CensusCertificate* certificate = nullptr, PlotOptions options = {});
 
 /// What `sphtroch crossings` reports about one search.
 struct CrossingsSummary {
@@ -420,8 +421,7 @@ inline std::string plot_caption(const TrainText& text, const GearTrain& analysed
 
 inline std::string plot_svg(const TrainText& text, const GearTrain& analysed, const Trajectory<double>& trajectory,
                             const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
-                            const CensusCertificate* certificate) {
-  PlotOptions options;
+                            const CensusCertificate* certificate, PlotOptions options) {
   options.caption = plot_caption(text, analysed, nodes, cusps, certificate);
   return render_sphere_svg(trajectory, nodes, cusps, options);
 }

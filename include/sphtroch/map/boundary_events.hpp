@@ -177,9 +177,13 @@ inline Sample sample(Real sa2, Real ca2, Real a3, const Ratio& n, int label) {
   return s;
 }
 
-/// Margin of the double scan: a decision taken in double must hold by this much (relative), about
-/// 1e5 times the double's error in g, b* and dG/da3 (a few ulp times (|p| + q), root_function.hpp).
+/// Margin of the double scan: a decision taken in double must hold by this much, relative to the
+/// size of the terms it is computed from (the discriminant: stationary_margin) or to |p| + q (G's
+/// distance to an integer, |dG/da3|). Where the double's error could approach it — C(b*) within
+/// kScanPoleDistance of a pole, where the azimuth az(b*) and so G and dG are ill-conditioned
+/// (error ~ eps / distance^2) — the sample is taken in Real whatever the margins say.
 constexpr double kScanMargin = 1e-9;
+constexpr double kScanPoleDistance = 1e-3;
 
 /// A grid sample for the scan, in double when every decision the scan takes on it — whether the
 /// stationary point exists (discriminant, cos b* inside (-1, 1)), the sign of dG, which integers
@@ -198,7 +202,10 @@ inline Sample scan_sample(double sa2, double ca2, Real a3, const Ratio& n, int l
   const bool clearly_absent = !c || *c < -1 - kScanMargin || *c > 1 + kScanMargin;
   if (clearly_absent && h.stationary_margin() > kScanMargin) return s;
   if (c && std::abs(*c) < 1 - kScanMargin && h.stationary_margin() > kScanMargin) {
-    const double b = std::acos(*c), G = h.g(b), dG = h.dg_da3(b);
+    const double b = std::acos(*c);
+    const Vector3<double> at = h.circle_point(b);
+    if (std::hypot(at.x(), at.y()) < kScanPoleDistance) return sample(sa2_r, ca2_r, a3, n, label);
+    const double G = h.g(b), dG = h.dg_da3(b);
     const double to_integer = std::abs(G - std::nearbyint(G));
     if (to_integer > kScanMargin * scale && std::abs(dG) > kScanMargin * scale) {
       s.ok = true;

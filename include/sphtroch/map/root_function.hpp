@@ -123,13 +123,17 @@ class RootFunction {
     return label == 0 ? std::min(r1, r2) : std::max(r1, r2);
   }
 
-  /// How far the quadratic of stationary_cos is from a double root, relative: disc / (B^2 + |4AC|)
-  /// (0 when A = 0). Below a few ulp the roots' existence and values are not resolved in Real.
+  /// How far the quadratic of stationary_cos is from a double root, relative to the size of its
+  /// terms before cancellation: |disc| / (Bm^2 + 4 |A| Cm), Bm and Cm the sums of the magnitudes
+  /// of the terms of B and C (0 when A = 0). B or C that cancel to rounding noise (e.g. a3 = pi/2
+  /// at cos a2 = -q/p) give a small margin, not a large one: the roots are then not resolved in Real.
   Real stationary_margin() const {
     const Real A = -q_ * sa2_ * sa2_ * sa3_ * sa3_;
     const Real B = sa2_ * sa3_ * ca3_ * (2 * q_ * ca2_ + p_);
     const Real C = q_ * (sa2_ * sa2_ + ca2_ * ca2_ * sa3_ * sa3_) + p_ * sa3_ * sa3_ * ca2_;
-    const Real scale = B * B + std::abs(4 * A * C);
+    const Real Bm = std::abs(sa2_ * sa3_ * ca3_) * (2 * q_ * std::abs(ca2_) + std::abs(p_));
+    const Real Cm = q_ * (sa2_ * sa2_ + ca2_ * ca2_ * sa3_ * sa3_) + std::abs(p_) * sa3_ * sa3_ * std::abs(ca2_);
+    const Real scale = Bm * Bm + 4 * std::abs(A) * Cm;
     return A == 0 || !(scale > 0) ? Real(0) : std::abs(B * B - 4 * A * C) / scale;
   }
 
