@@ -117,6 +117,16 @@ class GearTrain:
         criteria). Raises UncertifiedResult when the two censuses disagree after escalation."""
     def cusps(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
         """The "cusps" list of classify() (position, param, speed)."""
+    def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[int] = None,
+            labels: str = "auto", literal: bool = False, samples: Optional[int] = None) -> str:
+        """The curve on the sphere as SVG text, as `sphtroch plot` draws it (the certified census;
+        an uncertified count says so in the caption). view: "top" (along the sun axis), "front",
+        "side", "AZ,EL" or (az, el) angles (default: from (1, 0.6, 0.5)); size: 64 .. 8192 px
+        (default 520); labels: "auto" (no two labels overlap; the picture says how many it
+        shows), "numbers" (every N<i>, C<j>: the rows of nodes() then cusps()) or "none"."""
+    def _repr_svg_(self) -> str:
+        """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
+        stays readable)."""
     def classify_roots(self, *, literal: bool = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,

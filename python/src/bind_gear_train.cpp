@@ -6,6 +6,7 @@
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -66,6 +67,28 @@ py::object classify(const Train& self, py::handle literal_flag, py::handle sampl
     text = classification_json_text(self.text, self.train, literal, s);
   }
   return from_json(text);
+}
+
+/// svg(): `sphtroch plot` as SVG text. view: "top", "front", "side", "AZ,EL" or (az, el) angles.
+std::string svg(const Train& self, py::handle view, py::handle size, py::handle labels, py::handle literal_flag,
+                py::handle samples) {
+  PlotOptions options;
+  const char* const views = "top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
+  if (py::isinstance<py::tuple>(view) || py::isinstance<py::list>(view)) {
+    const py::sequence pair = py::reinterpret_borrow<py::sequence>(view);
+    if (pair.size() != 2) throw InvalidInput("view", repr_of(view), "not a view", views);
+    std::string ignored;
+    set_plot_view(options, number_text(angle_arg(pair[0], "view", ignored)) + "," +
+                               number_text(angle_arg(pair[1], "view", ignored)));
+  } else if (!view.is_none()) {
+    set_plot_view(options, text_arg(view, "view", views));
+  }
+  if (!size.is_none()) options.size_px = static_cast<double>(count_arg(size, "size", 64, 8192));
+  options.labels = parse_plot_labels(text_arg(labels, "labels", "auto, numbers, none"));
+  const bool literal = flag_arg(literal_flag, "literal");
+  const std::size_t s = census_samples_arg(samples);
+  py::gil_scoped_release release;
+  return plot_svg_text(self.text, self.train, literal, s, options);
 }
 
 /// nodes(): the certified node list, or UncertifiedResult carrying the uncertified list and both
@@ -130,6 +153,11 @@ void bind_gear_train(py::module_& m) {
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.nodes"))
       .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.cusps"))
+      .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(),
+           py::arg("labels") = "auto", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
+      .def("_repr_svg_", [](const Train& t) {
+        return svg(t, py::none(), py::none(), py::str("auto"), py::bool_(false), py::none());
+      }, doc("GearTrain._repr_svg_"))
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
       .def("__repr__", &train_repr)
       // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:

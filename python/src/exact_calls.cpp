@@ -31,6 +31,12 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
   return classification_json(text, a.classification()).dump();
 }
 
+std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool literal, std::size_t census_samples,
+                          const PlotOptions& options) {
+  const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch plot` runs it
+  return plot_svg(text, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate(), options);
+}
+
 std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch nodes` runs it

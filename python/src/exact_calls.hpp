@@ -8,6 +8,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/draw/svg_plot.hpp"  // PlotOptions (Eigen only)
 #include "sphtroch/synthesis/path_fit.hpp"  // FitOptions (Eigen only)
 
 #include <cstddef>
@@ -27,6 +28,11 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
 /// computes), and its certificate.
 std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
+
+/// `sphtroch plot` of `train` as SVG text (the certified census; an uncertified one says so in the
+/// caption, as the CLI's picture does), drawn with `options` (view, size, labels).
+std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool literal, std::size_t census_samples,
+                          const PlotOptions& options);
 
 /// Python's classify_roots(): the root-count classification (Reading{literal}) as
 /// root_classification_json (classification_output.hpp), JSON text.

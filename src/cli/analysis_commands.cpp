@@ -25,34 +25,12 @@ struct AnalysisOptions {
   std::string view, size, labels;  // plot only
 };
 
-/// plot's --view: top (along the sun axis Z, +X right, +Y up), front (from -Y, +X right, +Z up),
-/// side (from +X, +Y right, +Z up), or AZ,EL (angles: the viewer's azimuth about Z from +X and
-/// elevation); --size PX; --labels auto|numbers|none (svg_plot.hpp, contract 4).
+/// plot's --view, --size, --labels (svg_plot.hpp: set_plot_view, parse_plot_labels; contract 4).
 PlotOptions plot_options(const AnalysisOptions& o) {
-  const double pi = Constants<double>::pi();
   PlotOptions p;
-  if (o.view == "top") {
-    p.azimuth = -pi / 2;
-    p.elevation = pi / 2;
-  } else if (o.view == "front") {
-    p.azimuth = -pi / 2;
-    p.elevation = 0;
-  } else if (o.view == "side") {
-    p.azimuth = 0;
-    p.elevation = 0;
-  } else if (!o.view.empty()) {
-    const auto comma = o.view.find(',');
-    const char* const forms = "top, front, side, or AZ,EL: azimuth (any angle) and elevation in [-pi/2, pi/2] (30deg,45deg)";
-    if (comma == std::string::npos) throw InvalidInput("view", o.view, "not a view", forms);
-    p.azimuth = parse_angle(o.view.substr(0, comma), "view");
-    p.elevation = parse_angle(o.view.substr(comma + 1), "view");
-    if (!(std::fabs(p.elevation) <= pi / 2)) throw InvalidInput("view", o.view, "elevation outside the valid range", forms);
-  }
+  if (!o.view.empty()) set_plot_view(p, o.view);
   if (!o.size.empty()) p.size_px = static_cast<double>(parse_count(o.size, "size", 64, 8192));
-  if (o.labels == "numbers") p.labels = PlotLabels::numbers;
-  else if (o.labels == "none") p.labels = PlotLabels::none;
-  else if (!o.labels.empty() && o.labels != "auto")
-    throw InvalidInput("labels", o.labels, "not a label mode", "auto (no overlaps), numbers (all), none");
+  if (!o.labels.empty()) p.labels = parse_plot_labels(o.labels);
   return p;
 }
 

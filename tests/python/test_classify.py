@@ -5,7 +5,7 @@ import math
 
 import pytest
 import sphtroch
-from conftest import cli_angle, cli_json, paper_cases
+from conftest import cli_angle, cli_json, paper_cases, run_cli
 
 CASES = paper_cases()
 
@@ -110,3 +110,20 @@ def test_one_node_schema_for_classify_and_classify_roots(case):
         assert math.dist(nearest["position"], node["position"]) < 1e-9
         assert (nearest["kind"], nearest["branches"]) == (node["kind"], node["branches"])
         assert math.isclose(node["longitude"], math.atan2(node["position"][1], node["position"][0]), abs_tol=1e-15)
+
+
+def test_svg_is_the_cli_plot_and_jupyter_shows_it():
+    # GearTrain.svg() draws what `sphtroch plot` draws (the same bytes), with the view, size and
+    # label options; _repr_svg_ is svg() with its defaults (issue 21).
+    tr = sphtroch.GearTrain("pi/3", "pi/2", "2")
+    for kwargs, flags in [({}, []), ({"view": "top", "labels": "none"}, ["--view", "top", "--labels", "none"]),
+                          ({"view": ("30deg", 0.2), "size": 300}, ["--view", "30deg,0.2", "--size", "300"])]:
+        assert tr.svg(**kwargs) == run_cli("plot", "--a2", "pi/3", "--a3", "pi/2", "--n", "2", *flags)
+    svg = tr._repr_svg_()
+    assert svg == tr.svg() and svg.startswith("<?xml") and svg.rstrip().endswith("</svg>")
+    assert all(f">N{i}</text>" in svg for i in range(1, 5)) and ">N5</text>" not in svg  # Fig. 5(f): 4 nodes
+    assert ">N1</text>" not in tr.svg(labels="none")
+    for bad in [{"view": "up"}, {"view": (0, 2)}, {"labels": "most"}, {"size": 10}, {"labels": 3}]:
+        with pytest.raises(sphtroch.InvalidInput) as e:
+            tr.svg(**bad)
+        assert e.value.field == next(iter(bad))

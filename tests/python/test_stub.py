@@ -24,7 +24,7 @@ def test_every_stub_name_exists_and_every_public_name_is_in_the_stub():
     assert top <= set(dir(sphtroch)), top - set(dir(sphtroch))
     assert set(sphtroch.__all__) - {"__version__"} == top
     train = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "GearTrain")
-    members = {n.name for n in train.body if isinstance(n, ast.FunctionDef)} - {"__init__", "__reduce__", "__eq__", "__hash__"}
+    members = {n.name for n in train.body if isinstance(n, ast.FunctionDef)} - {"__init__", "__reduce__", "__eq__", "__hash__", "_repr_svg_"}
     public = {m for m in dir(sphtroch.GearTrain) if not m.startswith("_")}
     assert members == public, members ^ public
 

@@ -49,12 +49,14 @@
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/draw/svg.hpp"
+#include "sphtroch/io/parse.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -104,6 +106,14 @@ struct PlotOptions {
   /// vertex that differs at the printed precision. Valid: [0, 5].
   double simplify_px = 0.15;
 };
+
+/// A view as the CLI writes it: "top" (along the sun axis Z: +X right, +Y up), "front" (from -Y:
+/// +X right, +Z up), "side" (from +X: +Y right, +Z up) or "AZ,EL" (angles in parse.hpp's syntax,
+/// EL in [-pi/2, pi/2]); sets options.azimuth and .elevation. Throws InvalidInput(field).
+inline void set_plot_view(PlotOptions& options, std::string_view text, const std::string& field = "view");
+
+/// "auto" (automatic), "numbers" or "none". Throws InvalidInput(field).
+inline PlotLabels parse_plot_labels(std::string_view text, const std::string& field = "labels");
 
 /// A projected point: picture coordinates in px and the depth P.view (>= 0: front half).
 struct ScreenPoint {
@@ -169,6 +179,31 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
 // ---------------------------------------------------------------------------------------------
 // Implementation details follow.
 // ---------------------------------------------------------------------------------------------
+
+inline void set_plot_view(PlotOptions& options, std::string_view text, const std::string& field) {
+  const double pi = Constants<double>::pi();
+  const char* const forms = "top, front, side, or AZ,EL: azimuth (any angle) and elevation in [-pi/2, pi/2] (30deg,45deg)";
+  if (text == "top" || text == "front" || text == "side") {
+    options.azimuth = text == "side" ? 0.0 : -pi / 2;
+    options.elevation = text == "top" ? pi / 2 : 0.0;
+    return;
+  }
+  const auto comma = text.find(',');
+  if (comma == std::string_view::npos) throw InvalidInput(field, std::string(text), "not a view", forms);
+  const double azimuth = parse_angle(std::string(text.substr(0, comma)), field);
+  const double elevation = parse_angle(std::string(text.substr(comma + 1)), field);
+  if (!(std::fabs(elevation) <= pi / 2))
+    throw InvalidInput(field, std::string(text), "elevation outside the valid range", forms);
+  options.azimuth = azimuth;
+  options.elevation = elevation;
+}
+
+inline PlotLabels parse_plot_labels(std::string_view text, const std::string& field) {
+  if (text == "auto") return PlotLabels::automatic;
+  if (text == "numbers") return PlotLabels::numbers;
+  if (text == "none") return PlotLabels::none;
+  throw InvalidInput(field, std::string(text), "not a label mode", "auto (no overlaps), numbers (all), none");
+}
 
 inline SphereView SphereView::looking_from(double azimuth, double elevation, double cx, double cy, double radius) {
   SphereView v;
