@@ -17,7 +17,7 @@ namespace {
 
 struct TraceOptions {
   TrainOptions train;
-  std::string samples, turns, output, format, threads;
+  std::string samples, turns, output, format, threads, radius;
   bool velocity = false;
 };
 
@@ -25,16 +25,38 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-/// --format, or by the output's suffix: ".npy" (any case) is npy, everything else CSV.
+constexpr const char* kTraceFormats = "csv, npy, dxf (3-D polyline), obj (polyline)";
+
+/// A format name: csv, npy, dxf, obj; step is named and refused (no CAD kernel in this build).
+TraceFormat format_named(const std::string& name, const std::string& field, const std::string& value) {
+  if (name == "csv") return TraceFormat::csv;
+  if (name == "npy") return TraceFormat::npy;
+  if (name == "dxf") return TraceFormat::dxf;
+  if (name == "obj") return TraceFormat::obj;
+  if (name == "step" || name == "stp")
+    throw InvalidInput(field, value, "STEP needs the OpenCASCADE component, which this build of sphtroch does not have",
+                       kTraceFormats);
+  throw InvalidInput(field, value, "not a known format", kTraceFormats);
+}
+
+/// --format, or by the output's suffix (any case): .npy, .dxf, .obj (.step, .stp refused);
+/// everything else CSV.
 TraceFormat trace_format(const TraceOptions& o) {
-  if (o.format.empty()) {
-    std::string lower = o.output;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ends_with(lower, ".npy") ? TraceFormat::npy : TraceFormat::csv;
-  }
-  if (o.format == "csv") return TraceFormat::csv;
-  if (o.format == "npy") return TraceFormat::npy;
-  throw InvalidInput("format", o.format, "not a known format", "csv or npy");
+  if (!o.format.empty()) return format_named(o.format, "format", o.format);
+  std::string lower = o.output;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const char* ext : {"npy", "dxf", "obj", "step", "stp"})
+    if (ends_with(lower, std::string(".") + ext)) return format_named(ext, "output", o.output);
+  return TraceFormat::csv;
+}
+
+/// --radius R: the cone distance in any unit, positions scaled by it; finite and > 0.
+double trace_radius(const std::string& text) {
+  if (text.empty()) return 1.0;
+  const std::optional<double> r = parse_number(text);
+  if (!r || !(*r > 0) || !std::isfinite(*r))
+    throw InvalidInput("radius", text, "not a positive number", "a finite number > 0 (the cone distance, any unit)");
+  return *r;
 }
 
 void run_trace(const TraceOptions& o) {
@@ -51,6 +73,10 @@ void run_trace(const TraceOptions& o) {
   TraceWriteOptions options;
   options.format = trace_format(o);
   options.velocity = o.velocity;
+  options.radius = trace_radius(o.radius);
+  options.closed = !turns;
+  if (o.velocity && (options.format == TraceFormat::dxf || options.format == TraceFormat::obj))
+    throw UsageError{"--velocity: a DXF or OBJ file holds the path only; valid: --velocity with CSV or .npy"};
   // Default: one worker per core plus one: the calling thread only writes, and while it waits on
   // the kernel the extra worker keeps both cores busy (measured: 1.49 s vs 1.66 s median for 1e7
   // rows to a CSV file on 2 cores; docs/accuracy.md).
@@ -73,13 +99,16 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "(--samples and --turns exclude each other; a default count above 1000000 is refused).\n"
       "Sample counts: 3 .. 10000000. Numbers: the shortest form that reads back exactly.\n"
       "Format: npy (float64 array (N, 4), or (N, 7) with --velocity) when -o ends in .npy or\n"
-      "with --format npy; CSV otherwise. Rows are streamed: memory does not grow with N.\n"
+      "with --format npy; for CAD a DXF 3-D polyline (.dxf) or an OBJ polyline (.obj), closed\n"
+      "unless --turns; CSV otherwise. --radius R scales the positions (the cone distance, any\n"
+      "unit). Rows are streamed: memory does not grow with N.\n"
       "Example: sphtroch trace --a2 pi/2 --a3 pi/2 --n 1 --samples 8");
   options->train.add_to(*cmd);
   cmd->add_option("--samples", options->samples, "number of samples N (3 .. 10000000)");
   cmd->add_option("--turns", options->turns, "open curve over K carrier turns, K in (0, 1e6]");
   cmd->add_flag("--velocity", options->velocity, "add columns vx,vy,vz = dP/dtheta2 (Eq. 47a)");
-  cmd->add_option("--format", options->format, "csv or npy (default: npy if -o ends in .npy, else csv)");
+  cmd->add_option("--format", options->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");
+  cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R > 0: the cone distance, any unit");
   cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
   add_output_option(*cmd, options->output, "the trajectory");
   actions.emplace_back(cmd, [options] { run_trace(*options); });

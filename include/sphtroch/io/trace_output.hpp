@@ -12,6 +12,12 @@
 // in the shortest round-trip form (number_text.hpp). npy: float64, C order, shape (N, 4) or
 // (N, 7), the same columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a)
 // in the base frame. The bytes do not depend on the thread count.
+// For CAD (positions only, no t): DXF — an ASCII DXF R12 file whose ENTITIES section holds one 3-D
+// POLYLINE (group 70 flag 8, plus 1 when closed: the last sample joins the first) with a VERTEX
+// (flag 32) per sample, layer "0"; OBJ — a "v x y z" line per sample and "l" lines joining them
+// in order (at most kObjLineVertices indices a line, consecutive lines sharing their end vertex;
+// a closed curve ends with "l N 1"). TraceWriteOptions::radius scales every position and velocity
+// (the cone distance in the user's unit: x * radius rounded once; 1 writes the unit sphere).
 #pragma once
 
 #include "sphtroch/core/curve.hpp"
@@ -28,13 +34,18 @@
 
 namespace sphtroch {
 
-enum class TraceFormat { csv, npy };
+enum class TraceFormat { csv, npy, dxf, obj };
 
 struct TraceWriteOptions {
   TraceFormat format = TraceFormat::csv;
-  bool velocity = false;
+  bool velocity = false;    // csv, npy only
   std::size_t threads = 1;  // worker threads that compute and format blocks (1: none)
+  double radius = 1.0;      // positions and velocities times this (finite, > 0)
+  bool closed = true;       // dxf, obj: the last sample joins the first (a period's samples)
 };
+
+/// Indices on one OBJ "l" line at most.
+constexpr std::size_t kObjLineVertices = 1000;
 
 /// Rows per block: 16384 rows are at most 2.9 MB of CSV with velocities (1.3 MB without).
 constexpr std::size_t kTraceBlockRows = 16384;
@@ -78,24 +89,94 @@ inline void write_trajectory_csv(std::ostream& out, const Trajectory<double>& tr
 
 /// Streams the samples of `sampling` to `out` in the chosen format (see the top). Throws what
 /// `out` throws (OutputError, BrokenPipe). Does not commit `out`.
+namespace trace_output_detail {
+
+/// DXF: the file up to the first VERTEX, and from SEQEND to the end (see header).
+inline std::string dxf_head(bool closed) {
+  return std::string("0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n") +
+         (closed ? "9" : "8") + "\n";
+}
+constexpr const char* kDxfTail = "0\nSEQEND\n8\n0\n0\nENDSEC\n0\nEOF\n";
+
+/// One DXF VERTEX of a 3-D polyline at p.
+inline char* write_dxf_vertex(char* out, const Vector3d& p) {
+  static const char head[] = "0\nVERTEX\n8\n0\n";
+  out = std::copy(head, head + sizeof head - 1, out);
+  for (int k = 0; k < 3; ++k) {
+    *out++ = static_cast<char>('1' + k);
+    *out++ = '0';
+    *out++ = '\n';
+    out = write_number(out, p[k]);
+    *out++ = '\n';
+  }
+  static const char flag[] = "70\n32\n";
+  return std::copy(flag, flag + sizeof flag - 1, out);
+}
+
+/// One OBJ vertex line "v x y z".
+inline char* write_obj_vertex(char* out, const Vector3d& p) {
+  *out++ = 'v';
+  for (int k = 0; k < 3; ++k) {
+    *out++ = ' ';
+    out = write_number(out, p[k]);
+  }
+  *out++ = '\n';
+  return out;
+}
+
+/// The OBJ "l" lines joining vertices 1 .. count in order (and count to 1 when closed).
+inline void write_obj_lines(OutputFile& out, std::size_t count, bool closed) {
+  std::string line;
+  for (std::size_t first = 1; first < count; first += kObjLineVertices - 1) {
+    const std::size_t last = std::min(count, first + kObjLineVertices - 1);
+    line = "l";
+    for (std::size_t i = first; i <= last; ++i) line += ' ' + std::to_string(i);
+    out.write(line + '\n');
+  }
+  if (closed && count > 2) out.write("l " + std::to_string(count) + " 1\n");
+}
+
+}  // namespace trace_output_detail
+
 inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const UniformSampling<double>& sampling,
                         const TraceWriteOptions& options) {
+  namespace d = trace_output_detail;
   const bool vel = options.velocity;
+  const double scale = options.radius;
   const std::size_t cols = vel ? 7 : 4;
   if (options.format == TraceFormat::npy) out.write(npy_header(sampling.count, cols));
-  else out.write(trace_csv_header(vel));
+  else if (options.format == TraceFormat::dxf) out.write(d::dxf_head(options.closed));
+  else if (options.format == TraceFormat::csv) out.write(trace_csv_header(vel));
   const std::size_t blocks = (sampling.count + kTraceBlockRows - 1) / kTraceBlockRows;
+  // Unit-sphere values, then times the radius (each coordinate rounded once more; none at radius 1).
+  auto point = [&](double t) { return scale == 1.0 ? curve.point(t) : Vector3d(scale * curve.point(t)); };
+  // omega x P0 = curve.velocity(t): at radius 1 from the point just evaluated, else from the
+  // unit-sphere point again (times the radius, rounded once).
+  auto velocity = [&](double t, const Vector3d& P) {
+    if (scale == 1.0) return Vector3d(curve.screw_axis(t).cross(P));
+    return Vector3d(scale * curve.screw_axis(t).cross(curve.point(t)));
+  };
   auto produce = [&](std::size_t b, std::string& text) {
     const std::size_t first = b * kTraceBlockRows, last = std::min(sampling.count, first + kTraceBlockRows);
+    if (options.format == TraceFormat::dxf || options.format == TraceFormat::obj) {
+      text.resize((last - first) * (kMaxTraceRowChars + 40));
+      char* p = text.data();
+      for (std::size_t i = first; i < last; ++i) {
+        const Vector3d P = point(sampling.parameter(i));
+        p = options.format == TraceFormat::dxf ? d::write_dxf_vertex(p, P) : d::write_obj_vertex(p, P);
+      }
+      text.resize(static_cast<std::size_t>(p - text.data()));
+      return;
+    }
     if (options.format == TraceFormat::npy) {
       text.resize((last - first) * cols * sizeof(double));
       char* p = text.data();
       for (std::size_t i = first; i < last; ++i) {
         const double t = sampling.parameter(i);
-        const Vector3d P = curve.point(t);
+        const Vector3d P = point(t);
         double row[7] = {t, P.x(), P.y(), P.z(), 0, 0, 0};
         if (vel) {
-          const Vector3d V = curve.screw_axis(t).cross(P);  // = curve.velocity(t), one point evaluation
+          const Vector3d V = velocity(t, P);
           row[4] = V.x(), row[5] = V.y(), row[6] = V.z();
         }
         std::memcpy(p, row, cols * sizeof(double));
@@ -107,9 +188,9 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
     char* p = text.data();
     for (std::size_t i = first; i < last; ++i) {
       const double t = sampling.parameter(i);
-      const Vector3d P = curve.point(t);
+      const Vector3d P = point(t);
       if (vel) {
-        const Vector3d V = curve.screw_axis(t).cross(P);
+        const Vector3d V = velocity(t, P);
         p = write_trace_csv_row(p, t, P, &V);
       } else {
         p = write_trace_csv_row(p, t, P, nullptr);
@@ -118,6 +199,8 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
     text.resize(static_cast<std::size_t>(p - text.data()));
   };
   for_each_block_in_order(blocks, options.threads, produce, [&](const std::string& text) { out.write(text); });
+  if (options.format == TraceFormat::dxf) out.write(d::kDxfTail);
+  if (options.format == TraceFormat::obj) d::write_obj_lines(out, sampling.count, options.closed);
 }
 
 }  // namespace sphtroch
