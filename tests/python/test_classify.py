@@ -127,3 +127,21 @@ def test_svg_is_the_cli_plot_and_jupyter_shows_it():
         with pytest.raises(sphtroch.InvalidInput) as e:
             tr.svg(**bad)
         assert e.value.field == next(iter(bad))
+
+
+@pytest.mark.parametrize("a2,a3,n", [("0.7", "2.5", "13/5"), ("pi/3", "pi/2", "2"), ("1.9", "0.4", "-7/3"),
+                                     ("0.3", "1.2", "5/2"), ("pi/3", "ap", "2")])
+def test_classify_names_the_nearest_event_and_crossing_it_changes_the_counts_as_printed(a2, a3, n):
+    # Issue 22: the design's robustness. The nearest event is one of `sphtroch boundaries` at that
+    # a2 (the same a3 double), no other event is nearer, and a train just below / just above it
+    # (1e-7 rad, beyond the 1e-10 boundary reading) has the counts it names.
+    c = cli_json("classify", "--a2", a2, "--a3", a3, "--n", n, "--json")
+    e = c["nearest_event"]
+    events = cli_json("boundaries", "--a2", a2, "--n", n, "--json")["events"]
+    analysed_a3 = e["a3"] - e["margin"]
+    assert any(x["a3"] == e["a3"] and x["kind"] == e["kind"] and x["nodes_below"] == e["nodes_below"]
+               and x["nodes_above"] == e["nodes_above"] for x in events)
+    assert abs(e["margin"]) == min(abs(x["a3"] - analysed_a3) for x in events)
+    for offset, key in [(-1e-7, "nodes_below"), (1e-7, "nodes_above")]:
+        side = cli_json("classify", "--a2", a2, "--a3", repr(e["a3"] + offset), "--n", n, "--json")
+        assert side["counts"]["nodes"] == e[key], (offset, side["counts"])

@@ -33,6 +33,7 @@
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
 #include "sphtroch/map/boundary_snap.hpp"
+#include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/census/node_sets.hpp"
@@ -44,6 +45,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <utility>
 #include <string>
 #include <vector>
@@ -88,6 +90,10 @@ struct Classification {
   ConeMargins cone;
   CensusAgreement agreement;
   CensusCertificate certificate;   // the polyline census runs behind `nodes` (certified_census.hpp)
+  /// The design's robustness: the boundary event (boundary_events.hpp) nearest the analysed a3 at
+  /// its a2 — where a tolerance on a3 would change the node count (nodes_below -> nodes_above
+  /// across it); its a3 minus the analysed a3 is the signed margin. Nothing when a2 has no event.
+  std::optional<BoundaryEvent> nearest_event;
   ClassificationWork work;
   /// Every count printed is one two independent methods agree on (and the report's criteria,
   /// where they give one): agreement.ok().
@@ -130,6 +136,8 @@ inline Classification assemble_classification(const ClassificationInputs& in) {
   c.z = in.z;
   c.symmetry_planes = in.symmetry;
   c.curve_class = curve_class(c.nodes.size(), c.cusps.size());
+  const GearTrain& analysed = in.snapped.train;
+  c.nearest_event = nearest_event(boundary_set(analysed.a2(), analysed.ratio()), analysed.a3());
 
   std::string why;
   const bool same = same_node_sets(c.polyline.nodes, c.root.nodes, why);

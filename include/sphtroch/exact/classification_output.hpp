@@ -291,6 +291,16 @@ inline void text_nodes_and_cusps(std::ostream& out, const Classification& c) {
         << number_text(k.speed) << "\n";
 }
 
+/// "nearest event: <name> at a3 = A (a3 + M rad): N -> M nodes" (boundary_events.hpp).
+inline void text_nearest_event(std::ostream& out, const Classification& c) {
+  if (!c.nearest_event) return;
+  const BoundaryEvent& e = *c.nearest_event;
+  const double margin = e.a3 - c.snapped.train.a3();
+  out << "\nnearest event in a3 at this a2 (sphtroch boundaries): " << e.name << " at a3 = " << number_text(e.a3)
+      << " (a3 " << (margin < 0 ? "- " : "+ ") << number_text(std::abs(margin)) << " rad): nodes " << e.nodes_below
+      << " -> " << e.nodes_above << " across it\n";
+}
+
 inline void text_extremes_and_symmetry(std::ostream& out, const Classification& c) {
   out << "\nz extremes (Eqs. 14/15, 32-35 generalised)\n  z_max = " << number_text(c.z.z_max) << " at theta2 =";
   for (const auto& p : c.z.maxima) out << ' ' << number_text(p.param);
@@ -383,6 +393,12 @@ inline nlohmann::json classification_json(const TrainText& text, const Classific
   j["cusp_within_resolution"] = c.cusp_within_resolution;
   j["boundaries"] = d::boundaries_json(c);
   j["z_extremes"] = z_extremes_json(c.z);
+  j["nearest_event"] = nullptr;
+  if (c.nearest_event) {
+    const BoundaryEvent& e = *c.nearest_event;
+    j["nearest_event"] = {{"a3", e.a3}, {"kind", to_string(e.kind)}, {"name", e.name}, {"margin", e.a3 - c.snapped.train.a3()},
+                          {"nodes_below", e.nodes_below}, {"nodes_above", e.nodes_above}};
+  }
   j["symmetry"] = d::symmetry_json(c.symmetry_planes);
   j["analytic"] = d::analytic_json(c.analytic);
   j["censuses"] = d::censuses_json(c);
@@ -398,6 +414,7 @@ inline void write_classification_text(std::ostream& out, const TrainText& text, 
   d::text_inputs(out, text, c);
   d::text_boundaries(out, c);
   d::text_nodes_and_cusps(out, c);
+  d::text_nearest_event(out, c);
   d::text_extremes_and_symmetry(out, c);
   d::text_criteria(out, c.analytic);
   d::text_censuses(out, c);

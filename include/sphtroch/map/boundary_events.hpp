@@ -139,6 +139,15 @@ struct Locus {
 inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps = 720,
                                         std::size_t threads = 1);
 
+/// The event of `set` nearest a3 (the first of equals), or nothing when the set has none.
+inline std::optional<BoundaryEvent> nearest_event(const BoundarySet& set, double a3) {
+  const BoundaryEvent* best = nullptr;
+  for (const BoundaryEvent& e : set.events)
+    if (!best || std::abs(e.a3 - a3) < std::abs(best->a3 - a3)) best = &e;
+  if (!best) return std::nullopt;
+  return *best;
+}
+
 /// A tangency locus within `tolerance` (radians, in a3) of (a2, a3), the nearest, or nothing.
 struct TangencyHit {
   double a3 = 0.0;        // the locus's a3 at this a2 (nearest double)
