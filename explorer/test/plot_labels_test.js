@@ -32,8 +32,8 @@ async function overlaps(page, file) {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
   const page = await browser.newPage();
   const cases = [['', 'auto'], ['--view top', 'auto'], ['--view 30deg,10deg', 'auto'], ['', 'numbers']];
-  for (const [view, labels] of cases) {
-    const file = path.join(outDir, 'labels_' + cases.indexOf(cases.find((c) => c[0] === view && c[1] === labels)) + '.svg');
+  for (const [k, [view, labels]] of cases.entries()) {
+    const file = path.join(outDir, 'labels_' + k + '.svg');
     const args = ['plot', '--a2', '0.7', '--a3', '2.5', '--n', '13/5', '--labels', labels, '-o', file, ...view.split(' ').filter((w) => w)];
     const run = spawnSync(exe, args, { encoding: 'utf8' });
     if (run.status !== 0) { failures.push('plot ' + args.join(' ') + ': exit ' + run.status + ' ' + run.stderr); continue; }
