@@ -1,0 +1,453 @@
+// sphtroch/exact/box_search.hpp — certified isolation of ALL roots of a square system F(x) = 0 in
+// a box: interval branch and bound with the Krawczyk operator. The engine of precision points
+// (exact/precision_points.hpp: fixed frame, 4 unknowns).
+//
+//   sphtroch::PrecisionPoints r = sphtroch::box_search_detail::BoxSearch<MySystem>(system, options).run();
+//
+// A System (see FixedFrameSystem in precision_points.hpp for one) has kOuter unknowns split by the
+// outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,
+// each pruned on its own: `view(outer)` computes what all the lists of an outer box share,
+// `may_hold(view, d, i)` says whether point i's equations may vanish over the outer box x d
+// (REQUIRES: false only when they cannot). Small boxes go to the Krawczyk test in all N unknowns:
+// K(X) = y - Y F(y) + (I - Y J(X)) (X - y), y the centre, Y ~ J(y)^-1 (any Y keeps it valid):
+// K(X) inside X proves exactly one root in X, K(X) disjoint from X proves none. A root found by
+// Newton is certified in a tiny box and given the largest box U around it where
+// ||I - Y J(U)||_inf < 1 (by the mean value theorem no second root is there).
+// Guarantee: when `certified`, every root in the domain is listed once (the System drops copies
+// and roots outside its fundamental domain); otherwise `undecided` boxes (narrower than
+// kMinBoxWidth and still undecided, or left when max_boxes was reached) may hold more.
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/exact/box_search.hpp needs CGAL: link the CMake target sphtroch::exact"
+#endif
+
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/types.hpp"
+#include "sphtroch/exact/interval_trig.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace sphtroch {
+
+/// A box narrower than this (radians, list unknowns scaled by the System) that is still
+/// undecided is reported as such: the result is then not certified.
+constexpr double kMinBoxWidth = 1e-11;
+/// A train from an undecided box is listed (isolated = false) only if it passes the points to this.
+constexpr double kUnisolatedResidual = 1e-12;
+
+struct PrecisionPointsOptions {
+  std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
+};
+
+struct PrecisionSolution {
+  GearTrain train;               // phase reduced to [0, 2 pi / q)
+  std::vector<double> params;    // theta2 at each point (input order), in [0, 2 pi q)
+  double residual = 0.0;         // max |P(params[i]) - points[i]| (chord), measured in double
+  /// false: Newton's limit in a box the certificate could not decide (a near-singular root, e.g.
+  /// two roots closer than the arithmetic resolves); it passes the points (residual <= 1e-12)
+  /// but is not proven to be a single root, and the list is then not certified.
+  bool isolated = true;
+};
+
+struct PrecisionPoints {
+  std::vector<PrecisionSolution> solutions;  // by a2, then a3
+  bool certified = true;         // every box was excluded or isolated one root (see header)
+  std::size_t undecided = 0;     // boxes left undecided (0 when certified)
+  std::size_t boxes = 0;         // boxes examined (the work)
+};
+
+// Implementation details follow.
+namespace box_search_detail {
+
+inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
+inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
+
+template <int N>
+using Box = std::array<Interval, N>;
+template <typename T, int N>
+using Jacobian = std::array<std::array<T, N>, N>;
+template <int N>
+using Matrix = Eigen::Matrix<double, N, N>;
+
+template <int N>
+std::array<double, N> centre(const Box<N>& x) {
+  std::array<double, N> y{};
+  for (int k = 0; k < N; ++k) y[k] = 0.5 * (x[k].inf() + x[k].sup());
+  return y;
+}
+
+template <int N>
+Matrix<N> to_matrix(const Jacobian<double, N>& a) {
+  Matrix<N> m;
+  for (int r = 0; r < N; ++r)
+    for (int c = 0; c < N; ++c) m(r, c) = a[r][c];
+  return m;
+}
+
+/// Y = J(y)^-1 in doubles (any approximate inverse keeps the interval tests valid); none if singular.
+template <class System>
+std::optional<Matrix<System::N>> inverse_jacobian(const System& sys, const std::array<double, System::N>& y) {
+  constexpr int N = System::N;
+  std::array<double, N> f{};
+  Jacobian<double, N> jac{};
+  sys.equations(y, f, &jac);
+  const Eigen::FullPivLU<Matrix<N>> lu(to_matrix<N>(jac));
+  if (!lu.isInvertible()) return std::nullopt;
+  return Matrix<N>(lu.inverse());
+}
+
+enum class KrawczykOutcome { unique_root, no_root, undecided };
+
+/// The Krawczyk test on x (see header). On `undecided` x is narrowed to X intersected with K(X).
+template <class System>
+KrawczykOutcome krawczyk(const System& sys, Box<System::N>& x) {
+  constexpr int N = System::N;
+  const std::array<double, N> y = centre<N>(x);
+  const auto inverse = inverse_jacobian(sys, y);
+  if (!inverse) return KrawczykOutcome::undecided;
+  const Matrix<N>& inv = *inverse;
+  Box<N> yi{}, fy{}, fx{};
+  Jacobian<Interval, N> jx{};
+  for (int k = 0; k < N; ++k) yi[k] = Interval(y[k]);
+  sys.equations(yi, fy, static_cast<Jacobian<Interval, N>*>(nullptr));
+  sys.equations(x, fx, &jx);
+  bool inside = true;
+  Box<N> k_box;
+  for (int r = 0; r < N; ++r) {
+    Interval s(y[r]);
+    for (int m = 0; m < N; ++m) s -= inv(r, m) * fy[m];
+    for (int c = 0; c < N; ++c) {
+      Interval a(r == c ? 1.0 : 0.0);
+      for (int m = 0; m < N; ++m) a -= inv(r, m) * jx[m][c];
+      s += a * (x[c] - y[c]);
+    }
+    if (s.sup() < x[r].inf() || s.inf() > x[r].sup()) return KrawczykOutcome::no_root;
+    inside = inside && s.inf() > x[r].inf() && s.sup() < x[r].sup();
+    k_box[r] = s;
+  }
+  if (inside) return KrawczykOutcome::unique_root;
+  for (int r = 0; r < N; ++r)
+    x[r] = Interval(std::max(x[r].inf(), k_box[r].inf()), std::min(x[r].sup(), k_box[r].sup()));
+  return KrawczykOutcome::undecided;
+}
+
+/// Whether ||I - Y J(U)||_inf < 1 with Y = J(y)^-1 (interval J over the box U).
+template <class System>
+bool contraction_holds(const System& sys, const std::array<double, System::N>& y, const Box<System::N>& u) {
+  constexpr int N = System::N;
+  const auto inverse = inverse_jacobian(sys, y);
+  if (!inverse) return false;
+  const Matrix<N>& inv = *inverse;
+  Box<N> fu{};
+  Jacobian<Interval, N> ju{};
+  sys.equations(u, fu, &ju);
+  for (int r = 0; r < N; ++r) {
+    double row = 0.0;
+    for (int c = 0; c < N; ++c) {
+      Interval a(r == c ? 1.0 : 0.0);
+      for (int m = 0; m < N; ++m) a -= inv(r, m) * ju[m][c];
+      row += std::max(-a.inf(), a.sup());  // rounding upward: an upper bound of the sum
+    }
+    if (!(row < 1.0)) return false;
+  }
+  return true;
+}
+
+/// One Newton step at y in doubles: the correction J(y)^-1 F(y) (non-finite if J is singular).
+template <class System>
+Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::array<double, System::N>& y) {
+  constexpr int N = System::N;
+  std::array<double, N> f{};
+  Jacobian<double, N> jac{};
+  sys.equations(y, f, &jac);
+  const Eigen::Matrix<double, N, 1> fv = Eigen::Map<const Eigen::Matrix<double, N, 1>>(f.data());
+  return to_matrix<N>(jac).fullPivLu().solve(fv);
+}
+
+/// Newton from the centre of a box holding exactly one root (REQUIRES: Krawczyk said so).
+template <class System>
+std::array<double, System::N> polish(const System& sys, const Box<System::N>& x) {
+  std::array<double, System::N> y = centre<System::N>(x);
+  for (int step = 0; step < 8; ++step) {
+    const auto dy = newton_step(sys, y);
+    if (!dy.allFinite()) break;
+    for (int k = 0; k < System::N; ++k) y[k] = std::clamp(y[k] - dy(k), x[k].inf(), x[k].sup());
+  }
+  return y;
+}
+
+/// Newton in doubles from the centre of x; its limit if it converged inside x.
+template <class System>
+std::optional<std::array<double, System::N>> newton_in(const System& sys, const Box<System::N>& x) {
+  std::array<double, System::N> y = centre<System::N>(x);
+  for (int step = 0; step < 12; ++step) {
+    const auto dy = newton_step(sys, y);
+    if (!dy.allFinite()) return std::nullopt;
+    for (int k = 0; k < System::N; ++k) y[k] -= dy(k);
+    if (dy.cwiseAbs().maxCoeff() < 1e-13) break;
+  }
+  for (int k = 0; k < System::N; ++k)
+    if (!(y[k] >= x[k].inf() && y[k] <= x[k].sup())) return std::nullopt;
+  return y;
+}
+
+/// Branch and bound over the outer unknowns with, per point, the list of intervals of its own
+/// unknown still possible; small boxes go to the Krawczyk test in all N unknowns (see header).
+template <class System>
+class BoxSearch {
+ public:
+  static constexpr int N = System::N, kOuter = System::kOuter, kLists = System::kLists;
+  using Outer = std::array<Interval, kOuter>;
+
+  BoxSearch(const System& system, const PrecisionPointsOptions& options) : sys_(system), options_(options) {}
+
+  /// Searches the System's domain.
+  PrecisionPoints run() {
+    std::vector<Node> stack;
+    for (const Outer& outer : sys_.domains()) {
+      Node all{outer, {}};
+      for (auto& d : all.lists) d.push_back(Interval(0.0, sys_.list_max()));
+      stack.push_back(std::move(all));
+    }
+    {
+      const RoundingGuard upward;  // the interval arithmetic's mode; doubles here are estimates only
+      while (!stack.empty()) {
+        if (over_budget()) {
+          result_.undecided += stack.size();
+          break;
+        }
+        Node node = std::move(stack.back());
+        stack.pop_back();
+        step(std::move(node), stack);
+      }
+    }
+    finish();  // in the caller's rounding mode
+    return result_;
+  }
+
+ private:
+  /// Widths at which the outer loop hands its boxes to the Krawczyk test.
+  static constexpr double kIsolateWidth = 1.0 / 64;
+
+  struct Node {
+    Outer outer;
+    std::array<std::vector<Interval>, kLists> lists;
+  };
+
+  bool over_budget() const { return result_.boxes >= options_.max_boxes; }
+
+  double scaled_width(const Box<N>& x, int k) const {
+    const double w = x[k].sup() - x[k].inf();
+    return k >= kOuter ? w * sys_.list_scale() : w;
+  }
+
+  void step(Node node, std::vector<Node>& stack) {
+    if (sys_.outside(node.outer)) return;  // only copies of roots inside the domain
+    ++result_.boxes;
+    const auto view = sys_.view(node.outer);
+    for (int i = 0; i < kLists; ++i) {
+      auto& list = node.lists[i];
+      list.erase(std::remove_if(list.begin(), list.end(), [&](const Interval& d) { return !sys_.may_hold(view, d, i); }),
+                 list.end());
+      if (list.empty()) return;
+    }
+    int widest = 0;
+    for (int k = 1; k < kOuter; ++k)
+      if (width(node.outer[k]) > width(node.outer[widest])) widest = k;
+    const double wb = width(node.outer[widest]);
+    if (split_lists(node, std::max(wb, kIsolateWidth))) {
+      stack.push_back(std::move(node));
+    } else if (wb <= kIsolateWidth) {
+      std::array<std::vector<Interval>, kLists> runs;
+      for (int i = 0; i < kLists; ++i) runs[i] = merge_runs(node.lists[i]);
+      Box<N> x;
+      for (int k = 0; k < kOuter; ++k) x[k] = node.outer[k];
+      isolate_each(runs, 0, x);
+    } else {
+      Node other = node;
+      const double mid = 0.5 * (node.outer[widest].inf() + node.outer[widest].sup());
+      node.outer[widest] = Interval(node.outer[widest].inf(), mid);
+      other.outer[widest] = Interval(mid, other.outer[widest].sup());
+      stack.push_back(std::move(other));
+      stack.push_back(std::move(node));
+    }
+  }
+
+  static double width(const Interval& x) { return x.sup() - x.inf(); }
+
+  /// isolate() on every combination of one run per list.
+  void isolate_each(const std::array<std::vector<Interval>, kLists>& runs, int i, Box<N>& x) {
+    if (i == kLists) {
+      isolate(x);
+      return;
+    }
+    for (const Interval& d : runs[i]) {
+      x[kOuter + i] = d;
+      isolate_each(runs, i + 1, x);
+    }
+  }
+
+  /// Adjacent intervals (in order, each starting where the last ended) joined into one.
+  static std::vector<Interval> merge_runs(const std::vector<Interval>& list) {
+    std::vector<Interval> runs;
+    for (const Interval& d : list) {
+      if (!runs.empty() && runs.back().sup() == d.inf())
+        runs.back() = Interval(runs.back().inf(), d.sup());
+      else
+        runs.push_back(d);
+    }
+    return runs;
+  }
+
+  /// Splits every list interval wider (scaled) than `limit` into equal pieces no wider.
+  bool split_lists(Node& node, double limit) const {
+    bool split = false;
+    for (auto& list : node.lists) {
+      std::vector<Interval> out;
+      for (const Interval& d : list) {
+        const double w = width(d) * sys_.list_scale();
+        const auto pieces = static_cast<std::size_t>(std::ceil(w / limit));
+        if (pieces <= 1) {
+          out.push_back(d);
+          continue;
+        }
+        split = true;
+        const double step = width(d) / static_cast<double>(pieces);
+        for (std::size_t k = 0; k < pieces; ++k)
+          out.push_back(Interval(k == 0 ? d.inf() : d.inf() + step * static_cast<double>(k),
+                                 k + 1 == pieces ? d.sup() : d.inf() + step * static_cast<double>(k + 1)));
+      }
+      list = std::move(out);
+    }
+    return split;
+  }
+
+  bool excluded(const Box<N>& x) const {
+    Outer outer;
+    for (int k = 0; k < kOuter; ++k) outer[k] = x[k];
+    const auto view = sys_.view(outer);
+    for (int i = 0; i < kLists; ++i)
+      if (!sys_.may_hold(view, x[kOuter + i], i)) return true;
+    return false;
+  }
+
+  /// Krawczyk with bisection on one box of all N unknowns; boxes inside a known uniqueness
+  /// region need no more work.
+  void isolate(const Box<N>& start) {
+    std::vector<Box<N>> stack{start};
+    while (!stack.empty()) {
+      if (over_budget()) {
+        result_.undecided += stack.size();
+        return;
+      }
+      Box<N> x = stack.back();
+      stack.pop_back();
+      ++result_.boxes;
+      if (in_known_region(x) || excluded(x)) continue;
+      const KrawczykOutcome outcome = krawczyk(sys_, x);
+      if (outcome == KrawczykOutcome::no_root) continue;
+      if (outcome == KrawczykOutcome::unique_root) {
+        roots_.push_back(x);
+        regions_.push_back(x);
+        continue;
+      }
+      if (certify_newton_root(x) && in_known_region(x)) continue;
+      bisect(x, stack);
+    }
+  }
+
+  void bisect(Box<N> x, std::vector<Box<N>>& stack) {
+    int widest = 0;
+    for (int k = 1; k < N; ++k)
+      if (scaled_width(x, k) > scaled_width(x, widest)) widest = k;
+    if (scaled_width(x, widest) < kMinBoxWidth) {
+      ++result_.undecided;
+      undecided_.push_back(x);
+      return;
+    }
+    Box<N> other = x;
+    const double mid = 0.5 * (x[widest].inf() + x[widest].sup());
+    x[widest] = Interval(x[widest].inf(), mid);
+    other[widest] = Interval(mid, other[widest].sup());
+    stack.push_back(other);
+    stack.push_back(x);
+  }
+
+  static bool contains(const Box<N>& outer, const Box<N>& inner) {
+    for (int k = 0; k < N; ++k)
+      if (inner[k].inf() < outer[k].inf() || inner[k].sup() > outer[k].sup()) return false;
+    return true;
+  }
+
+  bool in_known_region(const Box<N>& x) const {
+    return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) { return contains(u, x); });
+  }
+
+  /// Newton from the centre of x; a limit inside x not yet known is certified (Krawczyk on a box
+  /// of 1e-10 around it) and given its uniqueness region. Returns whether a region was added.
+  bool certify_newton_root(const Box<N>& x) {
+    const auto y = newton_in(sys_, x);
+    if (!y) return false;
+    Box<N> tiny;
+    for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, 1e-10);
+    for (const Box<N>& u : regions_)
+      if (contains(u, tiny)) return false;
+    if (krawczyk(sys_, tiny) != KrawczykOutcome::unique_root) return false;
+    roots_.push_back(tiny);
+    regions_.push_back(uniqueness_region(*y, tiny));
+    return true;
+  }
+
+  Interval around(const std::array<double, N>& y, int k, double radius) const {
+    const double r = k >= kOuter ? radius / sys_.list_scale() : radius;
+    return Interval(y[k] - r, y[k] + r);
+  }
+
+  /// The largest box y +- r (r = 1e-9 2^j <= 0.25, scaled) with ||I - Y J(U)||_inf < 1: by the
+  /// mean value theorem two roots in U would be equal. At least `tiny`.
+  Box<N> uniqueness_region(const std::array<double, N>& y, const Box<N>& tiny) const {
+    Box<N> best = tiny;
+    for (double r = 1e-9; r <= 0.25; r *= 2) {
+      Box<N> u;
+      for (int k = 0; k < N; ++k) u[k] = around(y, k, r);
+      if (!contraction_holds(sys_, y, u)) break;
+      best = u;
+    }
+    return best;
+  }
+
+  void finish() {
+    for (const Box<N>& x : roots_) add(sys_.solution(polish(sys_, x), true));
+    for (const Box<N>& x : undecided_) add(sys_.solution(polish(sys_, x), false));
+    result_.certified = result_.undecided == 0;
+  }
+
+  /// Keeps a solution unless it is none (outside the domain), an unisolated one that does not
+  /// pass the points, or a repeat (a root on a shared face of two boxes, or a point that is a
+  /// node of the curve).
+  void add(std::optional<PrecisionSolution> s) {
+    if (!s || (!s->isolated && !(s->residual <= kUnisolatedResidual))) return;
+    for (const auto& t : result_.solutions)
+      if (sys_.same(t, *s)) return;
+    result_.solutions.push_back(std::move(*s));
+  }
+
+  const System& sys_;
+  PrecisionPointsOptions options_;
+  PrecisionPoints result_;
+  std::vector<Box<N>> roots_;      // each holds exactly one root
+  std::vector<Box<N>> regions_;    // each holds at most one root, one of roots_
+  std::vector<Box<N>> undecided_;  // narrower than kMinBoxWidth, still undecided
+};
+
+}  // namespace box_search_detail
+}  // namespace sphtroch
