@@ -10,6 +10,8 @@
 #include "sphtroch/map/boundary_events.hpp"
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,6 +71,21 @@ TEST_CASE("parallel_for: progress reports done <= total and ends at total", "[pa
   CHECK(monotone);
   CHECK(last_done == 500);
   CHECK(last_total == 500);
+}
+
+TEST_CASE("parallel_for: an exception from progress (an interrupt) stops the workers and is rethrown", "[parallel_for]") {
+  // Before the fix the exception left parallel_for with joinable threads: std::terminate.
+  std::atomic<std::size_t> ran{0};
+  const std::size_t count = 100000;
+  CHECK_THROWS_WITH(parallel_for(
+                        count, 2,
+                        [&](std::size_t) {
+                          std::this_thread::sleep_for(std::chrono::microseconds(50));
+                          ++ran;
+                        },
+                        4, [](std::size_t, std::size_t) { throw std::runtime_error("interrupted"); }),
+                    "interrupted");
+  CHECK(ran.load() < count);  // stopped early: 100000 x 50 us is 2.5 s per worker
 }
 
 TEST_CASE("parallel loops: a fault inside a worker of each reaches the caller", "[parallel_for]") {

@@ -8,7 +8,7 @@ velocity) accept only True or False (also numpy.bool_). Every computation runs w
 GIL released; GearTrain objects are immutable and may be shared between threads.
 """
 from fractions import Fraction
-from typing import Any, Dict, List, Literal, Optional, Tuple, Union, overload
+from typing import Any, Callable, Dict, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -167,14 +167,16 @@ def crossings(points: npt.ArrayLike, closed: bool = True, *, pairs: bool = False
 
 def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.141592653589793),
           a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[int] = None,
-          literal: bool = False) -> Dict[str, Any]:
+          literal: bool = False, *, progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, Any]:
     """The classification map over (a2, a3) for one gear ratio, as `sphtroch atlas`: G x G cells
     sampled at their centres (row i: a2, column j: a3). Arrays of shape (G, G): a2, a3 (float64,
     radians), nodes, crossings, tangencies, cusps, analytic_nodes (-1 where the report gives no
     count, n != 1, 2), analytic_cusps (int64), agree (int8: 1 agree, 0 disagree, -1 no
     prediction), cusps_agree (bool); plus n (str) and threads (int).
     grid: 1 .. 4096; ranges (lo, hi) or the CLI's "LO:HI" text, 0 <= lo < hi <= pi; threads: 1 .. 1024
-    (default: all cores).
+    (default: all cores). progress(done, total) is called about every 100 ms (and at the end) with the
+    cells done; Ctrl-C raises KeyboardInterrupt within ~0.1 s, and an exception progress raises stops
+    the call (the cells being computed finish first: at most threads x 64 cells).
     """
 
 def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
@@ -193,11 +195,12 @@ def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:
     Raises InvalidInput: "n" (0, or beyond the census cost bound), "a2" outside [1e-6, pi - 1e-6]."""
 
 def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps: int = 720,
-                  threads: Optional[int] = None) -> List[Dict[str, Any]]:
+                  threads: Optional[int] = None, *,
+                  progress: Optional[Callable[[int, int], object]] = None) -> List[Dict[str, Any]]:
     """The boundary curves of the (a2, a3) map over an a2 range (`sphtroch boundaries --a2 LO:HI`):
     a list of {"kind", "name", "m", "label", "a2", "a3", "b"} with a2, a3, b float64 arrays (radians)
     sampled at the cell centres lo + (hi - lo)(k + 1/2)/steps. steps: 1 .. 10000; threads: 1 .. 1024
-    (default: all cores)."""
+    (default: all cores). progress(done, total) and Ctrl-C as for atlas (done: a2 samples)."""
 
 def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     """The gear train of a timed trace (as `sphtroch synth identify`): t (N,) carrier angles,

@@ -147,4 +147,21 @@ const char* doc(const char* name) {
   throw std::logic_error(std::string("sphtroch: no docstring for ") + name + " in python/sphtroch/__init__.pyi");
 }
 
+ParallelProgress interruptible(py::handle callback) {
+  if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
+    throw InvalidInput("progress", repr_of(callback), "not callable", "None or a function progress(done, total)");
+  py::object f = py::reinterpret_borrow<py::object>(callback);
+  // The std::function is copied around without the GIL: the object is kept in a shared holder
+  // whose last copy is released with the GIL held.
+  auto holder = std::shared_ptr<py::object>(new py::object(std::move(f)), [](py::object* o) {
+    py::gil_scoped_acquire acquire;
+    delete o;
+  });
+  return [holder](std::size_t done, std::size_t total) {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!holder->is_none()) (*holder)(done, total);
+  };
+}
+
 }  // namespace sphtroch::python

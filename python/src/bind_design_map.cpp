@@ -60,7 +60,8 @@ py::array square(std::vector<T> values, std::size_t g) {
   return py::array_t<T>(std::vector<py::ssize_t>{side, side}, data, capsule_of(std::move(owner)));
 }
 
-py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, py::handle literal_flag) {
+py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, py::handle literal_flag,
+               py::handle progress_callback) {
   const bool literal = flag_arg(literal_flag, "literal");
   AtlasSpec spec;
   spec.ratio = ratio_arg(n);
@@ -72,11 +73,12 @@ py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::
   const std::size_t workers =
       threads.is_none() ? std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kAtlasMaxThreads)
                         : count_arg(threads, "threads", 1, kAtlasMaxThreads);
+  const ParallelProgress progress = interruptible(progress_callback);
   std::vector<AtlasCell> cells;
   {
     py::gil_scoped_release release;
     spec.validate();
-    cells = compute_atlas(spec, AtlasRows{0, spec.grid}, workers);
+    cells = compute_atlas(spec, AtlasRows{0, spec.grid}, workers, progress);
   }
   const std::size_t m = cells.size();
   std::vector<double> a2s(m), a3s(m);
@@ -126,17 +128,19 @@ py::object boundaries(py::handle n, py::handle a2) {
   return from_json(json.str());
 }
 
-py::list boundary_loci_list(py::handle n, py::handle a2, py::handle steps, py::handle threads) {
+py::list boundary_loci_list(py::handle n, py::handle a2, py::handle steps, py::handle threads,
+                            py::handle progress_callback) {
   const Ratio nv = ratio_arg(n);
   const auto [lo, hi] = range_arg(a2, "a2");
   const std::size_t k = count_arg(steps, "steps", 1, kMaxLocusSteps);
   const std::size_t workers =
       threads.is_none() ? std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kAtlasMaxThreads)
                         : count_arg(threads, "threads", 1, kAtlasMaxThreads);
+  const ParallelProgress progress = interruptible(progress_callback);
   std::vector<Locus> loci;
   {
     py::gil_scoped_release release;
-    loci = boundary_loci(nv, lo, hi, k, workers);
+    loci = boundary_loci(nv, lo, hi, k, workers, progress);
   }
   py::list out;
   for (const Locus& locus : loci) {
@@ -165,11 +169,12 @@ py::list boundary_loci_list(py::handle n, py::handle a2, py::handle steps, py::h
 void bind_design_map(py::module_& m) {
   m.def("boundaries", &boundaries, py::arg("n"), py::arg("a2"), doc("boundaries"));
   m.def("boundary_loci", &boundary_loci_list, py::arg("n"), py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
-        py::arg("steps") = 720, py::arg("threads") = py::none(), doc("boundary_loci"));
+        py::arg("steps") = 720, py::arg("threads") = py::none(), py::kw_only(), py::arg("progress") = py::none(),
+        doc("boundary_loci"));
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
         py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
         py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),
-        py::arg("literal") = false, doc("atlas"));
+        py::arg("literal") = false, py::kw_only(), py::arg("progress") = py::none(), doc("atlas"));
   m.def("classify_a3_range", &classify_a3_range_list, py::arg("a2"), py::arg("n"), py::arg("a3"),
         py::arg("count") = 721, py::arg("literal") = false, doc("classify_a3_range"));
 }

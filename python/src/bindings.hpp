@@ -17,6 +17,7 @@
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/io/train_text.hpp"
 
@@ -66,6 +67,12 @@ Ratio ratio_arg(py::handle v);
 std::pair<double, double> range_arg(py::handle v, const std::string& field);
 /// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
 std::size_t census_samples_arg(py::handle samples);
+
+/// The progress of a long call (atlas, boundary_loci), run on the calling thread about every
+/// 100 ms with the GIL taken: Ctrl-C (PyErr_CheckSignals) raises KeyboardInterrupt out of the call,
+/// and `callback(done, total)` is called unless it is None (an exception it raises stops the call).
+/// Throws InvalidInput("progress") unless callback is None or callable.
+ParallelProgress interruptible(py::handle callback);
 
 /// A gear train and the text of its inputs (TrainText: a2, a3, n, phase, as classify --json reports them).
 struct Train {

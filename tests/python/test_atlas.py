@@ -3,6 +3,10 @@ n = 1 (Eq. 24) evaluated here; the same cells as `sphtroch atlas --csv`."""
 import csv
 import io
 import math
+import os
+import signal
+import threading
+import time
 
 import pytest
 
@@ -77,3 +81,58 @@ def test_boundary_loci_equal_the_cli_csv():
     for got, want in zip(mine, parsed):
         g = got.split(",")
         assert g[:4] == want[:4] and [float(x) for x in g[4:]] == [float(x) for x in want[4:]]
+
+
+def _interrupt_after(seconds):
+    """SIGINT to this process after `seconds` (as Ctrl-C would send it); returns the time it was sent."""
+    sent = []
+
+    def send():
+        sent.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(seconds, send)
+    timer.start()
+    return timer, sent
+
+
+@pytest.mark.parametrize("call", ["atlas", "boundary_loci"])
+def test_ctrl_c_interrupts_a_long_call_within_half_a_second(call):
+    # A 512^2 atlas of n = 13/5 (or 10,000 loci samples) takes tens of seconds here; SIGINT after 1 s.
+    timer, sent = _interrupt_after(1.0)
+    start = time.monotonic()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            if call == "atlas":
+                sphtroch.atlas("13/5", grid=512, threads=2)
+            else:
+                sphtroch.boundary_loci("13/5", steps=10000, threads=2)
+    finally:
+        timer.cancel()
+    raised = time.monotonic()
+    assert sent, "the call ended before the interrupt was sent: make it longer"
+    assert raised - sent[0] <= 0.5, f"KeyboardInterrupt {raised - sent[0]:.3f} s after SIGINT"
+    assert raised - start < 5.0
+
+
+def test_progress_reports_cells_done_and_can_stop_the_call():
+    calls = []
+    a = sphtroch.atlas(2, grid=48, threads=2, progress=lambda done, total: calls.append((done, total)))
+    assert a["nodes"].shape == (48, 48)
+    assert calls and calls[-1] == (48 * 48, 48 * 48)
+    assert all(total == 48 * 48 for _, total in calls)
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+
+    class Stop(Exception):
+        pass
+
+    def stop(done, total):
+        raise Stop()
+
+    with pytest.raises(Stop):
+        sphtroch.atlas("13/5", grid=512, threads=2, progress=stop)
+    loci_calls = []
+    sphtroch.boundary_loci(2, steps=40, threads=1, progress=lambda d, t: loci_calls.append((d, t)))
+    assert loci_calls[-1] == (40, 40)
+    with pytest.raises(sphtroch.InvalidInput, match="progress"):
+        sphtroch.atlas(2, grid=4, progress=3)

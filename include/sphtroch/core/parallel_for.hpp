@@ -45,8 +45,8 @@ inline std::atomic<std::size_t> fault_index{static_cast<std::size_t>(-1)};
 /// Calls body(i) once for every i in [0, count), on min(threads, chunks) threads, handing out
 /// indices in chunks of `chunk` by an atomic counter. Without `progress` the calling thread is
 /// one of the workers; with it, the calling thread reports progress about every 100 ms (and once
-/// at the end) while the workers run. The first exception a body throws stops the handing out;
-/// it is rethrown here after every thread has joined. threads <= 1: no thread is started.
+/// at the end) while the workers run. The first exception a body or `progress` throws stops the
+/// handing out (a chunk started is finished); it is rethrown here after every thread has joined. threads <= 1: no thread is started.
 template <typename Body>
 void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t chunk = 1,
                   const ParallelProgress& progress = {}) {
@@ -82,9 +82,15 @@ void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t
     worker();  // the calling thread is one of the workers
   } else {
     pool.emplace_back(worker);
-    while (done.load() < count && !failed.load()) {
-      progress(done.load(), count);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      while (done.load() < count && !failed.load()) {
+        progress(done.load(), count);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    } catch (...) {  // e.g. the caller's interrupt: the workers stop after their chunk
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+      failed = true;
     }
   }
   for (std::thread& t : pool) t.join();

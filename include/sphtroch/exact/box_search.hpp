@@ -2,7 +2,12 @@
 // a box: interval branch and bound with the Krawczyk operator. The engine of precision points
 // (exact/precision_points.hpp: fixed frame, 4 unknowns).
 //
-//   sphtroch::PrecisionPoints r = sphtroch::box_search_detail::BoxSearch<MySystem>(system, options).run();
+//   // a System: FixedFrameSystem of precision_points.hpp, three points of a train of ratio 1/2
+//   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
+//   const sphtroch::precision_detail::FixedFrameSystem system({curve.point(0.5), curve.point(2.0), curve.point(7.0)},
+//                                                          sphtroch::Ratio(1, 2));
+//   sphtroch::PrecisionPoints r =
+//       sphtroch::box_search_detail::BoxSearch<sphtroch::precision_detail::FixedFrameSystem>(system, {}).run();
 //
 // A System (see FixedFrameSystem in precision_points.hpp for one) has kOuter unknowns split by the
 // outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,

@@ -133,11 +133,13 @@ struct Locus {
 /// events of one (label, m) continued from one sample to the next, the nearest in a3 within
 /// kLocusJump. A locus ends where its stationary point leaves (0, pi) (on a pitch cone), merges
 /// with the other one (a triple root) or at the range's edge; it is then resolved to the a2 step.
-/// The samples are computed on `threads` threads. Throws InvalidInput("a2") for a bad range,
+/// The samples are computed on `threads` threads; `progress`, if given, is called on the calling
+/// thread about every 100 ms with (samples done, steps), and an exception it throws stops the
+/// work and is rethrown (parallel_for.hpp). Throws InvalidInput("a2") for a bad range,
 /// InvalidInput("steps") unless 1 <= steps <= kMaxLocusSteps, InvalidInput("n") beyond the
 /// census cost bound (cost_bounds.hpp).
 inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps = 720,
-                                        std::size_t threads = 1);
+                                        std::size_t threads = 1, const ParallelProgress& progress = {});
 
 /// The event of `set` nearest a3 (the first of equals), or nothing when the set has none.
 inline std::optional<BoundaryEvent> nearest_event(const BoundarySet& set, double a3) {
@@ -436,7 +438,7 @@ inline BoundarySet boundary_set(double a2, const Ratio& n) {
 }
 
 inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_hi, std::size_t steps,
-                                        std::size_t threads) {
+                                        std::size_t threads, const ParallelProgress& progress) {
   using namespace boundary_set_detail;
   const double pi = Constants<double>::pi();
   const std::string range = number_text(a2_lo) + ":" + number_text(a2_hi);
@@ -471,7 +473,7 @@ inline std::vector<Locus> boundary_loci(const Ratio& n, double a2_lo, double a2_
   parallel_for(steps, threads, [&](std::size_t k) {
     events[k] = tangencies(a2s[k], n);
     std::sort(events[k].begin(), events[k].end(), [](const BoundaryEvent& a, const BoundaryEvent& b) { return a.a3 < b.a3; });
-  });
+  }, 1, progress);
   // Tangency loci: events of one (label, m) continued from sample to sample (nearest in a3).
   std::vector<std::size_t> open;  // indices into out of loci that reached the previous sample
   for (std::size_t k = 0; k < steps; ++k) {
