@@ -15,8 +15,12 @@ import numpy.typing as npt
 
 __version__: str
 
-Angle = Union[float, int, str]
-RatioLike = Union[int, str, float, Fraction]
+# What the runtime accepts, NumPy scalars included (mypy --strict: tests/python/typed_example.py).
+Real = Union[float, int, np.floating[Any], np.integer[Any]]  # anything float() takes, not bool or str
+Count = Union[int, np.integer[Any]]  # a whole number (__index__), not bool
+Flag = Union[bool, np.bool_]
+Angle = Union[Real, str]
+RatioLike = Union[int, str, float, Fraction, np.integer[Any], np.floating[Any]]
 AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" text ("0:pi/2")
 
 class UncertifiedResult(RuntimeError):
@@ -89,7 +93,7 @@ class GearTrain:
     def texts(self) -> Tuple[str, str, str, str]:
         """(a2, a3, n, phase) as text: as given, or the shortest round-trip form of a float."""
     @overload
-    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
+    def trace(self, *, samples: Optional[Count] = ..., turns: Optional[Real] = ...,
               velocity: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """The trajectory P(theta2) (Eq. 4): t (N,), P (N, 3) unit vectors, and with
         velocity=True V = dP/dtheta2 (N, 3) (Eq. 47a); float64, owned by the arrays (no copy).
@@ -100,10 +104,10 @@ class GearTrain:
         `sphtroch trace`). The same numbers as `sphtroch trace` prints.
         """
     @overload
-    def trace(self, *, samples: Optional[int] = ..., turns: Optional[float] = ...,
+    def trace(self, *, samples: Optional[Count] = ..., turns: Optional[Real] = ...,
               velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
                                                 npt.NDArray[np.float64]]: ...
-    def classify(self, *, literal: bool = False, samples: Optional[int] = None) -> Dict[str, Any]:
+    def classify(self, *, literal: Flag = False, samples: Optional[Count] = None) -> Dict[str, Any]:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
         boundaries, z_extremes, symmetry, criteria, censuses, agreement, certified, certificate,
@@ -111,14 +115,14 @@ class GearTrain:
         literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
         samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
         """
-    def nodes(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
+    def nodes(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
         """The "nodes" list of classify() (position, longitude, latitude, params, branches, kind,
         angle, crossing_pairs, tangency_pairs), from the certified node census (without the
         criteria). Raises UncertifiedResult when the two censuses disagree after escalation."""
-    def cusps(self, *, literal: bool = False, samples: Optional[int] = None) -> List[Dict[str, Any]]:
+    def cusps(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
         """The "cusps" list of classify() (position, param, speed)."""
-    def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[int] = None,
-            labels: str = "auto", literal: bool = False, samples: Optional[int] = None) -> str:
+    def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[Count] = None,
+            labels: str = "auto", literal: Flag = False, samples: Optional[Count] = None) -> str:
         """The curve on the sphere as SVG text, as `sphtroch plot` draws it (the certified census;
         an uncertified count says so in the caption). view: "top" (along the sun axis), "front",
         "side", "AZ,EL" or (az, el) angles (default: from (1, 0.6, 0.5)); size: 64 .. 8192 px
@@ -127,7 +131,7 @@ class GearTrain:
     def _repr_svg_(self) -> str:
         """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
         stays readable)."""
-    def classify_roots(self, *, literal: bool = False) -> Dict[str, Any]:
+    def classify_roots(self, *, literal: Flag = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
         analytic_nodes (the report's count for n = 1, 2, else None), analytic_cusps,
@@ -141,8 +145,8 @@ class GearTrain:
         """Consistent with ==: trains can key a dict or a set (memoising a sweep)."""
     def __reduce__(self) -> Any: ...
 
-def crossings(points: npt.ArrayLike, closed: bool = True, *, pairs: bool = False,
-              max_crossings: int = 10_000_000, max_work: int = 50_000_000) -> Dict[str, Any]:
+def crossings(points: npt.ArrayLike, closed: Flag = True, *, pairs: Flag = False,
+              max_crossings: Count = 10_000_000, max_work: Count = 50_000_000) -> Dict[str, Any]:
     """The exact self-crossings of a spherical polyline (edges are great-circle arcs; edge e
     joins row e to row e+1, and the last row to the first when closed), as `sphtroch crossings`.
 
@@ -165,9 +169,9 @@ def crossings(points: npt.ArrayLike, closed: bool = True, *, pairs: bool = False
     candidate_pairs, predicates, input_converted, timings {"seconds_search"}.
     """
 
-def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.141592653589793),
-          a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[int] = None,
-          literal: bool = False, *, progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, Any]:
+def atlas(n: RatioLike, grid: Count = 128, a2: AngleRange = (0.0, 3.141592653589793),
+          a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[Count] = None,
+          literal: Flag = False, *, progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, Any]:
     """The classification map over (a2, a3) for one gear ratio, as `sphtroch atlas`: G x G cells
     sampled at their centres (row i: a2, column j: a3). Arrays of shape (G, G): a2, a3 (float64,
     radians), nodes, crossings, tangencies, cusps, analytic_nodes (-1 where the report gives no
@@ -179,8 +183,8 @@ def atlas(n: RatioLike, grid: int = 128, a2: AngleRange = (0.0, 3.14159265358979
     the call (the cells being computed finish first: at most threads x 64 cells).
     """
 
-def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: int = 721,
-                      literal: bool = False) -> List[Dict[str, Any]]:
+def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: Count = 721,
+                      literal: Flag = False) -> List[Dict[str, Any]]:
     """classify_roots at `count` evenly spaced a3 in [lo, hi] (both ends included), runs of equal
     (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
     (radians). The class changes between the last sample of a run and the first of the next.
@@ -194,8 +198,8 @@ def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:
     tangencies). No bisection of classify_roots is needed: the events are refined to 1e-12 rad.
     Raises InvalidInput: "n" (0, or beyond the census cost bound), "a2" outside [1e-6, pi - 1e-6]."""
 
-def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps: int = 720,
-                  threads: Optional[int] = None, *,
+def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps: Count = 720,
+                  threads: Optional[Count] = None, *,
                   progress: Optional[Callable[[int, int], object]] = None) -> List[Dict[str, Any]]:
     """The boundary curves of the (a2, a3) map over an a2 range (`sphtroch boundaries --a2 LO:HI`):
     a list of {"kind", "name", "m", "label", "a2", "a3", "b"} with a2, a3, b float64 arrays (radians)
@@ -210,7 +214,7 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     Raises InvalidInput naming "t", "points" or "samples"."""
 
 
-def synth_points(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
+def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
                  ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None) -> Dict[str, Any]:
     """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7;
     or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
@@ -223,10 +227,10 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tu
     "teeth"."""
 
 
-def fit(points: npt.ArrayLike, *, n: Optional[Union[str, int, float, Tuple[int, int]]] = None,
-        ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None, nodes: Optional[int] = None,
-        cusps: Optional[int] = None, candidates: int = 5, max_deviation: float = float("inf"),
-        node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[float] = None) -> Dict[str, Any]:
+def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
+        ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
+        cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
+        node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> Dict[str, Any]:
     """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7; or teeth="ZS:ZP"
     or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),

@@ -1,0 +1,41 @@
+"""A typed user script: `mypy --strict` must accept it (tests/python/test_typing.py), and it runs.
+NumPy scalars go wherever the runtime takes numbers, as a NumPy user writes them."""
+from fractions import Fraction
+from typing import Any, Dict, List
+
+import numpy as np
+import numpy.typing as npt
+
+import sphtroch
+
+
+def sweep(a2: float, a3s: npt.NDArray[np.float64]) -> List[int]:
+    counts: List[int] = []
+    for a3 in a3s:  # np.float64 elements
+        train = sphtroch.GearTrain(a2, a3, np.int64(2), phase=np.float64(0.1))
+        info: Dict[str, Any] = train.classify(literal=np.bool_(False))
+        counts.append(int(info["counts"]["nodes"]))
+    return counts
+
+
+def main() -> None:
+    train = sphtroch.GearTrain("pi/3", 1.2, Fraction(13, 5))
+    t, p = train.trace(samples=np.int64(500))
+    t2, p2, v = train.trace(samples=200, turns=np.float32(1.5), velocity=True)
+    assert p.shape == (500, 3) and v.shape == p2.shape and t2.shape == (200,)
+    svg: str = train.svg(size=np.int64(300), labels="none")
+    assert "<svg" in svg[:200]
+    print(sweep(1.0, np.linspace(0.2, 2.9, 5)))
+    seen = {train: "memo"}  # GearTrain is hashable
+    assert seen[sphtroch.GearTrain("60deg", 1.2, "13/5")] == "memo"
+    a = sphtroch.atlas(np.int64(2), grid=np.int64(8), a2=(np.float64(0.1), "pi"), threads=np.int32(1),
+                       progress=lambda done, total: None)
+    print(int(a["nodes"].max()))
+    events = sphtroch.boundaries(np.float64(2.5), np.float64(1.0))["events"]
+    print(len(events))
+    pts = sphtroch.crossings(p, closed=np.bool_(True), max_work=np.int64(10**7))
+    print(pts["crossings"])
+
+
+if __name__ == "__main__":
+    main()

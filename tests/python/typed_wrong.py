@@ -1,0 +1,8 @@
+"""A typed user script with four mistakes `mypy --strict` must report (tests/python/test_typing.py):
+the lines marked "error:" and only those."""
+import sphtroch
+
+train = sphtroch.GearTrain(1.0, 2.0, None)  # error: None is no gear ratio
+t, p = train.trace(samples=2.5)  # error: samples is a whole number
+d = sphtroch.atlas(2, grid="64")  # error: grid is a count, not text
+x: int = train.a2  # error: a2 is a float
