@@ -1,0 +1,45 @@
+"""`pip install --no-build-isolation .` into a fresh venv (--system-site-packages: NumPy from Debian),
+offline, from a copy of the source tree (so the test writes nothing into the tree); then, from
+outside the tree, the installed package imports, computes, and shows its documentation."""
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+SOURCE = pathlib.Path(os.environ["SPHTROCH_SOURCE_DIR"])
+SKIP = shutil.ignore_patterns("build", "build-*", ".git", "node_modules", "*.egg-info", "__pycache__")
+
+
+def run(args, cwd, env=None):
+    r = subprocess.run(args, cwd=cwd, capture_output=True, text=True, env=env)
+    assert r.returncode == 0, f"{args}:\n{r.stdout[-3000:]}\n{r.stderr[-3000:]}"
+    return r.stdout
+
+
+def test_pip_install_into_a_fresh_venv_and_import_from_outside(tmp_path):
+    tree = tmp_path / "src"
+    shutil.copytree(SOURCE, tree, ignore=SKIP)
+    venv = tmp_path / "venv"
+    run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)], tmp_path)
+    python = str(venv / "bin" / "python")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    env["CMAKE_BUILD_PARALLEL_LEVEL"] = "2"
+    run([python, "-m", "pip", "install", "--no-build-isolation", "--no-index", "--no-cache-dir", str(tree)], tmp_path, env)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    check = (
+        "import pathlib, pydoc, sphtroch\n"
+        "assert pathlib.Path(sphtroch.__file__).is_relative_to(pathlib.Path(r'%s')), sphtroch.__file__\n"
+        "t = sphtroch.GearTrain('pi/2', 'pi/2', 1)\n"
+        "c = t.classify()\n"
+        "assert c['counts']['nodes'] == 1 and c['certified'], c\n"  # Eq. 24: one node on a2 = a3 = pi/2, n = 1
+        "doc = pydoc.render_doc(sphtroch.GearTrain.trace)\n"
+        "assert 'The trajectory P(theta2) (Eq. 4)' in doc, doc\n"
+        "stub = pathlib.Path(sphtroch.__file__).with_name('__init__.pyi')\n"
+        "assert stub.is_file() and stub.with_name('py.typed').is_file()\n"
+        "print(sphtroch.__version__)\n" % venv
+    )
+    out = run([python, "-c", check], elsewhere, env)
+    cmake_version = (SOURCE / "CMakeLists.txt").read_text().split("project(sphtroch VERSION ")[1].split()[0]
+    assert out.strip() == cmake_version
