@@ -20,7 +20,8 @@ from ._sphtroch import (  # noqa: F401
     crossings,
     fit,
     identify,
+    scene,
     synth_points,
 )
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "synth_points", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "scene", "synth_points", "__version__"]

@@ -131,6 +131,10 @@ class GearTrain:
     def _repr_svg_(self) -> str:
         """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
         stays readable)."""
+    def report(self, *, literal: Flag = False, samples: Optional[Count] = None) -> str:
+        """The text report `sphtroch classify` prints for this train (the same bytes): counts, the
+        certificate, nodes and cusps, the report's criteria with their margins, the nearest
+        boundary event. classify() is the same analysis as a dict."""
     def classify_roots(self, *, literal: Flag = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
@@ -171,12 +175,17 @@ def crossings(points: npt.ArrayLike, closed: Flag = True, *, pairs: Flag = False
 
 def atlas(n: RatioLike, grid: Count = 128, a2: AngleRange = (0.0, 3.141592653589793),
           a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[Count] = None,
-          literal: Flag = False, *, progress: Optional[Callable[[int, int], object]] = None) -> Dict[str, Any]:
+          literal: Flag = False, *, progress: Optional[Callable[[int, int], object]] = None,
+          svg: Flag = False) -> Dict[str, Any]:
     """The classification map over (a2, a3) for one gear ratio, as `sphtroch atlas`: G x G cells
     sampled at their centres (row i: a2, column j: a3). Arrays of shape (G, G): a2, a3 (float64,
     radians), nodes, crossings, tangencies, cusps, analytic_nodes (-1 where the report gives no
     count, n != 1, 2), analytic_cusps (int64), agree (int8: 1 agree, 0 disagree, -1 no
-    prediction), cusps_agree (bool); plus n (str) and threads (int).
+    prediction), cusps_agree (bool); plus n (str), threads (int), summary (str: the summary
+    `sphtroch atlas` prints, with the wall time and the certificate: every class change between
+    neighbouring cells crossed by a boundary of the boundary set), uncertified (str: "" or why the
+    tool would exit with status 3) and, with svg=True, svg (str: the map `sphtroch atlas --svg`
+    writes, the same bytes).
     grid: 1 .. 4096; ranges (lo, hi) or the CLI's "LO:HI" text, 0 <= lo < hi <= pi; threads: 1 .. 1024
     (default: all cores). progress(done, total) is called about every 100 ms (and at the end) with the
     cells done; Ctrl-C raises KeyboardInterrupt within ~0.1 s, and an exception progress raises stops
@@ -205,6 +214,14 @@ def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps
     a list of {"kind", "name", "m", "label", "a2", "a3", "b"} with a2, a3, b float64 arrays (radians)
     sampled at the cell centres lo + (hi - lo)(k + 1/2)/steps. steps: 1 .. 10000; threads: 1 .. 1024
     (default: all cores). progress(done, total) and Ctrl-C as for atlas (done: a2 samples)."""
+
+def scene(scene: Union[str, Dict[str, Any]]) -> Dict[str, Any]:
+    """Runs a scene (`sphtroch scene`'s JSON format, docs/cli.md; text or a dict) without touching a
+    file: {"trains": [{"name", "outputs": {effect: text}, "uncertified", "explanation"}]}, each
+    output the bytes `sphtroch scene` writes to that effect's path (the path only decides the
+    classification's form: ".txt" text, else JSON); "uncertified" is "" or why the tool would exit
+    with status 3; "explanation" is `--explain --json`'s object (stages run, their work).
+    Raises InvalidInput naming "scene: <path in the scene>" as the tool does."""
 
 def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
     """The gear train of a timed trace (as `sphtroch synth identify`): t (N,) carrier angles,

@@ -4,6 +4,9 @@
 #include "bindings.hpp"
 
 #include "sphtroch/atlas/atlas.hpp"
+#include "sphtroch/atlas/atlas_boundary_check.hpp"
+#include "sphtroch/atlas/atlas_svg.hpp"
+#include "sphtroch/atlas/atlas_summary.hpp"
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/boundary_events_output.hpp"
@@ -14,6 +17,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <thread>
@@ -61,8 +65,9 @@ py::array square(std::vector<T> values, std::size_t g) {
 }
 
 py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::handle threads, py::handle literal_flag,
-               py::handle progress_callback) {
+               py::handle progress_callback, py::handle svg_flag) {
   const bool literal = flag_arg(literal_flag, "literal");
+  const bool with_svg = flag_arg(svg_flag, "svg");
   AtlasSpec spec;
   spec.ratio = ratio_arg(n);
   spec.grid = count_arg(grid, "grid", 1, kAtlasMaxGrid);
@@ -75,10 +80,22 @@ py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::
                         : count_arg(threads, "threads", 1, kAtlasMaxThreads);
   const ParallelProgress progress = interruptible(progress_callback);
   std::vector<AtlasCell> cells;
+  std::string svg, summary, uncertified;
   {
     py::gil_scoped_release release;
     spec.validate();
+    const auto start = std::chrono::steady_clock::now();
     cells = compute_atlas(spec, AtlasRows{0, spec.grid}, workers, progress);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const AtlasSummary s = summarize_atlas(cells, spec.ratio);
+    const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, workers);
+    std::ostringstream text;  // the summary `sphtroch atlas` prints, with its certificate
+    write_atlas_summary(text, spec, s, listed_disagreements(s, cells), AtlasRun{AtlasRows{0, spec.grid}, {}, seconds, workers});
+    write_atlas_boundary_check(text, check, cells);
+    write_atlas_certificate(text, s, &check);
+    summary = text.str();
+    uncertified = atlas_uncertified(s, &check);
+    if (with_svg) svg = render_atlas_svg(spec, cells);  // `sphtroch atlas --svg`
   }
   const std::size_t m = cells.size();
   std::vector<double> a2s(m), a3s(m);
@@ -111,6 +128,9 @@ py::dict atlas(py::handle n, py::handle grid, py::handle a2, py::handle a3, py::
   d["cusps_agree"] = square(std::move(cusps_agree), spec.grid).attr("astype")("bool");
   d["n"] = spec.ratio.str();
   d["threads"] = workers;
+  d["summary"] = summary;
+  d["uncertified"] = uncertified;
+  if (with_svg) d["svg"] = svg;
   return d;
 }
 
@@ -174,7 +194,7 @@ void bind_design_map(py::module_& m) {
   m.def("atlas", &atlas, py::arg("n"), py::arg("grid") = 128,
         py::arg("a2") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()),
         py::arg("a3") = py::make_tuple(0.0, sphtroch::Constants<double>::pi()), py::arg("threads") = py::none(),
-        py::arg("literal") = false, py::kw_only(), py::arg("progress") = py::none(), doc("atlas"));
+        py::arg("literal") = false, py::kw_only(), py::arg("progress") = py::none(), py::arg("svg") = false, doc("atlas"));
   m.def("classify_a3_range", &classify_a3_range_list, py::arg("a2"), py::arg("n"), py::arg("a3"),
         py::arg("count") = 721, py::arg("literal") = false, doc("classify_a3_range"));
 }

@@ -127,9 +127,33 @@ std::string train_repr(const Train& t) {
          repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
 }
 
+/// report(): the text `sphtroch classify` prints.
+std::string report(const Train& self, py::handle literal_flag, py::handle samples) {
+  const bool literal = flag_arg(literal_flag, "literal");
+  const std::size_t s = census_samples_arg(samples);
+  py::gil_scoped_release release;
+  return classification_report_text(self.text, self.train, literal, s);
+}
+
+/// scene(): a scene's JSON text (or a dict, dumped by json.dumps) run without files.
+py::object scene(py::handle scene_arg) {
+  std::string text;
+  if (py::isinstance<py::dict>(scene_arg))
+    text = py::module_::import("json").attr("dumps")(scene_arg).cast<std::string>();
+  else
+    text = text_arg(scene_arg, "scene", "a scene as JSON text or a dict (docs/cli.md: sphtroch scene)");
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = scene_json_text(text);
+  }
+  return from_json(json);
+}
+
 }  // namespace
 
 void bind_gear_train(py::module_& m) {
+  m.def("scene", &scene, py::arg("scene"), doc("scene"));
   py::class_<Train>(m, "GearTrain", doc("GearTrain"))
       .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),
            py::arg("a2"), py::arg("a3"), py::arg("n"), py::arg("phase") = 0.0)
@@ -158,6 +182,7 @@ void bind_gear_train(py::module_& m) {
       .def("_repr_svg_", [](const Train& t) {
         return svg(t, py::none(), py::none(), py::str("auto"), py::bool_(false), py::none());
       }, doc("GearTrain._repr_svg_"))
+      .def("report", &report, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
       .def("__repr__", &train_repr)
       // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:

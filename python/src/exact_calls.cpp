@@ -7,10 +7,12 @@
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 
 namespace sphtroch::python {
 
@@ -29,6 +31,32 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
   return classification_json(text, a.classification()).dump();
+}
+
+std::string classification_report_text(const TrainText& text, const GearTrain& train, bool literal,
+                                       std::size_t census_samples) {
+  const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
+  std::ostringstream out;
+  write_classification_text(out, text, a.classification());
+  return out.str();
+}
+
+std::string scene_json_text(const std::string& scene_text) {
+  nlohmann::ordered_json trains = nlohmann::ordered_json::array();
+  for (const SceneTrain& st : parse_scene(scene_text, "scene")) {
+    const Analysis a(st.train, st.settings);
+    nlohmann::ordered_json outputs = nlohmann::ordered_json::object();
+    for (const SceneEffect& e : st.effects) {
+      std::ostringstream out;
+      write_scene_effect(out, st, a, e);  // the bytes `sphtroch scene` writes to e.path
+      outputs[to_string(e.effect)] = out.str();
+    }
+    trains.push_back({{"name", st.name},
+                      {"outputs", std::move(outputs)},
+                      {"uncertified", scene_uncertified(st, a)},  // "" or why (the CLI's exit 3)
+                      {"explanation", scene_explanation_json(st, a)}});
+  }
+  return nlohmann::ordered_json{{"trains", std::move(trains)}}.dump();
 }
 
 std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool literal, std::size_t census_samples,

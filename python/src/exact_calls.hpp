@@ -29,6 +29,15 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
 std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& train, bool literal,
                                       std::size_t census_samples);
 
+/// `sphtroch classify` (text) of `train`: the report write_classification_text prints.
+std::string classification_report_text(const TrainText& text, const GearTrain& train, bool literal,
+                                       std::size_t census_samples);
+
+/// A scene (exact/scene.hpp, the `sphtroch scene` format) run without files: JSON text
+/// {"trains": [{"name", "outputs": {effect: the bytes `sphtroch scene` writes to its path},
+/// "uncertified" ("" or the CLI's reason for exit status 3), "explanation": scene_explanation_json}]}. Throws SceneError (an InvalidInput).
+std::string scene_json_text(const std::string& scene_text);
+
 /// `sphtroch plot` of `train` as SVG text (the certified census; an uncertified one says so in the
 /// caption, as the CLI's picture does), drawn with `options` (view, size, labels).
 std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool literal, std::size_t census_samples,
