@@ -197,7 +197,9 @@ def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: Count = 72
     """classify_roots at `count` evenly spaced a3 in [lo, hi] (both ends included), runs of equal
     (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
     (radians). The class changes between the last sample of a run and the first of the next.
-    Raises InvalidInput: "a3" unless 0 < lo < hi < pi, "count" unless 2 .. 10**6."""
+    a3: 0 <= lo < hi <= pi as for atlas; an end at 0 or pi (where no train exists) is sampled at
+    1e-6 / pi - 1e-6, the nearest valid train. Raises InvalidInput: "a3" for another range,
+    "count" unless 2 .. 10**6."""
 
 def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:
     """Where the node count changes in a3 at one a2 (`sphtroch boundaries --n N --a2 A --json`,

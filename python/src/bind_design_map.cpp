@@ -30,7 +30,12 @@ py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::
   std::string ignored;
   const double a2v = angle_arg(a2, "a2", ignored);
   const Ratio nv = ratio_arg(n);
-  const auto [lo, hi] = range_arg(a3, "a3");
+  auto [lo, hi] = range_arg(a3, "a3");
+  // Ranges read the same everywhere (0 <= lo < hi <= pi, as atlas): an end at 0 or pi, where no
+  // train exists, is sampled at the nearest one (kMinCarrierTwist inside).
+  const double pi = Constants<double>::pi();
+  if (lo == 0.0 && hi > kMinCarrierTwist) lo = kMinCarrierTwist;
+  if (hi == pi && lo < pi - kMinCarrierTwist) hi = pi - kMinCarrierTwist;
   const std::size_t k = count_arg(count, "count", 2, 1000000);
   const bool literal = flag_arg(literal_flag, "literal");
   std::vector<A3Interval> runs;

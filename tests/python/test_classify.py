@@ -78,6 +78,14 @@ def test_classify_a3_range_intervals_follow_eq24():
     assert runs[1]["a3_last"] < 3 * math.pi / 4 < runs[2]["a3_first"]
 
 
+def test_classify_a3_range_takes_the_whole_range_as_atlas_does():
+    # (0, pi) as atlas takes it: the ends are the nearest trains, 1e-6 inside (Eq. 24 again).
+    runs = sphtroch.classify_a3_range("pi/2", 1, (0, math.pi), count=101)
+    assert runs[0]["a3_first"] == 1e-6 and runs[-1]["a3_last"] == math.pi - 1e-6
+    assert [r["class"] for r in runs] == ["simple curve", "nodes", "simple curve"]
+    assert sphtroch.classify_a3_range("pi/2", 1, "0:pi", count=101) == runs
+
+
 def test_d1_certified_nodes_near_the_mirror_cone():
     """Issue 17, D1: 845 nodes (13 with one branch) were printed as certain; the root-count census,
     and an independent computation, give 832 (16 roots x 52)."""

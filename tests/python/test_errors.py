@@ -89,7 +89,7 @@ def test_atlas_arguments(kwargs, field):
 
 @pytest.mark.parametrize("kwargs,field", [
     (dict(a2=0, n=2, a3=(0.1, 1)), "a2"), (dict(a2=1, n="q", a3=(0.1, 1)), "n"),
-    (dict(a2=1, n=2, a3=(1, 0.1)), "a3"), (dict(a2=1, n=2, a3=(0, 1)), "a3"),
+    (dict(a2=1, n=2, a3=(1, 0.1)), "a3"), (dict(a2=1, n=2, a3=(-0.1, 1)), "a3"), (dict(a2=1, n=2, a3=(0, 4)), "a3"),
     (dict(a2=1, n=2, a3=(0.1, 1), count=1), "count"), (dict(a2=1, n=2, a3=5), "a3"),
 ])
 def test_classify_a3_range_arguments(kwargs, field):
@@ -127,7 +127,7 @@ def test_d11_str_of_invalid_input_is_one_line():
 
 
 def test_d11_classify_a3_range_names_its_argument_a3():
-    for a3 in ((1, 1), (1.0, 0.5), (0.0, 1.0), (1.0, 4.0)):
+    for a3 in ((1, 1), (1.0, 0.5), (-0.5, 1.0), (1.0, 4.0)):
         check(lambda: sphtroch.classify_a3_range(a2=1.0, n=2, a3=a3), "a3")
 
 
