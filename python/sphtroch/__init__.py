@@ -22,6 +22,10 @@ from ._sphtroch import (  # noqa: F401
     identify,
     scene,
     synth_points,
+    _doc,
 )
+from ._arrays import PointSet, attach as _attach
 
-__all__ = ["GearTrain", "InvalidInput", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "scene", "synth_points", "__version__"]
+_attach(GearTrain, _doc)
+
+__all__ = ["GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "scene", "synth_points", "__version__"]

@@ -8,7 +8,7 @@ velocity) accept only True or False (also numpy.bool_). Every computation runs w
 GIL released; GearTrain objects are immutable and may be shared between threads.
 """
 from fractions import Fraction
-from typing import Any, Callable, Dict, List, Literal, Optional, Tuple, Union, overload
+from typing import Any, Callable, Dict, Iterator, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -135,6 +135,12 @@ class GearTrain:
         """The text report `sphtroch classify` prints for this train (the same bytes): counts, the
         certificate, nodes and cusps, the report's criteria with their margins, the nearest
         boundary event. classify() is the same analysis as a dict."""
+    def node_set(self, *, literal: Flag = False, samples: Optional[Count] = None) -> "PointSet":
+        """The nodes of nodes() as NumPy arrays (a PointSet: positions (k, 3), params (k, m), kinds,
+        branches, longitude, latitude, ids 1..k = the plot's labels N1..Nk). Raises UncertifiedResult
+        as nodes() does."""
+    def cusp_set(self, *, literal: Flag = False, samples: Optional[Count] = None) -> "PointSet":
+        """The cusps of cusps() as NumPy arrays (a PointSet: params (k, 1), kinds "cusp", branches 1)."""
     def classify_roots(self, *, literal: Flag = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
@@ -148,6 +154,34 @@ class GearTrain:
     def __hash__(self) -> int:
         """Consistent with ==: trains can key a dict or a set (memoising a sweep)."""
     def __reduce__(self) -> Any: ...
+
+class PointSet:
+    """Nodes or cusps of a train as NumPy arrays (GearTrain.node_set(), cusp_set()), row i the i-th
+    dict of nodes() / cusps() (len(), [i] and iteration give those dicts). Radians.
+    Attributes: kind ("nodes" or "cusps"); ids (k,) int64, 1..k (the plot's labels N1..Nk);
+    positions (k, 3) float64 unit vectors; params (k, m) float64, the carrier angles theta2 of the
+    branches through each point (m = the most branches; shorter rows padded with NaN; cusps m = 1);
+    kinds (k,) str ("crossing", "tangency", ..., or "cusp"); branches (k,) int64; longitude,
+    latitude (k,) float64 (atan2(y, x), asin(z))."""
+
+    kind: str
+    ids: npt.NDArray[np.int64]
+    positions: npt.NDArray[np.float64]
+    params: npt.NDArray[np.float64]
+    kinds: npt.NDArray[np.str_]
+    branches: npt.NDArray[np.int64]
+    longitude: npt.NDArray[np.float64]
+    latitude: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+    def __getitem__(self, i: int) -> Dict[str, Any]: ...
+    def __iter__(self) -> Iterator[Dict[str, Any]]: ...
+    def to_list(self) -> List[Dict[str, Any]]:
+        """The dicts of nodes() / cusps() (copies)."""
+    def columns(self) -> Dict[str, npt.NDArray[Any]]:
+        """1-D columns id, kind, x, y, z, longitude, latitude, branches, t1 .. tm: what
+        pandas.DataFrame(...) takes."""
+    def to_dataframe(self) -> Any:
+        """pandas.DataFrame(columns()) (needs pandas, imported only here)."""
 
 def crossings(points: npt.ArrayLike, closed: Flag = True, *, pairs: Flag = False,
               max_crossings: Count = 10_000_000, max_work: Count = 50_000_000) -> Dict[str, Any]:

@@ -16,6 +16,8 @@
 
 #include "sphtroch/version.hpp"
 
+#include <string>
+
 PYBIND11_MODULE(_sphtroch, m) {
   namespace python = sphtroch::python;
   m.doc() = "sphtroch: trajectories of spherical planetary gear trains (Lin & Tsai 1990); see __init__.pyi";
@@ -25,4 +27,6 @@ PYBIND11_MODULE(_sphtroch, m) {
   python::bind_design_map(m);
   python::bind_crossings(m);
   python::bind_synthesis(m);
+  // The stub's docstring of `name`, for the package's pure-Python parts (python/sphtroch/_arrays.py).
+  m.def("_doc", [](const std::string& name) { return std::string(python::doc(name.c_str())); });
 }

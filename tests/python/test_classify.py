@@ -3,6 +3,8 @@ data/reference/paper_cases.csv (expected counts from the report), and the same d
 `sphtroch classify --json` (the tool's output, not the module's, is the reference)."""
 import math
 
+import numpy as np
+
 import pytest
 import sphtroch
 from conftest import cli_angle, cli_json, paper_cases, run_cli
@@ -153,3 +155,33 @@ def test_classify_names_the_nearest_event_and_crossing_it_changes_the_counts_as_
     for offset, key in [(-1e-7, "nodes_below"), (1e-7, "nodes_above")]:
         side = cli_json("classify", "--a2", a2, "--a3", repr(e["a3"] + offset), "--n", n, "--json")
         assert side["counts"]["nodes"] == e[key], (offset, side["counts"])
+
+
+def test_node_set_and_cusp_set_are_the_census_as_arrays():
+    tr = sphtroch.GearTrain("pi/3", "pi/2", 2)  # report Fig. 5(f): four crossings
+    nodes = tr.nodes()
+    s = tr.node_set()
+    assert len(s) == 4 and s.kind == "nodes" and s.positions.shape == (4, 3) and s.positions.dtype == np.float64
+    assert np.array_equal(s.positions, np.array([n["position"] for n in nodes]))
+    assert np.array_equal(s.params, np.array([n["params"] for n in nodes]))
+    assert list(s.kinds) == ["crossing"] * 4 and list(s.branches) == [2] * 4 and list(s.ids) == [1, 2, 3, 4]
+    np.testing.assert_allclose(np.linalg.norm(s.positions, axis=1), 1.0, rtol=0, atol=1e-15)  # |P| = 1
+    # Each node is the curve's point at both of its parameters (Eq. 4).
+    for row in range(4):
+        for t in s.params[row]:
+            _, P = tr.trace(samples=3, turns=t / (2 * math.pi))  # open curve: the last sample is at t
+            np.testing.assert_allclose(P[-1], s.positions[row], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(s.latitude, np.arcsin(s.positions[:, 2]), rtol=0, atol=1e-15)
+    assert s.to_list() == nodes and list(s) == nodes and s[2] == nodes[2]
+    cols = s.columns()
+    assert list(cols) == ["id", "kind", "x", "y", "z", "longitude", "latitude", "branches", "t1", "t2"]
+    assert all(len(v) == 4 for v in cols.values())
+    svg = tr.svg(labels="numbers")
+    assert all(f">N{i}<" in svg for i in s.ids) and ">N5<" not in svg  # ids are the plot's labels
+    # Tracer on the pitch cone: one cusp each time theta3 = n theta2 + theta_p passes the contact
+    # angle, |p| = 5 times a period for n = 5/2.
+    c = sphtroch.GearTrain(1.0, "ap", "5/2").cusp_set()
+    assert len(c) == len(sphtroch.GearTrain(1.0, "ap", "5/2").cusps()) == 5
+    assert c.params.shape == (5, 1) and list(c.kinds) == ["cusp"] * 5 and list(c.branches) == [1] * 5
+    empty = sphtroch.GearTrain(0.5, 0.2, 1).node_set()  # Eq. 24: a3 < a2/2, a simple curve
+    assert len(empty) == 0 and empty.positions.shape == (0, 3) and empty.params.shape == (0, 2)
