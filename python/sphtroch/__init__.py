@@ -24,8 +24,10 @@ from ._sphtroch import (  # noqa: F401
     synth_points,
     _doc,
 )
+from . import _plot
 from ._arrays import PointSet, attach as _attach
 
 _attach(GearTrain, _doc)
+_plot.attach(GearTrain, _doc)
 
 __all__ = ["GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "scene", "synth_points", "__version__"]

@@ -141,6 +141,12 @@ class GearTrain:
         as nodes() does."""
     def cusp_set(self, *, literal: Flag = False, samples: Optional[Count] = None) -> "PointSet":
         """The cusps of cusps() as NumPy arrays (a PointSet: params (k, 1), kinds "cusp", branches 1)."""
+    def plot(self, ax: Any = None, *, view: str = "top", samples: Optional[Count] = None,
+             literal: Flag = False) -> Tuple[Any, Any]:
+        """The curve in Matplotlib (imported only here): (fig, ax), drawn into `ax` if given. view
+        "top", "front", "side": orthographic (as `sphtroch plot --view`), near half solid, far half
+        dotted, the unit circle as outline; "lonlat": longitude/latitude in degrees, the curve
+        broken where it wraps. Nodes red dots, cusps black crosses (node_set(), cusp_set())."""
     def classify_roots(self, *, literal: Flag = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
