@@ -30,12 +30,14 @@ jobs=${JOBS:-$(nproc)}
 # (Node >= 20 for playwright-core; the npm packages come from explorer/test/package-lock.json), and
 # python3-ezdxf (an independent reader of the DXF files trace writes; ctest python:cad_export), and
 # python3-mypy (mypy --strict on a typed example against the stub; ctest python:typing), and
-# python3-venv, python3-pip, python3-setuptools (pip install of the package into a venv; python:pip_install).
+# python3-venv, python3-pip, python3-setuptools (pip install of the package into a venv; python:pip_install),
+# python3-nbclient, python3-nbformat, python3-ipykernel (the example notebook runs headless; python:notebook).
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
           libcli11-dev nlohmann-json3-dev)
 if [[ $mode == test ]]; then
   packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
-             emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools)
+             emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools
+             python3-nbclient python3-nbformat python3-ipykernel)
 fi
 
 install_missing_packages() {
