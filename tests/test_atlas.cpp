@@ -382,12 +382,14 @@ TEST_CASE("node shades: distinct counts get distinct blues, darker for more, > 8
     std::vector<AtlasCell> cells;
     for (std::uint32_t n : counts) {
       AtlasCell c;
+      c.a2 = 0.3;  // off the pole boundaries a3 = a2, pi - a2
+      c.a3 = 1.0;
       c.nodes = c.crossings = n;
       cells.push_back(c);
     }
     return cells;
   };
-  const AtlasNodeShades few(cells_with({4, 2, 0, 2, 1, 3}));
+  const AtlasNodeShades few(cells_with({4, 2, 0, 2, 1, 3}), Ratio(2));
   REQUIRE(few.entries().size() == 4);  // 1, 2, 3, 4 (0 is the simple curve)
   for (std::size_t k = 0; k + 1 < few.entries().size(); ++k) {
     CHECK(few.entries()[k].nodes < few.entries()[k + 1].nodes);
@@ -396,7 +398,7 @@ TEST_CASE("node shades: distinct counts get distinct blues, darker for more, > 8
   CHECK(few.entries()[1].cells == 2);
   AtlasCell simple;
   CHECK(std::string(few.colour(simple)) == atlas_class_colour(AtlasClass::simple_curve));
-  const AtlasNodeShades many(cells_with({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+  const AtlasNodeShades many(cells_with({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}), Ratio(2));
   REQUIRE(many.entries().size() == 8);
   CHECK(many.entries().back().nodes == 8);
   CHECK(many.entries().back().and_more);

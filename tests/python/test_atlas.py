@@ -136,3 +136,29 @@ def test_progress_reports_cells_done_and_can_stop_the_call():
     assert loci_calls[-1] == (40, 40)
     with pytest.raises(sphtroch.InvalidInput, match="progress"):
         sphtroch.atlas(2, grid=4, progress=3)
+
+
+def test_atlas_legend_distinguishes_the_regions_of_13_5():
+    """Issue 22: the legend lumped 117..221 nodes into one colour while the diagonal boundary-case
+    counts took entries. Now every region count (cells off the pole lines a3 = a2, pi - a2,
+    counted here from the arrays) has an entry of its own colour; the pole lines' own counts
+    share one grey entry."""
+    import re
+    g = 100
+    a = sphtroch.atlas("13/5", grid=g, svg=True)
+    i, j = np.indices((g, g))
+    on_line = (i == j) | (i + j == g - 1)
+    node_cells = (a["nodes"] > 0) & (a["cusps"] == 0)
+    regions = sorted(set(a["nodes"][node_cells & ~on_line].tolist()))
+    line_only = sorted(set(a["nodes"][node_cells & on_line].tolist()) - set(regions))
+    assert {117, 143, 169, 195, 221} <= set(regions) and len(regions) <= 8
+    legend = a["svg"].split('<g class="legend">', 1)[1]
+    entries = re.findall(r'fill:(#[0-9a-f]{6})"/>\s*<text[^>]*>(\d+) nodes \((\d+) cells\)</text>', legend)
+    assert [int(n) for _, n, _ in entries] == regions
+    colours = [c for c, _, _ in entries]
+    assert len(set(colours)) == len(colours)  # one shade each
+    assert colours == sorted(colours, reverse=True)  # light to dark with the count (hex: darker = smaller)
+    for colour, n, cells in entries:  # the cells counted in the legend are the census's
+        assert int(cells) == int(np.count_nonzero(node_cells & (a["nodes"] == int(n))))
+    grey = re.search(r">on α3 = α2, π − α2 \((\d+) cells\):</text>\s*<text[^>]*>([0-9, ]+) nodes<", legend)
+    assert grey and [int(x) for x in grey.group(2).split(", ")] == line_only

@@ -51,12 +51,16 @@ struct AtlasSvgOptions {
 inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<AtlasCell>& cells,
                                     const AtlasSvgOptions& options = {});
 
-/// Shades of the `nodes` class for one map: the distinct node counts present, spread evenly over
-/// eight blues from light (fewest) to dark (most); with more than eight distinct counts the
-/// largest ones share the darkest blue, labelled ">= N nodes".
+/// Shades of the `nodes` class for one map: the distinct node counts of the map's regions, spread
+/// evenly over eight blues from light (fewest) to dark (most); with more than eight distinct counts
+/// the largest ones share the darkest blue, labelled ">= N nodes". A count found only on a pole
+/// boundary (|p| >= 2: cells with a3 = a2 or a3 = pi - a2 within 1e-12, as the diagonal cells of
+/// an atlas over equal ranges are; Table 1 rows d, g) is the count of a line, not of a region: such
+/// cells share one grey, listed in one legend entry (`boundary_case`), so that eight blues are
+/// left for the regions (n = 13/5: 52, 65, 91, 117, 143, 169, 195, 221 each its own shade).
 class AtlasNodeShades {
  public:
-  explicit AtlasNodeShades(const std::vector<AtlasCell>& cells);
+  AtlasNodeShades(const std::vector<AtlasCell>& cells, const Ratio& ratio);
   /// Fill colour of a cell: its class, and for `nodes` its shade.
   const char* colour(const AtlasCell& cell) const;
   struct Entry {
@@ -64,6 +68,7 @@ class AtlasNodeShades {
     bool and_more;        // the shade is shared by every larger count
     std::size_t cells;
     const char* colour;
+    std::vector<std::uint32_t> boundary_counts = {};  // non-empty: the pole boundaries' own counts
   };
   const std::vector<Entry>& entries() const { return entries_; }
 
@@ -83,6 +88,8 @@ inline std::string atlas_boundary_label(BoundaryKind kind, const Ratio& ratio);
 // =============================================================================================
 
 namespace atlas_svg_detail {
+/// Cells whose node count only a pole boundary has (AtlasNodeShades).
+inline const char* const kBoundaryCase = "#b0b0b0";
 // Light to medium-dark, so that the boundary curves stay visible over every shade.
 inline const char* const kBlues[8] = {"#e3eef9", "#cfe1f2", "#b5d4e9", "#93c3df",
                                       "#6daed5", "#4b97c9", "#2f7ebc", "#1864aa"};
@@ -106,10 +113,27 @@ inline const char* atlas_class_colour(AtlasClass c) {
   return "#000000";
 }
 
-inline AtlasNodeShades::AtlasNodeShades(const std::vector<AtlasCell>& cells) {
-  std::map<std::uint32_t, std::size_t> counts;  // node count -> cells of class `nodes`
+/// Whether a cell lies on a pole boundary of the map (see AtlasNodeShades).
+inline bool on_pole_boundary(const AtlasCell& c, const Ratio& ratio) {
+  constexpr double kOnLine = 1e-12;
+  const double pi = Constants<double>::pi();
+  return std::llabs(ratio.p()) >= 2 && (std::fabs(c.a3 - c.a2) <= kOnLine || std::fabs(c.a3 + c.a2 - pi) <= kOnLine);
+}
+
+inline AtlasNodeShades::AtlasNodeShades(const std::vector<AtlasCell>& cells, const Ratio& ratio) {
+  std::map<std::uint32_t, std::size_t> counts, line_counts;  // node count -> cells of class `nodes`
   for (const AtlasCell& c : cells)
-    if (c.numeric_class() == AtlasClass::nodes) ++counts[c.nodes];
+    if (c.numeric_class() == AtlasClass::nodes) ++(on_pole_boundary(c, ratio) ? line_counts : counts)[c.nodes];
+  Entry line{0, false, 0, atlas_svg_detail::kBoundaryCase};
+  for (const auto& [n, cells_with_n] : line_counts) {
+    if (const auto it = counts.find(n); it != counts.end()) {
+      it->second += cells_with_n;  // a region's count: its shade
+      continue;
+    }
+    shade_[n] = line.colour;
+    line.boundary_counts.push_back(n);
+    line.cells += cells_with_n;
+  }
   const std::size_t m = counts.size();
   std::size_t k = 0;
   for (const auto& [n, cells_with_n] : counts) {
@@ -125,6 +149,10 @@ inline AtlasNodeShades::AtlasNodeShades(const std::vector<AtlasCell>& cells) {
       entries_.push_back(Entry{n, false, cells_with_n, colour});
     }
     ++k;
+  }
+  if (!line.boundary_counts.empty()) {
+    line.nodes = line.boundary_counts.front();
+    entries_.push_back(std::move(line));
   }
 }
 
@@ -220,7 +248,7 @@ class AtlasCanvas {
   AtlasCanvas(const AtlasSpec& spec, const std::vector<AtlasCell>& cells, double map_px)
       : spec_(spec), cells_(cells), g_(spec.grid), map_(map_px), width_(kLeft + map_ + 24 + kLegendWidth),
         height_(kTop + map_ + kBottom), cell_(map_ / static_cast<double>(g_)), summary_(summarize_atlas(cells, spec.ratio)),
-        shades_(cells), svg_(width_, height_, 2) {}
+        shades_(cells, spec.ratio), svg_(width_, height_, 2) {}
 
   /// Title, white background.
   void head(const std::string& title) {
@@ -360,9 +388,14 @@ class AtlasCanvas {
     svg_.text(lx(), y_ + 4, "cells: root-count census", kHead);
     y_ += 20;
     class_swatch(AtlasClass::simple_curve, "simple curve");
-    for (const AtlasNodeShades::Entry& e : shades_.entries())
+    for (const AtlasNodeShades::Entry& e : shades_.entries()) {
+      if (!e.boundary_counts.empty()) {
+        boundary_case_swatch(e);
+        continue;
+      }
       swatch(e.colour, (e.and_more ? "≥ " : "") + std::to_string(e.nodes) + (e.nodes == 1 && !e.and_more ? " node" : " nodes") +
                            " (" + std::to_string(e.cells) + " cells)");
+    }
     class_swatch(AtlasClass::cusps, "cusps");
     class_swatch(AtlasClass::nodes_and_cusps, "nodes and cusps");
     if (summary_.with_tangencies > 0) {
@@ -370,6 +403,17 @@ class AtlasCanvas {
       y_ += 18;
     }
     y_ += 10;
+  }
+
+  /// "on α3 = α2, π − α2 (82 cells):" and below it "14, 40, 66 nodes" (at most six counts named).
+  void boundary_case_swatch(const AtlasNodeShades::Entry& e) {
+    std::string list;
+    for (std::size_t k = 0; k < e.boundary_counts.size() && k < 6; ++k)
+      list += (k ? ", " : "") + std::to_string(e.boundary_counts[k]);
+    if (e.boundary_counts.size() > 6) list += ", …";
+    swatch(e.colour, "on α3 = α2, π − α2 (" + std::to_string(e.cells) + " cells):");
+    svg_.text(lx() + 24, y_, list + (e.boundary_counts.size() == 1 && e.boundary_counts[0] == 1 ? " node" : " nodes"), kBody);
+    y_ += 18;
   }
 
   void legend_boundaries() {
