@@ -56,7 +56,7 @@ TEST_CASE("classification json: the documented keys, inputs as typed, values of 
   std::set<std::string> keys;
   for (const auto& [k, v] : j.items()) keys.insert(k);
   CHECK(keys == std::set<std::string>{"inputs", "cone_angles", "period", "class", "counts", "nodes", "cusps",
-                                      "cusp_within_resolution", "boundaries", "z_extremes", "nearest_event", "symmetry",
+                                      "cusp_within_resolution", "boundaries", "z_extremes", "nearest_event", "dwell_points", "symmetry",
                                       "analytic", "censuses", "agreement", "certified", "certificate", "tolerances", "work"});
   // Fig. 5(f), a3 = pi/2: the nearest events are the pole passages a3 = a2 = pi/3 and a3 = pi - a2
   // (Table 1's boundaries), pi/6 away on either side; the count is 4 between them.

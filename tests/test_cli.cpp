@@ -5,6 +5,7 @@
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
+#include "sphtroch/core/kinematics.hpp"
 
 #include <sys/wait.h>
 
@@ -109,6 +110,41 @@ TEST_CASE("cli: trace --velocity adds vx,vy,vz = omega x P (Eq. 47a)", "[cli][tr
       CHECK(std::abs(rows[i][4 + k] - v[k]) <= 8 * kEps * (1 + n));
     }
   }
+}
+
+TEST_CASE("cli: trace --kinematics adds speed, geodesic curvature, tangential acceleration; --radius scales them",
+          "[cli][trace][kinematics]") {
+  TempDir dir;
+  const Result r = run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 12 --velocity --kinematics", dir);
+  CHECK(r.status == 0);
+  const auto rows = parse_csv(r.out, "t,x,y,z,vx,vy,vz,speed,geodesic_curvature,tangential_acceleration", 10);
+  REQUIRE(rows.size() == 12);
+  const double n = 2.5;
+  const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(kPi / 3, 2.0, sphtroch::Ratio(5, 2)));
+  for (const auto& row : rows) {
+    const double t = row[0];
+    const double v[3] = {row[4], row[5], row[6]};
+    // speed = |omega x P| (Eq. 47a), here from the printed velocity columns.
+    CHECK(std::abs(row[7] - std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) <= 1e-15 * (1 + n));
+    // The columns are the library's kinematics at the printed t (tests/test_kinematics.cpp checks
+    // those against MPFR finite differences).
+    const sphtroch::PathKinematics k = sphtroch::path_kinematics(curve, t);
+    CHECK(row[7] == k.speed);
+    CHECK(row[8] == k.geodesic_curvature);
+    CHECK(row[9] == k.tangential_acceleration);
+  }
+  const Result r25 = run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 12 --kinematics --radius 25", dir);
+  const auto rows25 = parse_csv(r25.out, "t,x,y,z,speed,geodesic_curvature,tangential_acceleration", 7);
+  REQUIRE(rows25.size() == 12);
+  for (std::size_t i = 0; i < 12; ++i) {
+    CHECK(rows25[i][4] == 25 * rows[i][7]);
+    CHECK(rows25[i][5] == rows[i][8] / 25);
+    CHECK(rows25[i][6] == 25 * rows[i][9]);
+  }
+  const Result dxf = run("trace --a2 pi/3 --a3 2 --n 5/2 --kinematics -o k.dxf", dir);
+  CHECK(dxf.status == 2);
+  CHECK(dxf.err.find("--kinematics") != std::string::npos);
+  CHECK(!std::filesystem::exists(dir.path / "k.dxf"));
 }
 
 TEST_CASE("cli: trace --turns K samples [0, 2 pi K] with both ends", "[cli][trace][turns]") {

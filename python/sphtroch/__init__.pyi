@@ -131,6 +131,12 @@ class GearTrain:
     def _repr_svg_(self) -> str:
         """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
         stays readable)."""
+    def kinematics(self, t: npt.ArrayLike) -> Dict[str, npt.NDArray[np.float64]]:
+        """How the tracer moves at the carrier angles t (N,), per unit carrier rate, as `sphtroch
+        trace --kinematics`: {"speed": |dP/dtheta2| (= |omega x P|, Eq. 47a), "geodesic_curvature":
+        det(P, V, A)/|V|^3, "tangential_acceleration": d|V|/dtheta2}, float64 (N,). At a cusp the
+        speed is 0 (curvature inf where it is exactly 0). classify()["dwell_points"] lists the
+        speed minima of a period. Raises InvalidInput("t") for a non-1-D or non-finite t."""
     def report(self, *, literal: Flag = False, samples: Optional[Count] = None) -> str:
         """The text report `sphtroch classify` prints for this train (the same bytes): counts, the
         certificate, nodes and cusps, the report's criteria with their margins, the nearest

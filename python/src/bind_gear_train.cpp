@@ -4,6 +4,7 @@
 #include "exact_calls.hpp"
 
 #include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
@@ -11,6 +12,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -127,6 +129,33 @@ std::string train_repr(const Train& t) {
          repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
 }
 
+/// kinematics(t): speed, geodesic curvature, tangential acceleration at each carrier angle.
+py::dict kinematics(const Train& self, py::handle t_arg) {
+  const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(t_arg);
+  if (!t || t.ndim() != 1)
+    throw InvalidInput("t", repr_of(t_arg), "not a 1-D array of carrier angles", "an (N,) array of radians");
+  const std::size_t n = static_cast<std::size_t>(t.shape(0));
+  py::array_t<double> speed(n), curvature(n), tangential(n);
+  const double* in = t.data();
+  double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(in[i]))
+      throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite", "finite radians");
+  {
+    py::gil_scoped_release release;
+    const TracerCurve<double> curve(self.train);
+    for (std::size_t i = 0; i < n; ++i) {
+      const PathKinematics pk = path_kinematics(curve, in[i]);
+      s[i] = pk.speed, k[i] = pk.geodesic_curvature, a[i] = pk.tangential_acceleration;
+    }
+  }
+  py::dict d;
+  d["speed"] = speed;
+  d["geodesic_curvature"] = curvature;
+  d["tangential_acceleration"] = tangential;
+  return d;
+}
+
 /// report(): the text `sphtroch classify` prints.
 std::string report(const Train& self, py::handle literal_flag, py::handle samples) {
   const bool literal = flag_arg(literal_flag, "literal");
@@ -182,6 +211,7 @@ void bind_gear_train(py::module_& m) {
       .def("_repr_svg_", [](const Train& t) {
         return svg(t, py::none(), py::none(), py::str("auto"), py::bool_(false), py::none());
       }, doc("GearTrain._repr_svg_"))
+      .def("kinematics", &kinematics, py::arg("t"), doc("GearTrain.kinematics"))
       .def("report", &report, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
       .def("__repr__", &train_repr)

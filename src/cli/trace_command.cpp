@@ -18,7 +18,7 @@ namespace {
 struct TraceOptions {
   TrainOptions train;
   std::string samples, turns, output, format, threads, radius;
-  bool velocity = false;
+  bool velocity = false, kinematics = false;
 };
 
 bool ends_with(const std::string& s, const std::string& suffix) {
@@ -73,10 +73,14 @@ void run_trace(const TraceOptions& o) {
   TraceWriteOptions options;
   options.format = trace_format(o);
   options.velocity = o.velocity;
+  options.kinematics = o.kinematics;
   options.radius = trace_radius(o.radius);
   options.closed = !turns;
-  if (o.velocity && (options.format == TraceFormat::dxf || options.format == TraceFormat::obj))
-    throw UsageError{"--velocity: a DXF or OBJ file holds the path only; valid: --velocity with CSV or .npy"};
+  if (options.format == TraceFormat::dxf || options.format == TraceFormat::obj)
+    for (const auto& [flag, name] : {std::pair{o.velocity, "--velocity"}, std::pair{o.kinematics, "--kinematics"}})
+      if (flag)
+        throw UsageError{std::string(name) + ": a DXF or OBJ file holds the path only; valid: " + name +
+                         " with CSV or .npy"};
   // Default: one worker per core plus one: the calling thread only writes, and while it waits on
   // the kernel the extra worker keeps both cores busy (measured: 1.49 s vs 1.66 s median for 1e7
   // rows to a CSV file on 2 cores; docs/accuracy.md).
@@ -98,7 +102,10 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "Open curve (--turns K): 360*(1+|n|)*K + 1 samples over [0, 2*pi*K], both ends included\n"
       "(--samples and --turns exclude each other; a default count above 1000000 is refused).\n"
       "Sample counts: 3 .. 10000000. Numbers: the shortest form that reads back exactly.\n"
-      "Format: npy (float64 array (N, 4), or (N, 7) with --velocity) when -o ends in .npy or\n"
+      "--kinematics adds speed (|dP/dtheta2|), geodesic_curvature and tangential_acceleration\n"
+      "(d|V|/dtheta2) per unit carrier rate (core/kinematics.hpp; --radius scales them).\n"
+      "Format: npy (float64 array (N, 4), 3 more columns with --velocity, 3 with --kinematics)\n"
+      "when -o ends in .npy or\n"
       "with --format npy; for CAD a DXF 3-D polyline (.dxf) or an OBJ polyline (.obj), closed\n"
       "unless --turns; CSV otherwise. --radius R scales the positions (the cone distance, any\n"
       "unit). Rows are streamed: memory does not grow with N.\n"
@@ -107,6 +114,8 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("--samples", options->samples, "number of samples N (3 .. 10000000)");
   cmd->add_option("--turns", options->turns, "open curve over K carrier turns, K in (0, 1e6]");
   cmd->add_flag("--velocity", options->velocity, "add columns vx,vy,vz = dP/dtheta2 (Eq. 47a)");
+  cmd->add_flag("--kinematics", options->kinematics,
+                "add columns speed,geodesic_curvature,tangential_acceleration (per unit carrier rate)");
   cmd->add_option("--format", options->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");
   cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R > 0: the cone distance, any unit");
   cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");

@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 import sphtroch
+from conftest import run_cli
 
 
 def eq5(a2, a3, n, t):
@@ -104,3 +105,27 @@ def test_same_numbers_as_the_tool(tmp_path):
     cli = np.load(out)
     t, P, V = sphtroch.GearTrain("pi/3", "ap+0.1", "7/3").trace(samples=500, velocity=True)
     assert np.array_equal(cli, np.column_stack([t, P, V]))
+
+
+def test_kinematics_equals_the_tools_columns_and_classify_lists_the_dwell_points():
+    import csv as _csv
+    import io as _io
+    tr = sphtroch.GearTrain("pi/3", 2, "5/2")
+    t, P = tr.trace(samples=12)
+    k = tr.kinematics(t)
+    rows = list(_csv.DictReader(_io.StringIO(run_cli("trace", "--a2", "pi/3", "--a3", "2", "--n", "5/2", "--samples", "12",
+                                                     "--kinematics"))))
+    for key in ("speed", "geodesic_curvature", "tangential_acceleration"):
+        assert k[key].shape == (12,) and k[key].dtype == np.float64
+        assert k[key].tolist() == [float(r[key]) for r in rows], key
+    _, _, V = tr.trace(samples=12, velocity=True)
+    np.testing.assert_allclose(k["speed"], np.linalg.norm(V, axis=1), rtol=1e-15, atol=0)  # Eq. 47a: |omega x P|
+    # The tracer on the pitch cone stops at its cusps: dwell points of speed 0 there.
+    cone = sphtroch.GearTrain(1.0, "ap", "5/2")
+    dwell = cone.classify()["dwell_points"]
+    stops = [d for d in dwell if d["speed"] <= 1e-12]
+    assert len(stops) == len(cone.cusps()) == 5
+    with pytest.raises(sphtroch.InvalidInput, match="^t"):
+        tr.kinematics([[0.0, 1.0]])
+    with pytest.raises(sphtroch.InvalidInput, match="^t"):
+        tr.kinematics([0.0, float("nan")])

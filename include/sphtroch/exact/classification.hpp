@@ -35,6 +35,7 @@
 #include "sphtroch/map/boundary_snap.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/census/node_sets.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
@@ -94,6 +95,8 @@ struct Classification {
   /// its a2 — where a tolerance on a3 would change the node count (nodes_below -> nodes_above
   /// across it); its a3 minus the analysed a3 is the signed margin. Nothing when a2 has no event.
   std::optional<BoundaryEvent> nearest_event;
+  /// Where the tracer slows down: the speed minima of a period (core/kinematics.hpp), 0 at a cusp.
+  std::vector<DwellPoint> dwell_points;
   ClassificationWork work;
   /// Every count printed is one two independent methods agree on (and the report's criteria,
   /// where they give one): agreement.ok().
@@ -138,6 +141,7 @@ inline Classification assemble_classification(const ClassificationInputs& in) {
   c.curve_class = curve_class(c.nodes.size(), c.cusps.size());
   const GearTrain& analysed = in.snapped.train;
   c.nearest_event = nearest_event(boundary_set(analysed.a2(), analysed.ratio()), analysed.a3());
+  c.dwell_points = dwell_points(TracerCurve<double>(analysed));
 
   std::string why;
   const bool same = same_node_sets(c.polyline.nodes, c.root.nodes, why);

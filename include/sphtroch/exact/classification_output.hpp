@@ -301,6 +301,15 @@ inline void text_nearest_event(std::ostream& out, const Classification& c) {
       << " -> " << e.nodes_above << " across it\n";
 }
 
+/// "dwell points (speed minima): k" and one line each.
+inline void text_dwell_points(std::ostream& out, const Classification& c) {
+  out << "\ndwell points (speed minima of |dP/dtheta2|, per unit carrier rate): " << c.dwell_points.size() << "\n";
+  std::size_t i = 0;
+  for (const DwellPoint& d : c.dwell_points)
+    out << "  dwell " << ++i << ": theta2 = " << number_text(d.param) << ", speed " << number_text(d.speed) << " at "
+        << vec_text(d.position) << "\n";
+}
+
 inline void text_extremes_and_symmetry(std::ostream& out, const Classification& c) {
   out << "\nz extremes (Eqs. 14/15, 32-35 generalised)\n  z_max = " << number_text(c.z.z_max) << " at theta2 =";
   for (const auto& p : c.z.maxima) out << ' ' << number_text(p.param);
@@ -399,6 +408,9 @@ inline nlohmann::json classification_json(const TrainText& text, const Classific
     j["nearest_event"] = {{"a3", e.a3}, {"kind", to_string(e.kind)}, {"name", e.name}, {"margin", e.a3 - c.snapped.train.a3()},
                           {"nodes_below", e.nodes_below}, {"nodes_above", e.nodes_above}};
   }
+  j["dwell_points"] = nlohmann::json::array();
+  for (const DwellPoint& p : c.dwell_points)
+    j["dwell_points"].push_back({{"param", p.param}, {"position", d::vec_json(p.position)}, {"speed", p.speed}});
   j["symmetry"] = d::symmetry_json(c.symmetry_planes);
   j["analytic"] = d::analytic_json(c.analytic);
   j["censuses"] = d::censuses_json(c);
@@ -415,6 +427,7 @@ inline void write_classification_text(std::ostream& out, const TrainText& text, 
   d::text_boundaries(out, c);
   d::text_nodes_and_cusps(out, c);
   d::text_nearest_event(out, c);
+  d::text_dwell_points(out, c);
   d::text_extremes_and_symmetry(out, c);
   d::text_criteria(out, c.analytic);
   d::text_censuses(out, c);

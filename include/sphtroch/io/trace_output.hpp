@@ -8,19 +8,22 @@
 //                         {sphtroch::TraceFormat::npy, /*velocity=*/false, /*threads=*/2});
 //   out.commit();
 //
-// CSV: the header "t,x,y,z" ("t,x,y,z,vx,vy,vz" with velocity), then one row per sample, numbers
-// in the shortest round-trip form (number_text.hpp). npy: float64, C order, shape (N, 4) or
-// (N, 7), the same columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a)
-// in the base frame. The bytes do not depend on the thread count.
+// CSV: the header "t,x,y,z" ("t,x,y,z,vx,vy,vz" with velocity; then ",speed,geodesic_curvature,
+// tangential_acceleration" with kinematics), one row per sample, numbers in the shortest round-trip
+// form (number_text.hpp). npy: float64, C order, shape (N, 4), (N, 7), (N, 7) or (N, 10), the same
+// columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a) in the base frame,
+// the kinematics of core/kinematics.hpp. The bytes do not depend on the thread count.
 // For CAD (positions only, no t): DXF — an ASCII DXF R12 file whose ENTITIES section holds one 3-D
 // POLYLINE (group 70 flag 8, plus 1 when closed: the last sample joins the first) with a VERTEX
 // (flag 32) per sample, layer "0"; OBJ — a "v x y z" line per sample and "l" lines joining them
 // in order (at most kObjLineVertices indices a line, consecutive lines sharing their end vertex;
 // a closed curve ends with "l N 1"). TraceWriteOptions::radius scales every position and velocity
-// (the cone distance in the user's unit: x * radius rounded once; 1 writes the unit sphere).
+// (the cone distance in the user's unit: x * radius rounded once; 1 writes the unit sphere), the
+// speed and the tangential acceleration, and divides the geodesic curvature (1/length).
 #pragma once
 
 #include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/io/npy.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
@@ -42,6 +45,7 @@ struct TraceWriteOptions {
   std::size_t threads = 1;  // worker threads that compute and format blocks (1: none)
   double radius = 1.0;      // positions and velocities times this (finite, > 0)
   bool closed = true;       // dxf, obj: the last sample joins the first (a period's samples)
+  bool kinematics = false;  // csv, npy only: speed, geodesic_curvature, tangential_acceleration
 };
 
 /// Indices on one OBJ "l" line at most.
@@ -50,25 +54,28 @@ constexpr std::size_t kObjLineVertices = 1000;
 /// Rows per block: 16384 rows are at most 2.9 MB of CSV with velocities (1.3 MB without).
 constexpr std::size_t kTraceBlockRows = 16384;
 
-inline const char* trace_csv_header(bool velocity) { return velocity ? "t,x,y,z,vx,vy,vz\n" : "t,x,y,z\n"; }
+inline std::string trace_csv_header(bool velocity, bool kinematics = false) {
+  return std::string("t,x,y,z") + (velocity ? ",vx,vy,vz" : "") +
+         (kinematics ? ",speed,geodesic_curvature,tangential_acceleration" : "") + "\n";
+}
 
-/// Characters of one CSV row at most (7 numbers, separators, newline).
-constexpr std::size_t kMaxTraceRowChars = 7 * (kMaxNumberChars + 1);
+/// Characters of one CSV row at most (10 numbers, separators, newline).
+constexpr std::size_t kMaxTraceRowChars = 10 * (kMaxNumberChars + 1);
+
+/// Formats one CSV row of `count` numbers ("t,x,y,z,...\n") at out; returns its end.
+inline char* write_csv_numbers(char* out, const double* values, std::size_t count) {
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k) *out++ = ',';
+    out = write_number(out, values[k]);
+  }
+  *out++ = '\n';
+  return out;
+}
 
 /// Formats one CSV row "t,x,y,z[,vx,vy,vz]\n" at out; returns its end.
 inline char* write_trace_csv_row(char* out, double t, const Vector3d& p, const Vector3d* v) {
-  out = write_number(out, t);
-  for (int k = 0; k < 3; ++k) {
-    *out++ = ',';
-    out = write_number(out, p[k]);
-  }
-  if (v)
-    for (int k = 0; k < 3; ++k) {
-      *out++ = ',';
-      out = write_number(out, (*v)[k]);
-    }
-  *out++ = '\n';
-  return out;
+  const double row[7] = {t, p.x(), p.y(), p.z(), v ? v->x() : 0.0, v ? v->y() : 0.0, v ? v->z() : 0.0};
+  return write_csv_numbers(out, row, v ? 7 : 4);
 }
 
 /// The CSV of an in-memory trajectory (velocities used when not empty); the same bytes as write_trace.
@@ -141,12 +148,12 @@ inline void write_obj_lines(OutputFile& out, std::size_t count, bool closed) {
 inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const UniformSampling<double>& sampling,
                         const TraceWriteOptions& options) {
   namespace d = trace_output_detail;
-  const bool vel = options.velocity;
+  const bool vel = options.velocity, kin = options.kinematics;
   const double scale = options.radius;
-  const std::size_t cols = vel ? 7 : 4;
+  const std::size_t cols = 4 + (vel ? 3 : 0) + (kin ? 3 : 0);
   if (options.format == TraceFormat::npy) out.write(npy_header(sampling.count, cols));
   else if (options.format == TraceFormat::dxf) out.write(d::dxf_head(options.closed));
-  else if (options.format == TraceFormat::csv) out.write(trace_csv_header(vel));
+  else if (options.format == TraceFormat::csv) out.write(trace_csv_header(vel, kin));
   const std::size_t blocks = (sampling.count + kTraceBlockRows - 1) / kTraceBlockRows;
   // Unit-sphere values, then times the radius (each coordinate rounded once more; none at radius 1).
   auto point = [&](double t) { return scale == 1.0 ? curve.point(t) : Vector3d(scale * curve.point(t)); };
@@ -168,17 +175,30 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
       text.resize(static_cast<std::size_t>(p - text.data()));
       return;
     }
+    // One row: t, P, [V], [speed, geodesic curvature, tangential acceleration] (see the top).
+    auto row_of = [&](std::size_t i, double* row) {
+      const double t = sampling.parameter(i);
+      const Vector3d P = point(t);
+      std::size_t c = 0;
+      for (const double x : {t, P.x(), P.y(), P.z()}) row[c++] = x;
+      if (vel) {
+        const Vector3d V = velocity(t, P);
+        for (const double x : {V.x(), V.y(), V.z()}) row[c++] = x;
+      }
+      if (kin) {
+        const PathKinematics k = path_kinematics(curve, t);
+        const bool unit = scale == 1.0;
+        row[c++] = unit ? k.speed : scale * k.speed;
+        row[c++] = unit ? k.geodesic_curvature : k.geodesic_curvature / scale;
+        row[c++] = unit ? k.tangential_acceleration : scale * k.tangential_acceleration;
+      }
+    };
+    double row[10];
     if (options.format == TraceFormat::npy) {
       text.resize((last - first) * cols * sizeof(double));
       char* p = text.data();
       for (std::size_t i = first; i < last; ++i) {
-        const double t = sampling.parameter(i);
-        const Vector3d P = point(t);
-        double row[7] = {t, P.x(), P.y(), P.z(), 0, 0, 0};
-        if (vel) {
-          const Vector3d V = velocity(t, P);
-          row[4] = V.x(), row[5] = V.y(), row[6] = V.z();
-        }
+        row_of(i, row);
         std::memcpy(p, row, cols * sizeof(double));
         p += cols * sizeof(double);
       }
@@ -187,14 +207,8 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
     text.resize((last - first) * kMaxTraceRowChars);
     char* p = text.data();
     for (std::size_t i = first; i < last; ++i) {
-      const double t = sampling.parameter(i);
-      const Vector3d P = point(t);
-      if (vel) {
-        const Vector3d V = velocity(t, P);
-        p = write_trace_csv_row(p, t, P, &V);
-      } else {
-        p = write_trace_csv_row(p, t, P, nullptr);
-      }
+      row_of(i, row);
+      p = write_csv_numbers(p, row, cols);
     }
     text.resize(static_cast<std::size_t>(p - text.data()));
   };
