@@ -112,7 +112,7 @@ TEST_CASE("cli: trace --velocity adds vx,vy,vz = omega x P (Eq. 47a)", "[cli][tr
   }
 }
 
-TEST_CASE("cli: trace --kinematics adds speed, geodesic curvature, tangential acceleration; --radius scales them",
+TEST_CASE("cli: trace --kinematics adds speed, geodesic curvature, tangential acceleration and --radius scales them",
           "[cli][trace][kinematics]") {
   TempDir dir;
   const Result r = run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 12 --velocity --kinematics", dir);
@@ -487,7 +487,7 @@ TEST_CASE("cli: classify accepts --a3 ap and pi-ap-1e-9 (the pitch cone and an o
   CHECK(off["counts"]["cusps"] == 0);
 }
 
-TEST_CASE("cli: nodes prints the CSV kind,x,y,z,t1,t2,branches with the Eq. 39b / 44b nodes of Fig. 5(f)",
+TEST_CASE("cli: nodes prints the CSV kind,x,y,z,t1,t2,branches,id with the Eq. 39b / 44b nodes of Fig. 5(f)",
           "[cli][nodes][csv]") {
   TempDir dir;
   const Result r = run("nodes --a2 pi/3 --a3 pi/2 --n 2", dir);
@@ -495,16 +495,17 @@ TEST_CASE("cli: nodes prints the CSV kind,x,y,z,t1,t2,branches with the Eq. 39b 
   CHECK(r.err.empty());
   const auto lines = split(r.out, '\n');
   REQUIRE(lines.size() == 5);
-  CHECK(lines[0] == "kind,x,y,z,t1,t2,branches");
+  CHECK(lines[0] == "kind,x,y,z,t1,t2,branches,id");
   // Eq. 39b: sin^2 t = s(a2 + a3) / (2 s a3 (1 + c a2)) = 1/6; Eq. 28: x = +-2/sqrt(6), y = 0,
   // z = -(2/3) sin(pi/3). Eq. 44b: cos^2 t = s(a3 - a2) / 3 = 1/6: x = 0, y = +-2/sqrt(6), z = +(2/3) sin(pi/3).
   const double xy = 2 / std::sqrt(6.0), z = (2.0 / 3.0) * std::sin(kPi / 3);
   std::size_t on_xz = 0, on_yz = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto f = split(lines[i], ',');
-    REQUIRE(f.size() == 7);
+    REQUIRE(f.size() == 8);
     CHECK(f[0] == "crossing");
     CHECK(f[6] == "2");
+    CHECK(f[7] == "N" + std::to_string(i));  // the plot's label
     const double x = std::stod(f[1]), y = std::stod(f[2]), zz = std::stod(f[3]);
     if (std::abs(y) <= 1e-13 && std::abs(std::abs(x) - xy) <= 1e-13 && std::abs(zz + z) <= 1e-13) ++on_xz;
     if (std::abs(x) <= 1e-13 && std::abs(std::abs(y) - xy) <= 1e-13 && std::abs(zz - z) <= 1e-13) ++on_yz;
@@ -664,7 +665,7 @@ TEST_CASE("cli: scene outputs are byte for byte the single commands' outputs", "
   same("g_nodes.csv", "nodes --a2 1.0471975511965976 --a3 2pi/3 --n 2 --phase=-pi/4");
   same("e_nodes.csv", "nodes --a2 2pi/3 --a3 pi-ap --n 2 --samples 2048 --literal");
   // The cusp rows are the cusp rows of `nodes` (none here: row f has no cusp).
-  CHECK(slurp(dir.path / "f_cusps.csv") == "kind,x,y,z,t1,t2,branches\n");
+  CHECK(slurp(dir.path / "f_cusps.csv") == "kind,x,y,z,t1,t2,branches,id\n");
   // Pictures: plot writes only to -o.
   const Result p1 = run("plot" + f + " -o '" + (dir.path / "single_f.svg").string() + "'", dir);
   const Result p2 = run("plot --a2 2pi/3 --a3 pi-ap --n 2 --samples 2048 --literal -o '" +

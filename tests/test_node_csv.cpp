@@ -73,8 +73,11 @@ TEST_CASE("nodes csv: header, node rows then cusp rows, numbers round-trip exact
   write_nodes_csv(out, {two_branch_node(), one_branch_node()}, {k});
   const auto rows = table(out.str());
   REQUIRE(rows.size() == 1 + 2 + 1);
-  CHECK(rows[0] == std::vector<std::string>{"kind", "x", "y", "z", "t1", "t2", "branches"});
-  for (const auto& r : rows) CHECK(r.size() == 7);
+  CHECK(rows[0] == std::vector<std::string>{"kind", "x", "y", "z", "t1", "t2", "branches", "id"});
+  for (const auto& r : rows) CHECK(r.size() == 8);
+  CHECK(rows[1][7] == "N1");  // the plot's labels: nodes N1, N2, ..., cusps C1, ...
+  CHECK(rows[2][7] == "N2");
+  CHECK(rows[3][7] == "C1");
 
   CHECK(rows[1][0] == "tangency");
   CHECK(num(rows[1][1]) == kThird);

@@ -152,7 +152,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
   }
   {
     auto o = std::make_shared<AnalysisOptions>();
-    CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches");
+    CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches,id");
     add_analysis_options(*cmd, *o);
     cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians).");
     actions.emplace_back(cmd, [o] { run_nodes(*o); });

@@ -4,10 +4,10 @@
 //
 //   // a System: FixedFrameSystem of precision_points.hpp, three points of a train of ratio 1/2
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
-//   const sphtroch::precision_detail::FixedFrameSystem system({curve.point(0.5), curve.point(2.0), curve.point(7.0)},
+//   const sphtroch::FixedFrameSystem system({curve.point(0.5), curve.point(2.0), curve.point(7.0)},
 //                                                          sphtroch::Ratio(1, 2));
 //   sphtroch::PrecisionPoints r =
-//       sphtroch::box_search_detail::BoxSearch<sphtroch::precision_detail::FixedFrameSystem>(system, {}).run();
+//       sphtroch::BoxSearch<sphtroch::FixedFrameSystem>(system, {}).run();
 //
 // A System (see FixedFrameSystem in precision_points.hpp for one) has kOuter unknowns split by the
 // outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,
@@ -70,11 +70,16 @@ struct PrecisionPoints {
   std::size_t boxes = 0;         // boxes examined (the work)
 };
 
+/// Whether the interval contains 0 (an equation may vanish over the box it encloses).
+inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
+/// The midpoint of x as a point interval.
+inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
+
+template <class System>
+class BoxSearch;
+
 // Implementation details follow.
 namespace box_search_detail {
-
-inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
-inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
 
 template <int N>
 using Box = std::array<Interval, N>;
@@ -205,10 +210,16 @@ std::optional<std::array<double, System::N>> newton_in(const System& sys, const 
   return y;
 }
 
+}  // namespace box_search_detail
+
 /// Branch and bound over the outer unknowns with, per point, the list of intervals of its own
 /// unknown still possible; small boxes go to the Krawczyk test in all N unknowns (see header).
 template <class System>
 class BoxSearch {
+  template <int M>
+  using Box = box_search_detail::Box<M>;
+  using KrawczykOutcome = box_search_detail::KrawczykOutcome;
+
  public:
   static constexpr int N = System::N, kOuter = System::kOuter, kLists = System::kLists;
   using Outer = std::array<Interval, kOuter>;
@@ -358,7 +369,7 @@ class BoxSearch {
       stack.pop_back();
       ++result_.boxes;
       if (in_known_region(x) || excluded(x)) continue;
-      const KrawczykOutcome outcome = krawczyk(sys_, x);
+      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
       if (outcome == KrawczykOutcome::no_root) continue;
       if (outcome == KrawczykOutcome::unique_root) {
         roots_.push_back(x);
@@ -400,13 +411,13 @@ class BoxSearch {
   /// Newton from the centre of x; a limit inside x not yet known is certified (Krawczyk on a box
   /// of 1e-10 around it) and given its uniqueness region. Returns whether a region was added.
   bool certify_newton_root(const Box<N>& x) {
-    const auto y = newton_in(sys_, x);
+    const auto y = box_search_detail::newton_in(sys_, x);
     if (!y) return false;
     Box<N> tiny;
     for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, 1e-10);
     for (const Box<N>& u : regions_)
       if (contains(u, tiny)) return false;
-    if (krawczyk(sys_, tiny) != KrawczykOutcome::unique_root) return false;
+    if (box_search_detail::krawczyk(sys_, tiny) != KrawczykOutcome::unique_root) return false;
     roots_.push_back(tiny);
     regions_.push_back(uniqueness_region(*y, tiny));
     return true;
@@ -424,15 +435,15 @@ class BoxSearch {
     for (double r = 1e-9; r <= 0.25; r *= 2) {
       Box<N> u;
       for (int k = 0; k < N; ++k) u[k] = around(y, k, r);
-      if (!contraction_holds(sys_, y, u)) break;
+      if (!box_search_detail::contraction_holds(sys_, y, u)) break;
       best = u;
     }
     return best;
   }
 
   void finish() {
-    for (const Box<N>& x : roots_) add(sys_.solution(polish(sys_, x), true));
-    for (const Box<N>& x : undecided_) add(sys_.solution(polish(sys_, x), false));
+    for (const Box<N>& x : roots_) add(sys_.solution(box_search_detail::polish(sys_, x), true));
+    for (const Box<N>& x : undecided_) add(sys_.solution(box_search_detail::polish(sys_, x), false));
     result_.certified = result_.undecided == 0;
   }
 
@@ -454,5 +465,4 @@ class BoxSearch {
   std::vector<Box<N>> undecided_;  // narrower than kMinBoxWidth, still undecided
 };
 
-}  // namespace box_search_detail
 }  // namespace sphtroch

@@ -134,7 +134,8 @@ inline nlohmann::json inputs_json(const TrainText& text, const Classification& c
 inline nlohmann::json nodes_json(const std::vector<Node>& nodes) {
   nlohmann::json out = nlohmann::json::array();
   for (const Node& n : nodes)
-    out.push_back({{"position", vec_json(n.position)},
+    out.push_back({{"id", "N" + std::to_string(out.size() + 1)},  // the plot's label, the CSV's id
+                   {"position", vec_json(n.position)},
                    {"longitude", longitude(n.position)},
                    {"latitude", latitude(n.position)},
                    {"params", n.params},
@@ -148,7 +149,9 @@ inline nlohmann::json nodes_json(const std::vector<Node>& nodes) {
 
 inline nlohmann::json cusps_json(const std::vector<Cusp>& cusps) {
   nlohmann::json out = nlohmann::json::array();
-  for (const Cusp& k : cusps) out.push_back({{"position", vec_json(k.position)}, {"param", k.param}, {"speed", k.speed}});
+  for (const Cusp& k : cusps)
+    out.push_back({{"id", "C" + std::to_string(out.size() + 1)}, {"position", vec_json(k.position)}, {"param", k.param},
+                   {"speed", k.speed}});
   return out;
 }
 

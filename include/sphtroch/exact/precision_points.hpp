@@ -76,9 +76,6 @@ inline PrecisionPoints precision_points(const std::vector<Vector3d>& points, con
 // Implementation details follow.
 namespace precision_detail {
 
-using box_search_detail::centre_of;
-using box_search_detail::may_vanish;
-
 /// Q = Rx(-a2) Rz(-theta) P and its derivatives by theta and by a2 (P: any x, y, z indexable
 /// by [0], [1], [2]; linear in P).
 template <typename T>
@@ -225,6 +222,15 @@ inline bool outside_theta1_period(const Interval& theta1) {
   return theta1.sup() < 0.0 || theta1.inf() > 2 * Constants<double>::pi();
 }
 
+/// Sorted by a2, then a3 (the documented order).
+inline void sort_solutions(std::vector<PrecisionSolution>& solutions) {
+  std::sort(solutions.begin(), solutions.end(), [](const auto& a, const auto& b) {
+    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
+  });
+}
+
+}  // namespace precision_detail
+
 /// The fixed-frame system for box_search.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
 class FixedFrameSystem {
  public:
@@ -232,29 +238,29 @@ class FixedFrameSystem {
   using Outer = std::array<Interval, kOuter>;
 
   FixedFrameSystem(const std::vector<Vector3d>& points, const Ratio& n)
-      : p_{points[0], points[1], points[2]}, ratio_(n), n_interval_(ratio_interval(n)) {}
+      : p_{points[0], points[1], points[2]}, ratio_(n), n_interval_(precision_detail::ratio_interval(n)) {}
 
   std::vector<Outer> domains() const {
-    return {{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist), theta1_domain()}};
+    return {{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist), precision_detail::theta1_domain()}};
   }
-  bool outside(const Outer& x) const { return outside_theta1_period(x[1]); }
+  bool outside(const Outer& x) const { return precision_detail::outside_theta1_period(x[1]); }
   double list_max() const { return 2 * Constants<double>::pi() * double(ratio_.q()); }
   double list_scale() const { return 1.0 + std::fabs(ratio_.value()); }  // Delta's widths after this factor
 
   /// Point 1 seen from the carrier over a box of (a2, theta_1) and at its centre.
   struct View {
     Interval a2, theta1, ca, sa;
-    CarrierView<Interval> q1;
+    precision_detail::CarrierView<Interval> q1;
     Interval a2_centre, theta1_centre, ca_centre, sa_centre;
-    CarrierView<Interval> q1_centre;
+    precision_detail::CarrierView<Interval> q1_centre;
   };
 
   View view(const Outer& x) const {
     const Interval a2c = centre_of(x[0]), t1c = centre_of(x[1]);
     const auto trig = interval_sincos_all<4>({x[0], x[1], a2c, t1c});
     const Interval &sa = trig[0].first, &ca = trig[0].second, &sac = trig[2].first, &cac = trig[2].second;
-    return {x[0], x[1], ca, sa, carrier_view(ca, sa, trig[1], p_[0]),
-            a2c, t1c, cac, sac, carrier_view(cac, sac, trig[3], p_[0])};
+    return {x[0], x[1], ca, sa, precision_detail::carrier_view(ca, sa, trig[1], p_[0]),
+            a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0])};
   }
 
   /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x delta.
@@ -262,10 +268,10 @@ class FixedFrameSystem {
     const Interval dc = centre_of(delta);
     const auto trig = interval_sincos_all<4>({v.theta1 + delta, n_interval_ * delta, v.theta1_centre + dc,
                                               n_interval_ * dc});
-    const auto e = point_equations(v.ca, v.sa, v.q1, trig[0], trig[1], n_interval_, p_[i + 1], true);
+    const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig[0], trig[1], n_interval_, p_[i + 1], true);
     if (!(may_vanish(e.f) && may_vanish(e.g) && e.dot.sup() > 0.0)) return false;
     // Mean-value form F(X) in F(c) + J(X) (X - c): much tighter than the plain one on small boxes.
-    const auto ec = point_equations(v.ca_centre, v.sa_centre, v.q1_centre, trig[2], trig[3], n_interval_, p_[i + 1], false);
+    const auto ec = precision_detail::point_equations(v.ca_centre, v.sa_centre, v.q1_centre, trig[2], trig[3], n_interval_, p_[i + 1], false);
     const Interval dx[3] = {v.a2 - v.a2_centre, v.theta1 - v.theta1_centre, delta - dc};
     Interval f = ec.f, g = ec.g;
     for (int k = 0; k < 3; ++k) {
@@ -281,9 +287,9 @@ class FixedFrameSystem {
     const T n = n_of<T>();
     const auto trig = interval_sincos_all(std::array<T, 6>{x[0], x[1], T(x[1] + x[2]), T(n * x[2]), T(x[1] + x[3]), T(n * x[3])});
     const T &sa = trig[0].first, &ca = trig[0].second;
-    const CarrierView<T> q1 = carrier_view(ca, sa, trig[1], p_[0]);
+    const precision_detail::CarrierView<T> q1 = precision_detail::carrier_view(ca, sa, trig[1], p_[0]);
     for (int i = 0; i < 2; ++i) {
-      const auto e = point_equations(ca, sa, q1, trig[2 + 2 * i], trig[3 + 2 * i], n, p_[1 + i], jac != nullptr);
+      const auto e = precision_detail::point_equations(ca, sa, q1, trig[2 + 2 * i], trig[3 + 2 * i], n, p_[1 + i], jac != nullptr);
       f[2 * i] = e.f;
       f[2 * i + 1] = e.g;
       if (!jac) continue;
@@ -295,24 +301,24 @@ class FixedFrameSystem {
     }
   }
 
-  /// The train of a root (see reduced_solution), unless it is a root of the sign-reversed system
+  /// The train of a root (see precision_detail::reduced_solution), unless it is a root of the sign-reversed system
   /// or lies outside the a3 range.
   std::optional<PrecisionSolution> solution(const std::array<double, N>& y, bool isolated) const {
     const double ca = std::cos(y[0]), sa = std::sin(y[0]);
-    const CarrierView<double> q1 = carrier_view(ca, sa, interval_sincos(y[1]), p_[0]);
+    const precision_detail::CarrierView<double> q1 = precision_detail::carrier_view(ca, sa, interval_sincos(y[1]), p_[0]);
     for (int i = 0; i < 2; ++i) {
-      const auto e = point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(ratio_.value() * y[2 + i]),
+      const auto e = precision_detail::point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(ratio_.value() * y[2 + i]),
                                      ratio_.value(), p_[1 + i], false);
       if (!(e.dot > 0.0)) return std::nullopt;
     }
-    auto s = reduced_solution(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
+    auto s = precision_detail::reduced_solution(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
     if (!s) return s;
     const TracerCurve<double> curve(s->train);
     for (int i = 0; i < 3; ++i) s->residual = std::max(s->residual, (curve.point(s->params[i]) - p_[i]).norm());
     return s;
   }
 
-  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return same_train_in_frame(a.train, b.train); }
+  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return precision_detail::same_train_in_frame(a.train, b.train); }
 
  private:
   template <typename T>
@@ -328,20 +334,11 @@ class FixedFrameSystem {
   Interval n_interval_;
 };
 
-/// Sorted by a2, then a3 (the documented order).
-inline void sort_solutions(std::vector<PrecisionSolution>& solutions) {
-  std::sort(solutions.begin(), solutions.end(), [](const auto& a, const auto& b) {
-    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
-  });
-}
-
-}  // namespace precision_detail
-
 inline PrecisionPoints precision_points(const std::vector<Vector3d>& points, const Ratio& n,
                                         const PrecisionPointsOptions& options) {
   const std::vector<Vector3d> p = precision_detail::checked_points(points, 3, "a fixed-frame problem");
-  const precision_detail::FixedFrameSystem system(p, n);
-  PrecisionPoints r = box_search_detail::BoxSearch<precision_detail::FixedFrameSystem>(system, options).run();
+  const FixedFrameSystem system(p, n);
+  PrecisionPoints r = BoxSearch<FixedFrameSystem>(system, options).run();
   precision_detail::sort_solutions(r.solutions);
   return r;
 }

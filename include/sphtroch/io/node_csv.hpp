@@ -9,10 +9,12 @@
 //
 // Formats (one header line, then one row per item; numbers in the shortest round-trip form of
 // number_text.hpp, so every value reads back as the same double):
-//   nodes:      kind,x,y,z,t1,t2,branches
+//   nodes:      kind,x,y,z,t1,t2,branches,id
 //               a node row per node (kind crossing | tangency; t1, t2 its first two branch
-//               parameters theta2, t2 = t1 when it has one; branches its branch count), then a
-//               cusp row per cusp (kind cusp, t1 = t2 = its parameter, branches 1).
+//               parameters theta2, t2 = t1 when it has one; branches its branch count; id N1, N2,
+//               ...), then a cusp row per cusp (kind cusp, t1 = t2 = its parameter, branches 1,
+//               id C1, C2, ...). The ids are the labels of `sphtroch plot` and the "id" of the
+//               JSON; last, so that readers of the columns before it are unchanged.
 //   screw axis: t,wx,wy,wz       omega = Z1 + n Z2 (Eq. 47a) at theta2 = t, base frame.
 //   edge pairs: i,j,kind         crossings and touchings together, ascending (i, j); edge e
 //               joins vertex e to e + 1; kind as to_string(pair.kind) gives it.
@@ -33,7 +35,7 @@
 namespace sphtroch {
 
 /// Header lines (without newline).
-constexpr const char* kNodesCsvHeader = "kind,x,y,z,t1,t2,branches";
+constexpr const char* kNodesCsvHeader = "kind,x,y,z,t1,t2,branches,id";
 constexpr const char* kScrewAxisCsvHeader = "t,wx,wy,wz";
 constexpr const char* kEdgePairsCsvHeader = "i,j,kind";
 
@@ -65,17 +67,19 @@ inline void write_vector(std::ostream& out, const Vector3d& v) {
 
 inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
   out << kNodesCsvHeader << '\n';
+  std::size_t id = 0;
   for (const Node& n : nodes) {
     SPHTROCH_ASSERT(!n.params.empty(), "a node has at least one branch parameter");
     out << to_string(n.kind) << ',';
     csv_io_detail::write_vector(out, n.position);
     out << ',' << number_text(n.params.front()) << ',' << number_text(n.params.size() > 1 ? n.params[1] : n.params.front())
-        << ',' << n.branches << '\n';
+        << ',' << n.branches << ",N" << ++id << '\n';
   }
+  id = 0;
   for (const Cusp& k : cusps) {
     out << "cusp,";
     csv_io_detail::write_vector(out, k.position);
-    out << ',' << number_text(k.param) << ',' << number_text(k.param) << ",1\n";
+    out << ',' << number_text(k.param) << ',' << number_text(k.param) << ",1,C" << ++id << '\n';
   }
 }
 
