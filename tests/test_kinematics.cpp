@@ -126,3 +126,24 @@ TEST_CASE("kinematics: dwell points are exactly the local speed minima a fine sc
     }
   }
 }
+
+TEST_CASE("kinematics: two shallow speed minima close together (a3 next to atan2(cos a2 + n, sin a2)) are both found",
+          "[kinematics]") {
+  // Found by a review: a scan of 64 (|p| + q) samples stepped over the pair. A brute-force scan of
+  // 400,000 samples (step 1.6e-5 rad, the pair ~0.008 rad apart for eps = 1e-4) is the reference.
+  for (const double eps : {1e-3, 1e-4, 1e-6}) {
+    const GearTrain train(1.0, std::atan2(std::cos(1.0) + 2.0, std::sin(1.0)) + eps, Ratio(2), 0.2);
+    const TracerCurve<double> curve(train);
+    const std::size_t m = 400000;
+    const double step = train.period() / double(m);
+    std::vector<double> speed(m);
+    for (std::size_t i = 0; i < m; ++i) speed[i] = curve.velocity(step * double(i)).norm();
+    std::size_t minima = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      minima += speed[i] < speed[(i + m - 1) % m] && speed[i] <= speed[(i + 1) % m];
+    INFO("eps = " << eps);
+    if (eps >= 1e-4) CHECK(minima == 4);  // at 1e-6 the pair is 8e-4 apart but 1e-12 deep: below the scan's rounding
+    CHECK(dwell_points(curve).size() == 4);
+  }
+}
+

@@ -110,17 +110,17 @@ class GearTrain:
     def classify(self, *, literal: Flag = False, samples: Optional[Count] = None) -> Dict[str, Any]:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
-        boundaries, z_extremes, symmetry, criteria, censuses, agreement, certified, certificate,
-        tolerances, work). "certified" is False when the censuses disagree (docs/cli.md: Certified counts).
+        boundaries, z_extremes, nearest_event, dwell_points, symmetry, criteria, censuses, agreement,
+        certified, certificate, tolerances, work). "certified" is False when the censuses disagree (docs/cli.md: Certified counts).
         literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
         samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
         """
     def nodes(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
-        """The "nodes" list of classify() (position, longitude, latitude, params, branches, kind,
-        angle, crossing_pairs, tangency_pairs), from the certified node census (without the
+        """The "nodes" list of classify() (id "N1", "N2", ... as the plot labels them, position,
+        longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs), from the certified node census (without the
         criteria). Raises UncertifiedResult when the two censuses disagree after escalation."""
     def cusps(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
-        """The "cusps" list of classify() (position, param, speed)."""
+        """The "cusps" list of classify() (id "C1", ..., position, param, speed)."""
     def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[Count] = None,
             labels: str = "auto", literal: Flag = False, samples: Optional[Count] = None) -> str:
         """The curve on the sphere as SVG text, as `sphtroch plot` draws it (the certified census;
@@ -135,8 +135,9 @@ class GearTrain:
         """How the tracer moves at the carrier angles t (N,), per unit carrier rate, as `sphtroch
         trace --kinematics`: {"speed": |dP/dtheta2| (= |omega x P|, Eq. 47a), "geodesic_curvature":
         det(P, V, A)/|V|^3, "tangential_acceleration": d|V|/dtheta2}, float64 (N,). At a cusp the
-        speed is 0 (curvature inf where it is exactly 0). classify()["dwell_points"] lists the
-        speed minima of a period. Raises InvalidInput("t") for a non-1-D or non-finite t."""
+        speed is 0, and the curvature and tangential acceleration, undefined there, are reported as 0.
+        classify()["dwell_points"] lists the speed minima of a period. Raises InvalidInput("t")
+        unless t is a 1-D array of finite numbers with |t| <= 2 pi 1e6."""
     def report(self, *, literal: Flag = False, samples: Optional[Count] = None) -> str:
         """The text report `sphtroch classify` prints for this train (the same bytes): counts, the
         certificate, nodes and cusps, the report's criteria with their margins, the nearest
@@ -152,7 +153,8 @@ class GearTrain:
         """The curve in Matplotlib (imported only here): (fig, ax), drawn into `ax` if given. view
         "top", "front", "side": orthographic (as `sphtroch plot --view`), near half solid, far half
         dotted, the unit circle as outline; "lonlat": longitude/latitude in degrees, the curve
-        broken where it wraps. Nodes red dots, cusps black crosses (node_set(), cusp_set())."""
+        broken where it wraps. Nodes red dots, cusps black crosses (node_set(), cusp_set()). samples:
+        the curve's samples, as trace(samples=...)."""
     def classify_roots(self, *, literal: Flag = False) -> Dict[str, Any]:
         """The class by the root-count census alone (Eigen only, about 12x cheaper than classify()):
         a2, a3 (as analysed), boundaries, class, nodes, crossings, tangencies, cusps,
@@ -243,8 +245,8 @@ def classify_a3_range(a2: Angle, n: RatioLike, a3: AngleRange, count: Count = 72
     """classify_roots at `count` evenly spaced a3 in [lo, hi] (both ends included), runs of equal
     (class, nodes, cusps) merged: a list of {a3_first, a3_last, samples, class, nodes, cusps}
     (radians). The class changes between the last sample of a run and the first of the next.
-    a3: 0 <= lo < hi <= pi as for atlas; an end at 0 or pi (where no train exists) is sampled at
-    1e-6 / pi - 1e-6, the nearest valid train. Raises InvalidInput: "a3" for another range,
+    a3: 0 <= lo < hi <= pi as for atlas; an end within 1e-6 of 0 or pi (where no train exists) is
+    sampled 1e-6 inside. Raises InvalidInput: "a3" for another range,
     "count" unless 2 .. 10**6."""
 
 def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:

@@ -31,11 +31,11 @@ py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::
   const double a2v = angle_arg(a2, "a2", ignored);
   const Ratio nv = ratio_arg(n);
   auto [lo, hi] = range_arg(a3, "a3");
-  // Ranges read the same everywhere (0 <= lo < hi <= pi, as atlas): an end at 0 or pi, where no
-  // train exists, is sampled at the nearest one (kMinCarrierTwist inside).
+  // Ranges read the same everywhere (0 <= lo < hi <= pi, as atlas): an end within 1e-6 of 0 or
+  // pi, where no train exists, is sampled 1e-6 inside (kMinCarrierTwist).
   const double pi = Constants<double>::pi();
-  if (lo == 0.0 && hi > kMinCarrierTwist) lo = kMinCarrierTwist;
-  if (hi == pi && lo < pi - kMinCarrierTwist) hi = pi - kMinCarrierTwist;
+  if (lo >= 0.0 && lo < kMinCarrierTwist && hi > kMinCarrierTwist) lo = kMinCarrierTwist;
+  if (hi <= pi && hi > pi - kMinCarrierTwist && lo < pi - kMinCarrierTwist) hi = pi - kMinCarrierTwist;
   const std::size_t k = count_arg(count, "count", 2, 1000000);
   const bool literal = flag_arg(literal_flag, "literal");
   std::vector<A3Interval> runs;
@@ -44,7 +44,7 @@ py::list classify_a3_range_list(py::handle a2, py::handle n, py::handle a3, py::
     runs = classify_a3_range(a2v, nv, lo, hi, k, Reading{literal});
   } catch (const InvalidInput& e) {  // the library's "a3_range" is the argument a3 here
     if (e.field() != "a3_range") throw;
-    throw InvalidInput("a3", e.value(), e.problem(), e.valid_range());
+    throw InvalidInput("a3", e.value(), e.problem(), "(lo, hi) with 0 <= lo < hi <= pi radians, hi - lo > 1e-6 inside");
   }
   py::list out;
   for (const A3Interval& r : runs) {

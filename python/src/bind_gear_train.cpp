@@ -129,18 +129,31 @@ std::string train_repr(const Train& t) {
          repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
 }
 
+/// The largest |t| kinematics() takes: the tool's open-curve range, 1e6 carrier turns (beyond it
+/// an ulp of t approaches a degree and n t may overflow).
+constexpr double kMaxKinematicsAngle = 2 * 3.141592653589793 * 1e6;
+
 /// kinematics(t): speed, geodesic curvature, tangential acceleration at each carrier angle.
 py::dict kinematics(const Train& self, py::handle t_arg) {
-  const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(t_arg);
-  if (!t || t.ndim() != 1)
-    throw InvalidInput("t", repr_of(t_arg), "not a 1-D array of carrier angles", "an (N,) array of radians");
-  const std::size_t n = static_cast<std::size_t>(t.shape(0));
+  const std::string valid = "an (N,) array of finite radians, |t| <= 2 pi 1e6";
+  py::array_t<double, py::array::c_style | py::array::forcecast> t;
+  try {
+    t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(t_arg);
+  } catch (const py::error_already_set&) {
+    t = {};
+  }
+  if (!t) {
+    PyErr_Clear();
+    throw InvalidInput("t", repr_of(t_arg), "not an array of numbers", valid);
+  }
+  if (t.ndim() != 1) throw InvalidInput("t", repr_of(t_arg), "not a 1-D array of carrier angles", valid);
+  const std::vector<double> in(t.data(), t.data() + t.shape(0));  // copied with the GIL held
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (!(std::fabs(in[i]) <= kMaxKinematicsAngle))
+      throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite or too large", valid);
+  const std::size_t n = in.size();
   py::array_t<double> speed(n), curvature(n), tangential(n);
-  const double* in = t.data();
   double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
-  for (std::size_t i = 0; i < n; ++i)
-    if (!std::isfinite(in[i]))
-      throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite", "finite radians");
   {
     py::gil_scoped_release release;
     const TracerCurve<double> curve(self.train);
@@ -166,11 +179,19 @@ std::string report(const Train& self, py::handle literal_flag, py::handle sample
 
 /// scene(): a scene's JSON text (or a dict, dumped by json.dumps) run without files.
 py::object scene(py::handle scene_arg) {
+  const std::string valid = "a scene as JSON text or a dict (docs/cli.md: sphtroch scene)";
   std::string text;
-  if (py::isinstance<py::dict>(scene_arg))
-    text = py::module_::import("json").attr("dumps")(scene_arg).cast<std::string>();
-  else
-    text = text_arg(scene_arg, "scene", "a scene as JSON text or a dict (docs/cli.md: sphtroch scene)");
+  if (py::isinstance<py::dict>(scene_arg)) {
+    try {
+      text = py::module_::import("json").attr("dumps")(scene_arg).cast<std::string>();
+    } catch (const py::error_already_set& e) {
+      throw InvalidInput("scene", repr_of(scene_arg), std::string("not JSON: ") + e.what(), valid);
+    }
+  } else if (py::isinstance<py::str>(scene_arg)) {
+    text = text_arg(scene_arg, "scene", valid);
+  } else {
+    throw InvalidInput("scene", repr_of(scene_arg), "neither a str nor a dict", valid);
+  }
   std::string json;
   {
     py::gil_scoped_release release;

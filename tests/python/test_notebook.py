@@ -61,5 +61,5 @@ def test_the_notebook_runs_and_its_pictures_read_well(tmp_path):
     clashes = [(a[0], b[0]) for i, a in enumerate(shown) for b in shown[i + 1:] if boxes_overlap(a, b)]
     assert not clashes, clashes
     clean = svgs(code[4])
-    assert len(clean) == 1 and "node-labels" not in clean[0] or not labels(clean[0])
+    assert len(clean) == 1 and ("node-labels" not in clean[0] or not labels(clean[0]))
     assert any("image/png" in o.get("data", {}) for o in code[-1].get("outputs", []))  # the Matplotlib figure

@@ -129,3 +129,19 @@ def test_kinematics_equals_the_tools_columns_and_classify_lists_the_dwell_points
         tr.kinematics([[0.0, 1.0]])
     with pytest.raises(sphtroch.InvalidInput, match="^t"):
         tr.kinematics([0.0, float("nan")])
+
+
+def test_kinematics_refuses_what_it_cannot_answer():
+    tr = sphtroch.GearTrain(1.0, 2.0, "7/3")
+    for bad in ([1e308], [-1e308], [2 * math.pi * 1e6 * 1.001], ["a"], [[0.0]], None):
+        with pytest.raises(sphtroch.InvalidInput, match="^t"):
+            tr.kinematics(bad)
+    k = tr.kinematics(np.array([], dtype=float))
+    assert k["speed"].shape == (0,)
+    edge = tr.kinematics([2 * math.pi * 1e6])
+    assert all(np.isfinite(v).all() for v in edge.values())
+    # On the pitch cone the speed at a cusp is reported as 0, its curvature and d|V| as 0 (undefined).
+    cone = sphtroch.GearTrain("pi/2", "ap", 1)
+    at = cone.cusps()[0]["param"]
+    k = cone.kinematics([at])
+    assert k["speed"][0] == 0.0 and k["geodesic_curvature"][0] == 0.0 and k["tangential_acceleration"][0] == 0.0

@@ -60,7 +60,8 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
 /// left for the regions (n = 13/5: 52, 65, 91, 117, 143, 169, 195, 221 each its own shade).
 class AtlasNodeShades {
  public:
-  AtlasNodeShades(const std::vector<AtlasCell>& cells, const Ratio& ratio);
+  /// `ratio` names the pole lines (|p| >= 2); the default, 1, has none (every count a region's).
+  explicit AtlasNodeShades(const std::vector<AtlasCell>& cells, const Ratio& ratio = Ratio(1));
   /// Fill colour of a cell: its class, and for `nodes` its shade.
   const char* colour(const AtlasCell& cell) const;
   struct Entry {

@@ -12,13 +12,18 @@
 //   tangential_acceleration  d|V|/dtheta2 = V.A / |V|
 //   geodesic_curvature       det(P, V, A) / |V|^3 (> 0: the path turns left seen from outside)
 // At a cusp (the tracer on a pitch cone, Eqs. 47-48) the speed is 0, the curvature unbounded and
-// d|V| jumps from -|A| to +|A|: where |V| is exactly 0 the curvature is reported as +infinity and
-// the tangential acceleration as 0 (the mean of the two one-sided limits). Errors: a few ulp of
-// the terms, relative; the curvature's relative error grows as 1/|V| near a cusp.
-// Dwell points: the local minima of |V| over one period, found where V.A (= |V| d|V|/dtheta2)
-// changes sign from - to + between samples 2 pi q / (64 (|p| + q)) apart (|V|^2 is a trigonometric
-// polynomial of degree |p| + q in theta2 / q, so two minima are never that close), then refined by
-// bracketed secant-bisection on V.A to 1e-15 rad. A curve of constant speed has none.
+// d|V| jumps from -|A| to +|A|: where |V| <= 8 epsilon |omega| (0 at the rounding level) the
+// speed is reported as 0 and the curvature and tangential acceleration, undefined there, as 0
+// (read speed 0 as "cusp"). Errors: a few ulp of the terms, relative; the curvature's relative
+// error grows as 1/|V| near a cusp.
+// Dwell points, in closed form: omega has a constant length and omega.P = Z1.P + n Z2.P =
+// c - s cos theta3 with c = cos a3 (cos a2 + n), s = sin a2 sin a3 > 0 (P_z of Eq. 4, Z2.P =
+// cos a3), so |V|^2 = |omega|^2 - (c - s cos theta3)^2 depends on theta3 alone. Its minima are at
+// theta3 = 0 (mod 2 pi) when c < s and at theta3 = pi when c > -s (where the second derivative of
+// (c - s cos theta3)^2, 2 s (c - s) and -2 s (c + s), is negative); theta3 = n theta2 + theta_p meets each
+// |p| times a period, at theta2 = (j pi - theta_p) q / p. So a period has |p| or 2 |p| dwell
+// points, however close to each other (a3 near atan2(cos a2 + n, sin a2), where c = s, puts two
+// shallow minima close together).
 #pragma once
 
 #include "sphtroch/core/curve.hpp"
@@ -57,60 +62,28 @@ inline std::vector<DwellPoint> dwell_points(const TracerCurve<double>& curve);
 
 inline PathKinematics path_kinematics(const TracerCurve<double>& curve, double theta2) {
   const Vector3d P = curve.point(theta2);
-  const Vector3d V = curve.screw_axis(theta2).cross(P);
+  const Vector3d omega = curve.screw_axis(theta2);
+  const Vector3d V = omega.cross(P);
   const Vector3d A = curve.acceleration(theta2);
   const double speed = V.norm();
-  if (speed == 0.0) return {0.0, 0.0, std::numeric_limits<double>::infinity()};
+  if (speed <= 8 * std::numeric_limits<double>::epsilon() * omega.norm()) return {0.0, 0.0, 0.0};  // a cusp
   return {speed, V.dot(A) / speed, P.dot(V.cross(A)) / (speed * speed * speed)};
 }
 
-namespace kinematics_detail {
-
-/// V.A at theta2: half the derivative of |V|^2.
-inline double speed_slope(const TracerCurve<double>& curve, double theta2) {
-  const Vector3d V = curve.velocity(theta2);
-  return V.dot(curve.acceleration(theta2));
-}
-
-/// The root of V.A in [a, b] where it goes from <= 0 to >= 0 (Illinois false position with
-/// bisection steps, to 1e-15 rad).
-inline double slope_root(const TracerCurve<double>& curve, double a, double b, double fa, double fb) {
-  int side = 0;
-  for (int it = 0; it < 200 && b - a > 1e-15; ++it) {
-    double c = (fb - fa) != 0.0 ? b - fb * (b - a) / (fb - fa) : 0.5 * (a + b);
-    if (!(c > a && c < b) || it % 8 == 7) c = 0.5 * (a + b);  // keep bisecting now and then
-    const double fc = speed_slope(curve, c);
-    if (fc == 0.0) return c;
-    if (fc < 0.0) {
-      a = c, fa = fc;
-      if (side == -1) fb *= 0.5;
-      side = -1;
-    } else {
-      b = c, fb = fc;
-      if (side == 1) fa *= 0.5;
-      side = 1;
-    }
-  }
-  return 0.5 * (a + b);
-}
-
-}  // namespace kinematics_detail
-
 inline std::vector<DwellPoint> dwell_points(const TracerCurve<double>& curve) {
-  namespace d = kinematics_detail;
-  const Ratio& n = curve.train().ratio();
-  const double period = curve.period();
-  const std::size_t samples = 64 * static_cast<std::size_t>(std::llabs(n.p()) + n.q());
-  std::vector<double> slope(samples);
-  for (std::size_t k = 0; k < samples; ++k) slope[k] = d::speed_slope(curve, period * double(k) / double(samples));
+  const GearTrain& train = curve.train();
+  const TwistTrig<double>& trig = curve.trig();
+  const double n = train.ratio().value();
+  const double c = trig.cos_a3 * (trig.cos_a2 + n), s = trig.sin_a2 * trig.sin_a3;
+  const double pi = Constants<double>::pi(), period = curve.period();
+  const auto p = static_cast<double>(train.ratio().p()), q = static_cast<double>(train.ratio().q());
   std::vector<DwellPoint> out;
-  for (std::size_t k = 0; k < samples; ++k) {
-    const std::size_t next = (k + 1) % samples;
-    if (!(slope[k] < 0.0 && slope[next] >= 0.0)) continue;  // - then +: a minimum in (t_k, t_k+1]
-    const double a = period * double(k) / double(samples), b = period * double(k + 1) / double(samples);
-    double t = slope[next] == 0.0 ? b : d::slope_root(curve, a, b, slope[k], slope[next]);
-    if (t >= period) t -= period;
-    out.push_back({t, curve.point(t), curve.velocity(t).norm()});
+  for (std::int64_t j = 0; j < 2 * std::llabs(train.ratio().p()); ++j) {
+    if (!(j % 2 == 0 ? c < s : c > -s)) continue;  // theta3 = j pi is a speed maximum
+    double t = std::fmod((double(j) * pi - train.phase()) * q / p, period);
+    if (t < 0) t += period;
+    if (t >= period) t = 0.0;
+    out.push_back({t, curve.point(t), path_kinematics(curve, t).speed});
   }
   std::sort(out.begin(), out.end(), [](const DwellPoint& x, const DwellPoint& y) { return x.param < y.param; });
   return out;

@@ -45,8 +45,9 @@ inline std::atomic<std::size_t> fault_index{static_cast<std::size_t>(-1)};
 /// Calls body(i) once for every i in [0, count), on min(threads, chunks) threads, handing out
 /// indices in chunks of `chunk` by an atomic counter. Without `progress` the calling thread is
 /// one of the workers; with it, the calling thread reports progress about every 100 ms (and once
-/// at the end) while the workers run. The first exception a body or `progress` throws stops the
-/// handing out (a chunk started is finished); it is rethrown here after every thread has joined. threads <= 1: no thread is started.
+/// at the end) while the workers run (it is woken as soon as they end: no 100 ms floor). The first exception a body or `progress` throws stops the
+/// handing out (a chunk started is finished); it is rethrown here after every thread has joined.
+/// threads <= 1 and no progress: no thread is started.
 template <typename Body>
 void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t chunk = 1,
                   const ParallelProgress& progress = {}) {
@@ -55,6 +56,13 @@ void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t
   std::atomic<bool> failed{false};
   std::exception_ptr error;
   std::mutex error_mutex;
+  // The reporter waits on `wake` (at most 100 ms): a worker that ends the work or fails wakes it.
+  std::mutex wake_mutex;
+  std::condition_variable wake;
+  const auto wake_reporter = [&] {
+    { const std::lock_guard<std::mutex> lock(wake_mutex); }  // no wake-up lost between check and wait
+    wake.notify_all();
+  };
   auto worker = [&] {
     try {
       for (;;) {
@@ -67,12 +75,15 @@ void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t
 #endif
           body(i);
         }
-        done.fetch_add(stop - start);
+        if (done.fetch_add(stop - start) + (stop - start) == count && progress) wake_reporter();
       }
     } catch (...) {
-      std::lock_guard<std::mutex> lock(error_mutex);
-      if (!error) error = std::current_exception();
-      failed = true;
+      {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+      if (progress) wake_reporter();
     }
   };
   const std::size_t workers = std::min(std::max<std::size_t>(1, threads), std::max<std::size_t>(1, (count + chunk - 1) / chunk));
@@ -83,9 +94,11 @@ void parallel_for(std::size_t count, std::size_t threads, Body body, std::size_t
   } else {
     pool.emplace_back(worker);
     try {
-      while (done.load() < count && !failed.load()) {
+      const auto finished = [&] { return done.load() >= count || failed.load(); };
+      while (!finished()) {
         progress(done.load(), count);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::unique_lock<std::mutex> lock(wake_mutex);
+        wake.wait_for(lock, std::chrono::milliseconds(100), finished);
       }
     } catch (...) {  // e.g. the caller's interrupt: the workers stop after their chunk
       std::lock_guard<std::mutex> lock(error_mutex);

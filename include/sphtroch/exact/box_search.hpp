@@ -444,6 +444,9 @@ class BoxSearch {
   void finish() {
     for (const Box<N>& x : roots_) add(sys_.solution(box_search_detail::polish(sys_, x), true));
     for (const Box<N>& x : undecided_) add(sys_.solution(box_search_detail::polish(sys_, x), false));
+    std::sort(result_.solutions.begin(), result_.solutions.end(), [](const auto& a, const auto& b) {
+      return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
+    });
     result_.certified = result_.undecided == 0;
   }
 
@@ -457,7 +460,7 @@ class BoxSearch {
     result_.solutions.push_back(std::move(*s));
   }
 
-  const System& sys_;
+  const System sys_;  // a copy: a temporary System may be passed
   PrecisionPointsOptions options_;
   PrecisionPoints result_;
   std::vector<Box<N>> roots_;      // each holds exactly one root

@@ -222,13 +222,6 @@ inline bool outside_theta1_period(const Interval& theta1) {
   return theta1.sup() < 0.0 || theta1.inf() > 2 * Constants<double>::pi();
 }
 
-/// Sorted by a2, then a3 (the documented order).
-inline void sort_solutions(std::vector<PrecisionSolution>& solutions) {
-  std::sort(solutions.begin(), solutions.end(), [](const auto& a, const auto& b) {
-    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
-  });
-}
-
 }  // namespace precision_detail
 
 /// The fixed-frame system for box_search.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
@@ -237,8 +230,9 @@ class FixedFrameSystem {
   static constexpr int kOuter = 2, kLists = 2, N = 4;
   using Outer = std::array<Interval, kOuter>;
 
+  /// Throws InvalidInput (field "points") as precision_points() does.
   FixedFrameSystem(const std::vector<Vector3d>& points, const Ratio& n)
-      : p_{points[0], points[1], points[2]}, ratio_(n), n_interval_(precision_detail::ratio_interval(n)) {}
+      : FixedFrameSystem(precision_detail::checked_points(points, 3, "a fixed-frame problem"), n, 0) {}
 
   std::vector<Outer> domains() const {
     return {{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist), precision_detail::theta1_domain()}};
@@ -329,6 +323,9 @@ class FixedFrameSystem {
       return n_interval_;
   }
 
+  FixedFrameSystem(const std::vector<Vector3d>& checked, const Ratio& n, int /*checked already*/)
+      : p_{checked[0], checked[1], checked[2]}, ratio_(n), n_interval_(precision_detail::ratio_interval(n)) {}
+
   Vector3d p_[3];
   Ratio ratio_;
   Interval n_interval_;
@@ -336,11 +333,8 @@ class FixedFrameSystem {
 
 inline PrecisionPoints precision_points(const std::vector<Vector3d>& points, const Ratio& n,
                                         const PrecisionPointsOptions& options) {
-  const std::vector<Vector3d> p = precision_detail::checked_points(points, 3, "a fixed-frame problem");
-  const FixedFrameSystem system(p, n);
-  PrecisionPoints r = BoxSearch<FixedFrameSystem>(system, options).run();
-  precision_detail::sort_solutions(r.solutions);
-  return r;
+  const FixedFrameSystem system(points, n);  // checks the points
+  return BoxSearch<FixedFrameSystem>(system, options).run();
 }
 
 }  // namespace sphtroch
