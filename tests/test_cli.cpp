@@ -147,6 +147,53 @@ TEST_CASE("cli: trace --kinematics adds speed, geodesic curvature, tangential ac
   CHECK(!std::filesystem::exists(dir.path / "k.dxf"));
 }
 
+TEST_CASE("cli: --degrees prints angles that read back to the radians within 1e-15 and nodes --radius scales exactly",
+          "[cli][degrees][radius]") {
+  TempDir dir;
+  const auto back = [](double deg) { return deg * (kPi / 180.0); };
+  const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-15 * std::abs(b); };
+  // trace: t in degrees (header t_deg), positions unchanged.
+  const auto rad = parse_csv(run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 50", dir).out, "t,x,y,z", 4);
+  const auto deg = parse_csv(run("trace --a2 pi/3 --a3 2 --n 5/2 --samples 50 --degrees", dir).out, "t_deg,x,y,z", 4);
+  REQUIRE(rad.size() == 50);
+  REQUIRE(deg.size() == 50);
+  for (std::size_t i = 0; i < 50; ++i) {
+    CHECK(close(back(deg[i][0]), rad[i][0]));
+    for (int k = 1; k < 4; ++k) CHECK(deg[i][k] == rad[i][k]);
+  }
+  // nodes: t1, t2 in degrees, positions times the radius (x * 25, rounded once).
+  const auto plain = split(run("nodes --a2 pi/3 --a3 pi/2 --n 2", dir).out, '\n');
+  const Result scaled_run = run("nodes --a2 pi/3 --a3 pi/2 --n 2 --degrees --radius 25", dir);
+  CHECK(scaled_run.status == 0);
+  const auto scaled = split(scaled_run.out, '\n');
+  REQUIRE(plain.size() == 5);
+  REQUIRE(scaled.size() == 5);
+  CHECK(scaled[0] == "kind,x,y,z,t1_deg,t2_deg,branches,id");
+  for (std::size_t i = 1; i < 5; ++i) {
+    const auto a = split(plain[i], ','), b = split(scaled[i], ',');
+    for (int k = 1; k <= 3; ++k) CHECK(std::stod(b[k]) == 25 * std::stod(a[k]));
+    for (int k = 4; k <= 5; ++k) CHECK(close(back(std::stod(b[k])), std::stod(a[k])));
+    CHECK(b[7] == a[7]);
+  }
+  // boundaries: the loci CSV and the events text in degrees.
+  const auto csv_rad = split(run("boundaries --n 5/2 --a2 0.3:2.8 --steps 40", dir).out, '\n');
+  const auto csv_deg = split(run("boundaries --n 5/2 --a2 0.3:2.8 --steps 40 --degrees", dir).out, '\n');
+  REQUIRE(csv_rad.size() == csv_deg.size());
+  CHECK(csv_deg[1] == "locus,kind,m,label,a2_deg,a3_deg,b_deg");
+  for (std::size_t i = 2; i < csv_rad.size(); ++i) {
+    const auto a = split(csv_rad[i], ','), b = split(csv_deg[i], ',');
+    for (int k = 4; k <= 6; ++k) CHECK(close(back(std::stod(b[k])), std::stod(a[k])));
+  }
+  const std::string text = run("boundaries --n 2 --a2 1 --degrees", dir).out;
+  CHECK(text.find("a3 = 57.29577951308232 deg  pole") != std::string::npos);  // a3 = a2 = 1 rad
+  const Result json = run("boundaries --n 2 --a2 1 --degrees --json", dir);
+  CHECK(json.status == 2);
+  CHECK(json.out.empty());
+  const Result bad = run("nodes --a2 pi/3 --a3 pi/2 --n 2 --radius -1", dir);
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--radius") != std::string::npos);
+}
+
 TEST_CASE("cli: trace --turns K samples [0, 2 pi K] with both ends", "[cli][trace][turns]") {
   // --turns takes the default count 360 (1 + |n|) K + 1 (--samples is for closed curves only).
   TempDir dir;

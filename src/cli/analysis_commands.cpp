@@ -23,6 +23,8 @@ struct AnalysisOptions {
   bool literal = false;
   bool json = false;
   std::string view, size, labels;  // plot only
+  std::string radius;               // nodes only
+  bool degrees = false;             // nodes only
 };
 
 /// plot's --view, --size, --labels (svg_plot.hpp: set_plot_view, parse_plot_labels; contract 4).
@@ -73,8 +75,9 @@ void run_classify(const AnalysisOptions& o) {
 // nodes and plot need the (certified) crossing stage and the cusps, not the whole classification.
 void run_nodes(const AnalysisOptions& o) {
   const GearTrain train = o.train.train();
+  const NodesCsvOptions csv{parse_radius(o.radius), o.degrees};  // checked before the work
   const Analysis a(train, analysis_settings(o));
-  write_output(o.output, [&](std::ostream& out) { write_nodes_csv(out, a.nodes(), a.cusps()); });
+  write_output(o.output, [&](std::ostream& out) { write_nodes_csv(out, a.nodes(), a.cusps(), csv); });
   check_certified(a.certificate());
 }
 
@@ -154,7 +157,10 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches,id");
     add_analysis_options(*cmd, *o);
-    cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians).");
+    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R > 0: the cone distance, any unit");
+    cmd->add_flag("--degrees", o->degrees, "t1, t2 in degrees (header t1_deg,t2_deg)");
+    cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians;\n"
+                "degrees with --degrees); id N1.. / C1.. as plot labels them.");
     actions.emplace_back(cmd, [o] { run_nodes(*o); });
   }
   {

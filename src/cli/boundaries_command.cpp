@@ -14,7 +14,7 @@ namespace {
 
 struct BoundariesOptions {
   std::string n, teeth, a2 = "0:pi", steps, threads, output;
-  bool json = false;
+  bool json = false, degrees = false;
 };
 
 const char* const kA2Forms = "one angle in (0, pi) (1.2, pi/2, 90deg) for the events, or LO:HI with 0 <= LO < HI <= pi for the curves";
@@ -28,7 +28,10 @@ void run_boundaries(const BoundariesOptions& o) {
     const double a2 = parse_angle(o.a2, "a2");
     if (!(a2 > 0.0 && a2 < Constants<double>::pi())) throw InvalidInput("a2", o.a2, "outside the valid range", kA2Forms);
     const BoundarySet s = boundary_set(a2, n);
-    write_output(o.output, [&](std::ostream& out) { o.json ? write_boundary_json(out, s) : write_boundary_text(out, s); });
+    if (o.json && o.degrees)
+      throw UsageError{"--degrees: the JSON is in radians; valid: --degrees with the text or the CSV"};
+    write_output(o.output,
+                 [&](std::ostream& out) { o.json ? write_boundary_json(out, s) : write_boundary_text(out, s, o.degrees); });
     return;
   }
   if (o.json)
@@ -37,7 +40,7 @@ void run_boundaries(const BoundariesOptions& o) {
   const std::size_t steps = o.steps.empty() ? 720 : parse_count(o.steps, "steps", 1, kMaxLocusSteps);
   const std::size_t threads = parse_threads(o.threads);
   const std::vector<Locus> loci = boundary_loci(n, a2.lo, a2.hi, steps, threads);
-  write_output(o.output, [&](std::ostream& out) { write_loci_csv(out, n, a2.lo, a2.hi, steps, loci); });
+  write_output(o.output, [&](std::ostream& out) { write_loci_csv(out, n, a2.lo, a2.hi, steps, loci, o.degrees); });
 }
 
 }  // namespace
@@ -58,6 +61,7 @@ void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>
   ratio->excludes(gears);
   gears->excludes(ratio);
   cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)");
+  cmd->add_flag("--degrees", o->degrees, "angles printed in degrees (text: a3 = ... deg; CSV: a2_deg,a3_deg,b_deg)");
   cmd->add_flag("--json", o->json, "the events as JSON (one a2 only)");
   cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 10000; default 720)");
   cmd->add_option("--threads", o->threads, "worker threads for the curves (1 .. 1024; default: cores)");

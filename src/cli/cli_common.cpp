@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <optional>
 #include <thread>
 
 #include <cerrno>
@@ -41,6 +43,14 @@ void check_svg_name(const std::string& path, const std::string& field) {
 
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {
   command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)");
+}
+
+double parse_radius(const std::string& text) {
+  if (text.empty()) return 1.0;
+  const std::optional<double> r = parse_number(text);
+  if (!r || !(*r > 0) || !std::isfinite(*r))
+    throw InvalidInput("radius", text, "not a positive number", "a finite number > 0 (the cone distance, any unit)");
+  return *r;
 }
 
 std::size_t parse_threads(const std::string& text) {

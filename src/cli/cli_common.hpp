@@ -115,6 +115,8 @@ using sphtroch::seconds_text;
 /// The worker threads of a command: `text` ("" = all cores, capped at kMaxThreads) as a count.
 constexpr std::size_t kMaxThreads = 1024;
 std::size_t parse_threads(const std::string& text);
+/// --radius: empty = 1, else a finite number > 0 (the cone distance, any unit); InvalidInput "radius".
+double parse_radius(const std::string& text);
 
 /// Registers a subcommand's action; main() runs the selected one and maps errors to exit codes.
 using Action = std::function<void()>;

@@ -18,7 +18,7 @@ namespace {
 struct TraceOptions {
   TrainOptions train;
   std::string samples, turns, output, format, threads, radius;
-  bool velocity = false, kinematics = false;
+  bool velocity = false, kinematics = false, degrees = false;
 };
 
 bool ends_with(const std::string& s, const std::string& suffix) {
@@ -51,14 +51,6 @@ TraceFormat trace_format(const TraceOptions& o) {
 }
 
 /// --radius R: the cone distance in any unit, positions scaled by it; finite and > 0.
-double trace_radius(const std::string& text) {
-  if (text.empty()) return 1.0;
-  const std::optional<double> r = parse_number(text);
-  if (!r || !(*r > 0) || !std::isfinite(*r))
-    throw InvalidInput("radius", text, "not a positive number", "a finite number > 0 (the cone distance, any unit)");
-  return *r;
-}
-
 void run_trace(const TraceOptions& o) {
   const GearTrain train = o.train.train();
   if (!o.samples.empty() && !o.turns.empty())
@@ -74,10 +66,12 @@ void run_trace(const TraceOptions& o) {
   options.format = trace_format(o);
   options.velocity = o.velocity;
   options.kinematics = o.kinematics;
-  options.radius = trace_radius(o.radius);
+  options.degrees = o.degrees;
+  options.radius = parse_radius(o.radius);
   options.closed = !turns;
   if (options.format == TraceFormat::dxf || options.format == TraceFormat::obj)
-    for (const auto& [flag, name] : {std::pair{o.velocity, "--velocity"}, std::pair{o.kinematics, "--kinematics"}})
+    for (const auto& [flag, name] : {std::pair{o.velocity, "--velocity"}, std::pair{o.kinematics, "--kinematics"},
+                                     std::pair{o.degrees, "--degrees"}})
       if (flag)
         throw UsageError{std::string(name) + ": a DXF or OBJ file holds the path only; valid: " + name +
                          " with CSV or .npy"};
@@ -114,6 +108,7 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("--samples", options->samples, "number of samples N (3 .. 10000000)");
   cmd->add_option("--turns", options->turns, "open curve over K carrier turns, K in (0, 1e6]");
   cmd->add_flag("--velocity", options->velocity, "add columns vx,vy,vz = dP/dtheta2 (Eq. 47a)");
+  cmd->add_flag("--degrees", options->degrees, "the t column (theta2) in degrees, header t_deg");
   cmd->add_flag("--kinematics", options->kinematics,
                 "add columns speed,geodesic_curvature,tangential_acceleration (per unit carrier rate)");
   cmd->add_option("--format", options->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");

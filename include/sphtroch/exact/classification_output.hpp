@@ -115,8 +115,6 @@ inline std::string vec_text(const Vector3d& v) {
   return "(" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + ")";
 }
 
-inline double degrees(double r) { return r * 180.0 / Constants<double>::pi(); }
-
 inline nlohmann::json vec_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
 inline double longitude(const Vector3d& p) { return std::atan2(p.y(), p.x()); }

@@ -39,8 +39,16 @@ constexpr const char* kNodesCsvHeader = "kind,x,y,z,t1,t2,branches,id";
 constexpr const char* kScrewAxisCsvHeader = "t,wx,wy,wz";
 constexpr const char* kEdgePairsCsvHeader = "i,j,kind";
 
+/// How the nodes table is written: positions times `radius` (the cone distance, any unit; 1: the
+/// unit sphere), parameters in degrees (header t1_deg,t2_deg) when `degrees`.
+struct NodesCsvOptions {
+  double radius = 1.0;
+  bool degrees = false;
+};
+
 /// The nodes table: header, node rows, cusp rows (see top). REQUIRES: every node has a parameter.
-inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps);
+inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                            const NodesCsvOptions& options = {});
 
 /// The screw-axis table. REQUIRES: t.size() == omega.size().
 inline void write_screw_axis_csv(std::ostream& out, const std::vector<double>& t, const std::vector<Vector3d>& omega);
@@ -63,23 +71,27 @@ namespace csv_io_detail {
 inline void write_vector(std::ostream& out, const Vector3d& v) {
   out << number_text(v.x()) << ',' << number_text(v.y()) << ',' << number_text(v.z());
 }
+inline Vector3d scaled(const Vector3d& v, double radius) { return radius == 1.0 ? v : Vector3d(radius * v); }
 }  // namespace csv_io_detail
 
-inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps) {
-  out << kNodesCsvHeader << '\n';
+inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                            const NodesCsvOptions& options) {
+  namespace d = csv_io_detail;
+  const auto angle = [&](double t) { return number_text(options.degrees ? degrees(t) : t); };
+  out << (options.degrees ? "kind,x,y,z,t1_deg,t2_deg,branches,id" : kNodesCsvHeader) << '\n';
   std::size_t id = 0;
   for (const Node& n : nodes) {
     SPHTROCH_ASSERT(!n.params.empty(), "a node has at least one branch parameter");
     out << to_string(n.kind) << ',';
-    csv_io_detail::write_vector(out, n.position);
-    out << ',' << number_text(n.params.front()) << ',' << number_text(n.params.size() > 1 ? n.params[1] : n.params.front())
-        << ',' << n.branches << ",N" << ++id << '\n';
+    d::write_vector(out, d::scaled(n.position, options.radius));
+    out << ',' << angle(n.params.front()) << ',' << angle(n.params.size() > 1 ? n.params[1] : n.params.front()) << ','
+        << n.branches << ",N" << ++id << '\n';
   }
   id = 0;
   for (const Cusp& k : cusps) {
     out << "cusp,";
-    csv_io_detail::write_vector(out, k.position);
-    out << ',' << number_text(k.param) << ',' << number_text(k.param) << ",1,C" << ++id << '\n';
+    d::write_vector(out, d::scaled(k.position, options.radius));
+    out << ',' << angle(k.param) << ',' << angle(k.param) << ",1,C" << ++id << '\n';
   }
 }
 

@@ -10,8 +10,8 @@
 //
 // CSV: the header "t,x,y,z" ("t,x,y,z,vx,vy,vz" with velocity; then ",speed,geodesic_curvature,
 // tangential_acceleration" with kinematics), one row per sample, numbers in the shortest round-trip
-// form (number_text.hpp). npy: float64, C order, shape (N, 4), (N, 7), (N, 7) or (N, 10), the same
-// columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a) in the base frame,
+// form (number_text.hpp); with degrees the first column is t in degrees ("t_deg"). npy: float64,
+// C order, shape (N, 4), (N, 7), (N, 7) or (N, 10), the same columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a) in the base frame,
 // the kinematics of core/kinematics.hpp. The bytes do not depend on the thread count.
 // For CAD (positions only, no t): DXF — an ASCII DXF R12 file whose ENTITIES section holds one 3-D
 // POLYLINE (group 70 flag 8, plus 1 when closed: the last sample joins the first) with a VERTEX
@@ -46,6 +46,7 @@ struct TraceWriteOptions {
   double radius = 1.0;      // positions and velocities times this (finite, > 0)
   bool closed = true;       // dxf, obj: the last sample joins the first (a period's samples)
   bool kinematics = false;  // csv, npy only: speed, geodesic_curvature, tangential_acceleration
+  bool degrees = false;     // csv, npy only: the t column in degrees (header t_deg)
 };
 
 /// Indices on one OBJ "l" line at most.
@@ -54,8 +55,8 @@ constexpr std::size_t kObjLineVertices = 1000;
 /// Rows per block: 16384 rows are at most 2.9 MB of CSV with velocities (1.3 MB without).
 constexpr std::size_t kTraceBlockRows = 16384;
 
-inline std::string trace_csv_header(bool velocity, bool kinematics = false) {
-  return std::string("t,x,y,z") + (velocity ? ",vx,vy,vz" : "") +
+inline std::string trace_csv_header(bool velocity, bool kinematics = false, bool degrees = false) {
+  return std::string(degrees ? "t_deg,x,y,z" : "t,x,y,z") + (velocity ? ",vx,vy,vz" : "") +
          (kinematics ? ",speed,geodesic_curvature,tangential_acceleration" : "") + "\n";
 }
 
@@ -153,7 +154,7 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
   const std::size_t cols = 4 + (vel ? 3 : 0) + (kin ? 3 : 0);
   if (options.format == TraceFormat::npy) out.write(npy_header(sampling.count, cols));
   else if (options.format == TraceFormat::dxf) out.write(d::dxf_head(options.closed));
-  else if (options.format == TraceFormat::csv) out.write(trace_csv_header(vel, kin));
+  else if (options.format == TraceFormat::csv) out.write(trace_csv_header(vel, kin, options.degrees));
   const std::size_t blocks = (sampling.count + kTraceBlockRows - 1) / kTraceBlockRows;
   // Unit-sphere values, then times the radius (each coordinate rounded once more; none at radius 1).
   auto point = [&](double t) { return scale == 1.0 ? curve.point(t) : Vector3d(scale * curve.point(t)); };
@@ -180,7 +181,7 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
       const double t = sampling.parameter(i);
       const Vector3d P = point(t);
       std::size_t c = 0;
-      for (const double x : {t, P.x(), P.y(), P.z()}) row[c++] = x;
+      for (const double x : {options.degrees ? degrees(t) : t, P.x(), P.y(), P.z()}) row[c++] = x;
       if (vel) {
         const Vector3d V = velocity(t, P);
         for (const double x : {V.x(), V.y(), V.z()}) row[c++] = x;

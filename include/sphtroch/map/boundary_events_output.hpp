@@ -11,7 +11,8 @@
 //   "label" are null except for tangencies.
 // CSV: one comment line "# sphtroch boundaries n=P/Q a2=LO:HI steps=S", the header
 //   locus,kind,m,label,a2,a3,b   and one row per point, loci in order, points by ascending a2
-//   (m, label empty except for tangencies; locus numbers from 0).
+//   (m, label empty except for tangencies; locus numbers from 0); in degrees the angle columns
+//   are a2_deg,a3_deg,b_deg (--degrees). JSON stays in radians.
 #pragma once
 
 #include "sphtroch/map/boundary_events.hpp"
@@ -23,16 +24,18 @@
 
 namespace sphtroch {
 
-/// One line per event: "a3  kind  nodes below -> above  (name; witness)".
-inline void write_boundary_text(std::ostream& out, const BoundarySet& s) {
+/// One line per event: "a3  kind  nodes below -> above  (name; witness)"; a3 and b in degrees
+/// ("a3 = 18.3 deg") when `in_degrees`.
+inline void write_boundary_text(std::ostream& out, const BoundarySet& s, bool in_degrees = false) {
+  const auto angle = [&](double r) { return in_degrees ? number_text(degrees(r)) + " deg" : number_text(r); };
   out << "boundaries: n = " << s.ratio.str() << ", a2 = " << number_text(s.a2) << " rad\n";
   out << "events in a3 (0, pi), ascending (a3 to " << number_text(kEventAccuracy)
       << " rad; node points as classify counts them, just below -> just above):\n";
   if (s.events.empty()) out << "  none\n";
   for (const BoundaryEvent& e : s.events) {
-    out << "  a3 = " << number_text(e.a3) << "  " << to_string(e.kind) << "  nodes " << e.nodes_below << " -> "
+    out << "  a3 = " << angle(e.a3) << "  " << to_string(e.kind) << "  nodes " << e.nodes_below << " -> "
         << e.nodes_above << ", cusps " << e.cusps_below << " -> " << e.cusps_above << "  (" << e.name << "; b = "
-        << number_text(e.b);
+        << angle(e.b);
     if (e.kind == BoundaryEventKind::tangency) out << ", g = " << e.m;
     out << ")\n";
   }
@@ -55,17 +58,18 @@ inline void write_boundary_json(std::ostream& out, const BoundarySet& s) {
 }
 
 inline void write_loci_csv(std::ostream& out, const Ratio& n, double a2_lo, double a2_hi, std::size_t steps,
-                           const std::vector<Locus>& loci) {
+                           const std::vector<Locus>& loci, bool in_degrees = false) {
+  const auto angle = [&](double r) { return number_text(in_degrees ? degrees(r) : r); };
   out << "# sphtroch boundaries n=" << n.str() << " a2=" << number_text(a2_lo) << ":" << number_text(a2_hi)
       << " steps=" << steps << "\n";
-  out << "locus,kind,m,label,a2,a3,b\n";
+  out << (in_degrees ? "locus,kind,m,label,a2_deg,a3_deg,b_deg\n" : "locus,kind,m,label,a2,a3,b\n");
   for (std::size_t i = 0; i < loci.size(); ++i) {
     const Locus& l = loci[i];
     const bool t = l.kind == BoundaryEventKind::tangency;
     const std::string m = t ? std::to_string(l.m) : "", label = t ? std::to_string(l.label) : "";
     for (const LocusPoint& p : l.points)
-      out << i << "," << to_string(l.kind) << "," << m << "," << label << "," << number_text(p.a2) << ","
-          << number_text(p.a3) << "," << number_text(p.b) << "\n";
+      out << i << "," << to_string(l.kind) << "," << m << "," << label << "," << angle(p.a2) << "," << angle(p.a3) << ","
+          << angle(p.b) << "\n";
   }
 }
 
