@@ -13,7 +13,9 @@
 // outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,
 // each pruned on its own: `view(outer)` computes what all the lists of an outer box share,
 // `may_hold(view, d, i)` says whether point i's equations may vanish over the outer box x d
-// (REQUIRES: false only when they cannot). Small boxes go to the Krawczyk test in all N unknowns:
+// (REQUIRES: false only when they cannot). `chart(box)` picks one of the System's square
+// formulations F for a box (each formulation's roots must include every true root, and the
+// System's `solution` drops the others). Small boxes go to the Krawczyk test in all N unknowns:
 // K(X) = y - Y F(y) + (I - Y J(X)) (X - y), y the centre, Y ~ J(y)^-1 (any Y keeps it valid):
 // K(X) inside X proves exactly one root in X, K(X) disjoint from X proves none. A root found by
 // Newton is certified in a tiny box and given the largest box U around it where
@@ -105,11 +107,11 @@ Matrix<N> to_matrix(const Jacobian<double, N>& a) {
 
 /// Y = J(y)^-1 in doubles (any approximate inverse keeps the interval tests valid); none if singular.
 template <class System>
-std::optional<Matrix<System::N>> inverse_jacobian(const System& sys, const std::array<double, System::N>& y) {
+std::optional<Matrix<System::N>> inverse_jacobian(const System& sys, const std::array<double, System::N>& y, int chart) {
   constexpr int N = System::N;
   std::array<double, N> f{};
   Jacobian<double, N> jac{};
-  sys.equations(y, f, &jac);
+  sys.equations(y, f, &jac, chart);
   const Eigen::FullPivLU<Matrix<N>> lu(to_matrix<N>(jac));
   if (!lu.isInvertible()) return std::nullopt;
   return Matrix<N>(lu.inverse());
@@ -122,14 +124,15 @@ template <class System>
 KrawczykOutcome krawczyk(const System& sys, Box<System::N>& x) {
   constexpr int N = System::N;
   const std::array<double, N> y = centre<N>(x);
-  const auto inverse = inverse_jacobian(sys, y);
+  const int chart = sys.chart(x);
+  const auto inverse = inverse_jacobian(sys, y, chart);
   if (!inverse) return KrawczykOutcome::undecided;
   const Matrix<N>& inv = *inverse;
   Box<N> yi{}, fy{}, fx{};
   Jacobian<Interval, N> jx{};
   for (int k = 0; k < N; ++k) yi[k] = Interval(y[k]);
-  sys.equations(yi, fy, static_cast<Jacobian<Interval, N>*>(nullptr));
-  sys.equations(x, fx, &jx);
+  sys.equations(yi, fy, static_cast<Jacobian<Interval, N>*>(nullptr), chart);
+  sys.equations(x, fx, &jx, chart);
   bool inside = true;
   Box<N> k_box;
   for (int r = 0; r < N; ++r) {
@@ -154,12 +157,13 @@ KrawczykOutcome krawczyk(const System& sys, Box<System::N>& x) {
 template <class System>
 bool contraction_holds(const System& sys, const std::array<double, System::N>& y, const Box<System::N>& u) {
   constexpr int N = System::N;
-  const auto inverse = inverse_jacobian(sys, y);
+  const int chart = sys.chart(u);
+  const auto inverse = inverse_jacobian(sys, y, chart);
   if (!inverse) return false;
   const Matrix<N>& inv = *inverse;
   Box<N> fu{};
   Jacobian<Interval, N> ju{};
-  sys.equations(u, fu, &ju);
+  sys.equations(u, fu, &ju, chart);
   for (int r = 0; r < N; ++r) {
     double row = 0.0;
     for (int c = 0; c < N; ++c) {
@@ -174,11 +178,11 @@ bool contraction_holds(const System& sys, const std::array<double, System::N>& y
 
 /// One Newton step at y in doubles: the correction J(y)^-1 F(y) (non-finite if J is singular).
 template <class System>
-Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::array<double, System::N>& y) {
+Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::array<double, System::N>& y, int chart) {
   constexpr int N = System::N;
   std::array<double, N> f{};
   Jacobian<double, N> jac{};
-  sys.equations(y, f, &jac);
+  sys.equations(y, f, &jac, chart);
   const Eigen::Matrix<double, N, 1> fv = Eigen::Map<const Eigen::Matrix<double, N, 1>>(f.data());
   return to_matrix<N>(jac).fullPivLu().solve(fv);
 }
@@ -187,26 +191,32 @@ Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::ar
 template <class System>
 std::array<double, System::N> polish(const System& sys, const Box<System::N>& x) {
   std::array<double, System::N> y = centre<System::N>(x);
+  const int chart = sys.chart(x);
   for (int step = 0; step < 8; ++step) {
-    const auto dy = newton_step(sys, y);
+    const auto dy = newton_step(sys, y, chart);
     if (!dy.allFinite()) break;
     for (int k = 0; k < System::N; ++k) y[k] = std::clamp(y[k] - dy(k), x[k].inf(), x[k].sup());
   }
   return y;
 }
 
-/// Newton in doubles from the centre of x; its limit if it converged inside x.
+/// Newton in doubles from the centre of x; its limit, wherever it is, if the steps converged.
+/// (Any root may be certified and given its region: an ill-conditioned root is surrounded by
+/// boxes that cannot be excluded until its uniqueness region covers them, so it must be found
+/// from whichever of them is searched first.)
 template <class System>
-std::optional<std::array<double, System::N>> newton_in(const System& sys, const Box<System::N>& x) {
+std::optional<std::array<double, System::N>> newton_limit(const System& sys, const Box<System::N>& x) {
   std::array<double, System::N> y = centre<System::N>(x);
+  const int chart = sys.chart(x);
+  double last = 0.0;
   for (int step = 0; step < 12; ++step) {
-    const auto dy = newton_step(sys, y);
+    const auto dy = newton_step(sys, y, chart);
     if (!dy.allFinite()) return std::nullopt;
     for (int k = 0; k < System::N; ++k) y[k] -= dy(k);
-    if (dy.cwiseAbs().maxCoeff() < 1e-13) break;
+    last = dy.cwiseAbs().maxCoeff();
+    if (last < 1e-12 || last > 1.0) break;  // converged (to rounding) or thrown off
   }
-  for (int k = 0; k < System::N; ++k)
-    if (!(y[k] >= x[k].inf() && y[k] <= x[k].sup())) return std::nullopt;
+  if (!(last < 1e-9)) return std::nullopt;
   return y;
 }
 
@@ -381,6 +391,9 @@ class BoxSearch {
     }
   }
 
+  /// Halves x across the unknown of largest smear (width times the largest |dF/dx_k| at the
+  /// centre: the one that spreads F most), or the widest if J is not finite; a box narrower
+  /// than kMinBoxWidth (scaled) is left undecided.
   void bisect(Box<N> x, std::vector<Box<N>>& stack) {
     int widest = 0;
     for (int k = 1; k < N; ++k)
@@ -390,12 +403,30 @@ class BoxSearch {
       undecided_.push_back(x);
       return;
     }
+    widest = most_smeared(x).value_or(widest);
     Box<N> other = x;
     const double mid = 0.5 * (x[widest].inf() + x[widest].sup());
     x[widest] = Interval(x[widest].inf(), mid);
     other[widest] = Interval(mid, other[widest].sup());
     stack.push_back(other);
     stack.push_back(x);
+  }
+
+  std::optional<int> most_smeared(const Box<N>& x) const {
+    std::array<double, N> f{};
+    box_search_detail::Jacobian<double, N> jac{};
+    sys_.equations(box_search_detail::centre<N>(x), f, &jac, sys_.chart(x));
+    int best = -1;
+    double best_smear = 0.0;
+    for (int k = 0; k < N; ++k) {
+      double column = 0.0;
+      for (int r = 0; r < N; ++r) column = std::max(column, std::fabs(jac[r][k]));
+      const double smear = column * (x[k].sup() - x[k].inf());
+      if (!std::isfinite(smear)) return std::nullopt;
+      if (smear > best_smear && scaled_width(x, k) >= kMinBoxWidth) best = k, best_smear = smear;
+    }
+    if (best < 0) return std::nullopt;
+    return best;
   }
 
   static bool contains(const Box<N>& outer, const Box<N>& inner) {
@@ -408,19 +439,40 @@ class BoxSearch {
     return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) { return contains(u, x); });
   }
 
-  /// Newton from the centre of x; a limit inside x not yet known is certified (Krawczyk on a box
-  /// of 1e-10 around it) and given its uniqueness region. Returns whether a region was added.
+  /// Newton from the centre of x; a limit (newton_limit) inside the domain and not yet known is
+  /// certified (Krawczyk on a box of 1e-10 around it) and given its uniqueness region.
+  /// Returns whether a region was added.
   bool certify_newton_root(const Box<N>& x) {
-    const auto y = box_search_detail::newton_in(sys_, x);
-    if (!y) return false;
-    Box<N> tiny;
-    for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, 1e-10);
-    for (const Box<N>& u : regions_)
-      if (contains(u, tiny)) return false;
-    if (box_search_detail::krawczyk(sys_, tiny) != KrawczykOutcome::unique_root) return false;
-    roots_.push_back(tiny);
-    regions_.push_back(uniqueness_region(*y, tiny));
-    return true;
+    const auto y = box_search_detail::newton_limit(sys_, x);
+    if (!y || !in_domain(*y)) return false;
+    // Radius 1e-10 first; an ill-conditioned root (Newton's limit only good to cond * 1e-16)
+    // needs a wider box for K(X) to fit inside.
+    for (double radius = 1e-10; radius <= 1e-7; radius *= 10) {
+      Box<N> tiny;
+      for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, radius);
+      for (const Box<N>& u : regions_)
+        if (contains(u, tiny)) return false;
+      Box<N> narrowed = tiny;
+      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
+      if (outcome == KrawczykOutcome::no_root) return false;
+      if (outcome != KrawczykOutcome::unique_root) continue;
+      roots_.push_back(tiny);
+      regions_.push_back(uniqueness_region(*y, tiny));
+      return true;
+    }
+    return false;
+  }
+
+  /// Whether y lies in one of the System's domains (lists: [0, list_max]).
+  bool in_domain(const std::array<double, N>& y) const {
+    for (int k = kOuter; k < N; ++k)
+      if (!(y[k] >= 0.0 && y[k] <= sys_.list_max())) return false;
+    for (const Outer& outer : sys_.domains()) {
+      bool inside = true;
+      for (int k = 0; k < kOuter; ++k) inside = inside && y[k] >= outer[k].inf() && y[k] <= outer[k].sup();
+      if (inside) return true;
+    }
+    return false;
   }
 
   Interval around(const std::array<double, N>& y, int k, double radius) const {
@@ -428,13 +480,14 @@ class BoxSearch {
     return Interval(y[k] - r, y[k] + r);
   }
 
-  /// The largest box y +- r (r = 1e-9 2^j <= 0.25, scaled) with ||I - Y J(U)||_inf < 1: by the
-  /// mean value theorem two roots in U would be equal. At least `tiny`.
+  /// The largest box y +- r (r = 1e-9 2^j <= 0.25, scaled) holding `tiny` with ||I - Y J(U)||_inf
+  /// < 1: by the mean value theorem two roots in U would be equal. At least `tiny`.
   Box<N> uniqueness_region(const std::array<double, N>& y, const Box<N>& tiny) const {
     Box<N> best = tiny;
     for (double r = 1e-9; r <= 0.25; r *= 2) {
       Box<N> u;
       for (int k = 0; k < N; ++k) u[k] = around(y, k, r);
+      if (!contains(u, tiny)) continue;
       if (!box_search_detail::contraction_holds(sys_, y, u)) break;
       best = u;
     }

@@ -27,7 +27,9 @@
 // f, g or the sign condition excludes zero on it (point 2 and point 3 are pruned separately over
 // their own Delta). A small box is given to the Krawczyk operator K(X) = y - Y F(y) + (I - Y J(X))
 // (X - y): K(X) inside X proves exactly one root in X (it is then polished by Newton); K(X)
-// disjoint from X proves none.
+// disjoint from X proves none. Near the planet axis (|Q_1z| > kPoleChart over the box) f and g
+// carry a factor sin a3 and the test uses x and y of Q_i - W instead (`chart`): every root of
+// (f, g) is one of these, and their mirror roots (Q_iz = -W_z) are dropped.
 // `certified` means every box ended one of these ways: the solutions are ALL the trains through
 // the points with a2, a3 in [1e-6, pi - 1e-6], none twice. Otherwise (a box below kMinBoxWidth
 // still undecided — a singular root, e.g. a point exactly at a cusp — or more than max_boxes
@@ -108,6 +110,8 @@ template <typename T>
 struct PointEquations {
   T f, g, dot;
   T df[3], dg[3];
+  T dx, dy;            // Q_ix - W_x, Q_iy - W_y: also zero at a root; f and g carry a factor sin a3
+  T ddx[3], ddy[3];    // near the planet axis, these do not, so they prune there (may_hold)
 };
 
 /// W = Rz(n Delta) Q_1, the right side of the point equation, in x and y.
@@ -128,6 +132,8 @@ PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>
   e.f = qi.q[2] - q1.q[2];
   e.g = qi.q[0] * wy - qi.q[1] * wx;
   e.dot = qi.q[0] * wx + qi.q[1] * wy;
+  e.dx = qi.q[0] - wx;
+  e.dy = qi.q[1] - wy;
   if (!jacobian) return e;
   const T dwx[3] = {-(s * q1.q[2]), c * q1.d_theta[0] - s * q1.d_theta[1], -(n * wy)};
   const T dwy[3] = {c * q1.q[2], s * q1.d_theta[0] + c * q1.d_theta[1], n * wx};
@@ -136,7 +142,11 @@ PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>
   e.df[0] = qi.d_a2[2] - q1.d_a2[2];
   e.df[1] = qi.d_theta[2] - q1.d_theta[2];
   e.df[2] = qi.d_theta[2];
-  for (int k = 0; k < 3; ++k) e.dg[k] = dqx[k] * wy + qi.q[0] * dwy[k] - dqy[k] * wx - qi.q[1] * dwx[k];
+  for (int k = 0; k < 3; ++k) {
+    e.dg[k] = dqx[k] * wy + qi.q[0] * dwy[k] - dqy[k] * wx - qi.q[1] * dwx[k];
+    e.ddx[k] = dqx[k] - dwx[k];
+    e.ddy[k] = dqy[k] - dwy[k];
+  }
   return e;
 }
 
@@ -263,32 +273,45 @@ class FixedFrameSystem {
     const auto trig = interval_sincos_all<4>({v.theta1 + delta, n_interval_ * delta, v.theta1_centre + dc,
                                               n_interval_ * dc});
     const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig[0], trig[1], n_interval_, p_[i + 1], true);
-    if (!(may_vanish(e.f) && may_vanish(e.g) && e.dot.sup() > 0.0)) return false;
+    if (!(may_vanish(e.f) && may_vanish(e.g) && may_vanish(e.dx) && may_vanish(e.dy) && e.dot.sup() > 0.0)) return false;
     // Mean-value form F(X) in F(c) + J(X) (X - c): much tighter than the plain one on small boxes.
     const auto ec = precision_detail::point_equations(v.ca_centre, v.sa_centre, v.q1_centre, trig[2], trig[3], n_interval_, p_[i + 1], false);
     const Interval dx[3] = {v.a2 - v.a2_centre, v.theta1 - v.theta1_centre, delta - dc};
-    Interval f = ec.f, g = ec.g;
+    Interval f = ec.f, g = ec.g, x = ec.dx, y = ec.dy;
     for (int k = 0; k < 3; ++k) {
       f += e.df[k] * dx[k];
       g += e.dg[k] * dx[k];
+      x += e.ddx[k] * dx[k];
+      y += e.ddy[k] * dx[k];
     }
-    return may_vanish(f) && may_vanish(g);
+    return may_vanish(f) && may_vanish(g) && may_vanish(x) && may_vanish(y);
   }
 
-  /// F(x) and, if `jac`, J(x) in type T (double at a point, Interval over a box).
+  /// The formulation for a box of all unknowns: 1 (x and y of Q_i - W) where point 1 is within
+  /// ~41 degrees of the planet axis over the whole box (|Q_1z| > kPoleChart: there f and g carry
+  /// a factor sin a3, which the Krawczyk test cannot beat on boxes wider than a3), else 0 (f, g).
+  /// Both have every true root; a root of chart 1 with Q_iz = -W_z is dropped by solution().
+  template <typename Box>
+  int chart(const Box& x) const {
+    const auto trig = interval_sincos_all<2>({x[0], x[1]});
+    const Interval z = precision_detail::carrier_view(trig[0].second, trig[0].first, trig[1], p_[0]).q[2];
+    return z.inf() > kPoleChart || z.sup() < -kPoleChart ? 1 : 0;
+  }
+
+  /// F(x) and, if `jac`, J(x) in type T (double at a point, Interval over a box), in `chart`.
   template <typename T>
-  void equations(const std::array<T, N>& x, std::array<T, N>& f, std::array<std::array<T, N>, N>* jac) const {
+  void equations(const std::array<T, N>& x, std::array<T, N>& f, std::array<std::array<T, N>, N>* jac, int chart) const {
     const T n = n_of<T>();
     const auto trig = interval_sincos_all(std::array<T, 6>{x[0], x[1], T(x[1] + x[2]), T(n * x[2]), T(x[1] + x[3]), T(n * x[3])});
     const T &sa = trig[0].first, &ca = trig[0].second;
     const precision_detail::CarrierView<T> q1 = precision_detail::carrier_view(ca, sa, trig[1], p_[0]);
     for (int i = 0; i < 2; ++i) {
       const auto e = precision_detail::point_equations(ca, sa, q1, trig[2 + 2 * i], trig[3 + 2 * i], n, p_[1 + i], jac != nullptr);
-      f[2 * i] = e.f;
-      f[2 * i + 1] = e.g;
+      f[2 * i] = chart == 1 ? e.dx : e.f;
+      f[2 * i + 1] = chart == 1 ? e.dy : e.g;
       if (!jac) continue;
       for (int r = 0; r < 2; ++r) {
-        const T* d = r == 0 ? e.df : e.dg;
+        const T* d = chart == 1 ? (r == 0 ? e.ddx : e.ddy) : (r == 0 ? e.df : e.dg);
         (*jac)[2 * i + r] = {d[0], d[1], T(0.0), T(0.0)};
         (*jac)[2 * i + r][2 + i] = d[2];
       }
@@ -303,7 +326,7 @@ class FixedFrameSystem {
     for (int i = 0; i < 2; ++i) {
       const auto e = precision_detail::point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(ratio_.value() * y[2 + i]),
                                      ratio_.value(), p_[1 + i], false);
-      if (!(e.dot > 0.0)) return std::nullopt;
+      if (!(e.dot > 0.0) || !(std::fabs(e.f) < 1e-6)) return std::nullopt;  // f: chart 1's mirror roots
     }
     auto s = precision_detail::reduced_solution(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
     if (!s) return s;
@@ -325,6 +348,8 @@ class FixedFrameSystem {
 
   FixedFrameSystem(const std::vector<Vector3d>& checked, const Ratio& n, int /*checked already*/)
       : p_{checked[0], checked[1], checked[2]}, ratio_(n), n_interval_(precision_detail::ratio_interval(n)) {}
+
+  static constexpr double kPoleChart = 0.75;
 
   Vector3d p_[3];
   Ratio ratio_;
