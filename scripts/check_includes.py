@@ -3,7 +3,8 @@
 
 0. Folders are layers (docs/design.md, "Layers"): a header in folder F may include only headers
    of the folders LAYERS[F] allows; the entry headers at the top may include anything. CGAL and
-   nlohmann-json are included only under exact/ (the folder says what a header costs).
+   nlohmann-json are included only under exact/, OpenCASCADE only under cad/ (the folder says
+   what a header costs).
 
 1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
    runs back up; each one found is printed with its path.
@@ -31,9 +32,11 @@ LAYERS = {
     "exact": ["core", "io", "draw", "map", "census", "synthesis"],  # CGAL: crossings, classify, scenes, certified synthesis
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
     "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
+    "cad": ["core", "io"],                        # OpenCASCADE: the path as a STEP B-spline
 }
 TOP_LEVEL_MAX = 8
 HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
+OPENCASCADE = re.compile(r'^\s*#\s*include\s+<\w+\.hxx>', re.M)
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
 headers = sorted(os.path.relpath(os.path.join(d, f), root).replace(os.sep, "/")
@@ -64,6 +67,8 @@ for h in headers:
                             + ", ".join(x + "/" for x in [f] + LAYERS[f]))
     if f != "exact" and f and HEAVY.search(text[h]):
         problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/")
+    if f != "cad" and OPENCASCADE.search(text[h]):
+        problems.append(f"{h}: includes OpenCASCADE outside cad/")
 
 # 1. Cycles (depth-first search, reporting each back edge with the path).
 state = {}

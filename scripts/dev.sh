@@ -32,12 +32,16 @@ jobs=${JOBS:-$(nproc)}
 # python3-mypy (mypy --strict on a typed example against the stub; ctest python:typing), and
 # python3-venv, python3-pip, python3-setuptools (pip install of the package into a venv; python:pip_install),
 # python3-nbclient, python3-nbformat, python3-ipykernel (the example notebook runs headless; python:notebook).
+# OpenCASCADE (trace -o FILE.step; optional for the library, asked for by `test`): Debian's CMake
+# config of its DataExchange part needs the ocaf and visualization packages and libtbb-dev too.
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
           libcli11-dev nlohmann-json3-dev)
+step_packages=(libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+               libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev)
 if [[ $mode == test ]]; then
   packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
              emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools
-             python3-nbclient python3-nbformat python3-ipykernel)
+             python3-nbclient python3-nbformat python3-ipykernel "${step_packages[@]}")
 fi
 
 install_missing_packages() {
@@ -71,7 +75,8 @@ configure_and_build() {
   # serve), and asks for it explicitly: a module that cannot be built fails here, never skipped.
   local python=()
   if [[ $mode == test ]]; then
-    python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 -DSPHTROCH_BUILD_EXPLORER=ON)
+    python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 -DSPHTROCH_BUILD_EXPLORER=ON
+            -DSPHTROCH_WITH_STEP=ON)
   fi
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${python[@]}"
   if [[ $mode == run ]]; then

@@ -436,6 +436,11 @@ TEST_CASE("cli: --help, trace --help and --version exit 0", "[cli][help]") {
   const Result version = run("--version", dir);
   CHECK(version.status == 0);
   CHECK(contains(version.out, "0.1.0"));
+#ifdef SPHTROCH_TEST_NO_STEP
+  CHECK(contains(version.out, "step no"));
+#else
+  CHECK(contains(version.out, "step yes"));
+#endif
   CHECK(help.err.empty());
   CHECK(version.err.empty());
 }
@@ -1068,3 +1073,19 @@ TEST_CASE("cli: plot --view top looks along the sun axis and --labels auto leave
     CHECK(contains(b.err, bad.substr(0, bad.find(' ')) + " = "));
   }
 }
+
+#ifdef SPHTROCH_TEST_NO_STEP
+TEST_CASE("cli trace -o FILE.step without the OpenCASCADE component: one line naming it, exit 2, no file",
+          "[cli][errors]") {
+  TempDir dir;
+  for (const std::string args : {"-o p.step", "-o P.STP", "--format step"}) {
+    const Result r = run("trace --a2 1 --a3 2 --n 2 " + args, dir, true);
+    INFO(args);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "OpenCASCADE"));
+    CHECK(dir.entries().empty());
+  }
+}
+#endif

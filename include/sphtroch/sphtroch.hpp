@@ -6,6 +6,7 @@
 //     exact crossing search, the polyline census, classify(), the lazy Analysis, the classification
 //     output (text/JSON) and scenes.
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (core/mpreal_support.hpp).
+//   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
 // classify()'s declaration and its result types (exact/classification.hpp) and parses no CGAL
 // header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
@@ -87,4 +88,8 @@
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 #endif
+#endif
+
+#if defined(SPHTROCH_HAVE_STEP)
+#include "sphtroch/cad/step_export.hpp"
 #endif

@@ -137,7 +137,21 @@ int main(int argc, char** argv) {
   CLI::App app{"sphtroch " SPHTROCH_VERSION_STRING
                " - trajectories of spherical planetary gear trains (Lin & Tsai 1990)",
                "sphtroch"};
-  app.set_version_flag("--version", std::string("sphtroch ") + SPHTROCH_VERSION_STRING);
+  // The optional components this build has: analysis (CGAL: classify, nodes, plot, scene, synth
+  // points/fit) and step (OpenCASCADE: trace -o FILE.step).
+  app.set_version_flag("--version", std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " +
+#ifdef SPHTROCH_HAVE_ANALYSIS
+                                        "yes"
+#else
+                                        "no"
+#endif
+                                        ", step " +
+#ifdef SPHTROCH_HAVE_STEP
+                                        "yes"
+#else
+                                        "no"
+#endif
+                                        ")");
   app.require_subcommand(1);
   app.option_defaults()->disable_flag_override();  // --velocity=value is an error, not a value
   sphtroch::install_output_signal_cleanup();  // temporaries removed on SIGINT/SIGTERM; EPIPE instead of SIGPIPE

@@ -7,6 +7,7 @@
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/trace_output.hpp"
+#include "step_output.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,7 @@ namespace {
 
 struct TraceOptions {
   TrainOptions train;
-  std::string samples, turns, output, format, threads, radius;
+  std::string samples, turns, output, format, threads, radius, tolerance;
   bool velocity = false, kinematics = false, degrees = false;
 };
 
@@ -25,9 +26,13 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+#if defined(SPHTROCH_HAVE_STEP)
+constexpr const char* kTraceFormats = "csv, npy, dxf (3-D polyline), obj (polyline), step (B-spline, AP214)";
+#else
 constexpr const char* kTraceFormats = "csv, npy, dxf (3-D polyline), obj (polyline)";
+#endif
 
-/// A format name: csv, npy, dxf, obj; step is named and refused (no CAD kernel in this build).
+/// A format name: csv, npy, dxf, obj (step is handled before: step_requested).
 TraceFormat format_named(const std::string& name, const std::string& field, const std::string& value) {
   if (name == "csv") return TraceFormat::csv;
   if (name == "npy") return TraceFormat::npy;
@@ -39,16 +44,45 @@ TraceFormat format_named(const std::string& name, const std::string& field, cons
   throw InvalidInput(field, value, "not a known format", kTraceFormats);
 }
 
-/// --format, or by the output's suffix (any case): .npy, .dxf, .obj (.step, .stp refused);
-/// everything else CSV.
+std::string lower_case(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+
+/// --format, or by the output's suffix (any case): .npy, .dxf, .obj (.step, .stp: STEP, or
+/// refused in a build without it); everything else CSV.
 TraceFormat trace_format(const TraceOptions& o) {
-  if (!o.format.empty()) return format_named(o.format, "format", o.format);
-  std::string lower = o.output;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!o.format.empty()) return format_named(lower_case(o.format), "format", o.format);
+  const std::string lower = lower_case(o.output);
   for (const char* ext : {"npy", "dxf", "obj", "step", "stp"})
     if (ends_with(lower, std::string(".") + ext)) return format_named(ext, "output", o.output);
   return TraceFormat::csv;
 }
+
+#if defined(SPHTROCH_HAVE_STEP)
+/// Whether STEP is asked for: --format step|stp, or (no --format) -o ending in .step or .stp.
+bool step_requested(const TraceOptions& o) {
+  const std::string f = lower_case(o.format), out = lower_case(o.output);
+  if (!o.format.empty()) return f == "step" || f == "stp";
+  return ends_with(out, ".step") || ends_with(out, ".stp");
+}
+
+/// trace to STEP: the checked B-spline (cad/step_export.hpp); --samples and the extra columns do
+/// not apply (the tolerance sets the points).
+void run_step_trace(const TraceOptions& o, const GearTrain& train, std::optional<double> turns) {
+  for (const auto& [given, name] : {std::pair{!o.samples.empty(), "--samples"}, std::pair{o.velocity, "--velocity"},
+                                    std::pair{o.kinematics, "--kinematics"}, std::pair{o.degrees, "--degrees"}})
+    if (given)
+      throw UsageError{std::string(name) + ": a STEP file holds the path as one B-spline fitted to --tolerance; valid: " +
+                       name + " with CSV or .npy"};
+  StepOutputOptions step;
+  step.radius = parse_radius(o.radius);
+  step.turns = turns;
+  if (!o.tolerance.empty()) step.tolerance = parse_tolerance(o.tolerance);
+  write_step_output(train, step, o.output);
+}
+#endif
 
 /// --radius R: the cone distance in any unit, positions scaled by it; finite and > 0.
 void run_trace(const TraceOptions& o) {
@@ -60,6 +94,11 @@ void run_trace(const TraceOptions& o) {
   if (!o.turns.empty()) {
     turns = parse_turns(o.turns);
   }
+#if defined(SPHTROCH_HAVE_STEP)
+  if (step_requested(o)) return run_step_trace(o, train, turns);
+#endif
+  if (!o.tolerance.empty())
+    throw UsageError{"--tolerance = " + o.tolerance + ": only for STEP output; valid: --tolerance with -o FILE.step"};
   const std::size_t n =
       o.samples.empty() ? trace_sample_count(train, turns) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
   TraceWriteOptions options;
@@ -101,7 +140,8 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "Format: npy (float64 array (N, 4), 3 more columns with --velocity, 3 with --kinematics)\n"
       "when -o ends in .npy or\n"
       "with --format npy; for CAD a DXF 3-D polyline (.dxf) or an OBJ polyline (.obj), closed\n"
-      "unless --turns; CSV otherwise. --radius R scales the positions (the cone distance, any\n"
+      "unless --turns, or a STEP AP214 B-spline (.step, .stp; needs the OpenCASCADE component)\n"
+      "within --tolerance T of the path at every point (checked; mm in the file); CSV otherwise. --radius R scales the positions (the cone distance, any\n"
       "unit). Rows are streamed: memory does not grow with N.\n"
       "Example: sphtroch trace --a2 pi/2 --a3 pi/2 --n 1 --samples 8");
   options->train.add_to(*cmd);
@@ -111,7 +151,9 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_flag("--degrees", options->degrees, "the t column (theta2) in degrees, header t_deg");
   cmd->add_flag("--kinematics", options->kinematics,
                 "add columns speed,geodesic_curvature,tangential_acceleration (per unit carrier rate)");
-  cmd->add_option("--format", options->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");
+  cmd->add_option("--format", options->format, "csv, npy, dxf, obj or step (default: by -o's suffix, else csv)");
+  cmd->add_option("--tolerance", options->tolerance,
+                  "STEP only: max distance of the B-spline from the path, in --radius units (default 1e-6 * R)");
   cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R > 0: the cone distance, any unit");
   cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
   add_output_option(*cmd, options->output, "the trajectory");
