@@ -127,6 +127,25 @@ TEST_CASE("atlas --svg: the map file with the report's boundaries and a legend",
   CHECK(dir.entries().size() == 1);  // no CSV without -o
 }
 
+TEST_CASE("atlas --teeth ZS:ZP: the atlas of n = ZS/ZP, the counts echoed in the summary and the map", "[cli][atlas]") {
+  TempDir dir;
+  const Result by_teeth = run_here("atlas --teeth 39:15 --grid 6 -o t.csv --svg t.svg", dir);
+  const Result by_n = run_here("atlas --n 13/5 --grid 6 -o n.csv", dir);
+  REQUIRE(by_teeth.status == 0);
+  REQUIRE(by_n.status == 0);
+  CHECK(slurp(dir.path / "t.csv") == slurp(dir.path / "n.csv"));  // the curve depends on n = 39/15 = 13/5 only
+  CHECK(contains(by_teeth.out, "atlas: n = 13/5 (teeth 39:15), grid 6 x 6"));
+  CHECK(contains(by_n.out, "atlas: n = 13/5, grid 6 x 6"));
+  CHECK(contains(slurp(dir.path / "t.svg"), "n = 13/5 (teeth 39:15)"));
+  for (const std::string args : {"--teeth 39:15 --n 13/5", "--teeth 39:0", "--teeth 39", "--grid 6"}) {
+    const Result bad = run_here("atlas " + args + (contains(args, "grid") ? "" : " --grid 6"), dir);
+    INFO(args << ": " << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+  }
+}
+
 TEST_CASE("output files get the mode of a plain open(): 0666 & ~umask, not mkstemp's 0600", "[cli][atlas]") {
   TempDir dir;
   const std::string cmd = "cd '" + dir.path.string() + "' && umask 022 && '" + SPHTROCH_EXE +

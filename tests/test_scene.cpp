@@ -81,6 +81,30 @@ TEST_CASE("scene: every key read, defaults, effects in the order written, relati
   CHECK_FALSE(b.settings.reading.literal);
 }
 
+TEST_CASE("scene: teeth instead of n is the train of n = ZS/ZP, kept and echoed next to n") {
+  const auto one = [](const std::string& ratio) {
+    return parse_scene(R"({"trains": [{"name": "t", "a2": 0.7, "a3": 2.5, )" + ratio +
+                           R"(, "effects": {"classification": "c.json"}}]})",
+                       "x.json")
+        .at(0);
+  };
+  const SceneTrain teeth = one(R"("teeth": "39:15")"), n = one(R"("n": "13/5")");
+  CHECK(teeth.text.teeth == "39:15");
+  CHECK(teeth.train.ratio() == n.train.ratio());
+  CHECK(teeth.train.a3() == n.train.a3());
+  Analysis analysis(teeth.train, teeth.settings);
+  std::ostringstream out, explanation;
+  write_scene_effect(out, teeth, analysis, teeth.effects.at(0));
+  CHECK(json::parse(out.str())["inputs"]["teeth"] == "39:15");
+  write_scene_explanation(explanation, teeth, analysis);
+  CHECK(explanation.str().find("n = 13/5 (teeth 39:15)") != std::string::npos);
+  CHECK(scene_error(train_with(R"("teeth": "39:15", )")).field() == "f.json: trains[0].n");  // both n and teeth
+  CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "teeth": 39, "effects": {"nodes": "n"}}]})").field() ==
+        "f.json: trains[0].teeth");
+  CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "teeth": "39:0", "effects": {"nodes": "n"}}]})").field() ==
+        "f.json: trains[0].teeth");
+}
+
 TEST_CASE("scene errors: FILE: PATH = VALUE: PROBLEM, valid: RANGE, one line, an InvalidInput") {
   const SceneError e = scene_error(train_with(R"("phase": "x", )"));
   const InvalidInput& base = e;  // callers that know InvalidInput only still get the parts

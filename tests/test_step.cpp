@@ -141,7 +141,7 @@ TEST_CASE("STEP: a radius or tolerance that cannot be met is refused naming it",
   CHECK(refused_field(1.0, std::nan("")) == "tolerance");
 }
 
-TEST_CASE("cli trace -o FILE.step: scaled by --radius, read back within --tolerance; bad values leave no file",
+TEST_CASE("cli trace -o FILE.step: scaled by --radius and read back within --tolerance - bad values leave no file",
           "[step][cli]") {
   TempDir dir;
   const Result ok = run("trace --a2 0.7 --a3 2.5 --n 13/5 --radius 25 --tolerance 1e-4 -o p.step", dir, true);

@@ -55,10 +55,19 @@ class GearTrain:
     twist a3 (both in (0, pi)), gear ratio n = p/q (p != 0), phase theta_p (Eq. 3).
 
     Immutable; picklable (the inputs are kept as exact text: pickling round-trips bit for bit).
-    Raises InvalidInput (field "a2", "a3", "n" or "phase") for a value out of range or malformed.
+    Raises InvalidInput (field "a2", "a3", "n", "teeth" or "phase") for a value out of range or
+    malformed, or for both n and teeth (or neither).
     """
 
+    @overload
     def __init__(self, a2: Angle, a3: Angle, n: RatioLike, phase: Angle = 0.0) -> None: ...
+    @overload
+    def __init__(self, a2: Angle, a3: Angle, *, phase: Angle = 0.0, teeth: str) -> None: ...
+    @property
+    def teeth(self) -> Optional[str]:
+        """The tooth counts "ZS:ZP" (sun:planet; ZS < 0: internal gearing) when the train was made
+        with teeth= instead of n (39:15 is kept, not reduced to 13:5: reports echo it next to n);
+        None when it was made with n. Exactly one of n and teeth must be given."""
     @property
     def a2(self) -> float:
         """Carrier twist, radians."""

@@ -127,12 +127,27 @@ std::size_t census_samples_arg(py::handle samples) {
   return samples.is_none() ? 0 : count_arg(samples, "samples", kMinCensusSamples, kMaxSamples);
 }
 
-Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase) {
+/// n, or teeth "ZS:ZP" (kept in t.text.teeth, n's text then empty, as TrainText has it).
+Ratio ratio_or_teeth_arg(py::handle n, py::handle teeth, TrainText& text) {
+  const char* const teeth_valid = "tooth counts 'ZS:ZP', sun:planet ('39:15' is n = 13/5; ZS < 0: internal)";
+  if (teeth.is_none()) {
+    if (n.is_none()) throw InvalidInput("n", "None", "not given", std::string(kRatioForms) + ", or teeth='ZS:ZP'");
+    const Ratio nv = ratio_arg(n);
+    text.n = nv.str();
+    return nv;
+  }
+  if (!n.is_none()) throw InvalidInput("teeth", repr_of(teeth), "given together with n = " + repr_of(n), "one of n and teeth");
+  if (!py::isinstance<py::str>(teeth)) throw InvalidInput("teeth", repr_of(teeth), "not a string", teeth_valid);
+  const Teeth z = parse_teeth(teeth.cast<std::string>(), "teeth");
+  text.teeth = z.str();
+  return z.ratio();
+}
+
+Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase, py::handle teeth) {
   Train t;
   const double a2v = angle_arg(a2, "a2", t.text.a2);
   const A3Spec a3v = a3_arg(a3, t.text.a3);
-  const Ratio nv = ratio_arg(n);
-  t.text.n = nv.str();
+  const Ratio nv = ratio_or_teeth_arg(n, teeth, t.text);
   const double phv = angle_arg(phase, "phase", t.text.phase);
   t.train = make_gear_train(a2v, a3v, nv, phv);
   return t;

@@ -125,8 +125,9 @@ py::object classify_roots(const Train& self, py::handle literal_flag) {
 }
 
 std::string train_repr(const Train& t) {
-  return "GearTrain(a2=" + repr_of(py::str(t.text.a2)) + ", a3=" + repr_of(py::str(t.text.a3)) + ", n=" +
-         repr_of(py::str(t.text.n)) + ", phase=" + repr_of(py::str(t.text.phase)) + ")";
+  const std::string ratio = t.text.teeth.empty() ? "n=" + repr_of(py::str(t.text.n)) : "teeth=" + repr_of(py::str(t.text.teeth));
+  return "GearTrain(a2=" + repr_of(py::str(t.text.a2)) + ", a3=" + repr_of(py::str(t.text.a3)) + ", " + ratio +
+         ", phase=" + repr_of(py::str(t.text.phase)) + ")";
 }
 
 /// The largest |t| kinematics() takes: the tool's open-curve range, 1e6 carrier turns (beyond it
@@ -205,8 +206,10 @@ py::object scene(py::handle scene_arg) {
 void bind_gear_train(py::module_& m) {
   m.def("scene", &scene, py::arg("scene"), doc("scene"));
   py::class_<Train>(m, "GearTrain", doc("GearTrain"))
-      .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase) { return make_train(a2, a3, n, phase); }),
-           py::arg("a2"), py::arg("a3"), py::arg("n"), py::arg("phase") = 0.0)
+      .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase, py::handle teeth) {
+             return make_train(a2, a3, n, phase, teeth);
+           }),
+           py::arg("a2"), py::arg("a3"), py::arg("n") = py::none(), py::arg("phase") = 0.0, py::arg("teeth") = py::none())
       .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); }, doc("GearTrain.a2"))
       .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); }, doc("GearTrain.a3"))
       .def_property_readonly("n", [](const Train& t) { return t.train.n(); }, doc("GearTrain.n"))
@@ -217,8 +220,11 @@ void bind_gear_train(py::module_& m) {
       .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); }, doc("GearTrain.planet_cone"))
       .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); }, doc("GearTrain.sun_cone"))
       .def_property_readonly("period", [](const Train& t) { return t.train.period(); }, doc("GearTrain.period"))
+      .def_property_readonly("teeth", [](const Train& t) -> py::object {
+        return t.text.teeth.empty() ? py::object(py::none()) : py::object(py::str(t.text.teeth));
+      }, doc("GearTrain.teeth"))
       .def_property_readonly("texts", [](const Train& t) {
-        return py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase);
+        return py::make_tuple(t.text.a2, t.text.a3, t.text.n.empty() ? t.train.ratio().str() : t.text.n, t.text.phase);
       }, doc("GearTrain.texts"))
       .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
            py::arg("velocity") = false, doc("GearTrain.trace"))
@@ -247,7 +253,9 @@ void bind_gear_train(py::module_& m) {
       // texts: a tampered pickle is validated like any other input (InvalidInput).
       .def("__reduce__", [](py::object self) {
         const Train& t = self.cast<const Train&>();
-        return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, t.text.n, t.text.phase));
+        const py::object n = t.text.teeth.empty() ? py::object(py::str(t.text.n)) : py::object(py::none());
+        const py::object teeth = t.text.teeth.empty() ? py::object(py::none()) : py::object(py::str(t.text.teeth));
+        return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, n, t.text.phase, teeth));
       });
 }
 

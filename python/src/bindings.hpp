@@ -79,7 +79,8 @@ struct Train {
   GearTrain train;
   TrainText text;
 };
-Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase);
+/// The train of GearTrain(a2, a3, n, phase, teeth): exactly one of n and teeth (not None).
+Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase, py::handle teeth);
 
 /// A capsule owning `owner`: the base of arrays viewing its data, deleting it with the last of them.
 template <typename Owner>

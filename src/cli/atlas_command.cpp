@@ -3,6 +3,8 @@
 // Eigen only: this translation unit must not include CGAL.
 #include "cli_common.hpp"
 
+#include "sphtroch/io/train_text.hpp"
+
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/atlas/atlas_boundary_check.hpp"
 #include "sphtroch/atlas/atlas_csv.hpp"
@@ -29,7 +31,7 @@ namespace sphtroch::cli {
 namespace {
 
 struct AtlasOptions {
-  std::string n, grid, a2 = "0:pi", a3 = "0:pi", threads, shard, output, svg;
+  std::string n, teeth, grid, a2 = "0:pi", a3 = "0:pi", threads, shard, output, svg;
   bool literal = false;
 };
 
@@ -135,7 +137,9 @@ AtlasProgress progress_bar() {
 
 void run_atlas(const AtlasOptions& o) {
   AtlasSpec spec;
-  spec.ratio = parse_ratio(o.n, "n");
+  const TrainText n_text{"", "", o.n, "0", o.teeth};  // --n, or --teeth ZS:ZP (kept and echoed)
+  spec.ratio = n_text.ratio();
+  if (!o.teeth.empty()) spec.teeth = parse_teeth(o.teeth, "teeth");
   spec.grid = parse_count(o.grid, "grid", 1, kAtlasMaxGrid);
   spec.a2 = parse_angle_range(o.a2, "a2");
   spec.a3 = parse_angle_range(o.a3, "a3");
@@ -252,7 +256,11 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "Shards: --shard I/K (1 <= I <= K <= G) computes rows [(I-1)G/K, IG/K) of a2; join the\n"
       "slices with `sphtroch atlas-merge -o atlas.csv slice*.csv` (byte-identical to one run).\n"
       "Example: sphtroch atlas --n 2 --grid 128 -o atlas.csv --svg atlas.svg");
-  cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5")->required();
+  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (or --teeth)");
+  CLI::Option* gears =
+      cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; echoed next to n)");
+  ratio->excludes(gears);
+  gears->excludes(ratio);
   cmd->add_option("--grid", o->grid, "G: G x G cells (1 .. 4096)")->required();
   cmd->add_option("--a2", o->a2, "a2 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");
   cmd->add_option("--a3", o->a3, "a3 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");

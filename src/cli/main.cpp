@@ -131,27 +131,30 @@ void check_no_empty_values(const CLI::App& app) {
                              " --help (leave the option out for its default)"};
 }
 
+/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|no)": the optional components this
+/// build has: analysis (CGAL: classify, nodes, plot, scene, synth points/fit) and step
+/// (OpenCASCADE: trace -o FILE.step).
+std::string version_text() {
+#ifdef SPHTROCH_HAVE_ANALYSIS
+  const char* analysis = "yes";
+#else
+  const char* analysis = "no";
+#endif
+#ifdef SPHTROCH_HAVE_STEP
+  const char* step = "yes";
+#else
+  const char* step = "no";
+#endif
+  return std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " + analysis + ", step " + step + ")";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"sphtroch " SPHTROCH_VERSION_STRING
                " - trajectories of spherical planetary gear trains (Lin & Tsai 1990)",
                "sphtroch"};
-  // The optional components this build has: analysis (CGAL: classify, nodes, plot, scene, synth
-  // points/fit) and step (OpenCASCADE: trace -o FILE.step).
-  app.set_version_flag("--version", std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " +
-#ifdef SPHTROCH_HAVE_ANALYSIS
-                                        "yes"
-#else
-                                        "no"
-#endif
-                                        ", step " +
-#ifdef SPHTROCH_HAVE_STEP
-                                        "yes"
-#else
-                                        "no"
-#endif
-                                        ")");
+  app.set_version_flag("--version", version_text());
   app.require_subcommand(1);
   app.option_defaults()->disable_flag_override();  // --velocity=value is an error, not a value
   sphtroch::install_output_signal_cleanup();  // temporaries removed on SIGINT/SIGTERM; EPIPE instead of SIGPIPE

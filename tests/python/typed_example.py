@@ -1,7 +1,7 @@
 """A typed user script: `mypy --strict` must accept it (tests/python/test_typing.py), and it runs.
 NumPy scalars go wherever the runtime takes numbers, as a NumPy user writes them."""
 from fractions import Fraction
-from typing import Any, Dict, List
+from typing import Any, Dict, List, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -28,6 +28,9 @@ def main() -> None:
     print(sweep(1.0, np.linspace(0.2, 2.9, 5)))
     seen = {train: "memo"}  # GearTrain is hashable
     assert seen[sphtroch.GearTrain("60deg", 1.2, "13/5")] == "memo"
+    by_teeth = sphtroch.GearTrain("pi/3", 1.2, teeth="39:15")  # the same train, 39:15 kept
+    teeth: Optional[str] = by_teeth.teeth
+    assert by_teeth == train and teeth == "39:15"
     a = sphtroch.atlas(np.int64(2), grid=np.int64(8), a2=(np.float64(0.1), "pi"), threads=np.int32(1),
                        progress=lambda done, total: None)
     print(int(a["nodes"].max()))

@@ -2,7 +2,7 @@
 the lines marked "error:" and only those."""
 import sphtroch
 
-train = sphtroch.GearTrain(1.0, 2.0, None)  # error: None is no gear ratio
+train: sphtroch.GearTrain = sphtroch.GearTrain(1.0, 2.0, None)  # error: None is no gear ratio
 t, p = train.trace(samples=2.5)  # error: samples is a whole number
 d = sphtroch.atlas(2, grid="64")  # error: grid is a count, not text
 x: int = train.a2  # error: a2 is a float

@@ -47,6 +47,7 @@
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/census/root_census.hpp"
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/types.hpp"
@@ -78,6 +79,7 @@ constexpr std::size_t kAtlasMaxThreads = 1024;
 
 struct AtlasSpec {
   Ratio ratio{2};
+  std::optional<Teeth> teeth;  // the tooth counts n was given as (echoed next to n); ratio == teeth->ratio()
   std::size_t grid = 128;  // G: G x G cells
   AngleRange a2;           // horizontal axis, index i
   AngleRange a3;           // vertical axis, index j
@@ -177,6 +179,8 @@ inline void AtlasSpec::validate() const {
   };
   check(a2, "a2");
   check(a3, "a3");
+  if (teeth && !(teeth->ratio() == ratio))
+    throw InvalidInput("teeth", teeth->str(), "not the ratio n = " + ratio.str(), "tooth counts ZS:ZP with ZS/ZP = n");
   if (!(reading.boundary_tolerance >= 0.0))
     throw InvalidInput("boundary_tolerance", number_text(reading.boundary_tolerance), "negative", ">= 0 radians");
   // The carrier-twist bounds up front, for every row: a row whose pitch cone is ill-defined would

@@ -62,7 +62,7 @@ inline std::vector<AtlasCell> listed_disagreements(const AtlasSummary& s, const 
 namespace atlas_report_detail {
 
 inline void head(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s, const AtlasRun& run) {
-  out << "atlas: n = " << spec.ratio.str() << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
+  out << "atlas: n = " << spec.ratio.str() << (spec.teeth ? " (teeth " + spec.teeth->str() + ")" : "") << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
       << number_text(spec.a2.lo) << ", " << number_text(spec.a2.hi) << "], a3 in [" << number_text(spec.a3.lo) << ", "
       << number_text(spec.a3.hi) << "], cell centres; "
       << (spec.reading.literal ? "literal reading (tolerances 0)"

@@ -44,7 +44,7 @@ constexpr std::size_t kAtlasBoundarySteps = 512;
 
 struct AtlasSvgOptions {
   double map_px = 512;  // side of the square map, px; [64, 8192]
-  std::string title;    // empty: "Curve classes over (α2, α3), n = ..., G × G cells"
+  std::string title;    // empty: "Curve classes over (α2, α3), n = ... [(teeth ZS:ZP)], G × G cells"
 };
 
 /// The map (see header).
@@ -460,7 +460,8 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   SPHTROCH_ASSERT(cells.size() == spec.cells(), "render_atlas_svg: one cell per grid point");
   if (!(options.map_px >= 64 && options.map_px <= 8192))
     throw InvalidInput("map_px", number_text(options.map_px), "outside the valid range", "[64, 8192] px");
-  const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + ", " +
+  const std::string teeth = spec.teeth ? " (teeth " + spec.teeth->str() + ")" : "";
+  const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + teeth + ", " +
                                                         std::to_string(spec.grid) + " × " + std::to_string(spec.grid) + " cells"
                                                   : options.title;
   atlas_svg_detail::AtlasCanvas canvas(spec, cells, options.map_px);

@@ -137,7 +137,7 @@ namespace scene_detail {
 using Json = nlohmann::ordered_json;  // keeps the order written: effects run in that order
 
 constexpr const char* kTopKeys = "trains, description";
-constexpr const char* kTrainKeys = "name, description, a2, a3, n, phase, samples, turns, census_samples, literal, effects";
+constexpr const char* kTrainKeys = "name, description, a2, a3, n (or teeth), phase, samples, turns, census_samples, literal, effects";
 constexpr const char* kAngleValue = "a string in the command-line forms (pi/2, 2pi/3, 90deg, 1.25) or a number in radians";
 
 /// A value as shown in messages: one line (dump() escapes newlines), at most 80 characters.
@@ -275,8 +275,8 @@ class TrainObject {
   TrainObject(const Errors& err, const Json& t, std::size_t index)
       : err_(err), t_(t), at_("trains[" + std::to_string(index) + "]") {
     if (!t.is_object()) err.field(at_, &t, "not an object", "an object with the keys " + std::string(kTrainKeys));
-    static const char* const known[] = {"name",    "description", "a2",             "a3",      "n",      "phase",
-                                        "samples", "turns",       "census_samples", "literal", "effects"};
+    static const char* const known[] = {"name",    "description", "a2",             "a3",      "n",      "teeth",
+                                        "phase",   "samples",     "turns",          "census_samples", "literal", "effects"};
     for (const auto& [key, value] : t.items())
       if (std::find(std::begin(known), std::end(known), key) == std::end(known))
         err.field(at_ + "." + key, &value, "unknown key", kTrainKeys);  // a typo must not pass silently
@@ -308,26 +308,41 @@ inline void read_name(const TrainObject& t, SceneTrain& st) {
     t.err().field(t.at("description"), d, "not a string", "any string (ignored)");
 }
 
-/// a2, a3, n, phase: the texts, then the train they make (its errors name the scene's key).
+/// n as a ratio, or teeth as tooth counts "ZS:ZP" (kept: the outputs echo them next to n).
+inline const Json& read_ratio_text(const TrainObject& t, SceneTrain& st) {
+  const Errors& err = t.err();
+  const std::string n_valid = std::string(kRatioForms) + ", as a string or an integer";
+  if (const Json* teeth = t.optional("teeth")) {
+    const char* const teeth_valid = "tooth counts \"ZS:ZP\", sun:planet (\"39:15\" is n = 13/5; ZS < 0: internal)";
+    if (const Json* n = t.optional("n"))
+      err.field(t.at("n"), n, "given together with teeth", "one of n and teeth");
+    if (!teeth->is_string()) err.field(t.at("teeth"), teeth, "not a string", teeth_valid);
+    st.text.teeth = teeth->get<std::string>();
+    return *teeth;
+  }
+  const Json& n = t.required("n", n_valid + " (or teeth \"ZS:ZP\")");
+  if (n.is_string()) st.text.n = n.get<std::string>();
+  else if (n.is_number_integer()) st.text.n = n.dump();
+  else if (n.is_number()) err.field(t.at("n"), &n, "a JSON number with a fraction or exponent, not a string or an integer", n_valid + " (write \"2.5\" or \"5/2\")");
+  else err.field(t.at("n"), &n, "not a gear ratio", n_valid);
+  return n;
+}
+
+/// a2, a3, n (or teeth), phase: the texts, then the train they make (its errors name the scene's key).
 inline void read_gear_train(const TrainObject& t, SceneTrain& st) {
   const Errors& err = t.err();
   const Json& a2 = t.required("a2", std::string("(0, pi) radians as ") + kAngleValue);
   const Json& a3 = t.required("a3", std::string("(0, pi) radians as ") + kAngleValue +
                                         ", or ap, pi-ap, a2, pi-a2 with an offset");
-  const std::string n_valid = std::string(kRatioForms) + ", as a string or an integer";
-  const Json& n = t.required("n", n_valid);
   st.text.a2 = angle_text(err, t.at("a2"), a2);
   st.text.a3 = angle_text(err, t.at("a3"), a3);
-  if (n.is_string()) st.text.n = n.get<std::string>();
-  else if (n.is_number_integer()) st.text.n = n.dump();
-  else if (n.is_number()) err.field(t.at("n"), &n, "a JSON number with a fraction or exponent, not a string or an integer", n_valid + " (write \"2.5\" or \"5/2\")");
-  else err.field(t.at("n"), &n, "not a gear ratio", n_valid);
+  const Json& n = read_ratio_text(t, st);
   const Json* phase = t.optional("phase");
   st.text.phase = phase ? angle_text(err, t.at("phase"), *phase) : "0";
   try {
     st.train = st.text.train();
   } catch (const InvalidInput& e) {
-    const Json* raw = e.field() == "a2" ? &a2 : e.field() == "a3" ? &a3 : e.field() == "n" ? &n : phase;
+    const Json* raw = e.field() == "a2" ? &a2 : e.field() == "a3" ? &a3 : e.field() == "n" || e.field() == "teeth" ? &n : phase;
     err.field(t.at(e.field()), raw, e.problem(), e.valid_range());
   }
 }
@@ -490,8 +505,8 @@ inline std::string scene_uncertified(const SceneTrain& st, const Analysis& a) {
 inline void write_scene_explanation(std::ostream& out, const SceneTrain& st, const Analysis& a) {
   using scene_detail::stage_list;
   using scene_detail::work_text;
-  out << "train " << st.name << ": a2 = " << st.text.a2 << ", a3 = " << st.text.a3 << ", n = " << st.text.n
-      << ", phase = " << st.text.phase << "\n  effects (stages each needs)\n";
+  out << "train " << st.name << ": a2 = " << st.text.a2 << ", a3 = " << st.text.a3 << ", n = "
+      << (st.text.teeth.empty() ? st.text.n : st.train.ratio().str() + st.text.teeth_note()) << ", phase = " << st.text.phase << "\n  effects (stages each needs)\n";
   for (const SceneEffect& e : st.effects)
     out << "    " << to_string(e.effect) << " -> " << e.path << ": " << stage_list(Analysis::stages_for(e.effect)) << "\n";
   out << "  stages run, in order (work)\n";
