@@ -146,6 +146,27 @@ TEST_CASE("atlas --teeth ZS:ZP: the atlas of n = ZS/ZP, the counts echoed in the
   }
 }
 
+TEST_CASE("atlas --degrees: the map's axes in round degrees at the angles they name, the CSV unchanged", "[cli][atlas][svg]") {
+  TempDir dir;
+  const Result deg = run_here("atlas --n 2 --grid 8 --a2 30deg:150deg -o d.csv --svg d.svg --degrees", dir);
+  const Result rad = run_here("atlas --n 2 --grid 8 --a2 30deg:150deg -o r.csv --svg r.svg", dir);
+  REQUIRE(deg.status == 0);
+  REQUIRE(rad.status == 0);
+  CHECK(slurp(dir.path / "d.csv") == slurp(dir.path / "r.csv"));
+  const std::string svg = slurp(dir.path / "d.svg");
+  CHECK(contains(svg, "α2 (carrier twist), deg"));
+  CHECK(contains(svg, "α3 (tracer twist), deg"));
+  CHECK_FALSE(contains(svg, "π/"));  // no tick in multiples of pi (the legend names α3 = π − αp)
+  // The a2 ticks: 30° .. 150° every 30° (the first round step giving >= 4 ticks), at x = left +
+  // (a - lo) / (hi - lo) * map (72 px margin, 512 px map): 30° at 72, 90° at 328, 150° at 584.
+  for (const auto& [label, x] : {std::pair{"30°", "72"}, std::pair{"90°", "328"}, std::pair{"150°", "584"}})
+    CHECK(contains(svg, std::string("<text x=\"") + x + "\" y=\"579\" text-anchor=\"middle\" " +
+                            "style=\"font-family:sans-serif;font-size:12px;fill:#333333\">" + label + "<"));
+  const Result alone = run_here("atlas --n 2 --grid 8 --degrees", dir);
+  CHECK(alone.status == 2);
+  CHECK(contains(alone.err, "--degrees"));
+}
+
 TEST_CASE("output files get the mode of a plain open(): 0666 & ~umask, not mkstemp's 0600", "[cli][atlas]") {
   TempDir dir;
   const std::string cmd = "cd '" + dir.path.string() + "' && umask 022 && '" + SPHTROCH_EXE +

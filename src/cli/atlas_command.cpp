@@ -32,13 +32,21 @@ namespace {
 
 struct AtlasOptions {
   std::string n, teeth, grid, a2 = "0:pi", a3 = "0:pi", threads, shard, output, svg;
-  bool literal = false;
+  bool literal = false, degrees = false;
 };
 
 struct MergeOptions {
   std::vector<std::string> slices;
   std::string output, svg;
+  bool degrees = false;
 };
+
+/// --degrees changes the map only.
+void check_degrees_with_svg(bool degrees, const std::string& svg) {
+  if (degrees && svg.empty())
+    throw UsageError{"--degrees: only the map (--svg) is drawn in degrees, the CSV and summary stay in radians; "
+                     "valid: --degrees with --svg FILE.svg"};
+}
 
 /// Every cell centre must be a valid twist, strictly inside (0, pi): a range too narrow for the
 /// grid (0:4.9e-324) would put centres at 0. Named by the range as typed.
@@ -95,8 +103,11 @@ void check_atlas_certified(const AtlasSummary& summary, const AtlasBoundaryCheck
     throw UncertifiedResult{"the atlas is not certified: " + why + " (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
-std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& cells) {
-  return render_atlas_svg(spec, cells);
+/// The map; with `degrees` its axes in degrees (--degrees).
+std::string write_svg_text(const AtlasSpec& spec, const std::vector<AtlasCell>& cells, bool degrees) {
+  AtlasSvgOptions options;
+  options.degrees = degrees;
+  return render_atlas_svg(spec, cells, options);
 }
 
 /// The paths of `paths` that name files (not empty, not stdout).
@@ -136,6 +147,7 @@ AtlasProgress progress_bar() {
 }
 
 void run_atlas(const AtlasOptions& o) {
+  check_degrees_with_svg(o.degrees, o.svg);
   AtlasSpec spec;
   const TrainText n_text{"", "", o.n, "0", o.teeth};  // --n, or --teeth ZS:ZP (kept and echoed)
   spec.ratio = n_text.ratio();
@@ -165,7 +177,7 @@ void run_atlas(const AtlasOptions& o) {
   const std::vector<AtlasCell> cells = compute_atlas(spec, rows, threads, progress_bar());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells);
+  const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells, o.degrees);
   const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
   const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, threads);
   write_atlas_outputs(
@@ -188,6 +200,7 @@ UsageError unreadable_slice(const UnreadableSlice& e) {
 /// one line per slice read, not the grid); with --svg the cells are also kept for the map
 /// (56 bytes per cell). On standard output every slice is checked whole before the first byte.
 void run_merge(const MergeOptions& o) {
+  check_degrees_with_svg(o.degrees, o.svg);
   check_writable(o.output, "--output");
   check_writable(o.svg, "--svg");
   std::vector<NamedFile> inputs;
@@ -222,7 +235,7 @@ void run_merge(const MergeOptions& o) {
     StagedOutputs outputs;
     if (o.output.empty() || o.output == "-") pass(nullptr);  // every check before stdout sees a byte
     if (!o.output.empty()) outputs.stage(o.output, "--output", [&](std::ostream& out) { pass(&out); });
-    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << render_atlas_svg(spec, all); });
+    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << write_svg_text(spec, all, o.degrees); });
     outputs.commit();
     auto write_summary = [&](std::ostream& out) {
       write_atlas_summary(out, spec, summary, listed, AtlasRun{AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1});
@@ -270,6 +283,7 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("-o,--output", o->output,
                   "write the CSV to FILE (never left partial; - for stdout); without it only the summary");
   cmd->add_option("--svg", o->svg, "draw the map to FILE.svg (not with --shard)");
+  cmd->add_flag("--degrees", o->degrees, "the map's axes in degrees (the CSV stays in radians: atlas-merge reads it)");
   actions.emplace_back(cmd, [o] { run_atlas(*o); });
 
   auto m = std::make_shared<MergeOptions>();
@@ -281,6 +295,7 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   merge->add_option("-o,--output", m->output,
                     "write the merged CSV to FILE (never left partial; - for stdout); without it only the summary");
   merge->add_option("--svg", m->svg, "draw the merged map to FILE.svg");
+  merge->add_flag("--degrees", m->degrees, "the map's axes in degrees");
   actions.emplace_back(merge, [m] { run_merge(*m); });
 }
 

@@ -45,6 +45,7 @@ constexpr std::size_t kAtlasBoundarySteps = 512;
 struct AtlasSvgOptions {
   double map_px = 512;  // side of the square map, px; [64, 8192]
   std::string title;    // empty: "Curve classes over (α2, α3), n = ... [(teeth ZS:ZP)], G × G cells"
+  bool degrees = false; // axes in degrees (ticks at round degrees: 0°, 45°, ...), else multiples of pi
 };
 
 /// The map (see header).
@@ -238,6 +239,28 @@ inline std::vector<Tick> ticks(double lo, double hi) {
   return out;
 }
 
+/// Ticks at multiples of a round step in degrees (90, 45, 30, 15, 10, 5, 2, 1, 0.5, ... the first
+/// giving at least 4) in [lo, hi] radians, labelled "45°"; values in radians.
+inline std::vector<Tick> degree_ticks(double lo, double hi) {
+  const double to_deg = 180.0 / Constants<double>::pi();
+  std::vector<Tick> out;
+  for (double step : {90.0, 45.0, 30.0, 15.0, 10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01}) {
+    const long k0 = static_cast<long>(std::ceil(lo * to_deg / step - 1e-9));
+    const long k1 = static_cast<long>(std::floor(hi * to_deg / step + 1e-9));
+    if (k1 - k0 + 1 < 4) continue;
+    for (long k = k0; k <= k1; ++k) {
+      const double deg = step * static_cast<double>(k);
+      out.push_back(Tick{deg / to_deg, svg_number(deg, 6) + "°"});
+    }
+    return out;
+  }
+  for (int k = 0; k <= 4; ++k) {
+    const double v = lo + (hi - lo) * k / 4.0;
+    out.push_back(Tick{v, svg_number(v * to_deg, 6) + "°"});
+  }
+  return out;
+}
+
 }  // namespace atlas_svg_detail
 
 namespace atlas_svg_detail {
@@ -246,8 +269,8 @@ namespace atlas_svg_detail {
 /// layer; render_atlas_svg calls them in drawing order.
 class AtlasCanvas {
  public:
-  AtlasCanvas(const AtlasSpec& spec, const std::vector<AtlasCell>& cells, double map_px)
-      : spec_(spec), cells_(cells), g_(spec.grid), map_(map_px), width_(kLeft + map_ + 24 + kLegendWidth),
+  AtlasCanvas(const AtlasSpec& spec, const std::vector<AtlasCell>& cells, double map_px, bool degrees)
+      : spec_(spec), cells_(cells), degrees_(degrees), g_(spec.grid), map_(map_px), width_(kLeft + map_ + 24 + kLegendWidth),
         height_(kTop + map_ + kBottom), cell_(map_ / static_cast<double>(g_)), summary_(summarize_atlas(cells, spec.ratio)),
         shades_(cells, spec.ratio), svg_(width_, height_, 2) {}
 
@@ -302,26 +325,28 @@ class AtlasCanvas {
     svg_.end_group();
   }
 
-  /// Frame, ticks in multiples of pi, axis titles.
+  /// Frame, ticks in multiples of pi (or round degrees), axis titles.
   void frame_and_axes() {
     svg_.rect(kLeft, kTop, map_, map_, "fill:none;stroke:#333333;stroke-width:1");
     const std::string tick_text = "font-family:sans-serif;font-size:12px;fill:#333333";
-    for (const Tick& t : ticks(spec_.a2.lo, spec_.a2.hi)) {
+    const auto axis_ticks = [&](const AngleRange& r) { return degrees_ ? degree_ticks(r.lo, r.hi) : ticks(r.lo, r.hi); };
+    const std::string unit = degrees_ ? "deg" : "rad";
+    for (const Tick& t : axis_ticks(spec_.a2)) {
       const double x = x_of(t.value);
       svg_.line(x, kTop + map_, x, kTop + map_ + 5, "stroke:#333333");
       svg_.text(x, kTop + map_ + 19, t.label, tick_text, "middle");
     }
-    for (const Tick& t : ticks(spec_.a3.lo, spec_.a3.hi)) {
+    for (const Tick& t : axis_ticks(spec_.a3)) {
       const double y = y_of(t.value);
       svg_.line(kLeft - 5, y, kLeft, y, "stroke:#333333");
       svg_.text(kLeft - 8, y + 4, t.label, tick_text, "end");
     }
-    svg_.text(kLeft + map_ / 2, kTop + map_ + 44, "α2 (carrier twist), rad", "font-family:sans-serif;font-size:13px", "middle");
+    svg_.text(kLeft + map_ / 2, kTop + map_ + 44, "α2 (carrier twist), " + unit, "font-family:sans-serif;font-size:13px", "middle");
     const double ly = kTop + map_ / 2;
     svg_.raw("<text x=\"" + svg_.num(kLeft - 48) + "\" y=\"" + svg_.num(ly) + "\" transform=\"rotate(-90 " +
              svg_.num(kLeft - 48) + " " + svg_.num(ly) +
              ")\" text-anchor=\"middle\" style=\"font-family:sans-serif;font-size:13px\">" +
-             xml_escape("α3 (tracer twist), rad") + "</text>\n");
+             xml_escape("α3 (tracer twist), " + unit) + "</text>\n");
   }
 
   /// The legend (contract 4): classes present, boundaries, disagreements, the reading.
@@ -443,6 +468,7 @@ class AtlasCanvas {
 
   const AtlasSpec& spec_;
   const std::vector<AtlasCell>& cells_;
+  const bool degrees_;
   const std::size_t g_;
   const double map_, width_, height_, cell_;
   const AtlasSummary summary_;
@@ -464,7 +490,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + teeth + ", " +
                                                         std::to_string(spec.grid) + " × " + std::to_string(spec.grid) + " cells"
                                                   : options.title;
-  atlas_svg_detail::AtlasCanvas canvas(spec, cells, options.map_px);
+  atlas_svg_detail::AtlasCanvas canvas(spec, cells, options.map_px, options.degrees);
   canvas.head(title);
   canvas.cells();
   canvas.boundaries();
