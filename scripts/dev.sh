@@ -38,10 +38,12 @@ packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev
           libcli11-dev nlohmann-json3-dev)
 step_packages=(libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
                libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev)
+# librsvg2-dev (+ pkg-config): plot -o FILE.png renders the SVG (optional, asked for by `test`).
+png_packages=(librsvg2-dev pkg-config)
 if [[ $mode == test ]]; then
   packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
              emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools
-             python3-nbclient python3-nbformat python3-ipykernel "${step_packages[@]}")
+             python3-nbclient python3-nbformat python3-ipykernel "${step_packages[@]}" "${png_packages[@]}")
 fi
 
 install_missing_packages() {
@@ -76,7 +78,7 @@ configure_and_build() {
   local python=()
   if [[ $mode == test ]]; then
     python=(-DSPHTROCH_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 -DSPHTROCH_BUILD_EXPLORER=ON
-            -DSPHTROCH_WITH_STEP=ON)
+            -DSPHTROCH_WITH_STEP=ON -DSPHTROCH_WITH_PNG=ON)
   fi
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${python[@]}"
   if [[ $mode == run ]]; then

@@ -138,6 +138,12 @@ TEST_CASE("scene errors: each hazard named where it is") {
   const std::string two = R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "n": 2, "effects": {"nodes": "a"}},
                                          {"name": "t", "a2": 1, "a3": 1, "n": 2, "effects": {"nodes": "b"}}]})";
   CHECK(scene_error(two).field() == "f.json: trains[1].name");
+  // SVG bytes never go into a file named as another picture format.
+  for (const char* name : {"a.png", "dir/A.PNG", "a.pdf", "a.jpeg"})
+    CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "n": 2, "effects": {"plot": ")" + std::string(name) +
+                      R"("}}]})").field() == "f.json: trains[0].effects.plot");
+  CHECK(parse_scene(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "n": 2, "effects": {"plot": "p.svg", "trace": "t.png.csv"}}]})",
+                    "f.json").size() == 1);
   // A census of a huge ratio is refused up front, before anything is computed.
   CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "n": 100001, "effects": {"nodes": "n"}}]})").field() ==
         "f.json: trains[0].effects.nodes");

@@ -2,6 +2,7 @@
 // CLI translation units that include CGAL (through analysis.hpp; the other is scene_command.cpp).
 // Every format is the library's (sphtroch/exact/classification_output.hpp, node_csv.hpp), shared with `sphtroch scene`.
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/io/node_csv.hpp"
@@ -88,7 +89,8 @@ void run_plot(const AnalysisOptions& o) {
   const PlotOptions options = plot_options(o);
   const std::string svg =
       plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate(), options);
-  write_output(o.output, [&](std::ostream& out) { out << svg; });
+  const std::string bytes = picture_bytes(svg, o.output);  // PNG for FILE.png
+  write_output(o.output, [&](std::ostream& out) { out << bytes; });
   check_certified(a.certificate());
 }
 

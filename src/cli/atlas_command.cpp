@@ -2,6 +2,7 @@
 // (atlas_csv.hpp), shard slices joined back together, and the SVG map (atlas_svg.hpp).
 // Eigen only: this translation unit must not include CGAL.
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/io/train_text.hpp"
 
@@ -177,7 +178,7 @@ void run_atlas(const AtlasOptions& o) {
   const std::vector<AtlasCell> cells = compute_atlas(spec, rows, threads, progress_bar());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const std::string svg = o.svg.empty() ? std::string() : write_svg_text(spec, cells, o.degrees);
+  const std::string svg = o.svg.empty() ? std::string() : picture_bytes(write_svg_text(spec, cells, o.degrees), o.svg);
   const AtlasSummary summary = summarize_atlas(cells, spec.ratio);
   const AtlasBoundaryCheck check = check_atlas_boundaries(spec, cells, threads);
   write_atlas_outputs(
@@ -201,6 +202,7 @@ UsageError unreadable_slice(const UnreadableSlice& e) {
 /// (56 bytes per cell). On standard output every slice is checked whole before the first byte.
 void run_merge(const MergeOptions& o) {
   check_degrees_with_svg(o.degrees, o.svg);
+  check_svg_name(o.svg, "svg");
   check_writable(o.output, "--output");
   check_writable(o.svg, "--svg");
   std::vector<NamedFile> inputs;
@@ -235,7 +237,7 @@ void run_merge(const MergeOptions& o) {
     StagedOutputs outputs;
     if (o.output.empty() || o.output == "-") pass(nullptr);  // every check before stdout sees a byte
     if (!o.output.empty()) outputs.stage(o.output, "--output", [&](std::ostream& out) { pass(&out); });
-    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << write_svg_text(spec, all, o.degrees); });
+    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << picture_bytes(write_svg_text(spec, all, o.degrees), o.svg); });
     outputs.commit();
     auto write_summary = [&](std::ostream& out) {
       write_atlas_summary(out, spec, summary, listed, AtlasRun{AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1});

@@ -131,9 +131,9 @@ void check_no_empty_values(const CLI::App& app) {
                              " --help (leave the option out for its default)"};
 }
 
-/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|no)": the optional components this
-/// build has: analysis (CGAL: classify, nodes, plot, scene, synth points/fit) and step
-/// (OpenCASCADE: trace -o FILE.step).
+/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|no, png yes|no)": the optional
+/// components this build has: analysis (CGAL: classify, nodes, plot, scene, synth points/fit),
+/// step (OpenCASCADE: trace -o FILE.step) and png (librsvg: plot -o FILE.png, atlas --svg FILE.png).
 std::string version_text() {
 #ifdef SPHTROCH_HAVE_ANALYSIS
   const char* analysis = "yes";
@@ -145,7 +145,13 @@ std::string version_text() {
 #else
   const char* step = "no";
 #endif
-  return std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " + analysis + ", step " + step + ")";
+#ifdef SPHTROCH_HAVE_PNG
+  const char* png = "yes";
+#else
+  const char* png = "no";
+#endif
+  return std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " + analysis + ", step " + step +
+         ", png " + png + ")";
 }
 
 }  // namespace

@@ -1,0 +1,18 @@
+// PNG pictures of `sphtroch plot -o FILE.png` and `sphtroch atlas --svg FILE.png`: the tool's SVG
+// rendered by librsvg + cairo (png_output.cpp, built only with them: SPHTROCH_HAVE_PNG).
+#pragma once
+
+#include <string>
+
+namespace sphtroch::cli {
+
+/// Whether `path` ends in .png (any case).
+bool names_png(const std::string& path);
+
+/// What to write for a picture to `path`: the SVG itself, or its PNG rendering when `path` ends
+/// in .png (at the SVG's own size in pixels, white where the SVG is). REQUIRES: a .png path only
+/// in a build with PNG (check_svg_name refuses it otherwise). Throws std::runtime_error if
+/// librsvg cannot render the SVG.
+std::string picture_bytes(const std::string& svg, const std::string& path);
+
+}  // namespace sphtroch::cli
