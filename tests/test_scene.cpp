@@ -103,6 +103,8 @@ TEST_CASE("scene: teeth instead of n is the train of n = ZS/ZP, kept and echoed 
         "f.json: trains[0].teeth");
   CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "teeth": "39:0", "effects": {"nodes": "n"}}]})").field() ==
         "f.json: trains[0].teeth");
+  CHECK(scene_error(R"({"trains": [{"name": "t", "a2": 1, "a3": 1, "teeth": "", "effects": {"nodes": "n"}}]})").field() ==
+        "f.json: trains[0].teeth");
 }
 
 TEST_CASE("scene errors: FILE: PATH = VALUE: PROBLEM, valid: RANGE, one line, an InvalidInput") {

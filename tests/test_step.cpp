@@ -1,8 +1,8 @@
 // Tests of cad/step_export.hpp and `sphtroch trace -o FILE.step`: the file is read back with
 // OpenCASCADE's own STEP reader (STEPControl_Reader), and its curve is compared with the exact path
-// (the forward model of Eq. 4 in MPFR at 128 bits, times the radius) at 10,000 random parameters
-// and by projecting 10,000 path points onto it (GeomAPI_ProjectPointOnCurve): both distances must
-// be within the stated tolerance. Seeded.
+// (the forward model of Eq. 4 in MPFR at 128 bits, times the radius) at 10,000 random parameters:
+// |C(t) - R P(t)| within the stated tolerance (the curve keeps theta2 as its parameter, so this
+// bounds the distance both ways). Seeded.
 #include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
@@ -10,13 +10,13 @@
 #include "sphtroch/core/curve.hpp"
 
 #include <BRep_Tool.hxx>
-#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_Curve.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -54,22 +54,18 @@ Vector3d exact_point(const GearTrain& train, double t, double radius) {
   return radius * Vector3d(double(p.x()), double(p.y()), double(p.z()));
 }
 
-/// Max over 10,000 random t of |C(t) - radius P(t)| (C keeps theta2 as its parameter: this bounds
-/// the distance of C(t) to the path) and of the distance of radius P(t) to C (projection).
-std::pair<double, double> deviations(const ReadBack& r, const GearTrain& train, double period, double radius) {
+/// Max over 10,000 random t of |C(t) - radius P(t)|. C keeps theta2 as its parameter, so this
+/// bounds both distances: of C(t) to the path, and of the path's point radius P(t) to C.
+double deviation(const ReadBack& r, const GearTrain& train, double period, double radius) {
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> u(0.0, period);
-  double along = 0.0, projected = 0.0;
+  double along = 0.0;
   for (int k = 0; k < 10000; ++k) {
     const double t = u(rng);
     const Vector3d p = exact_point(train, t, radius);
-    const gp_Pnt c = r.curve->Value(t), q(p.x(), p.y(), p.z());
-    along = std::max(along, c.Distance(q));
-    GeomAPI_ProjectPointOnCurve projection(q, r.curve, r.first, r.last);
-    REQUIRE(projection.NbPoints() > 0);
-    projected = std::max(projected, projection.LowerDistance());
+    along = std::max(along, r.curve->Value(t).Distance(gp_Pnt(p.x(), p.y(), p.z())));
   }
-  return {along, projected};
+  return along;
 }
 
 }  // namespace
@@ -85,7 +81,10 @@ TEST_CASE("STEP: the B-spline read back by OpenCASCADE is within the tolerance o
       {GearTrain(0.7, 2.5, Ratio(13, 5)), 25.0, 25e-6, {}},                         // the default: 1e-6 * R
       {GearTrain(a2, std::atan2(std::sin(a2), std::cos(a2) + n), Ratio(3), 0.4), 1.0, 1e-4, {}},  // cusps
       {GearTrain(2.0, 0.9, Ratio(-3, 2), 1.0), 7.5, 1e-3, {}},
-      {GearTrain(1.2, 1.9, Ratio(1, 3)), 1.0, 1e-7, 2.5}};                           // open, 2.5 turns
+      {GearTrain(1.2, 1.9, Ratio(1, 3)), 1.0, 1e-7, 2.5},                            // open, 2.5 turns
+      {GearTrain(1.0, 1.0, Ratio(5, 7)), 1.0, 1e-11, {}},
+      {GearTrain(1.0, 1.0, Ratio(1, 20)), 1.0, 1e-10, {}},
+      {GearTrain(1.0, 1.0, Ratio(1, 30)), 1.0, 3e-10, {}}};  // tight, long: the file's reals need 17 digits
   TempDir dir;
   for (const Case& c : cases) {
     StepOptions o;
@@ -103,9 +102,10 @@ TEST_CASE("STEP: the B-spline read back by OpenCASCADE is within the tolerance o
     REQUIRE(r.edges == 1);
     CHECK(std::abs(r.first) < 1e-12);
     CHECK(std::abs(r.last - period) < 1e-9);
-    const auto [along, projected] = deviations(r, c.train, period, c.radius);
-    CHECK(along <= c.tolerance);
-    CHECK(projected <= c.tolerance);
+    CHECK(deviation(r, c.train, period, c.radius) <= c.tolerance);
+    char uncertainty[40];
+    std::snprintf(uncertainty, sizeof uncertainty, "%.17E", c.tolerance);
+    CHECK(contains(slurp(file), uncertainty));  // the file's distance accuracy is the tolerance
     const gp_Pnt start = r.curve->Value(r.first), end = r.curve->Value(r.last);
     if (!c.turns) CHECK(start.Distance(end) == 0.0);  // closed: the same point
   }
@@ -135,10 +135,32 @@ TEST_CASE("STEP: a radius or tolerance that cannot be met is refused naming it",
     return "accepted";
   };
   CHECK(refused_field(0.0, 1e-3) == "radius");
+  CHECK(refused_field(1e101, 1e95) == "radius");  // beyond 1e100 products of positions overflow
   CHECK(refused_field(std::nan(""), 1e-3) == "radius");
   CHECK(refused_field(1.0, 1e-13) == "tolerance");
   CHECK(refused_field(1.0, -1.0) == "tolerance");
   CHECK(refused_field(1.0, std::nan("")) == "tolerance");
+  CHECK(refused_field(1.0, 1e-12) == "tolerance");  // would need more than kMaxStepPoints points
+  const auto turns_field = [&](const GearTrain& t, double turns) -> std::string {
+    StepOptions o;
+    o.turns = turns;
+    try {
+      check_step_options(t, o);
+      step_path(t, o);
+    } catch (const InvalidInput& e) {
+      return e.field();
+    }
+    return "accepted";
+  };
+  for (const double bad : {0.0, -1.0, 1e-300, std::nan(""), HUGE_VAL, 1e30, 1e5})
+    CHECK(turns_field(train, bad) == "turns");
+  CHECK(turns_field(train, 1.0) == "accepted");
+  try {  // a closed path too long for the point bound names n
+    step_path(GearTrain(1.0, 1.0, Ratio(999, 1000)), StepOptions{});
+    FAIL("accepted n = 999/1000");
+  } catch (const InvalidInput& e) {
+    CHECK(e.field() == "n");
+  }
 }
 
 TEST_CASE("cli trace -o FILE.step: scaled by --radius and read back within --tolerance - bad values leave no file",
@@ -153,12 +175,11 @@ TEST_CASE("cli trace -o FILE.step: scaled by --radius and read back within --tol
   CHECK(contains(text, "AUTOMOTIVE_DESIGN"));  // AP214
   CHECK(contains(text, "sphtroch a2=0.7 a3=2.5 n=13/5"));
   const GearTrain train(0.7, 2.5, Ratio(13, 5));
-  const auto [along, projected] = deviations(read_step((dir.path / "p.step").string()), train, train.period(), 25.0);
-  CHECK(along <= 1e-4);
-  CHECK(projected <= 1e-4);
+  CHECK(deviation(read_step((dir.path / "p.step").string()), train, train.period(), 25.0) <= 1e-4);
 
   std::ofstream(dir.path / "keep.step") << "old";
-  for (const std::string args : {"--tolerance 0", "--tolerance 1e-20", "--radius -1", "--samples 100", "--kinematics"}) {
+  for (const std::string args : {"--tolerance 0", "--tolerance 1e-20", "--radius -1", "--radius 1e305", "--samples 100",
+                                  "--kinematics", "--threads 2", "--turns 1e5"}) {
     const Result bad = run("trace --a2 0.7 --a3 2.5 --n 13/5 " + args + " -o keep.step", dir, true);
     INFO(args << ": " << bad.err);
     CHECK(bad.status == 2);

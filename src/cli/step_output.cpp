@@ -22,9 +22,9 @@ void write_step_output(const GearTrain& train, const StepOutputOptions& options,
   o.radius = options.radius;
   o.turns = options.turns;
   o.tolerance = options.tolerance;
-  const std::string text = step_text(step_path(train, o));
-  OutputFile out = OutputFile::open(output, "--output");
-  out.write(text);
+  check_step_options(train, o);                          // the input first,
+  OutputFile out = OutputFile::open(output, "--output");  // then the output (staged: nothing partial),
+  out.write(step_text(step_path(train, o)));              // then the work
   out.commit();
 }
 

@@ -72,7 +72,8 @@ bool step_requested(const TraceOptions& o) {
 /// not apply (the tolerance sets the points).
 void run_step_trace(const TraceOptions& o, const GearTrain& train, std::optional<double> turns) {
   for (const auto& [given, name] : {std::pair{!o.samples.empty(), "--samples"}, std::pair{o.velocity, "--velocity"},
-                                    std::pair{o.kinematics, "--kinematics"}, std::pair{o.degrees, "--degrees"}})
+                                    std::pair{o.kinematics, "--kinematics"}, std::pair{o.degrees, "--degrees"},
+                                    std::pair{!o.threads.empty(), "--threads"}})
     if (given)
       throw UsageError{std::string(name) + ": a STEP file holds the path as one B-spline fitted to --tolerance; valid: " +
                        name + " with CSV or .npy"};

@@ -14,10 +14,17 @@
 // 8 (1 + |n|) T and doubles until e, checked at 3 points inside every span (a cubic spline's error
 // between knots peaks once per span), is at most tolerance / 4; the largest checked e is
 // reported. P(theta) is analytic (Eq. 4), so e falls as N^-4: cusps (speed 0) need no special
-// care, because theta2 does not slow down there. More than kMaxStepPoints points is refused
-// (InvalidInput naming "tolerance").
+// care, because theta2 does not slow down there. Cost bound, up front: a path whose first N is
+// above kMaxStepPoints is refused (InvalidInput naming "turns", or "n" for a closed path), and so
+// is a tolerance that the first level's error predicts (e ~ N^-4) to need more (naming
+// "tolerance"). The file holds every real with 17 significant digits (OpenCASCADE's default of
+// 12-13 would move the curve by more than a tight tolerance), and its uncertainty is the tolerance.
 // Units: the file says millimetres; positions are radius (the cone distance, any unit the
 // caller means) times the unit-sphere path. The product name holds the train and the tolerance.
+// Side effects (OpenCASCADE's own process-wide state): step_text sets the STEP writer's static
+// parameters (schema AP214, unit, precision, product name) and both functions remove
+// OpenCASCADE's console printers from its default messenger, so that nothing reaches stdout.
+// Not thread-safe: call them from one thread at a time.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_STEP)
@@ -40,33 +47,41 @@
 #include <Message_PrinterOStream.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
+#include <StepData_Protocol.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Shape.hxx>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sphtroch {
 
-/// The most interpolation points a STEP path may take (a tolerance needing more is refused).
-constexpr std::size_t kMaxStepPoints = std::size_t(1) << 20;
+/// The most interpolation points a STEP path may take: OpenCASCADE evaluates a B-spline of N
+/// knots in O(N) (BSplCLib::PoleIndex), so the check costs O(N^2): measured 30,000 points 1 s,
+/// a 4.4 MB file.
+constexpr std::size_t kMaxStepPoints = std::size_t(1) << 15;
+/// The largest radius (positions stay far from overflow in every product the kernel forms).
+constexpr double kMaxStepRadius = 1e100;
+/// The fewest carrier turns of an open STEP path (a shorter arc's points merge in the kernel).
+constexpr double kMinStepTurns = 1e-6;
 
 struct StepOptions {
-  double radius = 1.0;          // positions are radius * P (the cone distance; > 0, finite)
+  double radius = 1.0;              // positions are radius * P (the cone distance; (0, 1e100])
   std::optional<double> tolerance;  // max |B - radius P|, in the radius' unit; none: 1e-6 * radius
-  std::optional<double> turns;  // an open path of this many carrier turns (else the closed period)
+  std::optional<double> turns;      // an open path of this many carrier turns, [1e-6, 1e6] (else the period)
 };
 
 struct StepPath {
@@ -77,13 +92,18 @@ struct StepPath {
   std::string product;              // "sphtroch a2=.. a3=.. n=p/q phase=.. radius=.. tolerance=.."
 };
 
-/// The checked B-spline of the train's path (see header). Throws InvalidInput for a radius or
-/// tolerance that is not finite and positive, a tolerance below 1e-12 * radius, or one that
-/// needs more than kMaxStepPoints points.
+/// The refusals of step_path that need no computation (radius, tolerance, turns, a path too
+/// long), so that a caller may check them before opening its output. Throws as step_path does.
+inline void check_step_options(const GearTrain& train, const StepOptions& options);
+
+/// The checked B-spline of the train's path (see header). Throws InvalidInput naming "radius"
+/// (not in (0, 1e100]), "tolerance" (not finite, below 1e-12 * radius, or needing more than
+/// kMaxStepPoints points), "turns" (outside [1e-6, 1e6], or a path too long) or "n" (a closed
+/// path too long); std::runtime_error if OpenCASCADE cannot interpolate.
 inline StepPath step_path(const GearTrain& train, const StepOptions& options);
 
-/// The STEP AP214 file (ISO-10303-21 text) holding the path as one edge. Throws
-/// std::runtime_error if OpenCASCADE cannot write it (e.g. no writable temporary directory).
+/// The STEP AP214 file (ISO-10303-21 text, reals with 17 digits) holding the path as one edge.
+/// Throws std::runtime_error if OpenCASCADE cannot translate it.
 inline std::string step_text(const StepPath& path);
 
 // Implementation details follow.
@@ -125,7 +145,7 @@ inline opencascade::handle<Geom_BSplineCurve> interpolate(const TracerCurve<doub
   }
 }
 
-/// max |B(theta) - radius P(theta)| at 3 points inside every span.
+/// max |B(theta) - radius P(theta)| at 3 points inside every span; NaN if any is not a number.
 inline double checked_error(const Geom_BSplineCurve& b, const TracerCurve<double>& curve, double period,
                             std::size_t n, double radius) {
   double worst = 0.0;
@@ -134,7 +154,9 @@ inline double checked_error(const Geom_BSplineCurve& b, const TracerCurve<double
       const double t = period * (double(k) + f) / double(n);
       const gp_Pnt q = b.Value(t);
       const Vector3d p = radius * curve.point(t);
-      worst = std::max(worst, std::hypot(q.X() - p.x(), q.Y() - p.y(), q.Z() - p.z()));
+      const double e = std::hypot(q.X() - p.x(), q.Y() - p.y(), q.Z() - p.z());
+      if (!(e <= worst)) worst = e;  // NaN sticks
+      if (std::isnan(worst)) return worst;
     }
   return worst;
 }
@@ -145,55 +167,81 @@ inline std::string product_name(const GearTrain& train, const StepOptions& o, do
          " tolerance=" + number_text(tolerance) + (o.turns ? " turns=" + number_text(*o.turns) : std::string());
 }
 
+/// The checked options: the tolerance (default 1e-6 radius) and the parameter span T.
+inline std::pair<double, double> checked_tolerance_and_span(const GearTrain& train, const StepOptions& o) {
+  if (!(std::isfinite(o.radius) && o.radius > 0.0 && o.radius <= kMaxStepRadius))
+    throw InvalidInput("radius", number_text(o.radius), "not a length STEP export takes", "a number in (0, 1e100]");
+  const double tolerance = o.tolerance.value_or(1e-6 * o.radius);
+  if (!(std::isfinite(tolerance) && tolerance >= 1e-12 * o.radius))
+    throw InvalidInput("tolerance", number_text(tolerance), "below what double precision can check",
+                       ">= 1e-12 * radius = " + number_text(1e-12 * o.radius));
+  if (o.turns && !(*o.turns >= kMinStepTurns && *o.turns <= 1e6))
+    throw InvalidInput("turns", number_text(*o.turns), "outside the range STEP export takes", "[1e-6, 1e6] carrier turns");
+  return {tolerance, o.turns ? 2 * Constants<double>::pi() * *o.turns : train.period()};
+}
+
+/// The first N: 8 (1 + |n|) per radian of the span, at least 16; refused above kMaxStepPoints.
+inline std::size_t first_point_count(const GearTrain& train, const StepOptions& o, double span) {
+  const double start = std::max(16.0, std::ceil(8.0 * (1.0 + std::fabs(train.ratio().value())) * span));
+  if (!(start <= double(kMaxStepPoints)))
+    throw InvalidInput(o.turns ? "turns" : "n", o.turns ? number_text(*o.turns) : train.ratio().str(),
+                       "a path of " + number_text(span) + " rad of carrier angle needs more than " +
+                           std::to_string(kMaxStepPoints) + " B-spline points",
+                       o.turns ? "fewer turns" : "a ratio p/q with a smaller 8 (1 + |n|) 2 pi q (or --turns)");
+  return static_cast<std::size_t>(start);
+}
+
 }  // namespace step_detail
 
+inline void check_step_options(const GearTrain& train, const StepOptions& options) {
+  const double span = step_detail::checked_tolerance_and_span(train, options).second;
+  (void)step_detail::first_point_count(train, options, span);
+}
+
 inline StepPath step_path(const GearTrain& train, const StepOptions& options) {
-  if (!(std::isfinite(options.radius) && options.radius > 0.0))
-    throw InvalidInput("radius", number_text(options.radius), "not a positive length", "finite > 0");
-  const double tolerance = options.tolerance.value_or(1e-6 * options.radius);
-  if (!(std::isfinite(tolerance) && tolerance >= 1e-12 * options.radius))
-    throw InvalidInput("tolerance", number_text(tolerance), "below what double precision can check",
-                       ">= 1e-12 * radius = " + number_text(1e-12 * options.radius));
-  const double period = options.turns ? 2 * Constants<double>::pi() * *options.turns : train.period();
-  const bool closed = !options.turns;
+  const auto [tolerance, span] = step_detail::checked_tolerance_and_span(train, options);
   const TracerCurve<double> curve(train);
   step_detail::silence_opencascade();
-  const double start = std::ceil(8.0 * (1.0 + std::fabs(train.ratio().value())) * period);
-  for (auto n = static_cast<std::size_t>(std::max(16.0, start)); n <= kMaxStepPoints; n *= 2) {
-    Handle(Geom_BSplineCurve) b = step_detail::interpolate(curve, period, n, options.radius, closed);
-    if (b.IsNull()) continue;
-    const double error = step_detail::checked_error(*b, curve, period, n, options.radius);
+  std::size_t n = step_detail::first_point_count(train, options, span);
+  const auto too_tight = [&](double predicted) {
+    return InvalidInput("tolerance", number_text(tolerance), "needs about " + number_text(std::ceil(predicted)) +
+                        " B-spline points, more than " + std::to_string(kMaxStepPoints),
+                        "a larger tolerance (the default is 1e-6 * radius)");
+  };
+  for (;;) {
+    Handle(Geom_BSplineCurve) b = step_detail::interpolate(curve, span, n, options.radius, !options.turns);
+    if (b.IsNull()) throw std::runtime_error("STEP: OpenCASCADE could not interpolate the path with " + std::to_string(n) + " points");
+    const double error = step_detail::checked_error(*b, curve, span, n, options.radius);
+    if (!std::isfinite(error)) throw std::runtime_error("STEP: the B-spline is not finite");
     if (error <= tolerance / 4)
       return {b, n + 1, tolerance, error, step_detail::product_name(train, options, tolerance)};
+    const double predicted = double(n) * std::pow(error / (tolerance / 4), 0.25);  // e ~ N^-4
+    if (predicted > 2.0 * double(kMaxStepPoints) || 2 * n > kMaxStepPoints) throw too_tight(std::max(predicted, 2.0 * double(n)));
+    n *= 2;
   }
-  throw InvalidInput("tolerance", number_text(tolerance), "needs more than " + std::to_string(kMaxStepPoints) +
-                     " interpolation points for this path", "a larger tolerance (the default is 1e-6 * radius)");
 }
 
 inline std::string step_text(const StepPath& path) {
   step_detail::silence_opencascade();
-  const char* tmp = std::getenv("TMPDIR");
-  std::string dir = std::string(tmp && *tmp ? tmp : "/tmp") + "/sphtroch-step-XXXXXX";
-  if (!::mkdtemp(dir.data())) throw std::runtime_error("STEP: cannot create a temporary directory in " + dir);
-  const std::string file = dir + "/path.step";
-  std::string text;
-  bool written = false;
   try {
     STEPControl_Writer writer;
     Interface_Static::SetCVal("write.step.schema", "AP214IS");
     Interface_Static::SetCVal("write.step.unit", "MM");
     Interface_Static::SetCVal("write.step.product.name", path.product.c_str());
+    Interface_Static::SetIVal("write.precision.mode", 2);  // the uncertainty is ours:
+    Interface_Static::SetRVal("write.precision.val", path.tolerance);
     const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(path.curve).Edge();
-    written = writer.Transfer(edge, STEPControl_AsIs) == IFSelect_RetDone && writer.Write(file.c_str()) == IFSelect_RetDone;
-    std::ifstream in(file, std::ios::binary);
-    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  } catch (const Standard_Failure&) {
-    written = false;
+    if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone) throw std::runtime_error("STEP: OpenCASCADE could not translate the path");
+    const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
+    StepData_StepWriter text_writer(writer.Model());
+    text_writer.FloatWriter().SetFormat("%.17E");  // every double read back exactly
+    text_writer.SendModel(protocol);
+    std::ostringstream out;
+    if (protocol.IsNull() || !text_writer.Print(out)) throw std::runtime_error("STEP: OpenCASCADE could not write the path");
+    return out.str();
+  } catch (const Standard_Failure& e) {
+    throw std::runtime_error(std::string("STEP: OpenCASCADE failed: ") + e.GetMessageString());
   }
-  std::remove(file.c_str());
-  ::rmdir(dir.c_str());
-  if (!written || text.empty()) throw std::runtime_error("STEP: OpenCASCADE could not write the path");
-  return text;
 }
 
 }  // namespace sphtroch

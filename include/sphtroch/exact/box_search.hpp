@@ -447,7 +447,7 @@ class BoxSearch {
     if (!y || !in_domain(*y)) return false;
     // Radius 1e-10 first; an ill-conditioned root (Newton's limit only good to cond * 1e-16)
     // needs a wider box for K(X) to fit inside.
-    for (double radius = 1e-10; radius <= 1e-7; radius *= 10) {
+    for (const double radius : {1e-10, 1e-9, 1e-8, 1e-7}) {  // a list: rounding upward here
       Box<N> tiny;
       for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, radius);
       for (const Box<N>& u : regions_)

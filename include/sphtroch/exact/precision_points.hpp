@@ -326,7 +326,9 @@ class FixedFrameSystem {
     for (int i = 0; i < 2; ++i) {
       const auto e = precision_detail::point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(ratio_.value() * y[2 + i]),
                                      ratio_.value(), p_[1 + i], false);
-      if (!(e.dot > 0.0) || !(std::fabs(e.f) < 1e-6)) return std::nullopt;  // f: chart 1's mirror roots
+      // A mirror root of chart 1 (Q_iz = -W_z, |W_z| > kPoleChart) has |f| > 1.5; a true root,
+      // polished or not, |f| < 0.5 (its box is narrower than 1/64).
+      if (!(e.dot > 0.0) || !(std::fabs(e.f) < 0.5)) return std::nullopt;
     }
     auto s = precision_detail::reduced_solution(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
     if (!s) return s;

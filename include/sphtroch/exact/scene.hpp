@@ -318,7 +318,8 @@ inline const Json& read_ratio_text(const TrainObject& t, SceneTrain& st) {
     const char* const teeth_valid = "tooth counts \"ZS:ZP\", sun:planet (\"39:15\" is n = 13/5; ZS < 0: internal)";
     if (const Json* n = t.optional("n"))
       err.field(t.at("n"), n, "given together with teeth", "one of n and teeth");
-    if (!teeth->is_string()) err.field(t.at("teeth"), teeth, "not a string", teeth_valid);
+    if (!teeth->is_string() || teeth->get<std::string>().empty())
+      err.field(t.at("teeth"), teeth, "not a non-empty string", teeth_valid);
     st.text.teeth = teeth->get<std::string>();
     return *teeth;
   }
