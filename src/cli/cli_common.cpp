@@ -1,5 +1,7 @@
 #include "cli_common.hpp"
 
+#include "sphtroch/draw/svg.hpp"
+
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 
@@ -31,19 +33,16 @@ void TrainOptions::add_to(CLI::App& command) {
 }
 
 void check_svg_name(const std::string& path, const std::string& field) {
-  const auto slash = path.rfind('/'), dot = path.rfind('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return;
-  std::string ext = path.substr(dot + 1);
-  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const std::optional<std::string> ext = other_picture_format(path);
+  if (!ext) return;
 #if defined(SPHTROCH_HAVE_PNG)
-  if (ext == "png") return;  // rendered (png_output.hpp)
+  if (*ext == "png") return;  // rendered (png_output.hpp)
   const std::string valid = "FILE.svg or FILE.png (another format: convert the SVG)";
 #else
   const std::string valid = "FILE.svg (PNG needs the librsvg component, which this build of sphtroch does not have; "
                             "convert it, e.g. rsvg-convert FILE.svg -o FILE.png)";
 #endif
-  for (const char* other : {"png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps", "emf"})
-    if (ext == other) throw InvalidInput(field, path, "SVG is written, not ." + ext, valid);
+  throw InvalidInput(field, path, "SVG is written, not ." + *ext, valid);
 }
 
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {

@@ -22,10 +22,12 @@
 
 #include "sphtroch/core/errors.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -37,6 +39,10 @@ inline std::string svg_number(double value, int decimals = 2);
 
 /// `text` with & < > " ' replaced by their XML entities.
 inline std::string xml_escape(std::string_view text);
+
+/// The extension (lower case) of a path that names a picture format other than SVG (png, jpg,
+/// pdf, ...), or none: SVG bytes must not go into a file whose name promises another format.
+inline std::optional<std::string> other_picture_format(const std::string& path);
 
 /// Path data built incrementally ("M x y L x y x y ..."), in as few characters as the
 /// precision allows: a vertex that rounds to the previous one is dropped, and consecutive
@@ -121,6 +127,16 @@ inline std::string svg_number(double value, int decimals) {
   }
   if (s == "-0") s = "0";
   return s;
+}
+
+inline std::optional<std::string> other_picture_format(const std::string& path) {
+  const auto dot = path.rfind('.'), slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+  std::string ext = path.substr(dot + 1);
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  for (const char* other : {"png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps", "emf"})
+    if (ext == other) return ext;
+  return std::nullopt;
 }
 
 inline std::string xml_escape(std::string_view text) {

@@ -54,6 +54,7 @@
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/svg.hpp"
 #include "sphtroch/io/trace_output.hpp"
 
 #include <nlohmann/json.hpp>
@@ -372,18 +373,6 @@ inline void read_settings(const TrainObject& t, SceneTrain& st) {
   }
 }
 
-/// The extension of a path that names a picture format other than SVG (png, jpg, pdf, ...; any
-/// case), or none: SVG bytes must not land in a file whose name promises another format.
-inline std::optional<std::string> other_picture_format(const std::string& path) {
-  const auto dot = path.rfind('.'), slash = path.rfind('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
-  std::string ext = path.substr(dot + 1);
-  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  for (const char* other : {"png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps", "emf"})
-    if (ext == other) return ext;
-  return std::nullopt;
-}
-
 inline void read_effects(const TrainObject& t, SceneTrain& st, const std::string& output_dir) {
   const Errors& err = t.err();
   const std::string valid = "an object {effect: output path} with effects " + effect_names();
@@ -397,8 +386,8 @@ inline void read_effects(const TrainObject& t, SceneTrain& st, const std::string
       err.field(field, &value, "not an output path", "a non-empty string (relative to the current directory or --output-dir)");
     if (value.get<std::string>().find('\0') != std::string::npos)  // the file system would cut the path there
       err.field(field, &value, "an output path with a NUL byte (\\u0000)", "a path without NUL bytes");
-    if (*effect == Effect::plot && other_picture_format(value.get<std::string>()))
-      err.field(field, &value, "a plot is SVG, not ." + other_picture_format(value.get<std::string>()).value(),
+    if (const auto other = other_picture_format(value.get<std::string>()); *effect == Effect::plot && other)
+      err.field(field, &value, "a plot is SVG, not ." + *other,
                 "a .svg path (or any other name; sphtroch plot -o FILE.png renders a PNG)");
     std::filesystem::path path = value.get<std::string>();
     if (!output_dir.empty() && path.is_relative()) path = std::filesystem::path(output_dir) / path;
