@@ -95,18 +95,51 @@ TEST_CASE("cli synth points: three points of a trace give back its train among a
 TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "[cli][synth][errors]") {
   TempDir dir;
   REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n' > two.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n1,0,0\\n' > dup.csv && "
-                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1.00001\\n' > off.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > ok.csv",
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1.00001\\n' > off.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > ok.csv && "
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n-1,0,0\\n0,-1,0\\n' > five.csv",
                 dir).status == 0);
   for (const std::string& args : {std::string("--input two.csv --n 1"), std::string("--input dup.csv --n 1"),
                                   std::string("--input off.csv --n 1"), std::string("--input ok.csv"),
                                   std::string("--input ok.csv --n 1 --ratios 2,2"), std::string("--input ok.csv --ratios 30,30"),
-                                  std::string("--input ok.csv --n 200/3"), std::string("--input ok.csv --ratios 3")}) {
+                                  std::string("--input ok.csv --n 200/3"), std::string("--input ok.csv --ratios 3"),
+                                  std::string("--input ok.csv --n 1 --free-axis"),  // three points: five needed
+                                  std::string("--input ok.csv --n 1 --threads 2"),  // threads only with --free-axis
+                                  std::string("--input five.csv --ratios 7,7 --free-axis"),  // over the free axis's bound
+                                  std::string("--input five.csv --n 1 --free-axis --threads 0")}) {
     INFO(args);
     const Result r = run("synth points " + args, dir, true);
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
   }
+}
+
+TEST_CASE("cli synth points --free-axis: five points of a turned trace give back its train, sun axis and frame",
+          "[cli][synth]") {
+  TempDir dir;
+  // The trace turned by the cyclic permutation (x, y, z) -> (y, z, x): the sun axis is then Y.
+  REQUIRE(run("trace --n 1 --a2 1.2 --a3 0.8 --phase 0.5 --samples 50 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '3p;11p;20p;34p;45p' t.csv | awk -F, '{print $3\",\"$4\",\"$2}') > pts.csv", dir).status == 0);
+  const Result r = run("synth points --input pts.csv --n 1 --free-axis --json", dir, true);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["complete"] == true);
+  int hidden = 0;
+  for (const auto& s : j["solutions"]) {
+    REQUIRE(s["frame"].size() == 3);
+    CHECK(s["axis"] == s["frame"][2]);
+    CHECK(s["params"].size() == 5);
+    CHECK(s["residual"].get<double>() < 1e-12);
+    const double ay = s["axis"][1].get<double>(), a3 = s["a3"].get<double>();
+    // The axis is reported with z > 0, else y > 0: Y itself, with a3 as traced.
+    if (std::abs(ay - 1.0) < 1e-9 && std::abs(s["a2"].get<double>() - 1.2) < 1e-9 && std::abs(a3 - 0.8) < 1e-9) ++hidden;
+  }
+  CHECK(hidden == 1);
+  const Result text = run("synth points --input pts.csv --n 1 --free-axis --threads 1", dir, true);
+  CHECK(text.status == 0);
+  CHECK(text.out.find("sun axis [") != std::string::npos);
+  CHECK(text.out.find("all of them (certified)") != std::string::npos);
 }
 
 TEST_CASE("cli synth points --shard and synth merge: the shards joined equal the unsharded run", "[cli][synth]") {

@@ -291,7 +291,8 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
 
 
 def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
-                 ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None) -> Dict[str, Any]:
+                 ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None,
+                 free_axis: bool = False, threads: Optional[Count] = None) -> Dict[str, Any]:
     """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7;
     or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
     as `--teeth`, each solution then echoing its "teeth")
@@ -299,8 +300,11 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     unit vectors; fixed frame, sun axis Z), as `sphtroch synth points --json`: {"solutions": [{"n",
     "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual", "counts":
     {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], "complete" (the list is
-    certified to hold every train), "undecided_boxes"}. Raises InvalidInput naming "points", "n" or
-    "teeth"."""
+    certified to hold every train), "undecided_boxes"}. With free_axis=True (`--free-axis`): five
+    points (a (5, 3) array), the sun axis anywhere; each solution also has "axis" (the sun axis) and
+    "frame" (the train's x, y, z axes in the points' coordinates), and the work bound is that of
+    the CLI (sum of (|p| + q)^2 <= 500); threads (None: all cores) searches run at once.
+    Raises InvalidInput naming "points", "n", "ratios", "teeth" or "threads"."""
 
 
 def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,

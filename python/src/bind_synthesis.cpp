@@ -13,10 +13,12 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace sphtroch::python {
@@ -63,16 +65,20 @@ std::vector<Vector3d> points_arg(py::handle points, const char* valid) {
   return p;
 }
 
-/// Bound on the sum over the ratios of (|p| + q)^2: the CLI's work bound (synth points / fit).
+/// Bound on the sum over the ratios of (|p| + q)^2: the CLI's work bound (synth points / fit),
+/// and that of synth points --free-axis.
 constexpr double kMaxRatioWork = 20000;
+constexpr double kMaxFreeAxisWork = 500;
 
-/// Refuses (InvalidInput `field`) a set of ratios beyond the CLI's work bound.
-void check_ratio_work(const std::vector<Ratio>& set, const char* field, const std::string& value) {
+/// Refuses (InvalidInput `field`) a set of ratios beyond the CLI's work bound `max_work`.
+void check_ratio_work(const std::vector<Ratio>& set, const char* field, const std::string& value,
+                      double max_work = kMaxRatioWork) {
   double work = 0;
   for (const Ratio& k : set) work += double(k.abs_p() + k.q()) * double(k.abs_p() + k.q());
-  if (work > kMaxRatioWork)
+  if (work > max_work)
     throw InvalidInput(field, value, "estimated work " + number_text(work) + " over the bound",
-                       "sum over the ratios of (|p| + q)^2 <= 20000 (the CLI's bound; ratios=(7, 7) is 4832)");
+                       "sum over the ratios of (|p| + q)^2 <= " + number_text(max_work) +
+                           " (the CLI's bound; ratios=(7, 7) is 4832)");
 }
 
 /// The ratios of n=R, teeth="ZS:ZP" | "MIN..MAX" (the CLI's --teeth) or ratios=(P, Q) (P, Q <= 7),
@@ -112,15 +118,28 @@ std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_
   return set;
 }
 
-py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text) {
-  const std::vector<Vector3d> p = points_arg(points, "a (3, 3) array of unit vectors x, y, z");
+std::optional<std::int64_t> count_arg(py::handle v, const char* field);
+
+py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, bool free_axis,
+                        py::handle threads) {
+  const std::vector<Vector3d> p =
+      points_arg(points, free_axis ? "a (5, 3) array of unit vectors x, y, z" : "a (3, 3) array of unit vectors x, y, z");
   std::string fields;
   TeethSpec teeth;
   const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
+  if (free_axis) check_ratio_work(set, !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth", repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text), kMaxFreeAxisWork);
+  std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
+  if (!threads.is_none()) {
+    const auto k = count_arg(threads, "threads");
+    if (!free_axis || *k < 1 || *k > 1024)
+      throw InvalidInput("threads", repr_of(threads), free_axis ? "outside the valid range" : "only with free_axis=True",
+                         "None or an integer 1 .. 1024, with free_axis=True");
+    workers = static_cast<std::size_t>(*k);
+  }
   std::string json;
   {
     py::gil_scoped_release release;
-    json = precision_points_json_text(p, set, fields, teeth);
+    json = precision_points_json_text(p, set, fields, teeth, free_axis, workers);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -180,7 +199,8 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
 void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"), doc("identify"));
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
-        py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), doc("synth_points"));
+        py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("free_axis") = false,
+        py::arg("threads") = py::none(), doc("synth_points"));
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),

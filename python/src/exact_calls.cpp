@@ -86,8 +86,11 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
 }
 
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields, const TeethSpec& teeth) {
-  return precision_points_json(precision_points_with_census(points, ratios), json_fields, teeth);
+                                      const std::string& json_fields, const TeethSpec& teeth,
+                                      bool free_axis, std::size_t threads) {
+  PrecisionPointsOptions options;
+  options.threads = threads;
+  return precision_points_json(precision_points_with_census(points, ratios, options, free_axis), json_fields, teeth);
 }
 
 std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,

@@ -48,9 +48,10 @@ std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool li
 std::string root_classification_json_text(const GearTrain& train, bool literal);
 
 /// `sphtroch synth points --json` (precision_points_output.hpp): every train of each ratio through
-/// the three points, with its census. InvalidInput "points" for bad points.
+/// the three points (five with free_axis: `threads` searches at once), with its census. InvalidInput "points" for bad points.
 std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields, const TeethSpec& teeth);
+                                      const std::string& json_fields, const TeethSpec& teeth,
+                                      bool free_axis, std::size_t threads);
 
 /// `sphtroch synth fit --json` (path_fit_output.hpp): ranked candidates of the ratios for the
 /// path's points, each confirmed by classify. InvalidInput "points", "nodes", "cusps", "n".

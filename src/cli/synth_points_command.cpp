@@ -24,10 +24,13 @@ namespace {
 /// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
 /// unknowns Delta span 2 pi q and the equations turn |n| times faster; measured in bench/).
 constexpr double kMaxPointsWork = 20000;
+/// The same bound with --free-axis (five points, 18 searches in eight unknowns: ~10-30 s for one
+/// small ratio on two cores, measured in bench/): 500 allows --ratios 3,3 (344) or one n = 7/7.
+constexpr double kMaxFreeAxisWork = 500;
 
 struct PointsOptions {
-  std::string input, output, n, ratios, teeth, shard;
-  bool json = false;
+  std::string input, output, n, ratios, teeth, shard, threads;
+  bool json = false, free_axis = false;
 };
 
 using RatioSolutions = RatioPrecisionPoints;
@@ -41,12 +44,17 @@ void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all
       const PrecisionSolution& s = rs.result.solutions[k];
       const Classification& c = rs.census[k];
       out << "  " << ++index << ". a2 = " << number_text(s.train.a2()) << ", a3 = " << number_text(s.train.a3())
-          << ", phase = " << number_text(s.train.phase_given()) << "; theta2 at the points:";
+          << ", phase = " << number_text(s.train.phase_given());
+      if (rs.free_axis)
+        out << "; sun axis " << vector_json(s.frame.col(2)) << ", frame x " << vector_json(s.frame.col(0)) << ", y "
+            << vector_json(s.frame.col(1));
+      out << "; theta2 at the points:";
       for (const double t : s.params) out << " " << number_text(t);
       out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
           << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)")
           << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
-          << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg\n";
+          << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg"
+          << (rs.free_axis ? " (in the train's frame above)" : "") << "\n";
     }
   }
 }
@@ -65,19 +73,24 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 }
 
 void run_points(const PointsOptions& o) {
-  const RatioRequest request = requested_ratios("synth points", o.n, o.ratios, o.teeth, o.shard, kMaxPointsWork);
+  const RatioRequest request =
+      requested_ratios("synth points", o.n, o.ratios, o.teeth, o.shard, o.free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
+  PrecisionPointsOptions options;
+  options.threads = parse_threads(o.threads);
+  if (!o.threads.empty() && !o.free_axis)
+    throw UsageError{"--threads = " + o.threads + ": only with --free-axis (the fixed frame runs on one core)"};
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
   const std::vector<RatioSolutions> all = [&] {
     try {
-      return precision_points_with_census(in.vertices, request.ratios);
+      return precision_points_with_census(in.vertices, request.ratios, options, o.free_axis);
     } catch (const InvalidInput& e) {  // the library names its argument (points): here the file
       throw InvalidInput("input", o.input, e.value() + ": " + e.problem(), e.valid_range());
     }
   }();
   // A shard names its run (points and ratio set), so that synth merge joins only one run's shards.
   const std::string fields =
-      request.json_fields + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, "points") + "\", ");
+      request.json_fields + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, o.free_axis ? "points free-axis" : "points") + "\", ");
   write_output(o.output, [&](std::ostream& out) {
     if (o.json) out << precision_points_json(all, fields, request.teeth);
     else write_points_text(out, all, request.teeth);
@@ -179,14 +192,17 @@ void register_synth_merge(CLI::App& synth, std::vector<std::pair<CLI::App*, Acti
 
 void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto o = std::make_shared<PointsOptions>();
-  CLI::App* cmd = synth.add_subcommand("points", "every train through three precision points (fixed frame), certified");
+  CLI::App* cmd = synth.add_subcommand("points", "every train through three precision points (fixed frame) or five (--free-axis), certified");
   cmd->footer(
-      "--input FILE: CSV with a header x,y,z (or .npy (N, 3)), exactly 3 unit vectors; - for standard input.\n"
-      "The sun axis is Z. For each ratio (--n R, or --ratios P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q,\n"
-      "both signs) it prints ALL trains with a2, a3 in [1e-6, pi - 1e-6] whose tracer passes through the\n"
-      "three points, with theta2 at each point, the residual and the census. Exit 3 if the list is not\n"
-      "certified complete. Example: sphtroch synth points --input pts.csv --n 1/2 --json");
-  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the three points");
+      "--input FILE: CSV with a header x,y,z (or .npy (N, 3)), exactly 3 unit vectors (5 with --free-axis);\n"
+      "- for standard input. The sun axis is Z, or anywhere with --free-axis (each train then gives its\n"
+      "sun axis and frame). For each ratio (--n R, or --ratios P,Q: every p/q with 1 <= |p| <= P,\n"
+      "1 <= q <= Q, both signs) it prints ALL trains with a2, a3 in [1e-6, pi - 1e-6] whose tracer passes\n"
+      "through the points, with theta2 at each point, the residual and the census. Exit 3 if the list is\n"
+      "not certified complete. Example: sphtroch synth points --input pts.csv --n 1/2 --json");
+  add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the three points (five with --free-axis)");
+  cmd->add_flag("--free-axis", o->free_axis, "five points; the sun axis may be placed anywhere (docs/cli.md: synth points)");
+  cmd->add_option("--threads", o->threads, "with --free-axis: worker threads (1 .. 1024; default: all cores)");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
                                    "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");

@@ -51,6 +51,50 @@ def test_synth_points_refuses_bad_points():
         sphtroch.synth_points(np.array([[1.0, 0, 0], [0, 1.0, 0], [1.0, 0, 0]]), n=1)
 
 
+def tracer_point(a2, a3, n, phase, theta):
+    """The model's point (Eqs. 3-4): Rz(theta) Rx(a2) Rz(n theta + phase) Rx(a3) z, written here."""
+    def rz(a):
+        return np.array([[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0], [0, 0, 1]])
+
+    def rx(a):
+        return np.array([[1, 0, 0], [0, math.cos(a), -math.sin(a)], [0, math.sin(a), math.cos(a)]])
+    return rz(theta) @ rx(a2) @ rz(n * theta + phase) @ rx(a3) @ np.array([0.0, 0.0, 1.0])
+
+
+def test_synth_points_free_axis_finds_the_train_and_its_axis():
+    # Five points of a known train turned by a rotation R (sun axis R z); expected: that train and
+    # axis (the axis up to sign; a3 becomes pi - a3 when it is reversed), and every solution's
+    # frame carries its curve through the points.
+    train = sphtroch.GearTrain(a2=0.9, a3=1.3, n=-1, phase=0.2)
+    t, P = train.trace(samples=60)
+    c, s_ = math.cos(0.7), math.sin(0.7)
+    R = np.array([[1, 0, 0], [0, c, -s_], [0, s_, c]]) @ np.array([[c, 0, s_], [0, 1, 0], [-s_, 0, c]])
+    pts = P[[2, 13, 25, 38, 51]] @ R.T
+    r = sphtroch.synth_points(pts, n=-1, free_axis=True, threads=2)
+    assert r["complete"] is True
+    axis = R[:, 2]
+    hits = 0
+    for s in r["solutions"]:
+        F = np.array(s["frame"]).T  # columns: the train's x, y, z in the points' coordinates
+        assert np.allclose(F.T @ F, np.eye(3), atol=1e-14) and np.allclose(F[:, 2], s["axis"], atol=0)
+        n = s["n"].split("/")
+        n = float(n[0]) / (float(n[1]) if len(n) > 1 else 1.0)
+        for k, theta in enumerate(s["params"]):
+            assert np.linalg.norm(F @ tracer_point(s["a2"], s["a3"], n, s["phase"], theta) - pts[k]) < 1e-12
+        flipped = np.dot(s["axis"], axis) < 0
+        a3 = math.pi - s["a3"] if flipped else s["a3"]
+        if np.linalg.norm(np.array(s["axis"]) * (-1 if flipped else 1) - axis) < 1e-9 and abs(s["a2"] - 0.9) < 1e-9 \
+                and abs(a3 - 1.3) < 1e-9:
+            hits += 1
+    assert hits == 1
+    with pytest.raises(sphtroch.InvalidInput, match="points"):
+        sphtroch.synth_points(pts[:3], n=1, free_axis=True)
+    with pytest.raises(sphtroch.InvalidInput, match="threads"):
+        sphtroch.synth_points(pts[:3], n=1, threads=2)
+    with pytest.raises(sphtroch.InvalidInput, match="ratios"):
+        sphtroch.synth_points(pts, ratios=(7, 7), free_axis=True)
+
+
 def test_synth_points_over_a_ratio_set_is_the_cli_json():
     # The same trains as --ratios 2,1 of the CLI would list: every ratio of the set is solved.
     train = sphtroch.GearTrain(a2=1.0, a3=2.0, n=2, phase=0.3)

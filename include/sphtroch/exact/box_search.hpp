@@ -53,6 +53,8 @@ constexpr double kUnisolatedResidual = 1e-12;
 
 struct PrecisionPointsOptions {
   std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
+                                    // (free axis: the bound of each of its 18 searches)
+  std::size_t threads = 1;          // free axis: searches run at once (the result is the same)
 };
 
 struct PrecisionSolution {
@@ -63,6 +65,9 @@ struct PrecisionSolution {
   /// two roots closer than the arithmetic resolves); it passes the points (residual <= 1e-12)
   /// but is not proven to be a single root, and the list is then not certified.
   bool isolated = true;
+  /// Columns x, y, z of the train's frame in the points' coordinates (z: the sun axis), so that
+  /// points[i] = frame * P(params[i]); the identity for a fixed frame.
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
 };
 
 struct PrecisionPoints {
@@ -262,7 +267,7 @@ class BoxSearch {
 
  private:
   /// Widths at which the outer loop hands its boxes to the Krawczyk test.
-  static constexpr double kIsolateWidth = 1.0 / 64;
+  static constexpr double kIsolateWidth = System::kIsolateWidth;
 
   struct Node {
     Outer outer;

@@ -150,12 +150,6 @@ PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>
   return e;
 }
 
-/// n as a certified interval (p / q rounded outward) and as the nearest double.
-inline Interval ratio_interval(const Ratio& n) {
-  const RoundingGuard upward;
-  return Interval(double(n.p())) / Interval(double(n.q()));
-}
-
 /// p^-1 modulo q (gcd(p, q) = 1, q >= 1).
 inline std::int64_t inverse_mod(std::int64_t p, std::int64_t q) {
   std::int64_t a = ((p % q) + q) % q, b = q, x0 = 1, x1 = 0;
@@ -167,56 +161,11 @@ inline std::int64_t inverse_mod(std::int64_t p, std::int64_t q) {
   return ((x0 % q) + q) % q;
 }
 
-/// The train of a root given the carrier twist, point 1 seen from the carrier (Q_1) and the
-/// carrier angle of every point (theta_1 first): a3 = acos(Q_1z), theta_p = atan2(Q_1x, -Q_1y) -
-/// n theta_1, the phase reduced to [0, 2 pi / q) and the angles shifted by the matching 2 pi k
-/// into [0, 2 pi q). None when a3 is outside [kMinCarrierTwist, pi - kMinCarrierTwist].
-inline std::optional<PrecisionSolution> reduced_solution(const Ratio& ratio, double a2, const double q1[3],
-                                                         const std::vector<double>& thetas, bool isolated) {
-  const double two_pi = 2 * Constants<double>::pi();
-  const std::int64_t q = ratio.q();
-  const double a3 = std::acos(std::clamp(q1[2], -1.0, 1.0));
-  if (!(a3 >= kMinCarrierTwist && a3 <= Constants<double>::pi() - kMinCarrierTwist)) return std::nullopt;
-  const double phase = std::atan2(q1[0], -q1[1]) - ratio.value() * thetas[0];
-  const double sector = two_pi / static_cast<double>(q);
-  const double m = std::floor(phase / sector);
-  const std::int64_t m_mod = static_cast<std::int64_t>(std::fmod(std::fmod(m, double(q)) + double(q), double(q)));
-  const std::int64_t k = (m_mod * inverse_mod(ratio.p(), q)) % q;
-  PrecisionSolution s{GearTrain(a2, a3, ratio, phase - m * sector), {}, 0.0, isolated};
-  const double shift = two_pi * static_cast<double>(k), period = two_pi * static_cast<double>(q);
-  for (const double t : thetas) s.params.push_back(std::fmod(std::fmod(t + shift, period) + period, period));
-  return s;
-}
-
 /// Two trains that agree to 1e-9 (a2, a3, phase modulo 2 pi / q) in the same frame.
 inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
   const double sector = 2 * Constants<double>::pi() / static_cast<double>(a.ratio().q());
   const double dp = std::fabs(std::remainder(a.phase_given() - b.phase_given(), sector));
   return std::fabs(a.a2() - b.a2()) < 1e-9 && std::fabs(a.a3() - b.a3()) < 1e-9 && dp < 1e-9;
-}
-
-/// Points given as unit vectors: checked (count, finite, |P| within kPrecisionUnitTolerance of 1,
-/// no two closer than kDistinctPoints) and normalised. Throws InvalidInput (field "points").
-inline std::vector<Vector3d> checked_points(const std::vector<Vector3d>& points, std::size_t count,
-                                            const std::string& problem) {
-  if (points.size() != count)
-    throw InvalidInput("points", std::to_string(points.size()) + " points",
-                       problem + " needs exactly " + std::to_string(count),
-                       std::to_string(count) + " points x,y,z on the unit sphere");
-  std::vector<Vector3d> out;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Vector3d& p = points[i];
-    const double norm = p.norm();
-    if (!std::isfinite(norm) || std::fabs(norm - 1.0) > kPrecisionUnitTolerance)
-      throw InvalidInput("points", "point " + std::to_string(i + 1) + " with |P| = " + number_text(norm),
-                         "not on the unit sphere", "|P| within 1e-6 of 1");
-    out.push_back(p / norm);
-    for (std::size_t j = 0; j < i; ++j)
-      if ((out[i] - out[j]).norm() < kDistinctPoints)
-        throw InvalidInput("points", "points " + std::to_string(j + 1) + " and " + std::to_string(i + 1),
-                           "the same point twice", "distinct points (chord >= 1e-9)");
-  }
-  return out;
 }
 
 /// How far the theta_1 domain reaches past each end of [0, 2 pi]: a root at theta_1 = 0 (a point
@@ -234,15 +183,69 @@ inline bool outside_theta1_period(const Interval& theta1) {
 
 }  // namespace precision_detail
 
+// Building blocks shared with the free-axis solver (exact/free_axis_points.hpp).
+
+/// Points given as unit vectors: checked (count, finite, |P| within kPrecisionUnitTolerance of 1,
+/// no two closer than kDistinctPoints) and normalised. Throws InvalidInput (field "points").
+inline std::vector<Vector3d> checked_precision_points(const std::vector<Vector3d>& points, std::size_t count,
+                                                     const std::string& problem) {
+  if (points.size() != count)
+    throw InvalidInput("points", std::to_string(points.size()) + " points",
+                       problem + " needs exactly " + std::to_string(count),
+                       std::to_string(count) + " points x,y,z on the unit sphere (3: sun axis Z; 5: sun axis free)");
+  std::vector<Vector3d> out;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vector3d& p = points[i];
+    const double norm = p.norm();
+    if (!std::isfinite(norm) || std::fabs(norm - 1.0) > kPrecisionUnitTolerance)
+      throw InvalidInput("points", "point " + std::to_string(i + 1) + " with |P| = " + number_text(norm),
+                         "not on the unit sphere", "|P| within 1e-6 of 1");
+    out.push_back(p / norm);
+    for (std::size_t j = 0; j < i; ++j)
+      if ((out[i] - out[j]).norm() < kDistinctPoints)
+        throw InvalidInput("points", "points " + std::to_string(j + 1) + " and " + std::to_string(i + 1),
+                           "the same point twice", "distinct points (chord >= 1e-9)");
+  }
+  return out;
+}
+
+/// n as a certified interval (p / q rounded outward).
+inline Interval ratio_enclosure(const Ratio& n) {
+  const RoundingGuard upward;
+  return Interval(double(n.p())) / Interval(double(n.q()));
+}
+
+/// The train of a root given the carrier twist, point 1 seen from the carrier (Q_1) and the
+/// carrier angle of every point (theta_1 first): a3 = acos(Q_1z), theta_p = atan2(Q_1x, -Q_1y) -
+/// n theta_1, the phase reduced to [0, 2 pi / q) and the angles shifted by the matching 2 pi k
+/// into [0, 2 pi q). None when a3 is outside [kMinCarrierTwist, pi - kMinCarrierTwist].
+inline std::optional<PrecisionSolution> train_through_points(const Ratio& ratio, double a2, const double q1[3],
+                                                             const std::vector<double>& thetas, bool isolated) {
+  const double two_pi = 2 * Constants<double>::pi();
+  const std::int64_t q = ratio.q();
+  const double a3 = std::acos(std::clamp(q1[2], -1.0, 1.0));
+  if (!(a3 >= kMinCarrierTwist && a3 <= Constants<double>::pi() - kMinCarrierTwist)) return std::nullopt;
+  const double phase = std::atan2(q1[0], -q1[1]) - ratio.value() * thetas[0];
+  const double sector = two_pi / static_cast<double>(q);
+  const double m = std::floor(phase / sector);
+  const std::int64_t m_mod = static_cast<std::int64_t>(std::fmod(std::fmod(m, double(q)) + double(q), double(q)));
+  const std::int64_t k = (m_mod * precision_detail::inverse_mod(ratio.p(), q)) % q;
+  PrecisionSolution s{GearTrain(a2, a3, ratio, phase - m * sector), {}, 0.0, isolated};
+  const double shift = two_pi * static_cast<double>(k), period = two_pi * static_cast<double>(q);
+  for (const double t : thetas) s.params.push_back(std::fmod(std::fmod(t + shift, period) + period, period));
+  return s;
+}
+
 /// The fixed-frame system for box_search.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
 class FixedFrameSystem {
  public:
   static constexpr int kOuter = 2, kLists = 2, N = 4;
+  static constexpr double kIsolateWidth = 1.0 / 64;  // outer boxes this narrow go to Krawczyk
   using Outer = std::array<Interval, kOuter>;
 
   /// Throws InvalidInput (field "points") as precision_points() does.
   FixedFrameSystem(const std::vector<Vector3d>& points, const Ratio& n)
-      : FixedFrameSystem(precision_detail::checked_points(points, 3, "a fixed-frame problem"), n, 0) {}
+      : FixedFrameSystem(checked_precision_points(points, 3, "a fixed-frame problem"), n, 0) {}
 
   std::vector<Outer> domains() const {
     return {{Interval(kMinCarrierTwist, Constants<double>::pi() - kMinCarrierTwist), precision_detail::theta1_domain()}};
@@ -330,7 +333,7 @@ class FixedFrameSystem {
       // polished or not, |f| < 0.5 (its box is narrower than 1/64).
       if (!(e.dot > 0.0) || !(std::fabs(e.f) < 0.5)) return std::nullopt;
     }
-    auto s = precision_detail::reduced_solution(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
+    auto s = train_through_points(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
     if (!s) return s;
     const TracerCurve<double> curve(s->train);
     for (int i = 0; i < 3; ++i) s->residual = std::max(s->residual, (curve.point(s->params[i]) - p_[i]).norm());
@@ -349,7 +352,7 @@ class FixedFrameSystem {
   }
 
   FixedFrameSystem(const std::vector<Vector3d>& checked, const Ratio& n, int /*checked already*/)
-      : p_{checked[0], checked[1], checked[2]}, ratio_(n), n_interval_(precision_detail::ratio_interval(n)) {}
+      : p_{checked[0], checked[1], checked[2]}, ratio_(n), n_interval_(ratio_enclosure(n)) {}
 
   static constexpr double kPoleChart = 0.75;
 

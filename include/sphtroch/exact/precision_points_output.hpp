@@ -7,6 +7,8 @@
 //   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
 //
 // JSON: {"solutions": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
+// free axis only: "axis": [x, y, z] (the sun axis), "frame": [X, Y, Z], the train's axes in the
+// points' coordinates (point = X P_x(theta2) + Y P_y + Z P_z, P the train's curve; Z = axis),
 // "params": [theta2 per point, input order],
 // "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified", "isolated"
 // (false: a near-singular root the certificate could not isolate, see PrecisionSolution)}],
@@ -20,6 +22,7 @@
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
+#include "sphtroch/exact/free_axis_points.hpp"
 #include "sphtroch/exact/precision_points.hpp"
 
 #include <sstream>
@@ -33,30 +36,42 @@ struct RatioPrecisionPoints {
   Ratio ratio;
   PrecisionPoints result;
   std::vector<Classification> census;  // one per solution, same order
+  bool free_axis = false;              // five points, the sun axis free (free_axis_points)
 };
 
-/// precision_points for each ratio, then classify() of every train found.
+/// precision_points (or, with free_axis, free_axis_points) for each ratio, then classify() of
+/// every train found.
 inline std::vector<RatioPrecisionPoints> precision_points_with_census(const std::vector<Vector3d>& points,
                                                                       const std::vector<Ratio>& ratios,
-                                                                      const PrecisionPointsOptions& options = {}) {
+                                                                      const PrecisionPointsOptions& options = {},
+                                                                      bool free_axis = false) {
   std::vector<RatioPrecisionPoints> all;
   for (const Ratio& n : ratios) {
-    RatioPrecisionPoints rs{n, precision_points(points, n, options), {}};
+    RatioPrecisionPoints rs{n, free_axis ? free_axis_points(points, n, options) : precision_points(points, n, options), {},
+                            free_axis};
     for (const auto& s : rs.result.solutions) rs.census.push_back(classify(s.train));
     all.push_back(std::move(rs));
   }
   return all;
 }
 
-/// One solution as a JSON object (see header).
+/// [x, y, z] of a vector, shortest round-trip numbers.
+inline std::string vector_json(const Vector3d& v) {
+  return "[" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + "]";
+}
+
+/// One solution as a JSON object (see header); with free_axis also "axis" and "frame".
 inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c,
-                                           const TeethSpec& teeth = {}) {
+                                           const TeethSpec& teeth = {}, bool free_axis = false) {
   std::ostringstream out;
   out << "{\"n\": \"" << s.train.ratio().str() << "\", ";
   if (const auto t = teeth.of(s.train.ratio())) out << "\"teeth\": \"" << t->str() << "\", ";
   out << "\"a2\": " << number_text(s.train.a2())
-      << ", \"a3\": " << number_text(s.train.a3()) << ", \"phase\": " << number_text(s.train.phase_given())
-      << ", \"params\": [";
+      << ", \"a3\": " << number_text(s.train.a3()) << ", \"phase\": " << number_text(s.train.phase_given());
+  if (free_axis)
+    out << ", \"axis\": " << vector_json(s.frame.col(2)) << ", \"frame\": [" << vector_json(s.frame.col(0)) << ", "
+        << vector_json(s.frame.col(1)) << ", " << vector_json(s.frame.col(2)) << "]";
+  out << ", \"params\": [";
   for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
   out << "], \"residual\": " << number_text(s.residual) << ", \"counts\": {\"nodes\": " << c.nodes.size()
       << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
@@ -76,7 +91,7 @@ inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>
     complete = complete && rs.result.certified;
     undecided += rs.result.undecided;
     for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
-      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k], teeth);
+      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k], teeth, rs.free_axis);
       first = false;
     }
   }

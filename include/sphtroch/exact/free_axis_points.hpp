@@ -1,0 +1,441 @@
+// sphtroch/exact/free_axis_points.hpp — every gear train of ratio n whose tracer passes through
+// five given points when the sun axis may be placed anywhere (free axis), certified.
+//
+//   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
+//   std::vector<sphtroch::Vector3d> pts;   // five points of the curve, any rotation of it
+//   for (double t : {0.5, 2.0, 4.0, 7.0, 10.0}) pts.push_back(curve.point(t));
+//   sphtroch::PrecisionPoints r = sphtroch::free_axis_points(pts, sphtroch::Ratio(1, 2));
+//   r.solutions[0].frame;      // columns x, y, z of the train's frame (z: the sun axis)
+//   r.solutions[0].train;      // a2, a3, n, phase in that frame
+//
+// Unknowns (derivation ours, from Eqs. 3 and 4). The tracer is P(theta) = R_s(theta) R_w0(n theta +
+// theta_p) v (s: sun axis, w0: planet axis at theta = 0, R_a(t): the rotation by t about a). With
+// w the planet axis at point 1 and Delta_i = theta_i - theta_1, the points satisfy
+//     A_i = R_w(n Delta_i) P_1 = R_s(-Delta_i) P_i = B_i      (i = 2..5),
+// eight equations (two per unit-vector equation) in the eight unknowns s, w (unit vectors, two
+// each) and Delta_2..Delta_5 in [0, 2 pi q]: no arccos, nothing folds. a2 = angle(s, w), a3 =
+// angle(w, P_1). s and w are charted by cube faces: a = c / |c| with c = +-e_f + u e_(f+1) + v
+// e_(f+2), u, v in [-1 - 1/16, 1 + 1/16] (boxes wholly outside [-1, 1] dropped, so no root sits on
+// an edge). (s, w, Delta) and (-s, -w, -Delta) are the same motion (the same train seen with the
+// sun axis reversed: a3 becomes pi - a3), so s takes the three faces +x, +y, +z and w all six.
+// Of A_i - B_i, the component k where |A_i| is largest over a box is dropped (`chart`): the other
+// two vanish at every root, and its mirror roots (A_ik = -B_ik) are dropped by solution().
+//
+// Certificate: the branch and bound of exact/box_search.hpp over the 18 face pairs (outer unknowns
+// s, w; one list per point for Delta_i), as in precision_points.hpp. `certified` means the
+// solutions are ALL the trains through the five points with a2, a3 in [1e-6, pi - 1e-6], each
+// once (the sun axis up to its sign). Reported: the sun axis with its sign chosen so that z > 0
+// (else y > 0, else x > 0; components within 1e-9 of 0 count as 0), the frame's x axis the
+// projection of the coordinate axis least aligned with it (ties to 1e-9: X first), the phase in
+// that frame. Cost: measured in bench/ and the README.
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/exact/free_axis_points.hpp needs CGAL: link the CMake target sphtroch::exact"
+#endif
+
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/core/parallel_for.hpp"
+#include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/types.hpp"
+#include "sphtroch/exact/box_search.hpp"
+#include "sphtroch/exact/interval_trig.hpp"
+#include "sphtroch/exact/precision_points.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace sphtroch {
+
+/// All trains of ratio n through the five points, the sun axis free. Throws InvalidInput (field
+/// "points") for a count other than 5, non-finite or non-unit points, or two points closer than
+/// kDistinctPoints.
+inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, const Ratio& n,
+                                        const PrecisionPointsOptions& options = {});
+
+// Implementation details follow.
+namespace free_axis_detail {
+
+/// {sin, cos} of one angle (interval_trig.hpp).
+template <typename T>
+using SinCos = std::pair<T, T>;
+
+template <typename T>
+using Vec = std::array<T, 3>;
+
+template <typename T>
+Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <typename T, typename U>
+T dot(const Vec<T>& a, const U& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+template <typename T>
+Vec<T> of_point(const Vector3d& p) {
+  return {T(p.x()), T(p.y()), T(p.z())};
+}
+
+template <typename T>
+T squared(const T& x) {
+  if constexpr (std::is_same_v<T, double>)
+    return x * x;
+  else
+    return CGAL::square(x);
+}
+template <typename T>
+T root(const T& x) {
+  if constexpr (std::is_same_v<T, double>)
+    return std::sqrt(x);
+  else
+    return CGAL::sqrt(x);
+}
+
+/// A unit axis a(u, v) = c / |c| on cube face f (c = +-e_(f mod 3) + u e_(f+1) + v e_(f+2); faces
+/// 3..5 are the negative ones) and its partial derivatives (e_k - a a_k) / |c|.
+template <typename T>
+struct Axis {
+  Vec<T> a, du, dv;
+};
+
+template <typename T>
+Axis<T> face_axis(int face, const T& u, const T& v) {
+  const int k = face % 3, ku = (k + 1) % 3, kv = (k + 2) % 3;
+  const T r = root(T(1.0) + squared(u) + squared(v));
+  Axis<T> x;
+  Vec<T> c{T(0.0), T(0.0), T(0.0)};
+  c[k] = T(face < 3 ? 1.0 : -1.0);
+  c[ku] = u;
+  c[kv] = v;
+  for (int j = 0; j < 3; ++j) x.a[j] = c[j] / r;
+  for (int j = 0; j < 3; ++j) {
+    x.du[j] = (T(j == ku ? 1.0 : 0.0) - x.a[j] * x.a[ku]) / r;
+    x.dv[j] = (T(j == kv ? 1.0 : 0.0) - x.a[j] * x.a[kv]) / r;
+  }
+  return x;
+}
+
+/// R_a(t) X = c0 + c1 cos t + c2 sin t with c0 = a (a . X), c1 = X - c0, c2 = a x X, and the
+/// derivatives of c0 and c2 along the axis's chart coordinates u, v (those of c1 are -dc0).
+template <typename T>
+struct RotationTerms {
+  Vec<T> c0, c1, c2;
+  std::array<Vec<T>, 2> dc0, dc2;
+};
+
+template <typename T>
+RotationTerms<T> rotation_terms(const Axis<T>& a, const Vec<T>& x) {
+  RotationTerms<T> r;
+  const T ax = dot(a.a, x);
+  r.c2 = cross(a.a, x);
+  const Vec<T>* d[2] = {&a.du, &a.dv};
+  for (int k = 0; k < 2; ++k) {
+    const T dx = dot(*d[k], x);
+    r.dc2[k] = cross(*d[k], x);
+    for (int j = 0; j < 3; ++j) r.dc0[k][j] = (*d[k])[j] * ax + a.a[j] * dx;
+  }
+  for (int j = 0; j < 3; ++j) {
+    r.c0[j] = a.a[j] * ax;
+    r.c1[j] = x[j] - r.c0[j];
+  }
+  return r;
+}
+
+/// A_i - B_i (see header) and A . B; with `jacobian` the derivatives by (s_u, s_v, w_u, w_v,
+/// Delta_i). `a`: the terms of R_w P_1, `b`: those of R_s P_i; `delta` = {sin, cos} of Delta_i,
+/// `n_delta` of n Delta_i. B = R_s(-Delta_i) P_i.
+template <typename T>
+struct PointEquations {
+  Vec<T> a, e;
+  T dot;
+  std::array<Vec<T>, 5> de;
+};
+
+template <typename T>
+PointEquations<T> point_equations(const RotationTerms<T>& a, const RotationTerms<T>& b, const SinCos<T>& delta,
+                                  const SinCos<T>& n_delta, const T& n, bool jacobian) {
+  const T &sp = n_delta.first, &cp = n_delta.second, &sd = delta.first, &cd = delta.second;
+  PointEquations<T> r;
+  Vec<T> bv;
+  for (int j = 0; j < 3; ++j) {
+    r.a[j] = a.c0[j] + a.c1[j] * cp + a.c2[j] * sp;
+    bv[j] = b.c0[j] + b.c1[j] * cd - b.c2[j] * sd;
+    r.e[j] = r.a[j] - bv[j];
+  }
+  r.dot = dot(r.a, bv);
+  if (!jacobian) return r;
+  const T one_cp = T(1.0) - cp, one_cd = T(1.0) - cd;
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < 2; ++k) {
+      r.de[k][j] = b.dc2[k][j] * sd - b.dc0[k][j] * one_cd;
+      r.de[2 + k][j] = a.dc0[k][j] * one_cp + a.dc2[k][j] * sp;
+    }
+    r.de[4][j] = n * (a.c2[j] * cp - a.c1[j] * sp) + b.c1[j] * sd + b.c2[j] * cd;
+  }
+  return r;
+}
+
+/// The component of A kept out of the equations: the one of largest magnitude over the box.
+inline int dropped_component(const Vec<Interval>& a) {
+  int best = 0;
+  double best_mig = -1.0;
+  for (int j = 0; j < 3; ++j) {
+    const double mig = may_vanish(a[j]) ? 0.0 : std::min(std::fabs(a[j].inf()), std::fabs(a[j].sup()));
+    if (mig > best_mig) best = j, best_mig = mig;
+  }
+  return best;
+}
+
+/// Components this close to 0 (or to each other) count as equal in the two rules below, so that
+/// an axis along a coordinate axis or a diagonal is reported the same way whatever its rounding.
+constexpr double kAxisTie = 1e-9;
+
+/// The sun axis's sign rule of the header: z > 0, else y > 0, else x > 0 (|component| > kAxisTie).
+inline bool canonical_sign(const Vector3d& s) {
+  for (int k = 2; k >= 0; --k)
+    if (std::fabs(s[k]) > kAxisTie) return s[k] > 0.0;
+  return true;
+}
+
+/// Columns x, y, z: z = s, x the projection of the coordinate axis least aligned with s (the
+/// first of X, Y, Z among those within kAxisTie of the least).
+inline Eigen::Matrix3d frame_of(const Vector3d& s) {
+  const double least = s.cwiseAbs().minCoeff();
+  int k = 0;
+  while (std::fabs(s[k]) > least + kAxisTie) ++k;
+  Vector3d e = Vector3d::Zero();
+  e[k] = 1.0;
+  const Vector3d x = (e - e.dot(s) * s).normalized();
+  Eigen::Matrix3d f;
+  f.col(0) = x;
+  f.col(1) = s.cross(x);
+  f.col(2) = s;
+  return f;
+}
+
+constexpr double kFaceOverlap = 1.0 / 16;
+
+}  // namespace free_axis_detail
+
+/// The free-axis system for box_search.hpp on one pair of cube faces (s on face sun_face of
+/// +x, +y, +z; w on planet_face of all six): outer (s_u, s_v, w_u, w_v), lists Delta_2..Delta_5.
+class FreeAxisSystem {
+ public:
+  static constexpr int kOuter = 4, kLists = 4, N = 8;
+  static constexpr double kIsolateWidth = 1.0 / 32;
+  using Outer = std::array<Interval, kOuter>;
+
+  /// REQUIRES: five points checked by checked_precision_points.
+  FreeAxisSystem(const std::vector<Vector3d>& checked, const Ratio& n, int sun_face, int planet_face)
+      : ratio_(n), n_interval_(ratio_enclosure(n)), sun_face_(sun_face), planet_face_(planet_face) {
+    for (int i = 0; i < 5; ++i) p_[i] = checked[i];
+  }
+
+  std::vector<Outer> domains() const {
+    const Interval d(-1.0 - free_axis_detail::kFaceOverlap, 1.0 + free_axis_detail::kFaceOverlap);
+    return {{d, d, d, d}};
+  }
+  bool outside(const Outer& x) const {
+    return std::any_of(x.begin(), x.end(), [](const Interval& c) { return c.sup() < -1.0 || c.inf() > 1.0; });
+  }
+  double list_max() const { return 2 * Constants<double>::pi() * double(ratio_.q()); }
+  double list_scale() const { return 1.0 + std::fabs(ratio_.value()); }
+
+  /// The rotation terms of every point over an outer box and at its centre: a for R_w P_1,
+  /// b[i] for R_s P_(i+2).
+  struct View {
+    free_axis_detail::RotationTerms<Interval> a, a_centre;
+    std::array<free_axis_detail::RotationTerms<Interval>, kLists> b, b_centre;
+    Outer box, centre;
+  };
+
+  View view(const Outer& x) const {
+    Outer c;
+    for (int k = 0; k < kOuter; ++k) c[k] = centre_of(x[k]);
+    View v;
+    v.box = x;
+    v.centre = c;
+    terms(x, v.a, v.b);
+    terms(c, v.a_centre, v.b_centre);
+    return v;
+  }
+
+  /// Whether point i + 2 may satisfy its equations on the outer box x delta: the plain enclosure,
+  /// then the mean-value form F(c) + J(X) (X - c).
+  bool may_hold(const View& v, const Interval& delta, int i) const {
+    const auto trig = interval_sincos_all<2>({delta, n_interval_ * delta});
+    const auto plain = free_axis_detail::point_equations(v.a, v.b[i], trig[0], trig[1], n_interval_, false);
+    for (int j = 0; j < 3; ++j)
+      if (!may_vanish(plain.e[j])) return false;
+    if (!(plain.dot.sup() > 0.0)) return false;
+    const Interval dc = centre_of(delta);
+    const auto trig_c = interval_sincos_all<2>({dc, n_interval_ * dc});
+    const auto e = free_axis_detail::point_equations(v.a, v.b[i], trig[0], trig[1], n_interval_, true);
+    const auto ec = free_axis_detail::point_equations(v.a_centre, v.b_centre[i], trig_c[0], trig_c[1], n_interval_, false);
+    Interval dx[5];
+    for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
+    dx[4] = delta - dc;
+    for (int j = 0; j < 3; ++j) {
+      Interval m = ec.e[j];
+      for (int k = 0; k < 5; ++k) m += e.de[k][j] * dx[k];
+      if (!may_vanish(m)) return false;
+    }
+    return true;
+  }
+
+  /// Per point, the dropped component of A - B (see header), as base-3 digits.
+  template <typename Box>
+  int chart(const Box& x) const {
+    const auto a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]),
+                                                    free_axis_detail::of_point<Interval>(p_[0]));
+    int code = 0;
+    for (int i = 3; i >= 0; --i) {
+      const auto t = interval_sincos(n_interval_ * x[4 + i]);
+      free_axis_detail::Vec<Interval> ai;
+      for (int j = 0; j < 3; ++j) ai[j] = a.c0[j] + a.c1[j] * t.second + a.c2[j] * t.first;
+      code = 3 * code + free_axis_detail::dropped_component(ai);
+    }
+    return code;
+  }
+
+  /// F(x) and, if `jac`, J(x) in type T (double at a point, Interval over a box), in `chart`.
+  template <typename T>
+  void equations(const std::array<T, N>& x, std::array<T, N>& f, std::array<std::array<T, N>, N>* jac, int chart) const {
+    using free_axis_detail::of_point;
+    const T n = n_of<T>();
+    const auto s = free_axis_detail::face_axis(sun_face_, x[0], x[1]);
+    const auto a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]), of_point<T>(p_[0]));
+    const auto trig = interval_sincos_all(std::array<T, 8>{x[4], T(n * x[4]), x[5], T(n * x[5]), x[6], T(n * x[6]), x[7], T(n * x[7])});
+    for (int i = 0; i < 4; ++i, chart /= 3) {
+      const auto b = free_axis_detail::rotation_terms(s, of_point<T>(p_[i + 1]));
+      const auto e = free_axis_detail::point_equations(a, b, trig[2 * i], trig[2 * i + 1], n, jac != nullptr);
+      const int k = chart % 3;
+      for (int r = 0; r < 2; ++r) {
+        const int j = (k + 1 + r) % 3;
+        f[2 * i + r] = e.e[j];
+        if (!jac) continue;
+        auto& row = (*jac)[2 * i + r];
+        row.fill(T(0.0));
+        for (int c = 0; c < 4; ++c) row[c] = e.de[c][j];
+        row[4 + i] = e.de[4][j];
+      }
+    }
+  }
+
+  /// The train of a root in its canonical frame (see header), unless it is a mirror root of a
+  /// chart, fails A . B > 0, or has a2 or a3 outside the range.
+  std::optional<PrecisionSolution> solution(const std::array<double, N>& y, bool isolated) const {
+    Vector3d s = to_vector(free_axis_detail::face_axis(sun_face_, y[0], y[1]).a);
+    Vector3d w = to_vector(free_axis_detail::face_axis(planet_face_, y[2], y[3]).a);
+    std::array<double, 4> delta{y[4], y[5], y[6], y[7]};
+    for (int i = 0; i < 4; ++i) {
+      const double nd = ratio_.value() * delta[i];
+      const free_axis_detail::Vec<double> zero{0.0, 0.0, 0.0};
+      const auto e = free_axis_detail::point_equations(
+          free_axis_detail::rotation_terms(free_axis_detail::Axis<double>{to_array(w), zero, zero}, to_array(p_[0])),
+          free_axis_detail::rotation_terms(free_axis_detail::Axis<double>{to_array(s), zero, zero}, to_array(p_[i + 1])),
+          interval_sincos(delta[i]), interval_sincos(nd), ratio_.value(), false);
+      // A mirror root has |A_k - B_k| = 2 |A_k| > 1 (|A_k| > 1/2 on a box Krawczyk decides); a true root ~0.
+      if (!(e.dot > 0.0) || !(std::max({std::fabs(e.e[0]), std::fabs(e.e[1]), std::fabs(e.e[2])}) < 0.5)) return std::nullopt;
+    }
+    const double a2 = std::acos(std::clamp(s.dot(w), -1.0, 1.0));
+    if (!(a2 >= kMinCarrierTwist && a2 <= Constants<double>::pi() - kMinCarrierTwist)) return std::nullopt;
+    if (!free_axis_detail::canonical_sign(s)) {
+      s = -s, w = -w;
+      for (double& d : delta) d = -d;
+    }
+    const Eigen::Matrix3d frame = free_axis_detail::frame_of(s);
+    const Vector3d wf = frame.transpose() * w, p1 = frame.transpose() * p_[0];
+    const double theta1 = std::atan2(wf.x(), -wf.y());
+    // Point 1 seen from the carrier: Q_1 = Rx(-a2) Rz(-theta_1) P_1 (in the frame).
+    const Vector3d r = Eigen::AngleAxisd(-theta1, Vector3d::UnitZ()) * p1;
+    const double q1[3] = {r.x(), std::cos(a2) * r.y() + std::sin(a2) * r.z(), std::cos(a2) * r.z() - std::sin(a2) * r.y()};
+    auto sol = train_through_points(ratio_, a2, q1,
+                                                  {theta1, theta1 + delta[0], theta1 + delta[1], theta1 + delta[2], theta1 + delta[3]}, isolated);
+    if (!sol) return sol;
+    sol->frame = frame;
+    const TracerCurve<double> curve(sol->train);
+    for (int i = 0; i < 5; ++i) sol->residual = std::max(sol->residual, (frame * curve.point(sol->params[i]) - p_[i]).norm());
+    return sol;
+  }
+
+  /// The same motion: the sun axis, the planet axis at point 1 and the carrier angles between the
+  /// points agree to 1e-9, directly or with the sun axis reversed (solution() fixed the sign of
+  /// s, but two copies of one root near a tie of the sign rule may differ).
+  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return same_motion(a, b, false) || same_motion(a, b, true); }
+
+ private:
+  template <typename T>
+  T n_of() const {
+    if constexpr (std::is_same_v<T, double>)
+      return ratio_.value();
+    else
+      return n_interval_;
+  }
+
+  void terms(const Outer& x, free_axis_detail::RotationTerms<Interval>& a,
+             std::array<free_axis_detail::RotationTerms<Interval>, kLists>& b) const {
+    using free_axis_detail::of_point;
+    a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]), of_point<Interval>(p_[0]));
+    const auto s = free_axis_detail::face_axis(sun_face_, x[0], x[1]);
+    for (int i = 0; i < kLists; ++i) b[i] = free_axis_detail::rotation_terms(s, of_point<Interval>(p_[i + 1]));
+  }
+
+  static Vector3d to_vector(const free_axis_detail::Vec<double>& a) { return {a[0], a[1], a[2]}; }
+  static free_axis_detail::Vec<double> to_array(const Vector3d& a) { return {a.x(), a.y(), a.z()}; }
+
+  /// The planet axis at point 1 (params[0]) in the points' coordinates.
+  static Vector3d planet_axis(const PrecisionSolution& x) {
+    const double a2 = x.train.a2(), t = x.params[0];
+    return x.frame * Vector3d(std::sin(a2) * std::sin(t), -std::sin(a2) * std::cos(t), std::cos(a2));
+  }
+
+  bool same_motion(const PrecisionSolution& a, const PrecisionSolution& b, bool flipped) const {
+    const double sign = flipped ? -1.0 : 1.0;
+    if ((a.frame.col(2) - sign * b.frame.col(2)).norm() > 1e-9) return false;
+    if ((planet_axis(a) - sign * planet_axis(b)).norm() > 1e-9) return false;
+    const double period = list_max();
+    for (int i = 1; i < 5; ++i) {
+      const double da = a.params[i] - a.params[0], db = sign * (b.params[i] - b.params[0]);
+      if (std::fabs(std::remainder(da - db, period)) > 1e-9 * list_scale()) return false;
+    }
+    return true;
+  }
+
+  Vector3d p_[5];
+  Ratio ratio_;
+  Interval n_interval_;
+  int sun_face_, planet_face_;
+};
+
+inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, const Ratio& n,
+                                        const PrecisionPointsOptions& options) {
+  const std::vector<Vector3d> checked = checked_precision_points(points, 5, "a free-axis problem");
+  std::vector<FreeAxisSystem> systems;
+  for (int sun = 0; sun < 3; ++sun)
+    for (int planet = 0; planet < 6; ++planet) systems.emplace_back(checked, n, sun, planet);
+  std::vector<PrecisionPoints> parts(systems.size());
+  parallel_for(systems.size(), options.threads,
+               [&](std::size_t k) { parts[k] = BoxSearch<FreeAxisSystem>(systems[k], options).run(); });
+  PrecisionPoints all;
+  for (std::size_t k = 0; k < parts.size(); ++k) {  // in face order: the result does not depend on threads
+    all.boxes += parts[k].boxes;
+    all.undecided += parts[k].undecided;
+    for (auto& s : parts[k].solutions)
+      if (std::none_of(all.solutions.begin(), all.solutions.end(), [&](const PrecisionSolution& t) { return systems[k].same(t, s); }))
+        all.solutions.push_back(std::move(s));
+  }
+  std::sort(all.solutions.begin(), all.solutions.end(), [](const auto& a, const auto& b) {
+    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
+  });
+  all.certified = all.undecided == 0;
+  return all;
+}
+
+}  // namespace sphtroch

@@ -1,0 +1,148 @@
+// Tests of exact/free_axis_points.hpp: precision points with the sun axis free. Expected values:
+// the hidden train and the hidden rotation the five points were drawn with (forward model
+// TracerCurve, Eq. 4, then a random rotation), the invariant that every solution passes its
+// points, and the fixed-frame solver (exact/precision_points.hpp, another formulation) where the
+// sun axis is Z. Seeded.
+#include "catch2/catch.hpp"
+#include "sphtroch/core/curve.hpp"
+#include "sphtroch/exact/free_axis_points.hpp"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace sphtroch;
+
+namespace {
+
+const double kPi = Constants<double>::pi();
+
+#ifdef SPHTROCH_SANITIZED_BUILD
+constexpr int kFacePairProblems = 1;  // each search is ~5x slower under the sanitizers
+#else
+constexpr int kFacePairProblems = 4;
+#endif
+
+struct FreeProblem {
+  GearTrain hidden{1.0, 1.0, Ratio(1)};
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // points = rotation * curve points
+  std::vector<Vector3d> points;
+  std::vector<double> thetas;
+};
+
+/// |p|, q <= 3, both signs; a2, a3 in [0.15, pi - 0.15]; any phase; five carrier angles over a
+/// period; a uniformly random rotation (or none).
+FreeProblem random_free_problem(std::mt19937_64& rng, bool rotate = true) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g(0.0, 1.0);
+  const auto term = [&] { return static_cast<std::int64_t>(1 + rng() % 3); };
+  const std::int64_t p = (rng() % 2 ? -1 : 1) * term();
+  FreeProblem pr;
+  pr.hidden = GearTrain(0.15 + u(rng) * (kPi - 0.3), 0.15 + u(rng) * (kPi - 0.3), Ratio(p, term()), 2 * kPi * u(rng));
+  if (rotate) pr.rotation = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+  const TracerCurve<double> curve(pr.hidden);
+  for (int i = 0; i < 5; ++i) {
+    pr.thetas.push_back(u(rng) * pr.hidden.period());
+    pr.points.push_back(pr.rotation * curve.point(pr.thetas.back()));
+  }
+  return pr;
+}
+
+/// The hidden train as one solution: the same sun axis up to sign, a2, and a3 (pi - a3 when the
+/// axis is reversed: the same motion seen from the other side), to `tol`.
+bool is_hidden(const PrecisionSolution& s, const FreeProblem& pr, double tol) {
+  const Vector3d axis = pr.rotation.col(2), z = s.frame.col(2);
+  if (std::abs(s.train.a2() - pr.hidden.a2()) > tol) return false;
+  if ((z - axis).norm() < tol) return std::abs(s.train.a3() - pr.hidden.a3()) < tol;
+  if ((z + axis).norm() < tol) return std::abs(kPi - s.train.a3() - pr.hidden.a3()) < tol;
+  return false;
+}
+
+/// Every solution passes its points at its parameters, with a right-handed orthonormal frame.
+void check_solutions_pass_points(const PrecisionPoints& r, const std::vector<Vector3d>& points) {
+  for (const PrecisionSolution& s : r.solutions) {
+    CHECK((s.frame.transpose() * s.frame - Eigen::Matrix3d::Identity()).norm() < 1e-14);
+    CHECK(std::abs(s.frame.determinant() - 1.0) < 1e-14);
+    REQUIRE(s.params.size() == 5);
+    const TracerCurve<double> curve(s.train);
+    for (int i = 0; i < 5; ++i) CHECK((s.frame * curve.point(s.params[i]) - points[i]).norm() < 1e-12);
+  }
+}
+
+/// The cube face of the largest component of a (0..2: +x, +y, +z; 3..5: the negative ones).
+int face_of(const Vector3d& a) {
+  int k = 0;
+  for (int j = 1; j < 3; ++j)
+    if (std::abs(a[j]) > std::abs(a[k])) k = j;
+  return a[k] > 0 ? k : k + 3;
+}
+
+/// The hidden root's face pair: s on a positive face (with w reversed with it), w on any.
+std::pair<int, int> hidden_faces(const FreeProblem& pr) {
+  Vector3d s = pr.rotation.col(2);
+  const double a2 = pr.hidden.a2(), t = pr.thetas[0];
+  Vector3d w = pr.rotation * Vector3d(std::sin(a2) * std::sin(t), -std::sin(a2) * std::cos(t), std::cos(a2));
+  if (face_of(s) >= 3) s = -s, w = -w;
+  return {face_of(s), face_of(w)};
+}
+
+}  // namespace
+
+TEST_CASE("free axis: on the face pair of the hidden root the search finds it and certifies its list", "[synthesis][exact]") {
+  std::mt19937_64 rng(1990);
+  for (int k = 0; k < kFacePairProblems; ++k) {
+    const FreeProblem pr = random_free_problem(rng);
+    const auto [sun, planet] = hidden_faces(pr);
+    INFO("problem " << k << ": n = " << pr.hidden.ratio().str() << ", faces " << sun << ", " << planet);
+    const FreeAxisSystem system(checked_precision_points(pr.points, 5, "test"), pr.hidden.ratio(), sun, planet);
+    const PrecisionPoints r = BoxSearch<FreeAxisSystem>(system, {20000000}).run();
+    CHECK(r.certified);
+    CHECK(std::any_of(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }));
+    check_solutions_pass_points(r, pr.points);
+  }
+}
+
+TEST_CASE("free axis: the whole search holds the hidden train once and agrees with the fixed frame where the axis is Z",
+          "[synthesis][exact]") {
+  FreeProblem pr;  // the sun axis is Z: the fixed frame can check (a problem of ~1 s)
+  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
+  pr.thetas = {0.3, 1.4, 2.6, 4.0, 5.3};
+  for (const double t : pr.thetas) pr.points.push_back(TracerCurve<double>(pr.hidden).point(t));
+  PrecisionPointsOptions options;
+  options.threads = 2;
+  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
+  REQUIRE(r.certified);
+  CHECK(std::count_if(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
+  check_solutions_pass_points(r, pr.points);
+  // Every train with the sun axis Z is among the fixed-frame trains through the first three points.
+  const PrecisionPoints fixed = precision_points({pr.points[0], pr.points[1], pr.points[2]}, pr.hidden.ratio());
+  REQUIRE(fixed.certified);
+  int on_z = 0;
+  for (const PrecisionSolution& s : r.solutions) {
+    if ((s.frame.col(2) - Vector3d::UnitZ()).norm() > 1e-9) continue;
+    ++on_z;
+    CHECK((s.frame - Eigen::Matrix3d::Identity()).norm() < 1e-9);  // the frame rule: x from the X axis
+    const double sector = 2 * kPi / double(s.train.ratio().q());
+    CHECK(std::any_of(fixed.solutions.begin(), fixed.solutions.end(), [&](const PrecisionSolution& f) {
+      return std::abs(f.train.a2() - s.train.a2()) < 1e-9 && std::abs(f.train.a3() - s.train.a3()) < 1e-9 &&
+             std::abs(std::remainder(f.train.phase() - s.train.phase(), sector)) < 1e-9;
+    }));
+  }
+  CHECK(on_z >= 1);
+}
+
+TEST_CASE("free axis: bad points are refused naming them", "[synthesis][exact][errors]") {
+  const std::vector<Vector3d> three = {Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()};
+  CHECK_THROWS_AS(free_axis_points(three, Ratio(1)), InvalidInput);
+  std::vector<Vector3d> five = {Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ(), -Vector3d::UnitX(),
+                                Vector3d(0.6, 0.8, 0.0)};
+  five[4].x() = std::nan("");
+  try {
+    free_axis_points(five, Ratio(1));
+    FAIL("no exception");
+  } catch (const InvalidInput& e) {
+    CHECK(e.field() == "points");
+  }
+  five[4] = five[0];
+  CHECK_THROWS_AS(free_axis_points(five, Ratio(1)), InvalidInput);
+}
