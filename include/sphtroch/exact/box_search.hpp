@@ -12,7 +12,9 @@
 // A System (see FixedFrameSystem in precision_points.hpp for one) has kOuter unknowns split by the
 // outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,
 // each pruned on its own: `view(outer)` computes what all the lists of an outer box share,
-// `may_hold(view, d, i)` says whether point i's equations may vanish over the outer box x d
+// `list_item(d, i)` what one interval d of list i carries down the tree (its `d` and whatever
+// depends on d alone, computed once), and `may_hold(view, item, i)` whether point i's equations
+// may vanish over the outer box x item.d
 // (REQUIRES: false only when they cannot). `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
 // System's `solution` drops the others). Small boxes go to the Krawczyk test in all N unknowns:
@@ -238,19 +240,20 @@ class BoxSearch {
  public:
   static constexpr int N = System::N, kOuter = System::kOuter, kLists = System::kLists;
   using Outer = std::array<Interval, kOuter>;
+  using Item = typename System::ListItem;
 
   BoxSearch(const System& system, const PrecisionPointsOptions& options) : sys_(system), options_(options) {}
 
   /// Searches the System's domain.
   PrecisionPoints run() {
     std::vector<Node> stack;
-    for (const Outer& outer : sys_.domains()) {
-      Node all{outer, {}};
-      for (auto& d : all.lists) d.push_back(Interval(0.0, sys_.list_max()));
-      stack.push_back(std::move(all));
-    }
     {
       const RoundingGuard upward;  // the interval arithmetic's mode; doubles here are estimates only
+      for (const Outer& outer : sys_.domains()) {
+        Node all{outer, {}};
+        for (int i = 0; i < kLists; ++i) all.lists[i].push_back(item(Interval(0.0, sys_.list_max()), i));
+        stack.push_back(std::move(all));
+      }
       while (!stack.empty()) {
         if (over_budget()) {
           result_.undecided += stack.size();
@@ -271,7 +274,7 @@ class BoxSearch {
 
   struct Node {
     Outer outer;
-    std::array<std::vector<Interval>, kLists> lists;
+    std::array<std::vector<Item>, kLists> lists;
   };
 
   bool over_budget() const { return result_.boxes >= options_.max_boxes; }
@@ -287,7 +290,7 @@ class BoxSearch {
     const auto view = sys_.view(node.outer);
     for (int i = 0; i < kLists; ++i) {
       auto& list = node.lists[i];
-      list.erase(std::remove_if(list.begin(), list.end(), [&](const Interval& d) { return !sys_.may_hold(view, d, i); }),
+      list.erase(std::remove_if(list.begin(), list.end(), [&](const Item& d) { return !sys_.may_hold(view, d, i); }),
                  list.end());
       if (list.empty()) return;
     }
@@ -328,9 +331,10 @@ class BoxSearch {
   }
 
   /// Adjacent intervals (in order, each starting where the last ended) joined into one.
-  static std::vector<Interval> merge_runs(const std::vector<Interval>& list) {
+  static std::vector<Interval> merge_runs(const std::vector<Item>& list) {
     std::vector<Interval> runs;
-    for (const Interval& d : list) {
+    for (const Item& item : list) {
+      const Interval& d = item.d;
       if (!runs.empty() && runs.back().sup() == d.inf())
         runs.back() = Interval(runs.back().inf(), d.sup());
       else
@@ -339,25 +343,28 @@ class BoxSearch {
     return runs;
   }
 
+  Item item(const Interval& d, int i) const { return sys_.list_item(d, i); }
+
   /// Splits every list interval wider (scaled) than `limit` into equal pieces no wider.
   bool split_lists(Node& node, double limit) const {
     bool split = false;
-    for (auto& list : node.lists) {
-      std::vector<Interval> out;
-      for (const Interval& d : list) {
+    for (int i = 0; i < kLists; ++i) {
+      std::vector<Item> out;
+      for (const Item& item_i : node.lists[i]) {
+        const Interval& d = item_i.d;
         const double w = width(d) * sys_.list_scale();
         const auto pieces = static_cast<std::size_t>(std::ceil(w / limit));
         if (pieces <= 1) {
-          out.push_back(d);
+          out.push_back(item_i);
           continue;
         }
         split = true;
         const double step = width(d) / static_cast<double>(pieces);
         for (std::size_t k = 0; k < pieces; ++k)
-          out.push_back(Interval(k == 0 ? d.inf() : d.inf() + step * static_cast<double>(k),
-                                 k + 1 == pieces ? d.sup() : d.inf() + step * static_cast<double>(k + 1)));
+          out.push_back(item(Interval(k == 0 ? d.inf() : d.inf() + step * static_cast<double>(k),
+                                      k + 1 == pieces ? d.sup() : d.inf() + step * static_cast<double>(k + 1)), i));
       }
-      list = std::move(out);
+      node.lists[i] = std::move(out);
     }
     return split;
   }
@@ -367,7 +374,7 @@ class BoxSearch {
     for (int k = 0; k < kOuter; ++k) outer[k] = x[k];
     const auto view = sys_.view(outer);
     for (int i = 0; i < kLists; ++i)
-      if (!sys_.may_hold(view, x[kOuter + i], i)) return true;
+      if (!sys_.may_hold(view, item(x[kOuter + i], i), i)) return true;
     return false;
   }
 

@@ -15,7 +15,7 @@
 // eight equations (two per unit-vector equation) in the eight unknowns s, w (unit vectors, two
 // each) and Delta_2..Delta_5 in [0, 2 pi q]: no arccos, nothing folds. a2 = angle(s, w), a3 =
 // angle(w, P_1). s and w are charted by cube faces: a = c / |c| with c = +-e_f + u e_(f+1) + v
-// e_(f+2), u, v in [-1 - 1/16, 1 + 1/16] (boxes wholly outside [-1, 1] dropped, so no root sits on
+// e_(f+2), u, v in [-1 - 1/64, 1 + 1/64] (boxes wholly outside [-1, 1] dropped, so no root sits on
 // an edge). (s, w, Delta) and (-s, -w, -Delta) are the same motion (the same train seen with the
 // sun axis reversed: a3 becomes pi - a3), so s takes the three faces +x, +y, +z and w all six.
 // Of A_i - B_i, the component k where |A_i| is largest over a box is dropped (`chart`): the other
@@ -157,26 +157,44 @@ struct PointEquations {
   std::array<Vec<T>, 5> de;
 };
 
+/// Component j of A (its terms a, `n_delta` = {sin, cos} of n Delta) and of B (terms b, `delta`).
+template <typename T>
+T a_component(const RotationTerms<T>& a, const SinCos<T>& n_delta, int j) {
+  return a.c0[j] + a.c1[j] * n_delta.second + a.c2[j] * n_delta.first;
+}
+template <typename T>
+T b_component(const RotationTerms<T>& b, const SinCos<T>& delta, int j) {
+  return b.c0[j] + b.c1[j] * delta.second - b.c2[j] * delta.first;
+}
+
+/// d(A - B)_j / d(s_u, s_v, w_u, w_v, Delta) in `d`.
+template <typename T>
+void component_gradient(const RotationTerms<T>& a, const RotationTerms<T>& b, const SinCos<T>& delta,
+                        const SinCos<T>& n_delta, const T& n, int j, T d[5]) {
+  const T &sp = n_delta.first, &cp = n_delta.second, &sd = delta.first, &cd = delta.second;
+  for (int k = 0; k < 2; ++k) {
+    d[k] = b.dc2[k][j] * sd - b.dc0[k][j] * (T(1.0) - cd);
+    d[2 + k] = a.dc0[k][j] * (T(1.0) - cp) + a.dc2[k][j] * sp;
+  }
+  d[4] = n * (a.c2[j] * cp - a.c1[j] * sp) + b.c1[j] * sd + b.c2[j] * cd;  // n w x A + s x B
+}
+
 template <typename T>
 PointEquations<T> point_equations(const RotationTerms<T>& a, const RotationTerms<T>& b, const SinCos<T>& delta,
                                   const SinCos<T>& n_delta, const T& n, bool jacobian) {
-  const T &sp = n_delta.first, &cp = n_delta.second, &sd = delta.first, &cd = delta.second;
   PointEquations<T> r;
   Vec<T> bv;
   for (int j = 0; j < 3; ++j) {
-    r.a[j] = a.c0[j] + a.c1[j] * cp + a.c2[j] * sp;
-    bv[j] = b.c0[j] + b.c1[j] * cd - b.c2[j] * sd;
+    r.a[j] = a_component(a, n_delta, j);
+    bv[j] = b_component(b, delta, j);
     r.e[j] = r.a[j] - bv[j];
   }
   r.dot = dot(r.a, bv);
   if (!jacobian) return r;
-  const T one_cp = T(1.0) - cp, one_cd = T(1.0) - cd;
   for (int j = 0; j < 3; ++j) {
-    for (int k = 0; k < 2; ++k) {
-      r.de[k][j] = b.dc2[k][j] * sd - b.dc0[k][j] * one_cd;
-      r.de[2 + k][j] = a.dc0[k][j] * one_cp + a.dc2[k][j] * sp;
-    }
-    r.de[4][j] = n * (a.c2[j] * cp - a.c1[j] * sp) + b.c1[j] * sd + b.c2[j] * cd;
+    T d[5];
+    component_gradient(a, b, delta, n_delta, n, j, d);
+    for (int k = 0; k < 5; ++k) r.de[k][j] = d[k];
   }
   return r;
 }
@@ -219,7 +237,7 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
   return f;
 }
 
-constexpr double kFaceOverlap = 1.0 / 16;
+constexpr double kFaceOverlap = 1.0 / 64;
 
 }  // namespace free_axis_detail
 
@@ -266,24 +284,37 @@ class FreeAxisSystem {
     return v;
   }
 
-  /// Whether point i + 2 may satisfy its equations on the outer box x delta: the plain enclosure,
+  /// An interval of Delta_(i+2) with {sin, cos} of Delta and n Delta over it and at its centre,
+  /// computed once for every outer box it meets.
+  struct ListItem {
+    Interval d;
+    std::array<free_axis_detail::SinCos<Interval>, 4> trig;
+  };
+  ListItem list_item(const Interval& d, int /*i*/) const {
+    const Interval dc = centre_of(d);
+    return {d, interval_sincos_all<4>({d, n_interval_ * d, dc, n_interval_ * dc})};
+  }
+
+  /// Whether point i + 2 may satisfy its equations on the outer box x item.d: the plain enclosure,
   /// then the mean-value form F(c) + J(X) (X - c).
-  bool may_hold(const View& v, const Interval& delta, int i) const {
-    const auto trig = interval_sincos_all<2>({delta, n_interval_ * delta});
-    const auto plain = free_axis_detail::point_equations(v.a, v.b[i], trig[0], trig[1], n_interval_, false);
-    for (int j = 0; j < 3; ++j)
-      if (!may_vanish(plain.e[j])) return false;
-    if (!(plain.dot.sup() > 0.0)) return false;
-    const Interval dc = centre_of(delta);
-    const auto trig_c = interval_sincos_all<2>({dc, n_interval_ * dc});
-    const auto e = free_axis_detail::point_equations(v.a, v.b[i], trig[0], trig[1], n_interval_, true);
-    const auto ec = free_axis_detail::point_equations(v.a_centre, v.b_centre[i], trig_c[0], trig_c[1], n_interval_, false);
+  bool may_hold(const View& v, const ListItem& item, int i) const {
+    using free_axis_detail::a_component;
+    using free_axis_detail::b_component;
+    const auto& t = item.trig;
+    Interval a[3], b[3];
+    for (int j = 0; j < 3; ++j) {
+      a[j] = a_component(v.a, t[1], j);
+      b[j] = b_component(v.b[i], t[0], j);
+      if (!may_vanish(a[j] - b[j])) return false;
+    }
+    if (!((a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0)) return false;  // A . B > 0
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
-    dx[4] = delta - dc;
+    dx[4] = item.d - centre_of(item.d);
     for (int j = 0; j < 3; ++j) {
-      Interval m = ec.e[j];
-      for (int k = 0; k < 5; ++k) m += e.de[k][j] * dx[k];
+      Interval m = a_component(v.a_centre, t[3], j) - b_component(v.b_centre[i], t[2], j), d[5];
+      free_axis_detail::component_gradient(v.a, v.b[i], t[0], t[1], n_interval_, j, d);
+      for (int k = 0; k < 5; ++k) m += d[k] * dx[k];
       if (!may_vanish(m)) return false;
     }
     return true;

@@ -270,8 +270,15 @@ class FixedFrameSystem {
             a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0])};
   }
 
-  /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x delta.
-  bool may_hold(const View& v, const Interval& delta, int i) const {
+  /// An interval of Delta_(i+2) as the search carries it (nothing computed ahead).
+  struct ListItem {
+    Interval d;
+  };
+  ListItem list_item(const Interval& d, int /*i*/) const { return {d}; }
+
+  /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x item.d.
+  bool may_hold(const View& v, const ListItem& item, int i) const {
+    const Interval& delta = item.d;
     const Interval dc = centre_of(delta);
     const auto trig = interval_sincos_all<4>({v.theta1 + delta, n_interval_ * delta, v.theta1_centre + dc,
                                               n_interval_ * dc});
