@@ -17,7 +17,8 @@
 // may vanish over the outer box x item.d
 // (REQUIRES: false only when they cannot). `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
-// System's `solution` drops the others). Small boxes go to the Krawczyk test in all N unknowns:
+// System's `solution` drops the others), or -1 when none is good over the whole box: the box is
+// then never certified (it is bisected) and Newton uses the chart of the box's centre. Small boxes go to the Krawczyk test in all N unknowns:
 // K(X) = y - Y F(y) + (I - Y J(X)) (X - y), y the centre, Y ~ J(y)^-1 (any Y keeps it valid):
 // K(X) inside X proves exactly one root in X, K(X) disjoint from X proves none. A root found by
 // Newton is certified in a tiny box and given the largest box U around it where
@@ -112,6 +113,16 @@ Matrix<N> to_matrix(const Jacobian<double, N>& a) {
   return m;
 }
 
+/// The chart for Newton steps from box x: the box's, or (none fits the box) its centre's.
+template <class System>
+int newton_chart(const System& sys, const Box<System::N>& x) {
+  const int chart = sys.chart(x);
+  if (chart >= 0) return chart;
+  Box<System::N> c;
+  for (int k = 0; k < System::N; ++k) c[k] = Interval(0.5 * (x[k].inf() + x[k].sup()));
+  return sys.chart(c);
+}
+
 /// Y = J(y)^-1 in doubles (any approximate inverse keeps the interval tests valid); none if singular.
 template <class System>
 std::optional<Matrix<System::N>> inverse_jacobian(const System& sys, const std::array<double, System::N>& y, int chart) {
@@ -132,6 +143,7 @@ KrawczykOutcome krawczyk(const System& sys, Box<System::N>& x) {
   constexpr int N = System::N;
   const std::array<double, N> y = centre<N>(x);
   const int chart = sys.chart(x);
+  if (chart < 0) return KrawczykOutcome::undecided;
   const auto inverse = inverse_jacobian(sys, y, chart);
   if (!inverse) return KrawczykOutcome::undecided;
   const Matrix<N>& inv = *inverse;
@@ -165,6 +177,7 @@ template <class System>
 bool contraction_holds(const System& sys, const std::array<double, System::N>& y, const Box<System::N>& u) {
   constexpr int N = System::N;
   const int chart = sys.chart(u);
+  if (chart < 0) return false;
   const auto inverse = inverse_jacobian(sys, y, chart);
   if (!inverse) return false;
   const Matrix<N>& inv = *inverse;
@@ -198,7 +211,7 @@ Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::ar
 template <class System>
 std::array<double, System::N> polish(const System& sys, const Box<System::N>& x) {
   std::array<double, System::N> y = centre<System::N>(x);
-  const int chart = sys.chart(x);
+  const int chart = newton_chart(sys, x);
   for (int step = 0; step < 8; ++step) {
     const auto dy = newton_step(sys, y, chart);
     if (!dy.allFinite()) break;
@@ -214,7 +227,7 @@ std::array<double, System::N> polish(const System& sys, const Box<System::N>& x)
 template <class System>
 std::optional<std::array<double, System::N>> newton_limit(const System& sys, const Box<System::N>& x) {
   std::array<double, System::N> y = centre<System::N>(x);
-  const int chart = sys.chart(x);
+  const int chart = newton_chart(sys, x);
   double last = 0.0;
   for (int step = 0; step < 12; ++step) {
     const auto dy = newton_step(sys, y, chart);
@@ -427,7 +440,7 @@ class BoxSearch {
   std::optional<int> most_smeared(const Box<N>& x) const {
     std::array<double, N> f{};
     box_search_detail::Jacobian<double, N> jac{};
-    sys_.equations(box_search_detail::centre<N>(x), f, &jac, sys_.chart(x));
+    sys_.equations(box_search_detail::centre<N>(x), f, &jac, box_search_detail::newton_chart(sys_, x));
     int best = -1;
     double best_smear = 0.0;
     for (int k = 0; k < N; ++k) {

@@ -199,10 +199,11 @@ PointEquations<T> point_equations(const RotationTerms<T>& a, const RotationTerms
   return r;
 }
 
-/// The component of A kept out of the equations: the one of largest magnitude over the box.
+/// The component of A kept out of the equations: the one of largest magnitude over the box, if
+/// it stays above 1/2 there (then a mirror root has |A_k - B_k| = 2 |A_k| > 1); else -1.
 inline int dropped_component(const Vec<Interval>& a) {
-  int best = 0;
-  double best_mig = -1.0;
+  int best = -1;
+  double best_mig = 0.5;
   for (int j = 0; j < 3; ++j) {
     const double mig = may_vanish(a[j]) ? 0.0 : std::min(std::fabs(a[j].inf()), std::fabs(a[j].sup()));
     if (mig > best_mig) best = j, best_mig = mig;
@@ -320,7 +321,8 @@ class FreeAxisSystem {
     return true;
   }
 
-  /// Per point, the dropped component of A - B (see header), as base-3 digits.
+  /// Per point, the dropped component of A - B (see header), as base-3 digits; -1 when for some
+  /// point no component of A stays above 1/2 over the box.
   template <typename Box>
   int chart(const Box& x) const {
     const auto a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]),
@@ -330,7 +332,9 @@ class FreeAxisSystem {
       const auto t = interval_sincos(n_interval_ * x[4 + i]);
       free_axis_detail::Vec<Interval> ai;
       for (int j = 0; j < 3; ++j) ai[j] = a.c0[j] + a.c1[j] * t.second + a.c2[j] * t.first;
-      code = 3 * code + free_axis_detail::dropped_component(ai);
+      const int k = free_axis_detail::dropped_component(ai);
+      if (k < 0) return -1;  // no component fits the whole box
+      code = 3 * code + k;
     }
     return code;
   }
@@ -372,7 +376,7 @@ class FreeAxisSystem {
           free_axis_detail::rotation_terms(free_axis_detail::Axis<double>{to_array(w), zero, zero}, to_array(p_[0])),
           free_axis_detail::rotation_terms(free_axis_detail::Axis<double>{to_array(s), zero, zero}, to_array(p_[i + 1])),
           interval_sincos(delta[i]), interval_sincos(nd), ratio_.value(), false);
-      // A mirror root has |A_k - B_k| = 2 |A_k| > 1 (|A_k| > 1/2 on a box Krawczyk decides); a true root ~0.
+      // A mirror root has |A_k - B_k| = 2 |A_k| > 1 (chart: |A_k| > 1/2 over its box); a true root ~0.
       if (!(e.dot > 0.0) || !(std::max({std::fabs(e.e[0]), std::fabs(e.e[1]), std::fabs(e.e[2])}) < 0.5)) return std::nullopt;
     }
     const double a2 = std::acos(std::clamp(s.dot(w), -1.0, 1.0));
