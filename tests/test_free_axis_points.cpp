@@ -131,6 +131,32 @@ TEST_CASE("free axis: the whole search holds the hidden train once and agrees wi
   CHECK(on_z >= 1);
 }
 
+TEST_CASE("free axis: the Jacobian of every chart is the derivative of its equations (central differences)",
+          "[synthesis][exact]") {
+  // An exclusion or a Krawczyk proof with a wrong J would be wrong: J against (F(x + h) - F(x - h)) / 2h.
+  std::mt19937_64 rng(47);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), d(0.0, 12.0);
+  const FreeProblem pr = random_free_problem(rng);
+  const std::vector<Vector3d> points = checked_precision_points(pr.points, 5, "test");
+  for (int trial = 0; trial < 40; ++trial) {
+    const FreeAxisSystem system(points, Ratio(-2, 3), trial % 3, trial % 6);
+    std::array<double, 8> x{u(rng), u(rng), u(rng), u(rng), d(rng), d(rng), d(rng), d(rng)};
+    const int chart = int(rng() % 81);  // each point's dropped component, base 3
+    std::array<double, 8> f{};
+    std::array<std::array<double, 8>, 8> jac{};
+    system.equations(x, f, &jac, chart);
+    for (int k = 0; k < 8; ++k) {
+      const double h = 1e-6;
+      std::array<double, 8> xp = x, xm = x, fp{}, fm{};
+      xp[k] += h;
+      xm[k] -= h;
+      system.equations(xp, fp, static_cast<std::array<std::array<double, 8>, 8>*>(nullptr), chart);
+      system.equations(xm, fm, static_cast<std::array<std::array<double, 8>, 8>*>(nullptr), chart);
+      for (int r = 0; r < 8; ++r) CHECK(std::abs((fp[r] - fm[r]) / (2 * h) - jac[r][k]) < 1e-7);
+    }
+  }
+}
+
 TEST_CASE("free axis: bad points are refused naming them", "[synthesis][exact][errors]") {
   const std::vector<Vector3d> three = {Vector3d::UnitX(), Vector3d::UnitY(), Vector3d::UnitZ()};
   CHECK_THROWS_AS(free_axis_points(three, Ratio(1)), InvalidInput);

@@ -1,6 +1,6 @@
 // sphtroch/exact/box_search.hpp — certified isolation of ALL roots of a square system F(x) = 0 in
 // a box: interval branch and bound with the Krawczyk operator. The engine of precision points
-// (exact/precision_points.hpp: fixed frame, 4 unknowns).
+// (exact/precision_points.hpp: fixed frame, 4 unknowns; exact/free_axis_points.hpp: free axis, 8).
 //
 //   // a System: FixedFrameSystem of precision_points.hpp, three points of a train of ratio 1/2
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
@@ -18,7 +18,8 @@
 // (REQUIRES: false only when they cannot). `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
 // System's `solution` drops the others), or -1 when none is good over the whole box: the box is
-// then never certified (it is bisected) and Newton uses the chart of the box's centre. Small boxes go to the Krawczyk test in all N unknowns:
+// then never certified (it is bisected) and Newton uses the chart of the box's centre. Small
+// boxes go to the Krawczyk test in all N unknowns:
 // K(X) = y - Y F(y) + (I - Y J(X)) (X - y), y the centre, Y ~ J(y)^-1 (any Y keeps it valid):
 // K(X) inside X proves exactly one root in X, K(X) disjoint from X proves none. A root found by
 // Newton is certified in a tiny box and given the largest box U around it where

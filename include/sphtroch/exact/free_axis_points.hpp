@@ -343,7 +343,7 @@ class FreeAxisSystem {
   template <typename T>
   void equations(const std::array<T, N>& x, std::array<T, N>& f, std::array<std::array<T, N>, N>* jac, int chart) const {
     using free_axis_detail::of_point;
-    const T n = n_of<T>();
+    const T n = ratio_as<T>(ratio_, n_interval_);
     const auto s = free_axis_detail::face_axis(sun_face_, x[0], x[1]);
     const auto a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]), of_point<T>(p_[0]));
     const auto trig = interval_sincos_all(std::array<T, 8>{x[4], T(n * x[4]), x[5], T(n * x[5]), x[6], T(n * x[6]), x[7], T(n * x[7])});
@@ -406,14 +406,6 @@ class FreeAxisSystem {
   bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return same_motion(a, b, false) || same_motion(a, b, true); }
 
  private:
-  template <typename T>
-  T n_of() const {
-    if constexpr (std::is_same_v<T, double>)
-      return ratio_.value();
-    else
-      return n_interval_;
-  }
-
   void terms(const Outer& x, free_axis_detail::RotationTerms<Interval>& a,
              std::array<free_axis_detail::RotationTerms<Interval>, kLists>& b) const {
     using free_axis_detail::of_point;

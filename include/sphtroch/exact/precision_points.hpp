@@ -215,6 +215,15 @@ inline Interval ratio_enclosure(const Ratio& n) {
   return Interval(double(n.p())) / Interval(double(n.q()));
 }
 
+/// n in the type of an evaluation: the nearest double, or (Interval) its enclosure.
+template <typename T>
+T ratio_as(const Ratio& n, const Interval& enclosure) {
+  if constexpr (std::is_same_v<T, double>)
+    return n.value();
+  else
+    return enclosure;
+}
+
 /// The train of a root given the carrier twist, point 1 seen from the carrier (Q_1) and the
 /// carrier angle of every point (theta_1 first): a3 = acos(Q_1z), theta_p = atan2(Q_1x, -Q_1y) -
 /// n theta_1, the phase reduced to [0, 2 pi / q) and the angles shifted by the matching 2 pi k
@@ -311,7 +320,7 @@ class FixedFrameSystem {
   /// F(x) and, if `jac`, J(x) in type T (double at a point, Interval over a box), in `chart`.
   template <typename T>
   void equations(const std::array<T, N>& x, std::array<T, N>& f, std::array<std::array<T, N>, N>* jac, int chart) const {
-    const T n = n_of<T>();
+    const T n = ratio_as<T>(ratio_, n_interval_);
     const auto trig = interval_sincos_all(std::array<T, 6>{x[0], x[1], T(x[1] + x[2]), T(n * x[2]), T(x[1] + x[3]), T(n * x[3])});
     const T &sa = trig[0].first, &ca = trig[0].second;
     const precision_detail::CarrierView<T> q1 = precision_detail::carrier_view(ca, sa, trig[1], p_[0]);
@@ -350,14 +359,6 @@ class FixedFrameSystem {
   bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return precision_detail::same_train_in_frame(a.train, b.train); }
 
  private:
-  template <typename T>
-  T n_of() const {
-    if constexpr (std::is_same_v<T, double>)
-      return ratio_.value();
-    else
-      return n_interval_;
-  }
-
   FixedFrameSystem(const std::vector<Vector3d>& checked, const Ratio& n, int /*checked already*/)
       : p_{checked[0], checked[1], checked[2]}, ratio_(n), n_interval_(ratio_enclosure(n)) {}
 
