@@ -25,7 +25,7 @@ namespace {
 /// unknowns Delta span 2 pi q and the equations turn |n| times faster; measured in bench/).
 constexpr double kMaxPointsWork = 20000;
 /// The same bound with --free-axis (five points, 18 searches in eight unknowns: ~10-30 s for one
-/// small ratio on two cores, measured in bench/): 500 allows --ratios 3,3 (344) or one n = 7/7.
+/// small ratio on two cores, measured in bench/): 500 allows --ratios 3,3 (208), not 4,4 (504).
 constexpr double kMaxFreeAxisWork = 500;
 
 struct PointsOptions {

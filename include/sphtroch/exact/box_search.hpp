@@ -45,6 +45,7 @@
 #include <cstddef>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace sphtroch {
@@ -117,6 +118,7 @@ Matrix<N> to_matrix(const Jacobian<double, N>& a) {
 /// The chart for Newton steps from box x: the box's, or (none fits the box) its centre's.
 template <class System>
 int newton_chart(const System& sys, const Box<System::N>& x) {
+  const RoundingGuard upward;  // chart() computes with intervals; callers may be in any mode
   const int chart = sys.chart(x);
   if (chart >= 0) return chart;
   Box<System::N> c;
@@ -173,12 +175,12 @@ KrawczykOutcome krawczyk(const System& sys, Box<System::N>& x) {
   return KrawczykOutcome::undecided;
 }
 
-/// Whether ||I - Y J(U)||_inf < 1 with Y = J(y)^-1 (interval J over the box U).
+/// Whether ||I - Y J(U)||_inf < 1 with Y = J(y)^-1 (interval J over the box U), J of the chart
+/// the root at y was proven in: at most one root of those equations in U, so no other true root
+/// (a true root solves every chart's equations).
 template <class System>
-bool contraction_holds(const System& sys, const std::array<double, System::N>& y, const Box<System::N>& u) {
+bool contraction_holds(const System& sys, const std::array<double, System::N>& y, const Box<System::N>& u, int chart) {
   constexpr int N = System::N;
-  const int chart = sys.chart(u);
-  if (chart < 0) return false;
   const auto inverse = inverse_jacobian(sys, y, chart);
   if (!inverse) return false;
   const Matrix<N>& inv = *inverse;
@@ -208,11 +210,10 @@ Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::ar
   return to_matrix<N>(jac).fullPivLu().solve(fv);
 }
 
-/// Newton from the centre of a box holding exactly one root (REQUIRES: Krawczyk said so).
+/// Newton from the centre of box x in `chart` (REQUIRES for a root: the chart Krawczyk proved it in).
 template <class System>
-std::array<double, System::N> polish(const System& sys, const Box<System::N>& x) {
+std::array<double, System::N> polish(const System& sys, const Box<System::N>& x, int chart) {
   std::array<double, System::N> y = centre<System::N>(x);
-  const int chart = newton_chart(sys, x);
   for (int step = 0; step < 8; ++step) {
     const auto dy = newton_step(sys, y, chart);
     if (!dy.allFinite()) break;
@@ -408,7 +409,7 @@ class BoxSearch {
       const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
       if (outcome == KrawczykOutcome::no_root) continue;
       if (outcome == KrawczykOutcome::unique_root) {
-        roots_.push_back(x);
+        roots_.push_back({x, sys_.chart(x)});
         regions_.push_back(x);
         continue;
       }
@@ -482,8 +483,9 @@ class BoxSearch {
       const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
       if (outcome == KrawczykOutcome::no_root) return false;
       if (outcome != KrawczykOutcome::unique_root) continue;
-      roots_.push_back(tiny);
-      regions_.push_back(uniqueness_region(*y, tiny));
+      const int chart = sys_.chart(tiny);  // the chart krawczyk() proved the root in
+      roots_.push_back({tiny, chart});
+      regions_.push_back(uniqueness_region(*y, tiny, chart));
       return true;
     }
     return false;
@@ -507,22 +509,23 @@ class BoxSearch {
   }
 
   /// The largest box y +- r (r = 1e-9 2^j <= 0.25, scaled) holding `tiny` with ||I - Y J(U)||_inf
-  /// < 1: by the mean value theorem two roots in U would be equal. At least `tiny`.
-  Box<N> uniqueness_region(const std::array<double, N>& y, const Box<N>& tiny) const {
+  /// < 1 in `chart`: by the mean value theorem two roots in U would be equal. At least `tiny`.
+  Box<N> uniqueness_region(const std::array<double, N>& y, const Box<N>& tiny, int chart) const {
     Box<N> best = tiny;
     for (double r = 1e-9; r <= 0.25; r *= 2) {
       Box<N> u;
       for (int k = 0; k < N; ++k) u[k] = around(y, k, r);
       if (!contains(u, tiny)) continue;
-      if (!box_search_detail::contraction_holds(sys_, y, u)) break;
+      if (!box_search_detail::contraction_holds(sys_, y, u, chart)) break;
       best = u;
     }
     return best;
   }
 
   void finish() {
-    for (const Box<N>& x : roots_) add(sys_.solution(box_search_detail::polish(sys_, x), true));
-    for (const Box<N>& x : undecided_) add(sys_.solution(box_search_detail::polish(sys_, x), false));
+    for (const auto& [x, chart] : roots_) add(sys_.solution(box_search_detail::polish(sys_, x, chart), true));
+    for (const Box<N>& x : undecided_)
+      add(sys_.solution(box_search_detail::polish(sys_, x, box_search_detail::newton_chart(sys_, x)), false));
     std::sort(result_.solutions.begin(), result_.solutions.end(), [](const auto& a, const auto& b) {
       return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
     });
@@ -542,7 +545,7 @@ class BoxSearch {
   const System sys_;  // a copy: a temporary System may be passed
   PrecisionPointsOptions options_;
   PrecisionPoints result_;
-  std::vector<Box<N>> roots_;      // each holds exactly one root
+  std::vector<std::pair<Box<N>, int>> roots_;  // each holds exactly one root (of its chart's equations)
   std::vector<Box<N>> regions_;    // each holds at most one root, one of roots_
   std::vector<Box<N>> undecided_;  // narrower than kMinBoxWidth, still undecided
 };

@@ -400,10 +400,14 @@ class FreeAxisSystem {
     return sol;
   }
 
-  /// The same motion: the sun axis, the planet axis at point 1 and the carrier angles between the
-  /// points agree to 1e-9, directly or with the sun axis reversed (solution() fixed the sign of
-  /// s, but two copies of one root near a tie of the sign rule may differ).
-  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return same_motion(a, b, false) || same_motion(a, b, true); }
+  /// The same train: the same motion (the sun axis, the planet axis at point 1 and the carrier
+  /// angles between the points agree to 1e-9, directly or with the sun axis reversed: solution()
+  /// fixed the sign of s, but two copies of one root near a tie of the sign rule may differ), or
+  /// the same frame and train with other carrier angles (a point at a node of the curve).
+  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const {
+    if ((a.frame - b.frame).cwiseAbs().maxCoeff() < 1e-9 && same_train_in_frame(a.train, b.train)) return true;
+    return same_motion(a, b, false) || same_motion(a, b, true);
+  }
 
  private:
   void terms(const Outer& x, free_axis_detail::RotationTerms<Interval>& a,
@@ -454,9 +458,14 @@ inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, con
   for (std::size_t k = 0; k < parts.size(); ++k) {  // in face order: the result does not depend on threads
     all.boxes += parts[k].boxes;
     all.undecided += parts[k].undecided;
-    for (auto& s : parts[k].solutions)
-      if (std::none_of(all.solutions.begin(), all.solutions.end(), [&](const PrecisionSolution& t) { return systems[k].same(t, s); }))
+    for (auto& s : parts[k].solutions) {
+      const auto copy = std::find_if(all.solutions.begin(), all.solutions.end(),
+                                     [&](const PrecisionSolution& t) { return systems[k].same(t, s); });
+      if (copy == all.solutions.end())
         all.solutions.push_back(std::move(s));
+      else if (!copy->isolated && s.isolated)  // the copy certified by another face pair
+        *copy = std::move(s);
+    }
   }
   std::sort(all.solutions.begin(), all.solutions.end(), [](const auto& a, const auto& b) {
     return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());

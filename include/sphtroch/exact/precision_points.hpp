@@ -161,13 +161,6 @@ inline std::int64_t inverse_mod(std::int64_t p, std::int64_t q) {
   return ((x0 % q) + q) % q;
 }
 
-/// Two trains that agree to 1e-9 (a2, a3, phase modulo 2 pi / q) in the same frame.
-inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
-  const double sector = 2 * Constants<double>::pi() / static_cast<double>(a.ratio().q());
-  const double dp = std::fabs(std::remainder(a.phase_given() - b.phase_given(), sector));
-  return std::fabs(a.a2() - b.a2()) < 1e-9 && std::fabs(a.a3() - b.a3()) < 1e-9 && dp < 1e-9;
-}
-
 /// How far the theta_1 domain reaches past each end of [0, 2 pi]: a root at theta_1 = 0 (a point
 /// at a trace's first sample) lies inside the domain, not on an edge a box cannot be certified
 /// across; its copy at 2 pi is the same train (dropped as a repeat), and boxes wholly outside
@@ -243,6 +236,13 @@ inline std::optional<PrecisionSolution> train_through_points(const Ratio& ratio,
   const double shift = two_pi * static_cast<double>(k), period = two_pi * static_cast<double>(q);
   for (const double t : thetas) s.params.push_back(std::fmod(std::fmod(t + shift, period) + period, period));
   return s;
+}
+
+/// Two trains that agree to 1e-9 (a2, a3, phase modulo 2 pi / q) in the same frame.
+inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
+  const double sector = 2 * Constants<double>::pi() / static_cast<double>(a.ratio().q());
+  const double dp = std::fabs(std::remainder(a.phase_given() - b.phase_given(), sector));
+  return std::fabs(a.a2() - b.a2()) < 1e-9 && std::fabs(a.a3() - b.a3()) < 1e-9 && dp < 1e-9;
 }
 
 /// The fixed-frame system for box_search.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
@@ -337,7 +337,7 @@ class FixedFrameSystem {
     }
   }
 
-  /// The train of a root (see precision_detail::reduced_solution), unless it is a root of the sign-reversed system
+  /// The train of a root (see train_through_points), unless it is a root of the sign-reversed system
   /// or lies outside the a3 range.
   std::optional<PrecisionSolution> solution(const std::array<double, N>& y, bool isolated) const {
     const double ca = std::cos(y[0]), sa = std::sin(y[0]);
@@ -356,7 +356,7 @@ class FixedFrameSystem {
     return s;
   }
 
-  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return precision_detail::same_train_in_frame(a.train, b.train); }
+  bool same(const PrecisionSolution& a, const PrecisionSolution& b) const { return same_train_in_frame(a.train, b.train); }
 
  private:
   FixedFrameSystem(const std::vector<Vector3d>& checked, const Ratio& n, int /*checked already*/)
