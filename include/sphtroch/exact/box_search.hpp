@@ -133,9 +133,10 @@ std::optional<Matrix<System::N>> inverse_jacobian(const System& sys, const std::
   std::array<double, N> f{};
   Jacobian<double, N> jac{};
   sys.equations(y, f, &jac, chart);
-  const Eigen::FullPivLU<Matrix<N>> lu(to_matrix<N>(jac));
-  if (!lu.isInvertible()) return std::nullopt;
-  return Matrix<N>(lu.inverse());
+  const Eigen::PartialPivLU<Matrix<N>> lu(to_matrix<N>(jac));
+  const Matrix<N> inverse = lu.inverse();
+  if (!(lu.determinant() != 0.0) || !inverse.allFinite()) return std::nullopt;
+  return inverse;
 }
 
 enum class KrawczykOutcome { unique_root, no_root, undecided };
@@ -199,7 +200,8 @@ bool contraction_holds(const System& sys, const std::array<double, System::N>& y
   return true;
 }
 
-/// One Newton step at y in doubles: the correction J(y)^-1 F(y) (non-finite if J is singular).
+/// One Newton step at y in doubles: the correction J(y)^-1 F(y) (non-finite if J is singular;
+/// partial pivoting: a poor step on a near-singular J only costs a bisection).
 template <class System>
 Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::array<double, System::N>& y, int chart) {
   constexpr int N = System::N;
@@ -207,7 +209,7 @@ Eigen::Matrix<double, System::N, 1> newton_step(const System& sys, const std::ar
   Jacobian<double, N> jac{};
   sys.equations(y, f, &jac, chart);
   const Eigen::Matrix<double, N, 1> fv = Eigen::Map<const Eigen::Matrix<double, N, 1>>(f.data());
-  return to_matrix<N>(jac).fullPivLu().solve(fv);
+  return to_matrix<N>(jac).partialPivLu().solve(fv);
 }
 
 /// Newton from the centre of box x in `chart` (REQUIRES for a root: the chart Krawczyk proved it in).
@@ -225,10 +227,12 @@ std::array<double, System::N> polish(const System& sys, const Box<System::N>& x,
 /// Newton in doubles from the centre of x; its limit, wherever it is, if the steps converged.
 /// (Any root may be certified and given its region: an ill-conditioned root is surrounded by
 /// boxes that cannot be excluded until its uniqueness region covers them, so it must be found
-/// from whichever of them is searched first.)
-template <class System>
-std::optional<std::array<double, System::N>> newton_limit(const System& sys, const Box<System::N>& x) {
+/// from whichever of them is searched first.) None once an iterate (the centre too) is `known` (inside a region
+/// whose one root is listed: nothing new there), which saves most of the steps.
+template <class System, class Known>
+std::optional<std::array<double, System::N>> newton_limit(const System& sys, const Box<System::N>& x, const Known& known) {
   std::array<double, System::N> y = centre<System::N>(x);
+  if (known(y)) return std::nullopt;
   const int chart = newton_chart(sys, x);
   double last = 0.0;
   for (int step = 0; step < 12; ++step) {
@@ -237,6 +241,7 @@ std::optional<std::array<double, System::N>> newton_limit(const System& sys, con
     for (int k = 0; k < System::N; ++k) y[k] -= dy(k);
     last = dy.cwiseAbs().maxCoeff();
     if (last < 1e-12 || last > 1.0) break;  // converged (to rounding) or thrown off
+    if (known(y)) return std::nullopt;
   }
   if (!(last < 1e-9)) return std::nullopt;
   return y;
@@ -364,6 +369,9 @@ class BoxSearch {
   bool split_lists(Node& node, double limit) const {
     bool split = false;
     for (int i = 0; i < kLists; ++i) {
+      const auto& list = node.lists[i];
+      if (std::none_of(list.begin(), list.end(), [&](const Item& x) { return width(x.d) * sys_.list_scale() > limit; }))
+        continue;  // nothing to split (the common case: no copy)
       std::vector<Item> out;
       for (const Item& item_i : node.lists[i]) {
         const Interval& d = item_i.d;
@@ -465,12 +473,19 @@ class BoxSearch {
   bool in_known_region(const Box<N>& x) const {
     return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) { return contains(u, x); });
   }
+  bool in_known_region(const std::array<double, N>& y) const {
+    return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) {
+      for (int k = 0; k < N; ++k)
+        if (!(y[k] >= u[k].inf() && y[k] <= u[k].sup())) return false;
+      return true;
+    });
+  }
 
   /// Newton from the centre of x; a limit (newton_limit) inside the domain and not yet known is
   /// certified (Krawczyk on a box of 1e-10 around it) and given its uniqueness region.
   /// Returns whether a region was added.
   bool certify_newton_root(const Box<N>& x) {
-    const auto y = box_search_detail::newton_limit(sys_, x);
+    const auto y = box_search_detail::newton_limit(sys_, x, [&](const std::array<double, N>& p) { return in_known_region(p); });
     if (!y || !in_domain(*y)) return false;
     // Radius 1e-10 first; an ill-conditioned root (Newton's limit only good to cond * 1e-16)
     // needs a wider box for K(X) to fit inside.

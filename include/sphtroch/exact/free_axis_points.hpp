@@ -121,8 +121,9 @@ Axis<T> face_axis(int face, const T& u, const T& v) {
   return x;
 }
 
-/// R_a(t) X = c0 + c1 cos t + c2 sin t with c0 = a (a . X), c1 = X - c0, c2 = a x X, and the
-/// derivatives of c0 and c2 along the axis's chart coordinates u, v (those of c1 are -dc0).
+/// R_a(t) X = c0 + c1 cos t + c2 sin t with c0 = a (a . X), c1 = X - c0, c2 = a x X, and (if
+/// `derivatives`; else left unset) the derivatives of c0 and c2 along the axis's chart
+/// coordinates u, v (those of c1 are -dc0).
 template <typename T>
 struct RotationTerms {
   Vec<T> c0, c1, c2;
@@ -130,12 +131,12 @@ struct RotationTerms {
 };
 
 template <typename T>
-RotationTerms<T> rotation_terms(const Axis<T>& a, const Vec<T>& x) {
+RotationTerms<T> rotation_terms(const Axis<T>& a, const Vec<T>& x, bool derivatives = true) {
   RotationTerms<T> r;
   const T ax = dot(a.a, x);
   r.c2 = cross(a.a, x);
   const Vec<T>* d[2] = {&a.du, &a.dv};
-  for (int k = 0; k < 2; ++k) {
+  for (int k = 0; k < 2 && derivatives; ++k) {
     const T dx = dot(*d[k], x);
     r.dc2[k] = cross(*d[k], x);
     for (int j = 0; j < 3; ++j) r.dc0[k][j] = (*d[k])[j] * ax + a.a[j] * dx;
@@ -240,6 +241,22 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
 
 constexpr double kFaceOverlap = 1.0 / 64;
 
+/// The mean-value form of nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle (a: A
+/// over the box; centre: A - B at the centre; gradient: its derivatives by (s_u, s_v, w_u, w_v,
+/// Delta) over the box; dx: box - centre). nu is tangent to the sphere at A and normal to Delta's
+/// direction, so Delta's coefficient is O(width): the components tested apart may vanish for
+/// different Deltas, this one only near a Delta where both do. Any nu keeps it valid.
+inline Interval delta_free_combination(const Interval a[3], const Interval centre[3], const Interval gradient[3][5],
+                                       const Interval dx[5]) {
+  double am[3], dm[3];
+  for (int j = 0; j < 3; ++j) am[j] = 0.5 * (a[j].inf() + a[j].sup()), dm[j] = 0.5 * (gradient[j][4].inf() + gradient[j][4].sup());
+  const double nu[3] = {am[1] * dm[2] - am[2] * dm[1], am[2] * dm[0] - am[0] * dm[2], am[0] * dm[1] - am[1] * dm[0]};
+  if (!(std::isfinite(nu[0]) && std::isfinite(nu[1]) && std::isfinite(nu[2]))) return Interval(-1.0, 1.0);
+  Interval m = nu[0] * centre[0] + nu[1] * centre[1] + nu[2] * centre[2];
+  for (int k = 0; k < 5; ++k) m += (nu[0] * gradient[0][k] + nu[1] * gradient[1][k] + nu[2] * gradient[2][k]) * dx[k];
+  return m;
+}
+
 }  // namespace free_axis_detail
 
 /// The free-axis system for box_search.hpp on one pair of cube faces (s on face sun_face of
@@ -280,8 +297,8 @@ class FreeAxisSystem {
     View v;
     v.box = x;
     v.centre = c;
-    terms(x, v.a, v.b);
-    terms(c, v.a_centre, v.b_centre);
+    terms(x, v.a, v.b, true);
+    terms(c, v.a_centre, v.b_centre, false);
     return v;
   }
 
@@ -297,7 +314,8 @@ class FreeAxisSystem {
   }
 
   /// Whether point i + 2 may satisfy its equations on the outer box x item.d: the plain enclosure,
-  /// then the mean-value form F(c) + J(X) (X - c).
+  /// then the mean-value form F(c) + J(X) (X - c) of each component of A - B and of the
+  /// combination in which Delta's coefficient vanishes at the box's middle.
   bool may_hold(const View& v, const ListItem& item, int i) const {
     using free_axis_detail::a_component;
     using free_axis_detail::b_component;
@@ -312,13 +330,15 @@ class FreeAxisSystem {
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
     dx[4] = item.d - centre_of(item.d);
+    Interval centre[3], gradient[3][5];
     for (int j = 0; j < 3; ++j) {
-      Interval m = a_component(v.a_centre, t[3], j) - b_component(v.b_centre[i], t[2], j), d[5];
-      free_axis_detail::component_gradient(v.a, v.b[i], t[0], t[1], n_interval_, j, d);
-      for (int k = 0; k < 5; ++k) m += d[k] * dx[k];
+      centre[j] = a_component(v.a_centre, t[3], j) - b_component(v.b_centre[i], t[2], j);
+      free_axis_detail::component_gradient(v.a, v.b[i], t[0], t[1], n_interval_, j, gradient[j]);
+      Interval m = centre[j];
+      for (int k = 0; k < 5; ++k) m += gradient[j][k] * dx[k];
       if (!may_vanish(m)) return false;
     }
-    return true;
+    return may_vanish(free_axis_detail::delta_free_combination(a, centre, gradient, dx));
   }
 
   /// Per point, the dropped component of A - B (see header), as base-3 digits; -1 when for some
@@ -410,12 +430,14 @@ class FreeAxisSystem {
   }
 
  private:
+  /// The rotation terms over x (with their derivatives if `derivatives`).
   void terms(const Outer& x, free_axis_detail::RotationTerms<Interval>& a,
-             std::array<free_axis_detail::RotationTerms<Interval>, kLists>& b) const {
+             std::array<free_axis_detail::RotationTerms<Interval>, kLists>& b, bool derivatives) const {
     using free_axis_detail::of_point;
-    a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]), of_point<Interval>(p_[0]));
+    a = free_axis_detail::rotation_terms(free_axis_detail::face_axis(planet_face_, x[2], x[3]), of_point<Interval>(p_[0]),
+                                         derivatives);
     const auto s = free_axis_detail::face_axis(sun_face_, x[0], x[1]);
-    for (int i = 0; i < kLists; ++i) b[i] = free_axis_detail::rotation_terms(s, of_point<Interval>(p_[i + 1]));
+    for (int i = 0; i < kLists; ++i) b[i] = free_axis_detail::rotation_terms(s, of_point<Interval>(p_[i + 1]), derivatives);
   }
 
   static Vector3d to_vector(const free_axis_detail::Vec<double>& a) { return {a[0], a[1], a[2]}; }

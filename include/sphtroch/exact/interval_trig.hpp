@@ -9,7 +9,7 @@
 // evaluated by the C library in round-to-nearest and widened outward by at least 2 ulps:
 // this rests on the library's error bound (glibc documents at most 1 ulp for sin/cos of a double
 // on x86-64; MPFR at 200 bits confirms it in test_precision_points.cpp). Whether an interior
-// extreme lies inside is decided with a margin (1e-9 of a quarter turn) in the safe direction: a
+// extreme lies inside is decided with a margin (4e-9 of a quarter turn) in the safe direction: a
 // doubtful extreme is counted, which only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once
 
@@ -35,12 +35,27 @@ namespace interval_trig_detail {
 inline double widen_down(double x) { return std::max(x - (std::fabs(x) * 0x1p-50 + 1e-300), -1.0); }
 inline double widen_up(double x) { return std::min(x + (std::fabs(x) * 0x1p-50 + 1e-300), 1.0); }
 
-/// Whether [lo, hi] may contain a point offset + k pi / 2 with k = 4 j + shift, in quarter turns
-/// from `base` (t = (x - base) / (pi / 2)); true when in doubt (a margin of 1e-9 quarter turn).
-inline bool may_contain_quarter(double t_lo, double t_hi, int shift) {
-  constexpr double kMargin = 1e-9;
-  const double a = (t_lo - shift) / 4 - kMargin, b = (t_hi - shift) / 4 + kMargin;
-  return std::floor(b) >= std::ceil(a);
+/// sin(x) and cos(x) in round-to-nearest: glibc's sincos (the same algorithm and bound as sin and
+/// cos, one argument reduction) where there is one.
+inline void sin_cos(double x, double& s, double& c) {
+#if defined(__GLIBC__)
+  ::sincos(x, &s, &c);
+#else
+  s = std::sin(x);
+  c = std::cos(x);
+#endif
+}
+
+/// Which quarter turns k pi / 2 (k mod 4: bit k) [lo, hi] may contain, given in quarter turns
+/// t = x / (pi / 2); a doubtful one counts (a margin of 4e-9 quarter turn each side).
+inline unsigned quarters_inside(double t_lo, double t_hi) {
+  constexpr double kMargin = 4e-9;
+  if (!(std::fabs(t_lo) < 0x1p40 && std::fabs(t_hi) < 0x1p40)) return 0xFu;  // beyond exact integer steps
+  const double first = std::ceil(t_lo - kMargin), last = std::floor(t_hi + kMargin);
+  if (!(last - first < 3.0)) return last >= first ? 0xFu : 0u;  // all four residues (or none)
+  unsigned bits = 0;
+  for (double k = first; k <= last; k += 1.0) bits |= 1u << static_cast<unsigned>(k - 4.0 * std::floor(k / 4.0));
+  return bits;
 }
 
 }  // namespace interval_trig_detail
@@ -51,18 +66,19 @@ inline std::pair<Interval, Interval> interval_sincos_in_nearest_mode(const Inter
   namespace d = interval_trig_detail;
   const double lo = x.inf(), hi = x.sup();
   if (!(hi - lo < 6.283)) return {Interval(-1.0, 1.0), Interval(-1.0, 1.0)};  // also NaN ends
-  if (lo == hi) {  // a point: no extreme inside
-    const double s = std::sin(lo), c = std::cos(lo);
-    return {Interval(d::widen_down(s), d::widen_up(s)), Interval(d::widen_down(c), d::widen_up(c))};
-  }
-  const double s_lo = std::sin(lo), s_hi = std::sin(hi), c_lo = std::cos(lo), c_hi = std::cos(hi);
+  double s_lo, c_lo, s_hi, c_hi;
+  d::sin_cos(lo, s_lo, c_lo);
+  if (lo == hi)  // a point: no extreme inside
+    return {Interval(d::widen_down(s_lo), d::widen_up(s_lo)), Interval(d::widen_down(c_lo), d::widen_up(c_lo))};
+  d::sin_cos(hi, s_hi, c_hi);
   constexpr double kQuarter = 1.5707963267948966;
   const double t_lo = lo / kQuarter, t_hi = hi / kQuarter;  // quarter turns; errors ~1e-14 << margin
   // Extremes inside: sin = 1 at quarter 1, -1 at quarter 3; cos = 1 at quarter 0, -1 at quarter 2 (mod 4).
-  const Interval sine(d::may_contain_quarter(t_lo, t_hi, 3) ? -1.0 : d::widen_down(std::min(s_lo, s_hi)),
-                      d::may_contain_quarter(t_lo, t_hi, 1) ? 1.0 : d::widen_up(std::max(s_lo, s_hi)));
-  const Interval cosine(d::may_contain_quarter(t_lo, t_hi, 2) ? -1.0 : d::widen_down(std::min(c_lo, c_hi)),
-                        d::may_contain_quarter(t_lo, t_hi, 0) ? 1.0 : d::widen_up(std::max(c_lo, c_hi)));
+  const unsigned inside = d::quarters_inside(t_lo, t_hi);
+  const Interval sine(inside & 8u ? -1.0 : d::widen_down(std::min(s_lo, s_hi)),
+                      inside & 2u ? 1.0 : d::widen_up(std::max(s_lo, s_hi)));
+  const Interval cosine(inside & 4u ? -1.0 : d::widen_down(std::min(c_lo, c_hi)),
+                        inside & 1u ? 1.0 : d::widen_up(std::max(c_lo, c_hi)));
   return {sine, cosine};
 }
 
@@ -88,11 +104,15 @@ inline Interval interval_sin(const Interval& x) { return interval_sincos(x).firs
 inline Interval interval_cos(const Interval& x) { return interval_sincos(x).second; }
 
 /// The same names for doubles, so that one template evaluates a function in either type.
-inline std::pair<double, double> interval_sincos(double x) { return {std::sin(x), std::cos(x)}; }
+inline std::pair<double, double> interval_sincos(double x) {
+  std::pair<double, double> r;
+  interval_trig_detail::sin_cos(x, r.first, r.second);
+  return r;
+}
 template <std::size_t N>
 std::array<std::pair<double, double>, N> interval_sincos_all(const std::array<double, N>& x) {
   std::array<std::pair<double, double>, N> out;
-  for (std::size_t k = 0; k < N; ++k) out[k] = {std::sin(x[k]), std::cos(x[k])};
+  for (std::size_t k = 0; k < N; ++k) out[k] = interval_sincos(x[k]);
   return out;
 }
 

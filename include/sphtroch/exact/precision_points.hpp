@@ -150,6 +150,31 @@ PointEquations<T> point_equations(const T& ca, const T& sa, const CarrierView<T>
   return e;
 }
 
+/// {sin, cos} of x + y from those of x and y (thin intervals stay thin: a few ulps wider).
+inline SinCos<Interval> angle_sum(const SinCos<Interval>& x, const SinCos<Interval>& y) {
+  return {x.first * y.second + x.second * y.first, x.second * y.second - x.first * y.first};
+}
+
+/// The mean-value form f(c) + sum_k df_k(X) (x_k - c_k): f's enclosure over the box (fc: f at the
+/// centre c, df: its gradient over the box X, dx: X - c; the last unknown is Delta).
+inline Interval mean_value(const Interval& fc, const Interval df[3], const Interval dx[3]) {
+  Interval m = fc;
+  for (int k = 0; k < 3; ++k) m += df[k] * dx[k];
+  return m;
+}
+
+/// The mean-value form of nu_u u + nu_v v, nu = (dv/dDelta, -du/dDelta) at the box's middle: its
+/// Delta coefficient is O(width), so the Delta interval hardly widens it (both u and v vanish at a
+/// root for one Delta; tested apart they may vanish for different ones). Any nu keeps it valid.
+inline Interval delta_free_combination(const Interval& u, const Interval& v, const Interval du[3], const Interval dv[3],
+                                       const Interval dx[3]) {
+  const double nu = 0.5 * (dv[2].inf() + dv[2].sup()), nv = -0.5 * (du[2].inf() + du[2].sup());
+  if (!(std::isfinite(nu) && std::isfinite(nv))) return Interval(-1.0, 1.0);  // no information
+  Interval m = nu * u + nv * v;
+  for (int k = 0; k < 3; ++k) m += (nu * du[k] + nv * dv[k]) * dx[k];
+  return m;
+}
+
 /// p^-1 modulo q (gcd(p, q) = 1, q >= 1).
 inline std::int64_t inverse_mod(std::int64_t p, std::int64_t q) {
   std::int64_t a = ((p % q) + q) % q, b = q, x0 = 1, x1 = 0;
@@ -249,7 +274,7 @@ inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
 class FixedFrameSystem {
  public:
   static constexpr int kOuter = 2, kLists = 2, N = 4;
-  static constexpr double kIsolateWidth = 1.0 / 64;  // outer boxes this narrow go to Krawczyk
+  static constexpr double kIsolateWidth = 1.0 / 256;  // outer boxes this narrow go to Krawczyk
   using Outer = std::array<Interval, kOuter>;
 
   /// Throws InvalidInput (field "points") as precision_points() does.
@@ -269,6 +294,7 @@ class FixedFrameSystem {
     precision_detail::CarrierView<Interval> q1;
     Interval a2_centre, theta1_centre, ca_centre, sa_centre;
     precision_detail::CarrierView<Interval> q1_centre;
+    precision_detail::SinCos<Interval> theta1_centre_trig;
   };
 
   View view(const Outer& x) const {
@@ -276,34 +302,39 @@ class FixedFrameSystem {
     const auto trig = interval_sincos_all<4>({x[0], x[1], a2c, t1c});
     const Interval &sa = trig[0].first, &ca = trig[0].second, &sac = trig[2].first, &cac = trig[2].second;
     return {x[0], x[1], ca, sa, precision_detail::carrier_view(ca, sa, trig[1], p_[0]),
-            a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0])};
+            a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0]), trig[3]};
   }
 
-  /// An interval of Delta_(i+2) as the search carries it (nothing computed ahead).
+  /// An interval of Delta_(i+2) with {sin, cos} of n Delta over it and at its centre, and of
+  /// Delta at its centre, computed once for every outer box it meets.
   struct ListItem {
     Interval d;
+    std::array<precision_detail::SinCos<Interval>, 3> trig;  // n d, n centre, centre
   };
-  ListItem list_item(const Interval& d, int /*i*/) const { return {d}; }
+  ListItem list_item(const Interval& d, int /*i*/) const {
+    const Interval c = centre_of(d);
+    return {d, interval_sincos_all<3>({n_interval_ * d, n_interval_ * c, c})};
+  }
 
-  /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x item.d.
+  /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x item.d: the plain
+  /// enclosure, the mean-value form F(c) + J(X) (X - c), and that form for the combinations of
+  /// (f, g) and of (x, y) in which Delta's coefficient vanishes at the centre.
   bool may_hold(const View& v, const ListItem& item, int i) const {
     const Interval& delta = item.d;
     const Interval dc = centre_of(delta);
-    const auto trig = interval_sincos_all<4>({v.theta1 + delta, n_interval_ * delta, v.theta1_centre + dc,
-                                              n_interval_ * dc});
-    const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig[0], trig[1], n_interval_, p_[i + 1], true);
+    const auto trig = interval_sincos(v.theta1 + delta);
+    const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig, item.trig[0], n_interval_, p_[i + 1], true);
     if (!(may_vanish(e.f) && may_vanish(e.g) && may_vanish(e.dx) && may_vanish(e.dy) && e.dot.sup() > 0.0)) return false;
-    // Mean-value form F(X) in F(c) + J(X) (X - c): much tighter than the plain one on small boxes.
-    const auto ec = precision_detail::point_equations(v.ca_centre, v.sa_centre, v.q1_centre, trig[2], trig[3], n_interval_, p_[i + 1], false);
+    const auto ec = precision_detail::point_equations(v.ca_centre, v.sa_centre, v.q1_centre,
+                                                      precision_detail::angle_sum(v.theta1_centre_trig, item.trig[2]),
+                                                      item.trig[1], n_interval_, p_[i + 1], false);
     const Interval dx[3] = {v.a2 - v.a2_centre, v.theta1 - v.theta1_centre, delta - dc};
-    Interval f = ec.f, g = ec.g, x = ec.dx, y = ec.dy;
-    for (int k = 0; k < 3; ++k) {
-      f += e.df[k] * dx[k];
-      g += e.dg[k] * dx[k];
-      x += e.ddx[k] * dx[k];
-      y += e.ddy[k] * dx[k];
-    }
-    return may_vanish(f) && may_vanish(g) && may_vanish(x) && may_vanish(y);
+    using precision_detail::mean_value;
+    if (!(may_vanish(mean_value(ec.f, e.df, dx)) && may_vanish(mean_value(ec.g, e.dg, dx)) &&
+          may_vanish(mean_value(ec.dx, e.ddx, dx)) && may_vanish(mean_value(ec.dy, e.ddy, dx))))
+      return false;
+    return may_vanish(precision_detail::delta_free_combination(ec.f, ec.g, e.df, e.dg, dx)) &&
+           may_vanish(precision_detail::delta_free_combination(ec.dx, ec.dy, e.ddx, e.ddy, dx));
   }
 
   /// The formulation for a box of all unknowns: 1 (x and y of Q_i - W) where point 1 is within
@@ -346,7 +377,7 @@ class FixedFrameSystem {
       const auto e = precision_detail::point_equations(ca, sa, q1, interval_sincos(y[1] + y[2 + i]), interval_sincos(ratio_.value() * y[2 + i]),
                                      ratio_.value(), p_[1 + i], false);
       // A mirror root of chart 1 (Q_iz = -W_z, |W_z| > kPoleChart) has |f| > 1.5; a true root,
-      // polished or not, |f| < 0.5 (its box is narrower than 1/64).
+      // polished or not, |f| < 0.5 (its box is narrower than kIsolateWidth).
       if (!(e.dot > 0.0) || !(std::fabs(e.f) < 0.5)) return std::nullopt;
     }
     auto s = train_through_points(ratio_, y[0], q1.q, {y[1], y[1] + y[2], y[1] + y[3]}, isolated);
