@@ -265,6 +265,7 @@ class FreeAxisSystem {
  public:
   static constexpr int kOuter = 4, kLists = 4, N = 8;
   static constexpr double kIsolateWidth = 1.0 / 32;
+  static constexpr double kMeanValueWidth = 0.5;  // may_hold's mean-value forms on boxes this narrow
   using Outer = std::array<Interval, kOuter>;
 
   /// REQUIRES: five points checked by checked_precision_points.
@@ -289,6 +290,7 @@ class FreeAxisSystem {
     free_axis_detail::RotationTerms<Interval> a, a_centre;
     std::array<free_axis_detail::RotationTerms<Interval>, kLists> b, b_centre;
     Outer box, centre;
+    double width;  // of the widest outer unknown
   };
 
   View view(const Outer& x) const {
@@ -297,6 +299,8 @@ class FreeAxisSystem {
     View v;
     v.box = x;
     v.centre = c;
+    v.width = 0.0;
+    for (const Interval& xk : x) v.width = std::max(v.width, xk.sup() - xk.inf());
     terms(x, v.a, v.b, true);
     terms(c, v.a_centre, v.b_centre, false);
     return v;
@@ -327,6 +331,7 @@ class FreeAxisSystem {
       if (!may_vanish(a[j] - b[j])) return false;
     }
     if (!((a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0)) return false;  // A . B > 0
+    if (v.width > kMeanValueWidth) return true;  // wider, the forms below hardly ever prune
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
     dx[4] = item.d - centre_of(item.d);
