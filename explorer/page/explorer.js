@@ -321,7 +321,12 @@
     const r = result, theta = view.theta % r.period;
     const ap = r.planetCone, as = r.a2 - ap;
     const axis = [Math.sin(r.a2) * Math.sin(theta), -Math.sin(r.a2) * Math.cos(theta), Math.cos(r.a2)];
-    if (as > 1e-9 && as < Math.PI - 1e-9) strokeRuns(ctx, circlePoints([0, 0, 1], as), 180, '#1d6fd8', 'rgba(29,111,216,0.25)', true);
+    const sunDrawn = as > 1e-9 && as < Math.PI - 1e-9;
+    if ($('cones').checked) {
+      if (sunDrawn) drawCone(ctx, [0, 0, 1], as, '29,111,216');
+      drawCone(ctx, axis, ap, '42,157,75');
+    }
+    if (sunDrawn) strokeRuns(ctx, circlePoints([0, 0, 1], as), 180, '#1d6fd8', 'rgba(29,111,216,0.25)', true);
     strokeRuns(ctx, circlePoints(axis, ap), 180, '#2a9d4b', 'rgba(42,157,75,0.25)', true);
     const count = curve.points.length / 3;
     const i = Math.round(theta / r.period * count) % count;
@@ -338,6 +343,30 @@
     ctx.fill();
   }
 
+  // A pitch cone: apex at the centre, half-angle `angle` about `axis`, its base the pitch circle on
+  // the sphere: a light surface and a generator every 30 degrees (front solid, back faint).
+  function drawCone(ctx, axis, angle, rgb) {
+    const pts = circlePoints(axis, angle), count = pts.length / 3;
+    const apex = project([0, 0, 0]);
+    const at = (k) => project([pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]]);
+    ctx.beginPath();
+    for (let k = 0; k < count; ++k) {
+      const a = at(k), b = at((k + 1) % count);
+      ctx.moveTo(apex[0], apex[1]); ctx.lineTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.closePath();
+    }
+    ctx.fillStyle = 'rgba(' + rgb + ',0.08)';
+    ctx.fill('nonzero');
+    for (let k = 0; k < count; k += count / 12) {
+      const a = at(k);
+      ctx.beginPath();
+      ctx.moveTo(apex[0], apex[1]);
+      ctx.lineTo(a[0], a[1]);
+      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.12 : 0.45) + ')';
+      ctx.lineWidth = 0.8;
+      ctx.stroke();
+    }
+  }
+
   function setupSphereInput() {
     const canvas = $('sphere');
     let drag = null;
@@ -350,6 +379,7 @@
       drawSphere();
     });
     canvas.addEventListener('pointerup', () => { drag = null; });
+    $('cones').addEventListener('change', drawSphere);
     canvas.addEventListener('wheel', (ev) => {
       ev.preventDefault();
       const rect = canvas.getBoundingClientRect();

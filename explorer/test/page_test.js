@@ -6,7 +6,8 @@
 //  - bad input: the CLI's one-line message and no number left from before;
 //  - a drag on the a2 slider and a click on the design map move the state as they should;
 //  - the exported scene JSON runs with `sphtroch scene` and gives the page's counts;
-//  - no console error; a screenshot where the sphere and the map are drawn (not blank).
+//  - no console error; a screenshot where the sphere and the map are drawn (not blank); the pitch
+//    cones drawn (turning them off and on changes the sphere's pixels, in the cones' colours).
 // Exit status 0 when every check holds; each failure is printed.
 'use strict';
 const path = require('path');
@@ -205,6 +206,24 @@ async function checkDrawn(page) {
   });
   check(inked.sphere.dark > 2000, 'the sphere view is blank: ' + JSON.stringify(inked.sphere));
   check(inked.map.colours >= 5, 'the design map is blank: ' + JSON.stringify(inked.map));
+  // The pitch cones: with the animation stopped, turning them off and on again changes thousands
+  // of pixels of the sphere, the changed ones tinted blue or green (the cones' colours).
+  await page.uncheck('#animate');
+  const pixels = () => page.evaluate(() => {
+    const c = document.querySelector('[data-testid="sphere"]');
+    return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
+  });
+  await page.uncheck('[data-testid="cones"]');
+  const off = await pixels();
+  await page.check('[data-testid="cones"]');
+  const on = await pixels();
+  let changed = 0, tinted = 0;
+  for (let i = 0; i < on.length; i += 4) {
+    if (on[i] === off[i] && on[i + 1] === off[i + 1] && on[i + 2] === off[i + 2]) continue;
+    ++changed;
+    if (on[i + 2] > on[i] || on[i + 1] > on[i]) ++tinted;
+  }
+  check(changed > 2000 && tinted > 0.9 * changed, 'the pitch cones are not drawn: ' + changed + ' pixels changed, ' + tinted + ' tinted');
 }
 
 (async () => {
@@ -224,6 +243,6 @@ async function checkDrawn(page) {
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });
