@@ -498,18 +498,34 @@
     }
   }
 
+  // The legend by area: the (at most 8) node counts covering most of the map, each with its share
+  // of the cells; the rest summed. data-count / data-cells on each entry (tests read them).
   function renderLegend() {
     const legend = $('map-legend');
     legend.textContent = '';
-    const values = Array.from(new Set(map.counts)).sort((a, b) => a - b);
-    const shown = values.length <= 8 ? values : [values[0], values[Math.floor(values.length / 3)], values[Math.floor(2 * values.length / 3)], values[values.length - 1]];
-    for (const v of shown) {
+    const cells = new Map();
+    for (const c of map.counts) cells.set(c, (cells.get(c) || 0) + 1);
+    const byArea = Array.from(cells.entries()).sort((a, b) => b[1] - a[1] || a[0] - b[0]);
+    const total = map.counts.length, share = (k) => (100 * k / total).toFixed(1) + '%';
+    for (const [count, k] of byArea.slice(0, 8).sort((a, b) => a[0] - b[0])) {
       const item = document.createElement('span');
       item.className = 'swatch';
-      item.innerHTML = '<i style="background:' + countColour(v, map.max) + '"></i>' + v + ' nodes';
+      item.dataset.testid = 'legend-entry';
+      item.dataset.count = count;
+      item.dataset.cells = k;
+      item.innerHTML = '<i style="background:' + countColour(count, map.max) + '"></i>' +
+        (count < 0 ? 'not certified' : count + ' nodes') + ' <small>' + share(k) + '</small>';
       legend.appendChild(item);
     }
-    if (values.length > 8) legend.appendChild(document.createTextNode(' (a shade per count; ' + values.length + ' counts)'));
+    if (byArea.length > 8) {
+      const rest = byArea.slice(8).reduce((sum, e) => sum + e[1], 0);
+      const note = document.createElement('span');
+      note.dataset.testid = 'legend-rest';
+      note.dataset.counts = byArea.length - 8;
+      note.dataset.cells = rest;
+      note.textContent = ' and ' + (byArea.length - 8) + ' more counts on ' + share(rest) + ' (a shade per count)';
+      legend.appendChild(note);
+    }
   }
 
   function setupMapInput() {

@@ -206,6 +206,18 @@ async function checkDrawn(page) {
   });
   check(inked.sphere.dark > 2000, 'the sphere view is blank: ' + JSON.stringify(inked.sphere));
   check(inked.map.colours >= 5, 'the design map is blank: ' + JSON.stringify(inked.map));
+  // The legend by area (n = 13/5, 128^2 cells): the shown counts and the rest cover every cell,
+  // no hidden count covers more than a shown one, and every count is a multiple of |p| = 13.
+  const legend = await page.evaluate(() => ({
+    entries: Array.from(document.querySelectorAll('[data-testid="legend-entry"]')).map((e) => [Number(e.dataset.count), Number(e.dataset.cells)]),
+    rest: (() => { const r = document.querySelector('[data-testid="legend-rest"]'); return r ? [Number(r.dataset.counts), Number(r.dataset.cells)] : [0, 0]; })(),
+  }));
+  const shownCells = legend.entries.reduce((sum, e) => sum + e[1], 0);
+  check(legend.entries.length >= 1 && legend.entries.length <= 8, 'legend entries: ' + JSON.stringify(legend));
+  check(shownCells + legend.rest[1] === 128 * 128, 'the legend does not cover the map: ' + JSON.stringify(legend));
+  check(legend.rest[0] === 0 || Math.min(...legend.entries.map((e) => e[1])) * legend.rest[0] >= legend.rest[1],
+    'a hidden count covers more than a shown one: ' + JSON.stringify(legend));
+  check(legend.entries.every((e) => e[0] < 0 || e[0] % 13 === 0), 'a count not in sets of 13: ' + JSON.stringify(legend));
   // The pitch cones: with the animation stopped, turning them off and on again changes thousands
   // of pixels of the sphere, the changed ones tinted blue or green (the cones' colours).
   await page.uncheck('#animate');
@@ -243,6 +255,6 @@ async function checkDrawn(page) {
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn, legend, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });
