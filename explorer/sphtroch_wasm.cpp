@@ -12,16 +12,19 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/synthesis/path_fit.hpp"
 
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
@@ -257,6 +260,46 @@ val loci(const std::string& n, const std::string& teeth, double steps) {
   });
 }
 
+/// Inverse design: the trains of ratio n (or teeth) nearest a path given as the text of `sphtroch
+/// synth fit --input` (CSV rows x,y,z, or a header naming x, y, z), best first, optionally with a
+/// wanted node count ("" = any). Read by the CLI's reader (the text goes to a file of the module's
+/// memory file system named "points": errors name it) and fitted by fit_path, one thread. Each
+/// candidate: {n, a2, a3, phase, rms, maxDeviation, margin, rootNodes} (radians); the page then
+/// classifies it as any state (its count check). {candidates: [], reason} when none can be.
+val fit(const std::string& points, const std::string& n, const std::string& teeth, const std::string& nodes) {
+  return guarded([&] {
+    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    sphtroch::FitOptions options;
+    if (!nodes.empty()) {
+      // As `sphtroch synth fit --nodes` reads it.
+      const std::string range = "integer 0 .. 100000000";
+      if (nodes.find_first_not_of("0123456789") != std::string::npos || nodes.size() > 9)
+        throw sphtroch::InvalidInput("nodes", nodes, "not a whole number", range);
+      const std::int64_t k = std::stoll(nodes);
+      if (k > 100000000) throw sphtroch::InvalidInput("nodes", nodes, "outside the valid range", range);
+      options.nodes = k;
+    }
+    if (FILE* f = std::fopen("points", "wb")) {  // the module's memory file system
+      std::fwrite(points.data(), 1, points.size(), f);
+      std::fclose(f);
+    }
+    const sphtroch::PathFit r = sphtroch::fit_path(sphtroch::read_polyline("points", "points", 1).vertices, ratio, options);
+    val list = val::array();
+    for (const sphtroch::FitCandidate& c : r.candidates) {
+      val item = train_object(c.train);
+      item.set("rms", c.rms);
+      item.set("maxDeviation", c.max_deviation);
+      item.set("margin", c.margin);
+      item.set("rootNodes", static_cast<double>(c.root_nodes));
+      list.call<void>("push", item);
+    }
+    val out = val::object();
+    out.set("candidates", list);
+    out.set("reason", r.reason);
+    return out;
+  });
+}
+
 /// A shortest round-trip text of a double (what the CLI prints for it).
 std::string number_text(double v) { return sphtroch::number_text(v); }
 
@@ -269,4 +312,5 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("mapCounts", &map_counts);
   emscripten::function("loci", &loci);
   emscripten::function("numberText", &number_text);
+  emscripten::function("fit", &fit);
 }

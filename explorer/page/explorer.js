@@ -313,6 +313,7 @@
       ctx.fill();
     }
     drawTrain(ctx);
+    drawPath(ctx);
   }
 
   // The train at carrier angle theta: the sun's pitch circle (angle a_s about Z), the planet's
@@ -514,7 +515,7 @@
       item.dataset.count = count;
       item.dataset.cells = k;
       item.innerHTML = '<i style="background:' + countColour(count, map.max) + '"></i>' +
-        (count < 0 ? 'not certified' : count + ' nodes') + ' <small>' + share(k) + '</small>';
+        (count < 0 ? 'not certified' : count + ' nodes') + ' <small>(' + share(k) + ')</small>';
       legend.appendChild(item);
     }
     if (byArea.length > 8) {
@@ -543,6 +544,104 @@
     canvas.addEventListener('pointerdown', (ev) => { dragging = true; canvas.setPointerCapture(ev.pointerId); pick(ev); });
     canvas.addEventListener('pointermove', (ev) => { if (dragging) pick(ev); });
     canvas.addEventListener('pointerup', () => { dragging = false; });
+  }
+
+  // ---- inverse design: fit a path ------------------------------------------------------------
+  // The wanted path: the textarea's points (drawn on the sphere as small squares). Shift-click on
+  // the front of the sphere adds the point under the pointer (project() inverted).
+  // (For drawing only: the fit reads the text with the CLI's reader.) Columns x, y, z by the
+  // header's names when there is one, else the first three.
+  function pathPoints() {
+    const out = [];
+    let columns = [0, 1, 2];
+    for (const line of $('path-input').value.split('\n')) {
+      const cells = line.split(',').map((c) => c.trim().replace(/^"|"$/g, '').toLowerCase());
+      if (cells.some((c) => /[a-z]/.test(c) && !/^[-+.\d]+e[-+]?\d+$/.test(c))) {
+        columns = ['x', 'y', 'z'].map((name) => cells.indexOf(name));
+        continue;
+      }
+      const v = columns.map((k) => Number(cells[k]));
+      if (v.every(Number.isFinite)) out.push(v);
+    }
+    return out;
+  }
+
+  function unproject(canvas, ev) {
+    const rect = canvas.getBoundingClientRect();
+    const radius = 0.46 * canvas.width * view.zoom;
+    const x1 = ((ev.clientX - rect.left) * canvas.width / rect.width - canvas.width / 2 - view.panX) / radius;
+    const z2 = -((ev.clientY - rect.top) * canvas.height / rect.height - canvas.height / 2 - view.panY) / radius;
+    if (x1 * x1 + z2 * z2 >= 1) return null;
+    const y2 = -Math.sqrt(1 - x1 * x1 - z2 * z2);  // the front half (project(): y2 < 0)
+    const cs = Math.cos(view.spin), ss = Math.sin(view.spin), ct = Math.cos(view.tilt), st = Math.sin(view.tilt);
+    const y1 = ct * y2 + st * z2, z1 = -st * y2 + ct * z2;
+    return [cs * x1 + ss * y1, -ss * x1 + cs * y1, z1];
+  }
+
+  function drawPath(ctx) {
+    for (const p of pathPoints()) {
+      const s = project(p);
+      ctx.fillStyle = s[2] ? '#000' : 'rgba(0,0,0,0.3)';
+      ctx.fillRect(s[0] - 2.5, s[1] - 2.5, 5, 5);
+    }
+  }
+
+  // Fits with the current n (or teeth), shows each candidate with the page's own census of it.
+  function runFit() {
+    const body = byTestId('candidates').querySelector('tbody');
+    body.textContent = '';
+    byTestId('fit-error').textContent = '';
+    byTestId('fit-status').textContent = 'fitting';
+    const start = performance.now();
+    const r = lib.fit($('path-input').value, state.n, state.teeth, $('fit-nodes').value.trim());
+    if (r.error) {
+      byTestId('fit-error').textContent = r.error;
+      byTestId('fit-status').textContent = '';
+      return;
+    }
+    byTestId('fit-status').textContent = r.candidates.length + ' candidate(s), ' + (performance.now() - start).toFixed(0) +
+      ' ms' + (r.reason ? ': ' + r.reason : '');
+    r.candidates.forEach((c, k) => body.appendChild(candidateRow(c, k)));
+  }
+
+  function candidateRow(c, k) {
+    const texts = { a2: lib.numberText(c.a2), a3: lib.numberText(c.a3), phase: lib.numberText(c.phase) };
+    const census = lib.classify(texts.a2, texts.a3, c.n, texts.phase, '');
+    const row = document.createElement('tr');
+    row.dataset.testid = 'candidate';
+    Object.assign(row.dataset, { n: c.n, a2: texts.a2, a3: texts.a3, phase: texts.phase });
+    if (!census.error) Object.assign(row.dataset, { nodes: census.nodes, cusps: census.cusps, certified: census.certified ? '1' : '0' });
+    const cells = [k + 1, c.n, fmt(c.a2), fmt(c.a3), fmt(c.phase), c.rms.toExponential(2), c.maxDeviation.toExponential(2),
+      fmt(c.margin), census.error ? '' : census.nodes, census.error ? '' : census.cusps,
+      census.error ? census.error : census.certified ? 'two censuses agree' : 'not certified here'];
+    for (const v of cells) row.appendChild(Object.assign(document.createElement('td'), { textContent: String(v) }));
+    const use = Object.assign(document.createElement('button'), { type: 'button', textContent: 'use' });
+    use.dataset.testid = 'use-candidate';
+    use.addEventListener('click', () => {
+      state = { a2: texts.a2, a3: texts.a3, n: c.n, teeth: '', phase: texts.phase };
+      fillFields();
+      update(true);
+    });
+    const last = document.createElement('td');
+    last.appendChild(use);
+    row.appendChild(last);
+    return row;
+  }
+
+  function setupFit() {
+    $('fit').addEventListener('click', runFit);
+    $('clear-path').addEventListener('click', () => { $('path-input').value = ''; drawSphere(); });
+    $('path-input').addEventListener('input', drawSphere);
+    $('sphere').addEventListener('click', (ev) => {
+      if (!ev.shiftKey) return;
+      const p = unproject($('sphere'), ev);
+      if (!p) return;
+      const area = $('path-input');
+      if (area.value.trim() === '') area.value = 'x,y,z\n';
+      else if (!area.value.endsWith('\n')) area.value += '\n';
+      area.value += p.map((v) => lib.numberText(v)).join(',') + '\n';
+      drawSphere();
+    });
   }
 
   // ---- controls and exports -------------------------------------------------------------------
@@ -620,6 +719,7 @@
     setupControls();
     setupSphereInput();
     setupMapInput();
+    setupFit();
     update(false);
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, state), nodePositions: () => (result ? Array.from(result.nodePositions) : []),

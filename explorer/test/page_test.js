@@ -186,6 +186,48 @@ async function checkSceneExport(page) {
   check(Number(listed) === Number(got.nodes) + Number(got.cusps), 'node list: ' + listed + ' rows for ' + got.nodes + ' nodes');
 }
 
+// Inverse design: the CSV of `sphtroch trace` pasted as the path gives back its train first (a2,
+// a3 to 1e-6), each candidate's census equals `sphtroch classify` of the printed train, "use" makes
+// it the design; bad points and a bad node count show the CLI's line and no candidate; a
+// shift-click on the sphere adds a unit vector.
+async function checkInverseDesign(page) {
+  const hidden = { a2: '1.1', a3: '0.9', n: '2', phase: '0.4' };
+  const csv = cli(['trace', ...trainArgs(hidden), '--samples', '48']).stdout;
+  await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }));
+  await page.fill('[data-testid="path-input"]', csv);
+  await page.click('[data-testid="fit"]');
+  await page.waitForSelector('[data-testid="candidate"]', { timeout: 60000 });
+  const rows = await page.$$eval('[data-testid="candidate"]', (els) => els.map((e) => Object.assign({}, e.dataset)));
+  check(rows.length >= 1 && Math.abs(Number(rows[0].a2) - 1.1) < 1e-6 && Math.abs(Number(rows[0].a3) - 0.9) < 1e-6,
+    'inverse design: the traced train is not first: ' + JSON.stringify(rows[0]));
+  for (const r of rows) {
+    const c = cli(['classify', '--a2', r.a2, '--a3', r.a3, '--n', r.n, '--phase', r.phase, '--json']);
+    const j = c.status === 0 ? JSON.parse(c.stdout) : null;
+    check(j && j.certified && Number(r.nodes) === j.counts.nodes && Number(r.cusps) === j.counts.cusps,
+      'inverse design: a candidate\'s census differs from sphtroch classify: ' + JSON.stringify(r) + ' ' + c.stdout.slice(0, 200));
+  }
+  await page.click('[data-testid="use-candidate"]');
+  const usedState = await page.evaluate(() => window.sphtrochExplorer.state());
+  const used = await readPage(page);
+  check(usedState.a2 === rows[0].a2 && usedState.a3 === rows[0].a3 && used.nodes === rows[0].nodes,
+    'inverse design: "use" did not make the candidate the design: ' + JSON.stringify(usedState) + ' nodes ' + used.nodes);
+  for (const [text, nodes, field] of [['x,y,z\n1,2\n', '', '--points'], [csv, 'x', '--nodes']]) {
+    await page.fill('[data-testid="path-input"]', text);
+    await page.fill('[data-testid="fit-nodes"]', nodes);
+    await page.click('[data-testid="fit"]');
+    const error = await page.textContent('[data-testid="fit-error"]');
+    const count = await page.$$eval('[data-testid="candidate"]', (els) => els.length);
+    check(error.startsWith('sphtroch: ' + field) && count === 0, 'inverse design: bad ' + field + ' gave "' + error + '" and ' + count + ' candidates');
+  }
+  await page.fill('[data-testid="path-input"]', '');
+  const box = await page.locator('[data-testid="sphere"]').boundingBox();
+  await page.click('[data-testid="sphere"]', { modifiers: ['Shift'], position: { x: box.width * 0.45, y: box.height * 0.4 } });
+  const added = (await page.inputValue('[data-testid="path-input"]')).trim().split('\n');
+  const p = added.length === 2 ? added[1].split(',').map(Number) : [];
+  check(added[0] === 'x,y,z' && p.length === 3 && Math.abs(Math.hypot(...p) - 1) < 1e-12,
+    'inverse design: a shift-click did not add a point on the sphere: ' + JSON.stringify(added));
+}
+
 async function checkDrawn(page) {
   await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
   await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 60000 });
@@ -249,12 +291,13 @@ async function checkDrawn(page) {
     await checkBadInput(page);
     await checkSliderAndMap(page);
     await checkSceneExport(page);
+    await checkInverseDesign(page);
     await checkDrawn(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, drawn, legend, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, inverse design, drawn, legend, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });
