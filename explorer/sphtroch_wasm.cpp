@@ -24,8 +24,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -260,6 +263,10 @@ val loci(const std::string& n, const std::string& teeth, double steps) {
   });
 }
 
+/// The page's bound on a fit's work (fit_path's unit: points x (2|p| + 30), ~0.5 us each natively):
+/// about a second natively, a few in the page, whose main thread waits for it.
+constexpr double kPageFitWork = 2e6;
+
 /// Inverse design: the trains of ratio n (or teeth) nearest a path given as the text of `sphtroch
 /// synth fit --input` (CSV rows x,y,z, or a header naming x, y, z), best first, optionally with a
 /// wanted node count ("" = any). Read by the CLI's reader (the text goes to a file of the module's
@@ -271,19 +278,26 @@ val fit(const std::string& points, const std::string& n, const std::string& teet
     const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
     sphtroch::FitOptions options;
     if (!nodes.empty()) {
-      // As `sphtroch synth fit --nodes` reads it.
+      // As `sphtroch synth fit --nodes` reads it (src/cli: parse_count).
       const std::string range = "integer 0 .. 100000000";
-      if (nodes.find_first_not_of("0123456789") != std::string::npos || nodes.size() > 9)
+      if (nodes.find_first_not_of("0123456789") != std::string::npos)
         throw sphtroch::InvalidInput("nodes", nodes, "not a whole number", range);
-      const std::int64_t k = std::stoll(nodes);
-      if (k > 100000000) throw sphtroch::InvalidInput("nodes", nodes, "outside the valid range", range);
-      options.nodes = k;
+      errno = 0;
+      const unsigned long long k = std::strtoull(nodes.c_str(), nullptr, 10);
+      if (errno == ERANGE || k > 100000000) throw sphtroch::InvalidInput("nodes", nodes, "outside the valid range", range);
+      options.nodes = static_cast<std::int64_t>(k);
     }
-    if (FILE* f = std::fopen("points", "wb")) {  // the module's memory file system
-      std::fwrite(points.data(), 1, points.size(), f);
-      std::fclose(f);
-    }
-    const sphtroch::PathFit r = sphtroch::fit_path(sphtroch::read_polyline("points", "points", 1).vertices, ratio, options);
+    FILE* f = std::fopen("points", "wb");  // the module's memory file system
+    const bool written = f && std::fwrite(points.data(), 1, points.size(), f) == points.size();
+    if (!f || std::fclose(f) != 0 || !written) throw std::runtime_error("the path could not be handed to the reader");
+    const std::vector<sphtroch::Vector3d> path = sphtroch::read_polyline("points", "points", 1).vertices;
+    const double per_point = 2 * static_cast<double>(ratio.abs_p()) + 30;  // fit_path's work per point
+    if (static_cast<double>(path.size()) * per_point > kPageFitWork)
+      throw sphtroch::InvalidInput("points", std::to_string(path.size()) + " points",
+                                  "more than the page fits at once (points x (2|p| + 30) > 2e6)",
+                                  "at most " + std::to_string(static_cast<long long>(kPageFitWork / per_point)) +
+                                      " points for n = " + ratio.str() + " (sphtroch synth fit takes more)");
+    const sphtroch::PathFit r = sphtroch::fit_path(path, ratio, options);
     val list = val::array();
     for (const sphtroch::FitCandidate& c : r.candidates) {
       val item = train_object(c.train);

@@ -362,7 +362,7 @@
       ctx.beginPath();
       ctx.moveTo(apex[0], apex[1]);
       ctx.lineTo(a[0], a[1]);
-      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.12 : 0.45) + ')';
+      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.45 : 0.12) + ')';  // project(): [2] is true in front
       ctx.lineWidth = 0.8;
       ctx.stroke();
     }
@@ -524,6 +524,8 @@
       note.dataset.testid = 'legend-rest';
       note.dataset.counts = byArea.length - 8;
       note.dataset.cells = rest;
+      note.dataset.largest = byArea[8][1];
+      note.dataset.values = byArea.slice(8).map((e) => e[0]).join(' ');
       note.textContent = ' and ' + (byArea.length - 8) + ' more counts on ' + share(rest) + ' (a shade per count)';
       legend.appendChild(note);
     }
@@ -578,8 +580,16 @@
     return [cs * x1 + ss * y1, -ss * x1 + cs * y1, z1];
   }
 
+  // The path as drawn: parsed when the text changes (not every frame), at most 2,000 squares.
+  let pathShown = [];
+  function pathChanged() {
+    const all = pathPoints(), step = Math.max(1, Math.ceil(all.length / 2000));
+    pathShown = all.filter((_, k) => k % step === 0);
+    drawSphere();
+  }
+
   function drawPath(ctx) {
-    for (const p of pathPoints()) {
+    for (const p of pathShown) {
       const s = project(p);
       ctx.fillStyle = s[2] ? '#000' : 'rgba(0,0,0,0.3)';
       ctx.fillRect(s[0] - 2.5, s[1] - 2.5, 5, 5);
@@ -591,9 +601,14 @@
     const body = byTestId('candidates').querySelector('tbody');
     body.textContent = '';
     byTestId('fit-error').textContent = '';
-    byTestId('fit-status').textContent = 'fitting';
+    byTestId('fit-status').textContent = '';
     const start = performance.now();
-    const r = lib.fit($('path-input').value, state.n, state.teeth, $('fit-nodes').value.trim());
+    let r;
+    try {
+      r = lib.fit($('path-input').value, state.n, state.teeth, $('fit-nodes').value.trim());
+    } catch (e) {  // the module returns errors; this is only for a failure of the module itself
+      r = { error: 'sphtroch: internal error: ' + e };
+    }
     if (r.error) {
       byTestId('fit-error').textContent = r.error;
       byTestId('fit-status').textContent = '';
@@ -630,8 +645,8 @@
 
   function setupFit() {
     $('fit').addEventListener('click', runFit);
-    $('clear-path').addEventListener('click', () => { $('path-input').value = ''; drawSphere(); });
-    $('path-input').addEventListener('input', drawSphere);
+    $('clear-path').addEventListener('click', () => { $('path-input').value = ''; pathChanged(); });
+    $('path-input').addEventListener('input', pathChanged);
     $('sphere').addEventListener('click', (ev) => {
       if (!ev.shiftKey) return;
       const p = unproject($('sphere'), ev);
@@ -640,7 +655,7 @@
       if (area.value.trim() === '') area.value = 'x,y,z\n';
       else if (!area.value.endsWith('\n')) area.value += '\n';
       area.value += p.map((v) => lib.numberText(v)).join(',') + '\n';
-      drawSphere();
+      pathChanged();
     });
   }
 
@@ -724,7 +739,7 @@
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, state), nodePositions: () => (result ? Array.from(result.nodePositions) : []),
       cuspPositions: () => (result ? Array.from(result.cuspPositions) : []),
-      timing: () => Object.assign({}, timing), lib };
+      timing: () => Object.assign({}, timing), project: (p) => project(p), lib };
     document.body.dataset.ready = '1';
     window.requestAnimationFrame(animate);
   });

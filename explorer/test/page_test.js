@@ -211,21 +211,42 @@ async function checkInverseDesign(page) {
   const used = await readPage(page);
   check(usedState.a2 === rows[0].a2 && usedState.a3 === rows[0].a3 && used.nodes === rows[0].nodes,
     'inverse design: "use" did not make the candidate the design: ' + JSON.stringify(usedState) + ' nodes ' + used.nodes);
-  for (const [text, nodes, field] of [['x,y,z\n1,2\n', '', '--points'], [csv, 'x', '--nodes']]) {
-    await page.fill('[data-testid="path-input"]', text);
+  const tooMany = 'x,y,z\n' + '0,0,1\n'.repeat(60000);  // over the page's bound for n = 2 (58823 points)
+  const setPath = (text) => page.evaluate((t) => {
+    const area = document.querySelector('[data-testid="path-input"]');
+    area.value = t;
+    area.dispatchEvent(new Event('input'));
+  }, text);
+  for (const [text, nodes, field] of [['x,y,z\n1,2\n', '', '--points'], [csv, 'x', '--nodes'], [csv, '1000000000', '--nodes'],
+    [tooMany, '', '--points = 60000 points']]) {
+    await setPath(csv);  // a good fit first: its candidates must go
+    await page.fill('[data-testid="fit-nodes"]', '');
+    await page.click('[data-testid="fit"]');
+    const before = await page.$$eval('[data-testid="candidate"]', (els) => els.length);
+    await setPath(text);
     await page.fill('[data-testid="fit-nodes"]', nodes);
     await page.click('[data-testid="fit"]');
     const error = await page.textContent('[data-testid="fit-error"]');
     const count = await page.$$eval('[data-testid="candidate"]', (els) => els.length);
-    check(error.startsWith('sphtroch: ' + field) && count === 0, 'inverse design: bad ' + field + ' gave "' + error + '" and ' + count + ' candidates');
+    check(before > 0 && error.startsWith('sphtroch: ' + field) && count === 0,
+      'inverse design: bad ' + field + ' gave "' + error + '" and ' + count + ' candidates (' + before + ' before)');
   }
-  await page.fill('[data-testid="path-input"]', '');
+  await setPath('');
+  await page.fill('[data-testid="fit-nodes"]', '');
+  // A shift-click adds the point under the pointer, on the front of the sphere.
   const box = await page.locator('[data-testid="sphere"]').boundingBox();
-  await page.click('[data-testid="sphere"]', { modifiers: ['Shift'], position: { x: box.width * 0.45, y: box.height * 0.4 } });
+  const at = { x: box.width * 0.45, y: box.height * 0.4 };
+  await page.click('[data-testid="sphere"]', { modifiers: ['Shift'], position: at });
   const added = (await page.inputValue('[data-testid="path-input"]')).trim().split('\n');
   const p = added.length === 2 ? added[1].split(',').map(Number) : [];
-  check(added[0] === 'x,y,z' && p.length === 3 && Math.abs(Math.hypot(...p) - 1) < 1e-12,
-    'inverse design: a shift-click did not add a point on the sphere: ' + JSON.stringify(added));
+  const seen = p.length === 3 ? await page.evaluate((q) => {
+    const c = document.querySelector('[data-testid="sphere"]');
+    const s = window.sphtrochExplorer.project(q);
+    return [s[0] * c.getBoundingClientRect().width / c.width, s[1] * c.getBoundingClientRect().height / c.height, s[2]];
+  }, p) : null;
+  check(added[0] === 'x,y,z' && p.length === 3 && Math.abs(Math.hypot(...p) - 1) < 1e-12 && seen &&
+    Math.abs(seen[0] - at.x) < 0.6 && Math.abs(seen[1] - at.y) < 0.6 && seen[2] === true,  // the click lands on a whole pixel
+    'inverse design: a shift-click did not add the point under the pointer: ' + JSON.stringify({ added, seen, at }));
 }
 
 async function checkDrawn(page) {
@@ -250,16 +271,20 @@ async function checkDrawn(page) {
   check(inked.map.colours >= 5, 'the design map is blank: ' + JSON.stringify(inked.map));
   // The legend by area (n = 13/5, 128^2 cells): the shown counts and the rest cover every cell,
   // no hidden count covers more than a shown one, and every count is a multiple of |p| = 13.
-  const legend = await page.evaluate(() => ({
-    entries: Array.from(document.querySelectorAll('[data-testid="legend-entry"]')).map((e) => [Number(e.dataset.count), Number(e.dataset.cells)]),
-    rest: (() => { const r = document.querySelector('[data-testid="legend-rest"]'); return r ? [Number(r.dataset.counts), Number(r.dataset.cells)] : [0, 0]; })(),
-  }));
+  const legend = await page.evaluate(() => {
+    const r = document.querySelector('[data-testid="legend-rest"]');
+    return {
+      entries: Array.from(document.querySelectorAll('[data-testid="legend-entry"]')).map((e) => [Number(e.dataset.count), Number(e.dataset.cells)]),
+      rest: r ? { cells: Number(r.dataset.cells), largest: Number(r.dataset.largest), values: r.dataset.values.split(' ').map(Number) }
+        : { cells: 0, largest: 0, values: [] },
+    };
+  });
   const shownCells = legend.entries.reduce((sum, e) => sum + e[1], 0);
   check(legend.entries.length >= 1 && legend.entries.length <= 8, 'legend entries: ' + JSON.stringify(legend));
-  check(shownCells + legend.rest[1] === 128 * 128, 'the legend does not cover the map: ' + JSON.stringify(legend));
-  check(legend.rest[0] === 0 || Math.min(...legend.entries.map((e) => e[1])) * legend.rest[0] >= legend.rest[1],
-    'a hidden count covers more than a shown one: ' + JSON.stringify(legend));
-  check(legend.entries.every((e) => e[0] < 0 || e[0] % 13 === 0), 'a count not in sets of 13: ' + JSON.stringify(legend));
+  check(shownCells + legend.rest.cells === 128 * 128, 'the legend does not cover the map: ' + JSON.stringify(legend));
+  check(Math.min(...legend.entries.map((e) => e[1])) >= legend.rest.largest, 'a hidden count covers more than a shown one: ' + JSON.stringify(legend));
+  check(legend.entries.map((e) => e[0]).concat(legend.rest.values).every((v) => v < 0 || v % 13 === 0),
+    'a count not in sets of 13: ' + JSON.stringify(legend));
   // The pitch cones: with the animation stopped, turning them off and on again changes thousands
   // of pixels of the sphere, the changed ones tinted blue or green (the cones' colours).
   await page.uncheck('#animate');

@@ -9,7 +9,7 @@
 // evaluated by the C library in round-to-nearest and widened outward by at least 2 ulps:
 // this rests on the library's error bound (glibc documents at most 1 ulp for sin/cos of a double
 // on x86-64; MPFR at 200 bits confirms it in test_precision_points.cpp). Whether an interior
-// extreme lies inside is decided with a margin (4e-9 of a quarter turn) in the safe direction: a
+// extreme lies inside is decided with a margin (4e-9 of a quarter turn + 1e-15 |t|) in the safe direction: a
 // doubtful extreme is counted, which only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once
 
@@ -47,11 +47,13 @@ inline void sin_cos(double x, double& s, double& c) {
 }
 
 /// Which quarter turns k pi / 2 (k mod 4: bit k) [lo, hi] may contain, given in quarter turns
-/// t = x / (pi / 2); a doubtful one counts (a margin of 4e-9 quarter turn each side).
+/// t = x / (pi / 2); a doubtful one counts. The margin, 4e-9 quarter turn plus 1e-15 |t|, covers
+/// the error of t (~2.6e-16 |t|: pi / 2 rounded, the division) and of t -+ margin (an ulp of t).
+/// Beyond 2^40 quarter turns every extreme counts.
 inline unsigned quarters_inside(double t_lo, double t_hi) {
-  constexpr double kMargin = 4e-9;
   if (!(std::fabs(t_lo) < 0x1p40 && std::fabs(t_hi) < 0x1p40)) return 0xFu;  // beyond exact integer steps
-  const double first = std::ceil(t_lo - kMargin), last = std::floor(t_hi + kMargin);
+  const double margin = 4e-9 + 1e-15 * std::max(std::fabs(t_lo), std::fabs(t_hi));
+  const double first = std::ceil(t_lo - margin), last = std::floor(t_hi + margin);
   if (!(last - first < 3.0)) return last >= first ? 0xFu : 0u;  // all four residues (or none)
   unsigned bits = 0;
   for (double k = first; k <= last; k += 1.0) bits |= 1u << static_cast<unsigned>(k - 4.0 * std::floor(k / 4.0));
@@ -72,7 +74,7 @@ inline std::pair<Interval, Interval> interval_sincos_in_nearest_mode(const Inter
     return {Interval(d::widen_down(s_lo), d::widen_up(s_lo)), Interval(d::widen_down(c_lo), d::widen_up(c_lo))};
   d::sin_cos(hi, s_hi, c_hi);
   constexpr double kQuarter = 1.5707963267948966;
-  const double t_lo = lo / kQuarter, t_hi = hi / kQuarter;  // quarter turns; errors ~1e-14 << margin
+  const double t_lo = lo / kQuarter, t_hi = hi / kQuarter;  // quarter turns; error ~2.6e-16 |t| < margin
   // Extremes inside: sin = 1 at quarter 1, -1 at quarter 3; cos = 1 at quarter 0, -1 at quarter 2 (mod 4).
   const unsigned inside = d::quarters_inside(t_lo, t_hi);
   const Interval sine(inside & 8u ? -1.0 : d::widen_down(std::min(s_lo, s_hi)),
