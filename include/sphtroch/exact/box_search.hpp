@@ -87,6 +87,33 @@ inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 
 /// The midpoint of x as a point interval.
 inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
 
+/// The mean-value form of F over a box: F(c) + sum_k dF/dx_k(X) (x_k - c_k) (fc: F at the centre
+/// c; df: the gradient enclosed over the box X; dx: X - c). Encloses F over X.
+template <int K>
+Interval mean_value(const Interval& fc, const Interval* df, const Interval* dx) {
+  Interval m = fc;
+  for (int k = 0; k < K; ++k) m += df[k] * dx[k];
+  return m;
+}
+
+/// The mean-value form of the combination sum_j nu_j F_j, its coefficients combined before they
+/// meet dx (so what cancels between the F_j cancels): encloses that combination over the box for
+/// any nu; a non-finite nu gives [-1, 1] (no information). fc[j], df[j]: as in mean_value.
+template <int J, int K>
+Interval combined_mean_value(const std::array<double, J>& nu, const std::array<Interval, J>& fc,
+                             const std::array<const Interval*, J>& df, const Interval* dx) {
+  for (const double v : nu)
+    if (!std::isfinite(v)) return Interval(-1.0, 1.0);
+  Interval m = nu[0] * fc[0];
+  for (int j = 1; j < J; ++j) m += nu[j] * fc[j];
+  for (int k = 0; k < K; ++k) {
+    Interval coefficient = nu[0] * df[0][k];
+    for (int j = 1; j < J; ++j) coefficient += nu[j] * df[j][k];
+    m += coefficient * dx[k];
+  }
+  return m;
+}
+
 template <class System>
 class BoxSearch;
 

@@ -250,11 +250,8 @@ inline Interval delta_free_combination(const Interval a[3], const Interval centr
                                        const Interval dx[5]) {
   double am[3], dm[3];
   for (int j = 0; j < 3; ++j) am[j] = 0.5 * (a[j].inf() + a[j].sup()), dm[j] = 0.5 * (gradient[j][4].inf() + gradient[j][4].sup());
-  const double nu[3] = {am[1] * dm[2] - am[2] * dm[1], am[2] * dm[0] - am[0] * dm[2], am[0] * dm[1] - am[1] * dm[0]};
-  if (!(std::isfinite(nu[0]) && std::isfinite(nu[1]) && std::isfinite(nu[2]))) return Interval(-1.0, 1.0);
-  Interval m = nu[0] * centre[0] + nu[1] * centre[1] + nu[2] * centre[2];
-  for (int k = 0; k < 5; ++k) m += (nu[0] * gradient[0][k] + nu[1] * gradient[1][k] + nu[2] * gradient[2][k]) * dx[k];
-  return m;
+  const std::array<double, 3> nu{am[1] * dm[2] - am[2] * dm[1], am[2] * dm[0] - am[0] * dm[2], am[0] * dm[1] - am[1] * dm[0]};
+  return combined_mean_value<3, 5>(nu, {centre[0], centre[1], centre[2]}, {gradient[0], gradient[1], gradient[2]}, dx);
 }
 
 }  // namespace free_axis_detail
@@ -339,9 +336,7 @@ class FreeAxisSystem {
     for (int j = 0; j < 3; ++j) {
       centre[j] = a_component(v.a_centre, t[3], j) - b_component(v.b_centre[i], t[2], j);
       free_axis_detail::component_gradient(v.a, v.b[i], t[0], t[1], n_interval_, j, gradient[j]);
-      Interval m = centre[j];
-      for (int k = 0; k < 5; ++k) m += gradient[j][k] * dx[k];
-      if (!may_vanish(m)) return false;
+      if (!may_vanish(mean_value<5>(centre[j], gradient[j], dx))) return false;
     }
     return may_vanish(free_axis_detail::delta_free_combination(a, centre, gradient, dx));
   }

@@ -155,24 +155,13 @@ inline SinCos<Interval> angle_sum(const SinCos<Interval>& x, const SinCos<Interv
   return {x.first * y.second + x.second * y.first, x.second * y.second - x.first * y.first};
 }
 
-/// The mean-value form f(c) + sum_k df_k(X) (x_k - c_k): f's enclosure over the box (fc: f at the
-/// centre c, df: its gradient over the box X, dx: X - c; the last unknown is Delta).
-inline Interval mean_value(const Interval& fc, const Interval df[3], const Interval dx[3]) {
-  Interval m = fc;
-  for (int k = 0; k < 3; ++k) m += df[k] * dx[k];
-  return m;
-}
-
-/// The mean-value form of nu_u u + nu_v v, nu = (dv/dDelta, -du/dDelta) at the box's middle: its
-/// Delta coefficient is O(width), so the Delta interval hardly widens it (both u and v vanish at a
-/// root for one Delta; tested apart they may vanish for different ones). Any nu keeps it valid.
+/// The combination nu_u u + nu_v v with nu = (dv/dDelta, -du/dDelta) at the box's middle, in
+/// mean-value form: its Delta coefficient is O(width), so the Delta interval hardly widens it (u
+/// and v vanish at a root for one Delta; tested apart they may vanish for different ones).
 inline Interval delta_free_combination(const Interval& u, const Interval& v, const Interval du[3], const Interval dv[3],
                                        const Interval dx[3]) {
-  const double nu = 0.5 * (dv[2].inf() + dv[2].sup()), nv = -0.5 * (du[2].inf() + du[2].sup());
-  if (!(std::isfinite(nu) && std::isfinite(nv))) return Interval(-1.0, 1.0);  // no information
-  Interval m = nu * u + nv * v;
-  for (int k = 0; k < 3; ++k) m += (nu * du[k] + nv * dv[k]) * dx[k];
-  return m;
+  const std::array<double, 2> nu{0.5 * (dv[2].inf() + dv[2].sup()), -0.5 * (du[2].inf() + du[2].sup())};
+  return combined_mean_value<2, 3>(nu, {u, v}, {du, dv}, dx);
 }
 
 /// p^-1 modulo q (gcd(p, q) = 1, q >= 1).
@@ -329,9 +318,8 @@ class FixedFrameSystem {
                                                       precision_detail::angle_sum(v.theta1_centre_trig, item.trig[2]),
                                                       item.trig[1], n_interval_, p_[i + 1], false);
     const Interval dx[3] = {v.a2 - v.a2_centre, v.theta1 - v.theta1_centre, delta - dc};
-    using precision_detail::mean_value;
-    if (!(may_vanish(mean_value(ec.f, e.df, dx)) && may_vanish(mean_value(ec.g, e.dg, dx)) &&
-          may_vanish(mean_value(ec.dx, e.ddx, dx)) && may_vanish(mean_value(ec.dy, e.ddy, dx))))
+    if (!(may_vanish(mean_value<3>(ec.f, e.df, dx)) && may_vanish(mean_value<3>(ec.g, e.dg, dx)) &&
+          may_vanish(mean_value<3>(ec.dx, e.ddx, dx)) && may_vanish(mean_value<3>(ec.dy, e.ddy, dx))))
       return false;
     return may_vanish(precision_detail::delta_free_combination(ec.f, ec.g, e.df, e.dg, dx)) &&
            may_vanish(precision_detail::delta_free_combination(ec.dx, ec.dy, e.ddx, e.ddy, dx));
