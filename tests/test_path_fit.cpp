@@ -251,8 +251,13 @@ TEST_CASE("fit with cusps: |p| on a pitch cone, 2|p| where both cones meet (|n| 
     REQUIRE_FALSE(f[0].candidates.empty());
     check_counts(f, o);
     for (const auto& c : f[0].candidates) {
-      const ConeMargins m = cone_margins(c.candidate.train);  // on a cone (both for 2|p|), exactly
-      CHECK((m.on_pitch_cone(0) || m.on_mirror_cone(0)));
+      // On a cone exactly (both for 2|p|): a3 is the cone's angle by construction (its reference,
+      // offset 0), so cone_margins' long double evaluation of the identity gives 0 to its rounding.
+      const GearTrain& t = c.candidate.train;
+      CHECK(t.a3_offset() == 0.0);
+      CHECK((t.a3_reference() == A3Reference::pitch_cone || t.a3_reference() == A3Reference::mirror_pitch_cone));
+      const ConeMargins m = cone_margins(t);
+      CHECK((m.on_pitch_cone(1e-18) || m.on_mirror_cone(1e-18)));
       if (cusps == 2) CHECK((m.on_pitch_cone(1e-12) && m.on_mirror_cone(1e-12)));
     }
   }

@@ -11,10 +11,13 @@
 //   P = Rz(theta2) Rx(a2) Rz(theta3) Rx(a3) z                      (Eq. 4)
 // Error: each component is a few ulp of Scalar for |theta2| up to the period (the argument
 // n*theta2 is formed as p*theta2/q, one rounding; sin/cos of a large argument carry its
-// absolute rounding error, about |theta2| * epsilon).
+// absolute rounding error, about |theta2| * epsilon). In double, sin and cos come from
+// portable_trig.hpp (below one ulp) and point() is written out, so P has the same bits on every
+// IEEE platform (the explorer's WebAssembly module draws the tool's curve exactly).
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/parameters.hpp"
 #include "sphtroch/core/types.hpp"
 
@@ -46,20 +49,25 @@ class TracerCurve {
 
   /// The tracer in carrier coordinates: Rz(theta3) Rx(a3) z = (s3 sa3, -c3 sa3, ca3) (Eq. 4, right factor).
   Vec3 point_in_carrier(const Scalar& theta2) const {
-    using std::cos;
-    using std::sin;
-    const Scalar theta3 = planet_angle(theta2);
-    return Vec3(sin(theta3) * trig_.sin_a3, -cos(theta3) * trig_.sin_a3, trig_.cos_a3);
+    const SinCos<Scalar> t = sin_cos(planet_angle(theta2));
+    return Vec3(t.sin * trig_.sin_a3, -t.cos * trig_.sin_a3, trig_.cos_a3);
   }
 
-  /// P(theta2), a unit vector in the base frame (Eq. 4).
-  Vec3 point(const Scalar& theta2) const { return Vec3(base_R_carrier(theta2) * point_in_carrier(theta2)); }
+  /// P(theta2), a unit vector in the base frame (Eq. 4): Rz(theta2) Rx(a2) point_in_carrier,
+  /// written out so that the bits do not depend on Eigen's vectorisation (with sin_cos, the
+  /// explorer's WebAssembly module computes the same bits: portable_trig.hpp).
+  Vec3 point(const Scalar& theta2) const {
+    const Vec3 v = point_in_carrier(theta2);
+    const SinCos<Scalar> t = sin_cos(theta2);
+    const Scalar wy = trig_.cos_a2 * v.y() - trig_.sin_a2 * v.z();  // Rx(a2) v
+    const Scalar wz = trig_.sin_a2 * v.y() + trig_.cos_a2 * v.z();
+    return Vec3(t.cos * v.x() - t.sin * wy, t.sin * v.x() + t.cos * wy, wz);  // Rz(theta2)
+  }
 
   /// The planet axis Z2 in base coordinates: (s2 sa2, -c2 sa2, ca2).
   Vec3 planet_axis(const Scalar& theta2) const {
-    using std::cos;
-    using std::sin;
-    return Vec3(sin(theta2) * trig_.sin_a2, -cos(theta2) * trig_.sin_a2, trig_.cos_a2);
+    const SinCos<Scalar> t = sin_cos(theta2);
+    return Vec3(t.sin * trig_.sin_a2, -t.cos * trig_.sin_a2, trig_.cos_a2);
   }
 
   /// omega = Z1 + n Z2, the planet's angular velocity per unit carrier rate; the instantaneous

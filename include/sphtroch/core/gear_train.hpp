@@ -18,6 +18,7 @@
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
 
@@ -155,12 +156,9 @@ class GearTrain {
   /// sin/cos of a2 and a3 evaluated in Scalar; a3 follows its symbolic reference (see header).
   template <typename Scalar>
   TwistTrig<Scalar> trig() const {
-    using std::atan2;
-    using std::cos;
-    using std::sin;
     using std::sqrt;
-    const Scalar a2(a2_);
-    TwistTrig<Scalar> t{sin(a2), cos(a2), Scalar(0), Scalar(0)};
+    const SinCos<Scalar> carrier = sin_cos(Scalar(a2_));
+    TwistTrig<Scalar> t{carrier.sin, carrier.cos, Scalar(0), Scalar(0)};
     if (a2_right_angle_) {
       t.sin_a2 = Scalar(1);
       t.cos_a2 = Scalar(0);
@@ -187,10 +185,9 @@ class GearTrain {
       t.sin_a3 = s_ref;
       t.cos_a3 = c_ref;
     } else {
-      const Scalar d(offset_);
-      const Scalar sd = sin(d), cd = cos(d);
-      t.sin_a3 = s_ref * cd + c_ref * sd;  // sin(ref + d)
-      t.cos_a3 = c_ref * cd - s_ref * sd;  // cos(ref + d)
+      const SinCos<Scalar> d = sin_cos(Scalar(offset_));
+      t.sin_a3 = s_ref * d.cos + c_ref * d.sin;  // sin(ref + d)
+      t.cos_a3 = c_ref * d.cos - s_ref * d.sin;  // cos(ref + d)
     }
     return t;
   }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
 
@@ -43,18 +44,16 @@ Matrix3<Scalar> rotation_x(const Scalar& c, const Scalar& s) {
 /// Rz(angle) for an angle in radians.
 template <class Scalar>
 Matrix3<Scalar> rotation_z(const Scalar& angle) {
-  using std::cos;
-  using std::sin;
-  return rotation_z(Scalar(cos(angle)), Scalar(sin(angle)));
+  const SinCos<Scalar> t = sin_cos(angle);
+  return rotation_z(t.cos, t.sin);
 }
 
 /// Carrier-frame coordinates to base coordinates at carrier angle theta2: Rz(theta2) Rx(a2),
 /// with cos a2, sin a2 from the train's TwistTrig (exact where GearTrain::trig makes them so).
 template <class Scalar>
 Matrix3<Scalar> base_R_carrier(const Scalar& theta2, const TwistTrig<Scalar>& trig) {
-  using std::cos;
-  using std::sin;
-  return rotation_z(Scalar(cos(theta2)), Scalar(sin(theta2))) * rotation_x(trig.cos_a2, trig.sin_a2);
+  const SinCos<Scalar> t = sin_cos(theta2);
+  return rotation_z(t.cos, t.sin) * rotation_x(trig.cos_a2, trig.sin_a2);
 }
 
 /// x reduced to [0, period), period > 0. Edge rule: a negative x within rounding of a multiple of
