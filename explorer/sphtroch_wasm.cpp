@@ -17,6 +17,7 @@
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/exact/precision_points.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <emscripten/bind.h>
@@ -263,6 +264,15 @@ val loci(const std::string& n, const std::string& teeth, double steps) {
   });
 }
 
+/// The points of a text as `sphtroch synth fit/points --input` reads them: the text goes to a file
+/// of the module's memory file system named "points" (so errors name it) and the CLI's reader.
+std::vector<sphtroch::Vector3d> read_page_points(const std::string& text) {
+  FILE* f = std::fopen("points", "wb");
+  const bool written = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (!f || std::fclose(f) != 0 || !written) throw std::runtime_error("the points could not be handed to the reader");
+  return sphtroch::read_polyline("points", "points", 1).vertices;
+}
+
 /// The page's bound on a fit's work (fit_path's unit: points x (2|p| + 30), ~0.5 us each natively):
 /// about a second natively, a few in the page, whose main thread waits for it.
 constexpr double kPageFitWork = 2e6;
@@ -287,10 +297,7 @@ val fit(const std::string& points, const std::string& n, const std::string& teet
       if (errno == ERANGE || k > 100000000) throw sphtroch::InvalidInput("nodes", nodes, "outside the valid range", range);
       options.nodes = static_cast<std::int64_t>(k);
     }
-    FILE* f = std::fopen("points", "wb");  // the module's memory file system
-    const bool written = f && std::fwrite(points.data(), 1, points.size(), f) == points.size();
-    if (!f || std::fclose(f) != 0 || !written) throw std::runtime_error("the path could not be handed to the reader");
-    const std::vector<sphtroch::Vector3d> path = sphtroch::read_polyline("points", "points", 1).vertices;
+    const std::vector<sphtroch::Vector3d> path = read_page_points(points);
     const double per_point = 2 * static_cast<double>(ratio.abs_p()) + 30;  // fit_path's work per point
     if (static_cast<double>(path.size()) * per_point > kPageFitWork)
       throw sphtroch::InvalidInput("points", std::to_string(path.size()) + " points",
@@ -314,6 +321,38 @@ val fit(const std::string& points, const std::string& n, const std::string& teet
   });
 }
 
+/// The page's bound on a precision-points search, in boxes: ~0.1-1 s natively, a few seconds in
+/// the page (the 1,000-problem sweep's largest needs fewer); beyond it the list is shown as not
+/// certified (as `sphtroch synth points` with its larger bound).
+constexpr std::size_t kPagePointsBoxes = 1000000;
+
+/// Every train of ratio n (or teeth) whose tracer passes through three points (the text of
+/// `sphtroch synth points --input`), fixed frame, certified as exact/precision_points.hpp says
+/// (the module's intervals: CGAL_ALWAYS_ROUND_TO_NEAREST, see explorer/CMakeLists.txt).
+/// {solutions: [{n, a2, a3, phase, params, residual, isolated}], certified, boxes}; the page
+/// classifies each solution as any state.
+val points(const std::string& text, const std::string& n, const std::string& teeth) {
+  return guarded([&] {
+    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    sphtroch::PrecisionPointsOptions options;
+    options.max_boxes = kPagePointsBoxes;
+    const sphtroch::PrecisionPoints r = sphtroch::precision_points(read_page_points(text), ratio, options);
+    val list = val::array();
+    for (const sphtroch::PrecisionSolution& x : r.solutions) {
+      val item = train_object(x.train);
+      item.set("params", float64_array(x.params));
+      item.set("residual", x.residual);
+      item.set("isolated", x.isolated);
+      list.call<void>("push", item);
+    }
+    val out = val::object();
+    out.set("solutions", list);
+    out.set("certified", r.certified);
+    out.set("boxes", static_cast<double>(r.boxes));
+    return out;
+  });
+}
+
 /// A shortest round-trip text of a double (what the CLI prints for it).
 std::string number_text(double v) { return sphtroch::number_text(v); }
 
@@ -327,4 +366,5 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("loci", &loci);
   emscripten::function("numberText", &number_text);
   emscripten::function("fit", &fit);
+  emscripten::function("points", &points);
 }

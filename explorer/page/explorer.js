@@ -596,8 +596,9 @@
     }
   }
 
-  // Fits with the current n (or teeth), shows each candidate with the page's own census of it.
-  function runFit() {
+  // Runs search() (a module call) with the table and messages cleared first, so that a refusal
+  // leaves no earlier result; shows its error line, or its status and rows.
+  function runSearch(search, status, rows) {
     const body = byTestId('candidates').querySelector('tbody');
     body.textContent = '';
     byTestId('fit-error').textContent = '';
@@ -605,18 +606,33 @@
     const start = performance.now();
     let r;
     try {
-      r = lib.fit($('path-input').value, state.n, state.teeth, $('fit-nodes').value.trim());
+      r = search();
     } catch (e) {  // the module returns errors; this is only for a failure of the module itself
       r = { error: 'sphtroch: internal error: ' + e };
     }
     if (r.error) {
       byTestId('fit-error').textContent = r.error;
-      byTestId('fit-status').textContent = '';
       return;
     }
-    byTestId('fit-status').textContent = r.candidates.length + ' candidate(s), ' + (performance.now() - start).toFixed(0) +
-      ' ms' + (r.reason ? ': ' + r.reason : '');
-    r.candidates.forEach((c, k) => body.appendChild(candidateRow(c, k)));
+    byTestId('fit-status').textContent = status(r, (performance.now() - start).toFixed(0) + ' ms');
+    rows(r).forEach((c, k) => body.appendChild(candidateRow(c, k)));
+  }
+
+  // Fits with the current n (or teeth), shows each candidate with the page's own census of it.
+  function runFit() {
+    runSearch(() => lib.fit($('path-input').value, state.n, state.teeth, $('fit-nodes').value.trim()),
+      (r, ms) => r.candidates.length + ' candidate(s), ' + ms + (r.reason ? ': ' + r.reason : ''),
+      (r) => r.candidates);
+  }
+
+  // Every train of the current n (or teeth) through exactly three points (sphtroch synth points),
+  // certified or said not to be; rms and max dev. are then the residual at the points.
+  function runPoints() {
+    runSearch(() => lib.points($('path-input').value, state.n, state.teeth),
+      (r, ms) => r.solutions.length + ' train(s) through the 3 points, ' +
+        (r.certified ? 'all of them (certified)' : 'NOT certified: the search stopped at its bound of boxes ' +
+         '(sphtroch synth points searches further)') + ', ' + ms,
+      (r) => r.solutions.map((x) => Object.assign(x, { rms: x.residual, maxDeviation: x.residual, margin: NaN })));
   }
 
   function candidateRow(c, k) {
@@ -627,7 +643,7 @@
     Object.assign(row.dataset, { n: c.n, a2: texts.a2, a3: texts.a3, phase: texts.phase });
     if (!census.error) Object.assign(row.dataset, { nodes: census.nodes, cusps: census.cusps, certified: census.certified ? '1' : '0' });
     const cells = [k + 1, c.n, fmt(c.a2), fmt(c.a3), fmt(c.phase), c.rms.toExponential(2), c.maxDeviation.toExponential(2),
-      fmt(c.margin), census.error ? '' : census.nodes, census.error ? '' : census.cusps,
+      Number.isFinite(c.margin) ? fmt(c.margin) : '', census.error ? '' : census.nodes, census.error ? '' : census.cusps,
       census.error ? census.error : census.certified ? 'two censuses agree' : 'not certified here'];
     for (const v of cells) row.appendChild(Object.assign(document.createElement('td'), { textContent: String(v) }));
     const use = Object.assign(document.createElement('button'), { type: 'button', textContent: 'use' });
@@ -645,6 +661,7 @@
 
   function setupFit() {
     $('fit').addEventListener('click', runFit);
+    $('through-points').addEventListener('click', runPoints);
     $('clear-path').addEventListener('click', () => { $('path-input').value = ''; pathChanged(); });
     $('path-input').addEventListener('input', pathChanged);
     $('sphere').addEventListener('click', (ev) => {

@@ -249,6 +249,53 @@ async function checkInverseDesign(page) {
     'inverse design: a shift-click did not add the point under the pointer: ' + JSON.stringify({ added, seen, at }));
 }
 
+// Three points of a trace: every train through them equals `sphtroch synth points --json`'s
+// (the same count, a2, a3 and phase modulo 2 pi / q within 1e-9, the same certified census
+// counts), certified in both, the traced train among them; two points are refused with the
+// CLI's line and no rows left.
+async function checkThroughPoints(page) {
+  const fs = require('fs');
+  const setPath = (text) => page.evaluate((t) => {
+    const area = document.querySelector('[data-testid="path-input"]');
+    area.value = t;
+    area.dispatchEvent(new Event('input'));
+  }, text);
+  const rowsOf = () => page.$$eval('[data-testid="candidate"]', (els) => els.map((e) => Object.assign({}, e.dataset)));
+  for (const hidden of [{ a2: '1', a3: '2', n: '1/2', phase: '0.3' }, { a2: '2.2', a3: '0.7', n: '-3/2', phase: '1.1' },
+    { a2: '0.4', a3: '1.3', n: '5/3', phase: '5' }]) {
+    const lines = cli(['trace', ...trainArgs(hidden), '--samples', '40']).stdout.trim().split('\n');
+    const csv = [lines[0], lines[3], lines[12], lines[30]].join('\n') + '\n';
+    const file = path.join(outDir, 'three_points.csv');
+    fs.writeFileSync(file, csv);
+    const run = cli(['synth', 'points', '--input', file, '--n', hidden.n, '--json']);
+    const want = JSON.parse(run.stdout);
+    await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n: hidden.n, phase: '0' }));
+    await setPath(csv);
+    await page.click('[data-testid="through-points"]');
+    await page.waitForFunction(() => /train\(s\) through/.test(document.querySelector('[data-testid="fit-status"]').textContent), null, { timeout: 60000 });
+    const status = await page.textContent('[data-testid="fit-status"]');
+    const rows = await rowsOf();
+    const q = Number(hidden.n.split('/')[1] || 1), turn = 2 * Math.PI / q;
+    const same = (r, w) => Math.abs(Number(r.a2) - w.a2) < 1e-9 && Math.abs(Number(r.a3) - w.a3) < 1e-9 &&
+      Math.abs(((Number(r.phase) - w.phase) % turn + 1.5 * turn) % turn - 0.5 * turn) < 1e-9;
+    check(run.status === 0 && want.complete && /all of them \(certified\)/.test(status) && rows.length === want.solutions.length,
+      'through 3 points: ' + rows.length + ' rows, "' + status + '"; the CLI: ' + run.stdout.slice(0, 200));
+    for (const w of want.solutions) {
+      const r = rows.find((x) => same(x, w));
+      check(r && Number(r.nodes) === w.counts.nodes && Number(r.cusps) === w.counts.cusps && r.certified === '1',
+        'through 3 points: the CLI\'s train ' + JSON.stringify(w).slice(0, 160) + ' is not in the page as ' + JSON.stringify(r));
+    }
+    check(rows.some((r) => Math.abs(Number(r.a2) - Number(hidden.a2)) < 1e-9 && Math.abs(Number(r.a3) - Number(hidden.a3)) < 1e-9),
+      'through 3 points: the traced train ' + JSON.stringify(hidden) + ' is missing');
+  }
+  await setPath('x,y,z\n1,0,0\n0,1,0\n');
+  await page.click('[data-testid="through-points"]');
+  const error = await page.textContent('[data-testid="fit-error"]');
+  check(error.startsWith('sphtroch: --points') && (await rowsOf()).length === 0,
+    'through 3 points: two points gave "' + error + '"');
+  await setPath('');
+}
+
 async function checkDrawn(page) {
   await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
   await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 60000 });
@@ -317,12 +364,13 @@ async function checkDrawn(page) {
     await checkSliderAndMap(page);
     await checkSceneExport(page);
     await checkInverseDesign(page);
+    await checkThroughPoints(page);
     await checkDrawn(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, inverse design, drawn, legend, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, inverse design, through 3 points, drawn, legend, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

@@ -6,12 +6,16 @@
 //
 // Contract: for every real x in X, sin(x) lies in interval_sin(X) (the same for cos).
 // How: the extremes of sin over [lo, hi] are at the ends or at pi/2 + k pi inside. The ends are
-// evaluated by the C library in round-to-nearest and widened outward by at least 2 ulps:
-// this rests on the library's error bound (glibc documents at most 1 ulp for sin/cos of a double
-// on x86-64; MPFR at 200 bits confirms it in test_precision_points.cpp). Whether an interior
+// evaluated in round-to-nearest and widened outward by at least 2 ulps: this rests on an error
+// bound of 1 ulp — glibc's sincos, which documents it on x86-64 (MPFR at 200 bits confirms it in
+// test_precision_points.cpp), elsewhere (the explorer's WebAssembly module, whose musl documents
+// none) core/portable_trig.hpp's sin_cos, faithful, checked against MPFR in
+// test_portable_trig.cpp (up to 2^20 rad; beyond, [-1, 1] there). Whether an interior
 // extreme lies inside is decided with a margin (4e-9 of a quarter turn + 1e-15 |t|) in the safe direction: a
 // doubtful extreme is counted, which only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once
+
+#include "sphtroch/core/portable_trig.hpp"
 
 #include <CGAL/Interval_nt.h>
 
@@ -35,14 +39,15 @@ namespace interval_trig_detail {
 inline double widen_down(double x) { return std::max(x - (std::fabs(x) * 0x1p-50 + 1e-300), -1.0); }
 inline double widen_up(double x) { return std::min(x + (std::fabs(x) * 0x1p-50 + 1e-300), 1.0); }
 
-/// sin(x) and cos(x) in round-to-nearest: glibc's sincos (the same algorithm and bound as sin and
-/// cos, one argument reduction) where there is one.
+/// sin(x) and cos(x) in round-to-nearest, within 1 ulp: glibc's sincos (the same algorithm and
+/// bound as sin and cos, one argument reduction) where there is one, else portable_trig.hpp's.
 inline void sin_cos(double x, double& s, double& c) {
 #if defined(__GLIBC__)
   ::sincos(x, &s, &c);
 #else
-  s = std::sin(x);
-  c = std::cos(x);
+  const SinCos<double> t = sphtroch::sin_cos(x);
+  s = t.sin;
+  c = t.cos;
 #endif
 }
 
@@ -68,6 +73,10 @@ inline std::pair<Interval, Interval> interval_sincos_in_nearest_mode(const Inter
   namespace d = interval_trig_detail;
   const double lo = x.inf(), hi = x.sup();
   if (!(hi - lo < 6.283)) return {Interval(-1.0, 1.0), Interval(-1.0, 1.0)};  // also NaN ends
+#if !defined(__GLIBC__)
+  if (!(std::fabs(lo) <= kPortableTrigMax && std::fabs(hi) <= kPortableTrigMax))  // no bound known there
+    return {Interval(-1.0, 1.0), Interval(-1.0, 1.0)};
+#endif
   double s_lo, c_lo, s_hi, c_hi;
   d::sin_cos(lo, s_lo, c_lo);
   if (lo == hi)  // a point: no extreme inside
