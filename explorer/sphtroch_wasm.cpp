@@ -63,6 +63,14 @@ val float64_array(const std::vector<double>& values) {
   return val::global("Float64Array").new_(emscripten::typed_memory_view(values.size(), values.data()));
 }
 
+/// Vectors as x0 y0 z0 x1 ...
+std::vector<double> flat(const std::vector<sphtroch::Vector3d>& vectors) {
+  std::vector<double> xyz;
+  xyz.reserve(vectors.size() * 3);
+  for (const sphtroch::Vector3d& v : vectors) xyz.insert(xyz.end(), v.data(), v.data() + 3);
+  return xyz;
+}
+
 val string_list(const std::vector<std::string>& items) {
   val out = val::array();
   for (const std::string& s : items) out.call<void>("push", s);
@@ -160,21 +168,21 @@ val classify(const std::string& a2, const std::string& a3, const std::string& n,
   });
 }
 
-/// `samples` points of one period (the CLI's trace --samples), as x0 y0 z0 x1 ... (unit vectors).
+/// `samples` points of one period (the CLI's trace --samples), as x0 y0 z0 x1 ... (unit vectors),
+/// and with `velocity` their velocities dP/dtheta2 = omega x P (Eq. 47a; the CLI's --velocity) as
+/// `velocities`, laid out the same.
 val trace(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
-          const std::string& teeth, double samples) {
+          const std::string& teeth, double samples, bool velocity) {
   return guarded([&] {
     const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
     if (!(samples >= 3 && samples <= 1e6 && samples == static_cast<double>(static_cast<std::int64_t>(samples))))
       throw sphtroch::InvalidInput("samples", sphtroch::number_text(samples), "outside the valid range",
                                    "integer 3 .. 1000000");
     const sphtroch::TracerCurve<double> curve(t);
-    const auto sampled = sphtroch::sample_period(curve, static_cast<std::size_t>(samples));
-    std::vector<double> xyz;
-    xyz.reserve(sampled.points.size() * 3);
-    for (const sphtroch::Vector3d& p : sampled.points) xyz.insert(xyz.end(), p.data(), p.data() + 3);
+    const auto sampled = sphtroch::sample_period(curve, static_cast<std::size_t>(samples), velocity);
     val out = val::object();
-    out.set("points", float64_array(xyz));
+    out.set("points", float64_array(flat(sampled.points)));
+    if (velocity) out.set("velocities", float64_array(flat(sampled.velocities)));
     out.set("params", float64_array(sampled.t));
     return out;
   });

@@ -73,7 +73,7 @@
     const s = state;
     const c = lib.classify(s.a2, s.a3, s.n, s.phase, s.teeth);
     if (c.error) return { error: c.error };
-    const t = lib.trace(s.a2, s.a3, s.n, s.phase, s.teeth, samplesFor(c));
+    const t = lib.trace(s.a2, s.a3, s.n, s.phase, s.teeth, samplesFor(c), false);
     if (t.error) return { error: t.error };
     const e = eventsOf(s);
     if (e.error) return { error: e.error };

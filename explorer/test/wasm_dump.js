@@ -9,13 +9,13 @@ create().then((lib) => {
   const out = trains.map((t) => {
     const c = lib.classify(t.a2, t.a3, t.n, t.phase, '');
     if (c.error) return { error: c.error };
-    const tr = lib.trace(t.a2, t.a3, t.n, t.phase, '', t.samples);
+    const tr = lib.trace(t.a2, t.a3, t.n, t.phase, '', t.samples, true);
     if (tr.error) return { error: tr.error };
     const ev = lib.events(t.a2, t.n, '');
     return {
       events: ev.error ? null : ev.events.map((e) => ({ a3: e.a3, kind: e.kind, below: e.nodesBelow, above: e.nodesAbove })),
       class: c.class, nodes: c.nodes, crossings: c.crossings, tangencies: c.tangencies, cusps: c.cusps,
-      certified: c.certified, nodePositions: Array.from(c.nodePositions), points: Array.from(tr.points),
+      certified: c.certified, nodePositions: Array.from(c.nodePositions), points: Array.from(tr.points), velocities: Array.from(tr.velocities),
       params: Array.from(tr.params),
     };
   });
