@@ -329,19 +329,27 @@ val fit(const std::string& points, const std::string& n, const std::string& teet
   });
 }
 
-/// The page's bound on a precision-points search, in boxes: ~0.1-1 s natively, a few seconds in
-/// the page (the 1,000-problem sweep's largest needs fewer); beyond it the list is shown as not
-/// certified (as `sphtroch synth points` with its larger bound).
+/// The page's bounds on a precision-points search, which runs on its main thread: the estimated
+/// work (|p| + q)^2 (`sphtroch synth points`' unit: the lists of Delta span 2 pi q and turn |n|
+/// times faster), refused up front above kPagePointsWork (the CLI allows 20000); and the boxes,
+/// beyond which the list is shown as not certified. Measured in the docs (docs/explorer.md).
+constexpr double kPagePointsWork = 400;
 constexpr std::size_t kPagePointsBoxes = 1000000;
 
 /// Every train of ratio n (or teeth) whose tracer passes through three points (the text of
 /// `sphtroch synth points --input`), fixed frame, certified as exact/precision_points.hpp says
 /// (the module's intervals: CGAL_ALWAYS_ROUND_TO_NEAREST, see explorer/CMakeLists.txt).
-/// {solutions: [{n, a2, a3, phase, params, residual, isolated}], certified, boxes}; the page
-/// classifies each solution as any state.
+/// {solutions: [{n, a2, a3, phase, params, residual, isolated}], certified, undecided, boxes,
+/// boxLimit}; the page classifies each solution as any state.
 val points(const std::string& text, const std::string& n, const std::string& teeth) {
   return guarded([&] {
     const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    const double size = static_cast<double>(ratio.abs_p()) + static_cast<double>(ratio.q());
+    if (size * size > kPagePointsWork)
+      throw sphtroch::InvalidInput(teeth.empty() ? "n" : "teeth", teeth.empty() ? n : teeth,
+                                   "too much work for the page's precision points ((|p| + q)^2 = " +
+                                       sphtroch::number_text(size * size) + ")",
+                                   "(|p| + q)^2 <= 400, e.g. |p| + q <= 20 (sphtroch synth points allows 20000)");
     sphtroch::PrecisionPointsOptions options;
     options.max_boxes = kPagePointsBoxes;
     const sphtroch::PrecisionPoints r = sphtroch::precision_points(read_page_points(text), ratio, options);
@@ -356,7 +364,9 @@ val points(const std::string& text, const std::string& n, const std::string& tee
     val out = val::object();
     out.set("solutions", list);
     out.set("certified", r.certified);
+    out.set("undecided", static_cast<double>(r.undecided));
     out.set("boxes", static_cast<double>(r.boxes));
+    out.set("boxLimit", static_cast<double>(kPagePointsBoxes));
     return out;
   });
 }

@@ -626,13 +626,16 @@
   }
 
   // Every train of the current n (or teeth) through exactly three points (sphtroch synth points),
-  // certified or said not to be; rms and max dev. are then the residual at the points.
+  // certified or said not to be, and why; rms and max dev. are then the residual at the points.
+  // A solution the search could not isolate (Newton's limit in an undecided box) says so.
   function runPoints() {
+    const why = (r) => (r.boxes >= r.boxLimit
+      ? 'NOT certified: the search stopped at its bound of ' + r.boxLimit + ' boxes (sphtroch synth points searches further)'
+      : 'NOT certified: ' + r.undecided + ' box(es) stayed undecided (a near-singular root, e.g. a point at a node or cusp)');
     runSearch(() => lib.points($('path-input').value, state.n, state.teeth),
-      (r, ms) => r.solutions.length + ' train(s) through the 3 points, ' +
-        (r.certified ? 'all of them (certified)' : 'NOT certified: the search stopped at its bound of boxes ' +
-         '(sphtroch synth points searches further)') + ', ' + ms,
-      (r) => r.solutions.map((x) => Object.assign(x, { rms: x.residual, maxDeviation: x.residual, margin: NaN })));
+      (r, ms) => r.solutions.length + ' train(s) through the 3 points, ' + (r.certified ? 'all of them (certified)' : why(r)) + ', ' + ms,
+      (r) => r.solutions.map((x) => Object.assign(x, { rms: x.residual, maxDeviation: x.residual, margin: NaN,
+        note: x.isolated ? '' : 'root not proven single (undecided box)' })));
   }
 
   function candidateRow(c, k) {
@@ -640,11 +643,11 @@
     const census = lib.classify(texts.a2, texts.a3, c.n, texts.phase, '');
     const row = document.createElement('tr');
     row.dataset.testid = 'candidate';
-    Object.assign(row.dataset, { n: c.n, a2: texts.a2, a3: texts.a3, phase: texts.phase });
+    Object.assign(row.dataset, { n: c.n, a2: texts.a2, a3: texts.a3, phase: texts.phase, isolated: c.isolated === false ? '0' : '1' });
     if (!census.error) Object.assign(row.dataset, { nodes: census.nodes, cusps: census.cusps, certified: census.certified ? '1' : '0' });
     const cells = [k + 1, c.n, fmt(c.a2), fmt(c.a3), fmt(c.phase), c.rms.toExponential(2), c.maxDeviation.toExponential(2),
       Number.isFinite(c.margin) ? fmt(c.margin) : '', census.error ? '' : census.nodes, census.error ? '' : census.cusps,
-      census.error ? census.error : census.certified ? 'two censuses agree' : 'not certified here'];
+      (census.error ? census.error : census.certified ? 'two censuses agree' : 'not certified here') + (c.note ? '; ' + c.note : '')];
     for (const v of cells) row.appendChild(Object.assign(document.createElement('td'), { textContent: String(v) }));
     const use = Object.assign(document.createElement('button'), { type: 'button', textContent: 'use' });
     use.dataset.testid = 'use-candidate';

@@ -251,8 +251,8 @@ async function checkInverseDesign(page) {
 
 // Three points of a trace: every train through them equals `sphtroch synth points --json`'s
 // (the same count, a2, a3 and phase modulo 2 pi / q within 1e-9, the same certified census
-// counts), certified in both, the traced train among them; two points are refused with the
-// CLI's line and no rows left.
+// counts, the isolated flag), certified in both, the traced train among them; two points, and
+// a ratio over the page's work bound, are refused with one line and no rows.
 async function checkThroughPoints(page) {
   const fs = require('fs');
   const setPath = (text) => page.evaluate((t) => {
@@ -282,17 +282,22 @@ async function checkThroughPoints(page) {
       'through 3 points: ' + rows.length + ' rows, "' + status + '"; the CLI: ' + run.stdout.slice(0, 200));
     for (const w of want.solutions) {
       const r = rows.find((x) => same(x, w));
-      check(r && Number(r.nodes) === w.counts.nodes && Number(r.cusps) === w.counts.cusps && r.certified === '1',
+      check(r && Number(r.nodes) === w.counts.nodes && Number(r.cusps) === w.counts.cusps && r.certified === '1' &&
+        r.isolated === (w.isolated ? '1' : '0'),
         'through 3 points: the CLI\'s train ' + JSON.stringify(w).slice(0, 160) + ' is not in the page as ' + JSON.stringify(r));
     }
     check(rows.some((r) => Math.abs(Number(r.a2) - Number(hidden.a2)) < 1e-9 && Math.abs(Number(r.a3) - Number(hidden.a3)) < 1e-9),
       'through 3 points: the traced train ' + JSON.stringify(hidden) + ' is missing');
   }
-  await setPath('x,y,z\n1,0,0\n0,1,0\n');
-  await page.click('[data-testid="through-points"]');
-  const error = await page.textContent('[data-testid="fit-error"]');
-  check(error.startsWith('sphtroch: --points') && (await rowsOf()).length === 0,
-    'through 3 points: two points gave "' + error + '"');
+  for (const [text, n, field] of [['x,y,z\n1,0,0\n0,1,0\n', '5/3', '--points'],
+    ['x,y,z\n1,0,0\n0,1,0\n0,0,1\n', '1/20', '--n = 1/20: too much work']]) {  // (|p| + q)^2 = 441 > 400
+    await open(page, hashOf({ a2: 'pi/3', a3: 'pi/2', n, phase: '0' }));
+    await setPath(text);
+    await page.click('[data-testid="through-points"]');
+    const error = await page.textContent('[data-testid="fit-error"]');
+    check(error.startsWith('sphtroch: ' + field) && (await rowsOf()).length === 0,
+      'through 3 points: ' + field + ' gave "' + error + '"');
+  }
   await setPath('');
 }
 

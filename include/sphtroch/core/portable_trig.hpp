@@ -5,16 +5,18 @@
 //   const sphtroch::SinCos<double> t = sphtroch::sin_cos(0.3);   // t.sin, t.cos
 //
 // Method (textbook, written here): x = k pi/2 + r with k = round(x 2/pi); r as a double-double by
-// Cody-Waite with pi/2 in four parts, the first three of at most 33 bits, so that k times each
+// Cody-Waite with pi/2 in four parts, the first three of 31, 32 and 28 bits, so that k times each
 // is exact for |k| <= 2^20 and the first subtraction is exact (Sterbenz); the rest are error-free
-// sums. The reduction's error is below 2^-130 absolute, and no double below 2^20 lies within
-// 2^-62 of a multiple of pi/2, so r is right to ~2^-68 relative. Then the Taylor series of sin r
-// and cos r through r^17 and r^18 (truncation < 2^-62 relative for |r| <= pi/4 + 2^-40), with
+// sums. The reduction's error is ~2^-106 of r (measured with MPFR; no double below 2^20 lies
+// within 2^-60 of a multiple of pi/2, where r would cancel most). Then the Taylor series of sin r
+// and cos r through r^17 and r^18 (truncation < 2^-62 relative for |r| <= pi/4 + 2^-30), with
 // r's low part and the rounding of r^2 carried as corrections, and the quadrant k mod 4.
 // Error: below one ulp (faithful: the result is the correctly rounded value or its neighbour);
 // tests/test_portable_trig.cpp checks that against MPFR on 10^6 arguments of every scale and
-// on the doubles nearest k pi/2 and k pi/4. Identical bits need IEEE double arithmetic without
-// FMA contraction (-ffp-contract=off: the project's flags; WebAssembly has no contraction).
+// on the doubles nearest k pi/2 and k pi/4. Identical bits need IEEE double arithmetic in
+// round-to-nearest without FMA contraction (-ffp-contract=off: the project's flags; WebAssembly
+// has neither other modes nor contraction); in another rounding mode the result is within a few
+// ulp (k = floor(x 2/pi + 1/2) is a nearest integer in any mode, up to ties where either works).
 // Outside |x| <= kPortableTrigMax (2^20 rad): the C library's sin and cos.
 #pragma once
 
@@ -46,7 +48,7 @@ SinCos<Scalar> sin_cos(const Scalar& x) {
 // Implementation details follow.
 namespace portable_trig_detail {
 
-/// pi/2 = kPio2[0] + kPio2[1] + kPio2[2] + kPio2[3] + O(2^-157): 31, 32, 29 and 53 bits.
+/// pi/2 = kPio2[0] + kPio2[1] + kPio2[2] + kPio2[3] + O(2^-157): 31, 32, 28 and 53 bits.
 constexpr double kPio2[4] = {0x1.921fb544p+0, 0x1.0b4611a6p-34, 0x1.3198a2ep-69, 0x1.b839a252049c1p-104};
 constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;  // 2/pi rounded
 
@@ -76,7 +78,7 @@ inline DoubleDouble reduce(double x, double k) {
   return two_sum(c.hi, (a.lo + c.lo) - k * kPio2[3]);
 }
 
-/// sin r for r = hi + lo, |hi| <= pi/4 + 2^-40, |lo| <= ulp(hi).
+/// sin r for r = hi + lo, |hi| <= pi/4 + 2^-30, |lo| <= ulp(hi).
 inline double sin_kernel(const DoubleDouble& r) {
   const double z = r.hi * r.hi;
   const double s = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
@@ -100,7 +102,7 @@ inline SinCos<double> sin_cos(double x) {
   using namespace portable_trig_detail;
   if (!(std::fabs(x) <= kPortableTrigMax)) return {std::sin(x), std::cos(x)};  // also inf, NaN
   if (x == 0.0) return {x, 1.0};                                                 // keeps -0
-  const double k = std::nearbyint(x * kTwoOverPi);
+  const double k = std::floor(x * kTwoOverPi + 0.5);  // not nearbyint: the same in every rounding mode
   const DoubleDouble r = k == 0.0 ? DoubleDouble{x, 0.0} : reduce(x, k);
   const double s = sin_kernel(r), c = cos_kernel(r);
   switch (static_cast<long>(k) & 3) {

@@ -216,13 +216,13 @@ bool contraction_holds(const System& sys, const std::array<double, System::N>& y
   Jacobian<Interval, N> ju{};
   sys.equations(u, fu, &ju, chart);
   for (int r = 0; r < N; ++r) {
-    double row = 0.0;
+    Interval row(0.0);  // summed as an interval: an upper bound in any rounding mode (WebAssembly)
     for (int c = 0; c < N; ++c) {
       Interval a(r == c ? 1.0 : 0.0);
       for (int m = 0; m < N; ++m) a -= inv(r, m) * ju[m][c];
-      row += std::max(-a.inf(), a.sup());  // rounding upward: an upper bound of the sum
+      row += Interval(std::max(-a.inf(), a.sup()));
     }
-    if (!(row < 1.0)) return false;
+    if (!(row.sup() < 1.0)) return false;
   }
   return true;
 }
