@@ -16,7 +16,7 @@
 // on the doubles nearest k pi/2 and k pi/4. Identical bits need IEEE double arithmetic in
 // round-to-nearest without FMA contraction (-ffp-contract=off: the project's flags; WebAssembly
 // has neither other modes nor contraction); in another rounding mode the result is within a few
-// ulp (k = floor(x 2/pi + 1/2) is a nearest integer in any mode, up to ties where either works).
+// ulp (k = floor(|x| 2/pi + 1/2) is a nearest integer in any mode, up to ties where either works).
 // Outside |x| <= kPortableTrigMax (2^20 rad): the C library's sin and cos.
 #pragma once
 
@@ -102,7 +102,8 @@ inline SinCos<double> sin_cos(double x) {
   using namespace portable_trig_detail;
   if (!(std::fabs(x) <= kPortableTrigMax)) return {std::sin(x), std::cos(x)};  // also inf, NaN
   if (x == 0.0) return {x, 1.0};                                                 // keeps -0
-  const double k = std::floor(x * kTwoOverPi + 0.5);  // not nearbyint: the same in every rounding mode
+  // Not nearbyint: the same in every rounding mode; of |x|, so that sin stays odd bit for bit.
+  const double k = std::copysign(std::floor(std::fabs(x) * kTwoOverPi + 0.5), x);
   const DoubleDouble r = k == 0.0 ? DoubleDouble{x, 0.0} : reduce(x, k);
   const double s = sin_kernel(r), c = cos_kernel(r);
   switch (static_cast<long>(k) & 3) {
