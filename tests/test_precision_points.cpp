@@ -114,6 +114,42 @@ TEST_CASE("interval_sin / interval_cos contain sin and cos at 200 bits over rand
   CHECK(top.inf() > 0.999);
 }
 
+TEST_CASE("interval_sincos of thin intervals (one evaluation at the middle) contains sin and cos at 200 bits and is sharp",
+          "[exact][synthesis]") {
+  // Widths from 1e-15 to just below kThinTrigWidth, log-uniform; centres anywhere up to 1e6 and
+  // one in four next to an extreme k pi / 2. Sharp: no wider than the mean-value theorem's bound
+  // 2 r (|cos c| + r) about the middle c (MPFR; r and c within an ulp of the ends) plus a few ulps.
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const RoundingGuard upward;
+  int outside = 0, loose = 0, cases = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double w = 0.99 * kThinTrigWidth * std::pow(10.0, -14.0 * u(rng));
+    const double scale = std::pow(10.0, u(rng) * 6.0);
+    double lo = (2.0 * u(rng) - 1.0) * scale;
+    if (k % 4 == 0) lo = (mpfr::const_pi(200) * static_cast<double>(static_cast<std::int64_t>(lo)) / 2).toDouble() - w * u(rng);
+    const double hi = lo + w;
+    if (!(hi > lo)) continue;
+    ++cases;
+    const auto [s, c] = interval_sincos(Interval(lo, hi));
+    for (int j = 0; j <= 8; ++j) {
+      const mpfr::mpreal x(j == 0 ? lo : j == 8 ? hi : lo + (hi - lo) * u(rng), 200);
+      const mpfr::mpreal sx = sin(x), cx = cos(x);
+      if (sx < s.inf() || sx > s.sup() || cx < c.inf() || cx > c.sup()) ++outside;
+    }
+    // The middle is a double: up to an ulp of the ends from the true one, so r up to an ulp more.
+    const mpfr::mpreal mid = (mpfr::mpreal(lo, 200) + mpfr::mpreal(hi, 200)) / 2;
+    const mpfr::mpreal r = (mpfr::mpreal(hi, 200) - mpfr::mpreal(lo, 200)) / 2 + std::ldexp(std::max(std::fabs(lo), std::fabs(hi)), -52);
+    const double ulps = 16 * std::ldexp(1.0, -52);  // the widening of sin c and cos c, 2^-50 each side
+    if (s.sup() - s.inf() > (2 * r * (abs(cos(mid)) + 2 * r)).toDouble() * 1.001 + ulps ||
+        c.sup() - c.inf() > (2 * r * (abs(sin(mid)) + 2 * r)).toDouble() * 1.001 + ulps)
+      ++loose;
+  }
+  CHECK(cases > 15000);
+  CHECK(outside == 0);
+  CHECK(loose == 0);
+}
+
 TEST_CASE("precision_points: the hidden train is among the certified solutions of random problems", "[exact][synthesis]") {
   std::mt19937_64 rng(2026);
   int found = 0, certified = 0;

@@ -14,8 +14,9 @@
 // each pruned on its own: `view(outer)` computes what all the lists of an outer box share,
 // `list_item(d, i)` what one interval d of list i carries down the tree (its `d` and whatever
 // depends on d alone, computed once), and `may_hold(view, item, i)` whether point i's equations
-// may vanish over the outer box x item.d
-// (REQUIRES: false only when they cannot). `chart(box)` picks one of the System's square
+// may vanish over the outer box x item.d (REQUIRES: false only when they cannot);
+// kIsolateWidth and kContractWidth are the outer widths below which boxes go to the Krawczyk
+// test in all N unknowns, and are narrowed by it. `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
 // System's `solution` drops the others), or -1 when none is good over the whole box: the box is
 // then never certified (it is bisected) and Newton uses the chart of the box's centre. Small
@@ -23,7 +24,11 @@
 // K(X) = y - Y F(y) + (I - Y J(X)) (X - y), y the centre, Y ~ J(y)^-1 (any Y keeps it valid):
 // K(X) inside X proves exactly one root in X, K(X) disjoint from X proves none. A root found by
 // Newton is certified in a tiny box and given the largest box U around it where
-// ||I - Y J(U)||_inf < 1 (by the mean value theorem no second root is there).
+// ||I - Y J(U)||_inf < 1 (by the mean value theorem no second root is there). Krawczyk also
+// narrows: an undecided box X is replaced by X intersected with K(X), which holds all its roots
+// (repeated while it narrows; a narrowed box inside a known U holds only that root), and outer
+// boxes narrower than the System's kContractWidth are narrowed the same way on the hull of their
+// lists before they are split.
 // Guarantee: when `certified`, every root in the domain is listed once (the System drops copies
 // and roots outside its fundamental domain); otherwise `undecided` boxes (narrower than
 // kMinBoxWidth and still undecided, or left when max_boxes was reached) may hold more.
@@ -322,7 +327,11 @@ class BoxSearch {
   struct Node {
     Outer outer;
     std::array<std::vector<Item>, kLists> lists;
+    int contractions = 0;  // by contract(): bounded, so that a node cannot narrow forever
   };
+
+  static constexpr int kMaxContractions = 8;
+  enum class NodeContraction { done, narrowed, unchanged };
 
   bool over_budget() const { return result_.boxes >= options_.max_boxes; }
 
@@ -345,6 +354,14 @@ class BoxSearch {
     for (int k = 1; k < kOuter; ++k)
       if (width(node.outer[k]) > width(node.outer[widest])) widest = k;
     const double wb = width(node.outer[widest]);
+    if (wb <= System::kContractWidth && wb > kIsolateWidth && node.contractions < kMaxContractions) {
+      const NodeContraction c = contract(node);
+      if (c == NodeContraction::done) return;
+      if (c == NodeContraction::narrowed) {
+        stack.push_back(std::move(node));  // its lists are tested again on the narrower box
+        return;
+      }
+    }
     if (split_lists(node, std::max(wb, kIsolateWidth))) {
       stack.push_back(std::move(node));
     } else if (wb <= kIsolateWidth) {
@@ -354,6 +371,7 @@ class BoxSearch {
       for (int k = 0; k < kOuter; ++k) x[k] = node.outer[k];
       isolate_each(runs, 0, x);
     } else {
+      node.contractions = 0;  // counts the narrowings of one box, not of its line
       Node other = node;
       const double mid = 0.5 * (node.outer[widest].inf() + node.outer[widest].sup());
       node.outer[widest] = Interval(node.outer[widest].inf(), mid);
@@ -364,6 +382,58 @@ class BoxSearch {
   }
 
   static double width(const Interval& x) { return x.sup() - x.inf(); }
+
+  /// Krawczyk on the hull X of a node (its outer box, each list's span): no root in X, or its one
+  /// root recorded (done); else the node narrowed to X intersected with K(X), which holds every
+  /// root of X, when that takes 30% or more off some width (narrowed).
+  NodeContraction contract(Node& node) {
+    Box<N> x;
+    for (int k = 0; k < kOuter; ++k) x[k] = node.outer[k];
+    for (int i = 0; i < kLists; ++i) x[kOuter + i] = span(node.lists[i]);
+    const Box<N> before = x;
+    const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
+    if (outcome == KrawczykOutcome::no_root) return NodeContraction::done;
+    if (outcome == KrawczykOutcome::unique_root) {
+      roots_.push_back({x, sys_.chart(x)});
+      regions_.push_back(x);
+      return NodeContraction::done;
+    }
+    if (!narrowed_by(before, x, 0.7)) return NodeContraction::unchanged;
+    ++node.contractions;
+    for (int k = 0; k < kOuter; ++k) node.outer[k] = x[k];
+    for (int i = 0; i < kLists; ++i) {
+      clip_list(node.lists[i], x[kOuter + i], i);
+      if (node.lists[i].empty()) return NodeContraction::done;
+    }
+    return NodeContraction::narrowed;
+  }
+
+  /// The smallest interval holding every item of a (non-empty) list.
+  static Interval span(const std::vector<Item>& list) {
+    double lo = list.front().d.inf(), hi = list.front().d.sup();
+    for (const Item& d : list) lo = std::min(lo, d.d.inf()), hi = std::max(hi, d.d.sup());
+    return Interval(lo, hi);
+  }
+
+  /// The list's items cut to r (items outside dropped, those across its ends recomputed).
+  void clip_list(std::vector<Item>& list, const Interval& r, int i) const {
+    std::vector<Item> out;
+    for (const Item& d : list) {
+      if (d.d.sup() < r.inf() || d.d.inf() > r.sup()) continue;
+      if (d.d.inf() >= r.inf() && d.d.sup() <= r.sup())
+        out.push_back(d);
+      else
+        out.push_back(item(Interval(std::max(d.d.inf(), r.inf()), std::min(d.d.sup(), r.sup())), i));
+    }
+    list = std::move(out);
+  }
+
+  /// Whether some width of `after` is below `factor` times that of `before`.
+  static bool narrowed_by(const Box<N>& before, const Box<N>& after, double factor) {
+    for (int k = 0; k < N; ++k)
+      if (width(after[k]) < factor * width(before[k])) return true;
+    return false;
+  }
 
   /// isolate() on every combination of one run per list.
   void isolate_each(const std::array<std::vector<Interval>, kLists>& runs, int i, Box<N>& x) {
@@ -441,15 +511,26 @@ class BoxSearch {
       stack.pop_back();
       ++result_.boxes;
       if (in_known_region(x) || excluded(x)) continue;
-      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
+      const KrawczykOutcome outcome = narrowing_krawczyk(x);
       if (outcome == KrawczykOutcome::no_root) continue;
       if (outcome == KrawczykOutcome::unique_root) {
         roots_.push_back({x, sys_.chart(x)});
         regions_.push_back(x);
         continue;
       }
+      if (in_known_region(x)) continue;  // x (narrowed) holds every root of the box: a known one
       if (certify_newton_root(x) && in_known_region(x)) continue;
       bisect(x, stack);
+    }
+  }
+
+  /// The Krawczyk test, repeated on X intersected with K(X) while that takes 20% or more off some
+  /// width (at most 4 times); x ends narrowed, holding every root of the first box.
+  KrawczykOutcome narrowing_krawczyk(Box<N>& x) const {
+    for (int round = 1;; ++round) {
+      const Box<N> before = x;
+      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
+      if (outcome != KrawczykOutcome::undecided || round == 4 || !narrowed_by(before, x, 0.8)) return outcome;
     }
   }
 

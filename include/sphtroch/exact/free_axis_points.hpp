@@ -261,7 +261,8 @@ inline Interval delta_free_combination(const Interval a[3], const Interval centr
 class FreeAxisSystem {
  public:
   static constexpr int kOuter = 4, kLists = 4, N = 8;
-  static constexpr double kIsolateWidth = 1.0 / 32;
+  static constexpr double kIsolateWidth = 1.0 / 64;
+  static constexpr double kContractWidth = 1.0 / 16;  // below this, Krawczyk narrows outer boxes
   static constexpr double kMeanValueWidth = 0.5;  // may_hold's mean-value forms on boxes this narrow
   using Outer = std::array<Interval, kOuter>;
 

@@ -155,6 +155,18 @@ inline SinCos<Interval> angle_sum(const SinCos<Interval>& x, const SinCos<Interv
   return {x.first * y.second + x.second * y.first, x.second * y.second - x.first * y.first};
 }
 
+/// {sin, cos} of x + y over boxes X, Y in mean-value form about the sum c of their middles:
+/// sin(c) + cos(X + Y) d and cos(c) - sin(X + Y) d, d an enclosure of X + Y - c, clipped to
+/// [-1, 1]. The trig of X + Y (wide: angle sums overestimate it) only meets the small d, so the
+/// form is first-order sharp, with no library call. boxes, centres: {sin, cos} of X and Y, of
+/// their middles.
+inline SinCos<Interval> sum_mean_value(const std::array<SinCos<Interval>, 2>& boxes,
+                                       const std::array<SinCos<Interval>, 2>& centres, const Interval& d) {
+  const SinCos<Interval> wide = angle_sum(boxes[0], boxes[1]), centre = angle_sum(centres[0], centres[1]);
+  const auto clip = [](const Interval& v) { return Interval(std::max(v.inf(), -1.0), std::min(v.sup(), 1.0)); };
+  return {clip(centre.first + wide.second * d), clip(centre.second - wide.first * d)};
+}
+
 /// The combination nu_u u + nu_v v with nu = (dv/dDelta, -du/dDelta) at the box's middle, in
 /// mean-value form: its Delta coefficient is O(width), so the Delta interval hardly widens it (u
 /// and v vanish at a root for one Delta; tested apart they may vanish for different ones).
@@ -263,7 +275,8 @@ inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
 class FixedFrameSystem {
  public:
   static constexpr int kOuter = 2, kLists = 2, N = 4;
-  static constexpr double kIsolateWidth = 1.0 / 256;  // outer boxes this narrow go to Krawczyk
+  static constexpr double kIsolateWidth = 1.0 / 1024;  // outer boxes this narrow go to Krawczyk
+  static constexpr double kContractWidth = 1.0 / 64;   // below this, Krawczyk narrows outer boxes
   using Outer = std::array<Interval, kOuter>;
 
   /// Throws InvalidInput (field "points") as precision_points() does.
@@ -283,7 +296,7 @@ class FixedFrameSystem {
     precision_detail::CarrierView<Interval> q1;
     Interval a2_centre, theta1_centre, ca_centre, sa_centre;
     precision_detail::CarrierView<Interval> q1_centre;
-    precision_detail::SinCos<Interval> theta1_centre_trig;
+    precision_detail::SinCos<Interval> theta1_centre_trig, theta1_trig;
   };
 
   View view(const Outer& x) const {
@@ -291,18 +304,18 @@ class FixedFrameSystem {
     const auto trig = interval_sincos_all<4>({x[0], x[1], a2c, t1c});
     const Interval &sa = trig[0].first, &ca = trig[0].second, &sac = trig[2].first, &cac = trig[2].second;
     return {x[0], x[1], ca, sa, precision_detail::carrier_view(ca, sa, trig[1], p_[0]),
-            a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0]), trig[3]};
+            a2c, t1c, cac, sac, precision_detail::carrier_view(cac, sac, trig[3], p_[0]), trig[3], trig[1]};
   }
 
   /// An interval of Delta_(i+2) with {sin, cos} of n Delta over it and at its centre, and of
   /// Delta at its centre, computed once for every outer box it meets.
   struct ListItem {
     Interval d;
-    std::array<precision_detail::SinCos<Interval>, 3> trig;  // n d, n centre, centre
+    std::array<precision_detail::SinCos<Interval>, 4> trig;  // n d, n centre, centre, d
   };
   ListItem list_item(const Interval& d, int /*i*/) const {
     const Interval c = centre_of(d);
-    return {d, interval_sincos_all<3>({n_interval_ * d, n_interval_ * c, c})};
+    return {d, interval_sincos_all<4>({n_interval_ * d, n_interval_ * c, c, d})};
   }
 
   /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x item.d: the plain
@@ -311,7 +324,8 @@ class FixedFrameSystem {
   bool may_hold(const View& v, const ListItem& item, int i) const {
     const Interval& delta = item.d;
     const Interval dc = centre_of(delta);
-    const auto trig = interval_sincos(v.theta1 + delta);
+    const auto trig = precision_detail::sum_mean_value({v.theta1_trig, item.trig[3]}, {v.theta1_centre_trig, item.trig[2]},
+                                                       (v.theta1 - v.theta1_centre) + (delta - dc));
     const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig, item.trig[0], n_interval_, p_[i + 1], true);
     if (!(may_vanish(e.f) && may_vanish(e.g) && may_vanish(e.dx) && may_vanish(e.dy) && e.dot.sup() > 0.0)) return false;
     const auto ec = precision_detail::point_equations(v.ca_centre, v.sa_centre, v.q1_centre,
