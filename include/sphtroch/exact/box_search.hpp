@@ -384,7 +384,7 @@ class BoxSearch {
   static double width(const Interval& x) { return x.sup() - x.inf(); }
 
   /// Krawczyk on the hull X of a node (its outer box, each list's span): no root in X, or its one
-  /// root recorded (done); else the node narrowed to X intersected with K(X), which holds every
+  /// root recorded (done: record_wide_root); else the node narrowed to X intersected with K(X), which holds every
   /// root of X, when that takes 30% or more off some width (narrowed).
   NodeContraction contract(Node& node) {
     Box<N> x;
@@ -393,11 +393,8 @@ class BoxSearch {
     const Box<N> before = x;
     const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
     if (outcome == KrawczykOutcome::no_root) return NodeContraction::done;
-    if (outcome == KrawczykOutcome::unique_root) {
-      roots_.push_back({x, sys_.chart(x)});
-      regions_.push_back(x);
-      return NodeContraction::done;
-    }
+    if (outcome == KrawczykOutcome::unique_root)
+      return record_wide_root(x) ? NodeContraction::done : NodeContraction::unchanged;
     if (!narrowed_by(before, x, 0.7)) return NodeContraction::unchanged;
     ++node.contractions;
     for (int k = 0; k < kOuter; ++k) node.outer[k] = x[k];
@@ -406,6 +403,27 @@ class BoxSearch {
       if (node.lists[i].empty()) return NodeContraction::done;
     }
     return NodeContraction::narrowed;
+  }
+
+  /// The root that Krawczyk proved unique in a wide box x: Newton from x's middle, certified in a
+  /// tiny box inside x in x's own chart (so that it is x's root) and listed with it, x becoming
+  /// its region. False, with nothing recorded, when that fails: x is then searched as usual.
+  bool record_wide_root(const Box<N>& x) {
+    const int chart = sys_.chart(x);
+    const auto y = box_search_detail::polish(sys_, x, chart);
+    for (const double radius : {1e-10, 1e-9, 1e-8, 1e-7}) {
+      Box<N> tiny;
+      for (int k = 0; k < N; ++k) tiny[k] = around(y, k, radius);
+      if (!contains(x, tiny) || sys_.chart(tiny) != chart) return false;
+      Box<N> narrowed = tiny;
+      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
+      if (outcome == KrawczykOutcome::no_root) return false;
+      if (outcome != KrawczykOutcome::unique_root) continue;
+      roots_.push_back({tiny, chart});
+      regions_.push_back(x);
+      return true;
+    }
+    return false;
   }
 
   /// The smallest interval holding every item of a (non-empty) list.

@@ -307,12 +307,12 @@ class FreeAxisSystem {
   /// An interval of Delta_(i+2) with {sin, cos} of Delta and n Delta over it and at its centre,
   /// computed once for every outer box it meets.
   struct ListItem {
-    Interval d;
+    Interval d, centre;  // the centre the trig at the middle and the mean-value forms both use
     std::array<free_axis_detail::SinCos<Interval>, 4> trig;
   };
   ListItem list_item(const Interval& d, int /*i*/) const {
     const Interval dc = centre_of(d);
-    return {d, interval_sincos_all<4>({d, n_interval_ * d, dc, n_interval_ * dc})};
+    return {d, dc, interval_sincos_all<4>({d, n_interval_ * d, dc, n_interval_ * dc})};
   }
 
   /// Whether point i + 2 may satisfy its equations on the outer box x item.d: the plain enclosure,
@@ -332,7 +332,7 @@ class FreeAxisSystem {
     if (v.width > kMeanValueWidth) return true;  // wider, the forms below hardly ever prune
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
-    dx[4] = item.d - centre_of(item.d);
+    dx[4] = item.d - item.centre;
     Interval centre[3], gradient[3][5];
     for (int j = 0; j < 3; ++j) {
       centre[j] = a_component(v.a_centre, t[3], j) - b_component(v.b_centre[i], t[2], j);

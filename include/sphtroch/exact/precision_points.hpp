@@ -310,12 +310,12 @@ class FixedFrameSystem {
   /// An interval of Delta_(i+2) with {sin, cos} of n Delta over it and at its centre, and of
   /// Delta at its centre, computed once for every outer box it meets.
   struct ListItem {
-    Interval d;
+    Interval d, centre;  // the centre the trig at the middle and the mean-value forms both use
     std::array<precision_detail::SinCos<Interval>, 4> trig;  // n d, n centre, centre, d
   };
   ListItem list_item(const Interval& d, int /*i*/) const {
     const Interval c = centre_of(d);
-    return {d, interval_sincos_all<4>({n_interval_ * d, n_interval_ * c, c, d})};
+    return {d, c, interval_sincos_all<4>({n_interval_ * d, n_interval_ * c, c, d})};
   }
 
   /// Whether point i + 2 may satisfy its equations on (a2, theta_1) x item.d: the plain
@@ -323,7 +323,7 @@ class FixedFrameSystem {
   /// (f, g) and of (x, y) in which Delta's coefficient vanishes at the centre.
   bool may_hold(const View& v, const ListItem& item, int i) const {
     const Interval& delta = item.d;
-    const Interval dc = centre_of(delta);
+    const Interval& dc = item.centre;
     const auto trig = precision_detail::sum_mean_value({v.theta1_trig, item.trig[3]}, {v.theta1_centre_trig, item.trig[2]},
                                                        (v.theta1 - v.theta1_centre) + (delta - dc));
     const auto e = precision_detail::point_equations(v.ca, v.sa, v.q1, trig, item.trig[0], n_interval_, p_[i + 1], true);
