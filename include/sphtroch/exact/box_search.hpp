@@ -410,20 +410,12 @@ class BoxSearch {
   /// its region. False, with nothing recorded, when that fails: x is then searched as usual.
   bool record_wide_root(const Box<N>& x) {
     const int chart = sys_.chart(x);
-    const auto y = box_search_detail::polish(sys_, x, chart);
-    for (const double radius : {1e-10, 1e-9, 1e-8, 1e-7}) {
-      Box<N> tiny;
-      for (int k = 0; k < N; ++k) tiny[k] = around(y, k, radius);
-      if (!contains(x, tiny) || sys_.chart(tiny) != chart) return false;
-      Box<N> narrowed = tiny;
-      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
-      if (outcome == KrawczykOutcome::no_root) return false;
-      if (outcome != KrawczykOutcome::unique_root) continue;
-      roots_.push_back({tiny, chart});
-      regions_.push_back(x);
-      return true;
-    }
-    return false;
+    const auto tiny = proven_tiny_box(box_search_detail::polish(sys_, x, chart),
+                                      [&](const Box<N>& t) { return !contains(x, t) || sys_.chart(t) != chart; });
+    if (!tiny) return false;
+    roots_.push_back({*tiny, chart});
+    regions_.push_back(x);
+    return true;
   }
 
   /// The smallest interval holding every item of a (non-empty) list.
@@ -613,23 +605,31 @@ class BoxSearch {
   bool certify_newton_root(const Box<N>& x) {
     const auto y = box_search_detail::newton_limit(sys_, x, [&](const std::array<double, N>& p) { return in_known_region(p); });
     if (!y || !in_domain(*y)) return false;
-    // Radius 1e-10 first; an ill-conditioned root (Newton's limit only good to cond * 1e-16)
-    // needs a wider box for K(X) to fit inside.
+    const auto tiny = proven_tiny_box(*y, [&](const Box<N>& t) {
+      return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) { return contains(u, t); });
+    });
+    if (!tiny) return false;
+    const int chart = sys_.chart(*tiny);  // the chart krawczyk() proved the root in
+    roots_.push_back({*tiny, chart});
+    regions_.push_back(uniqueness_region(*y, *tiny, chart));
+    return true;
+  }
+
+  /// The first box y +- r (r = 1e-10, 1e-9, 1e-8, 1e-7: an ill-conditioned root, Newton's limit
+  /// only good to cond * 1e-16, needs a wider box for K(X) to fit inside) in which Krawczyk proves
+  /// exactly one root; none once `rejected(box)` or a box is proven empty.
+  template <class Rejected>
+  std::optional<Box<N>> proven_tiny_box(const std::array<double, N>& y, const Rejected& rejected) const {
     for (const double radius : {1e-10, 1e-9, 1e-8, 1e-7}) {  // a list: rounding upward here
       Box<N> tiny;
-      for (int k = 0; k < N; ++k) tiny[k] = around(*y, k, radius);
-      for (const Box<N>& u : regions_)
-        if (contains(u, tiny)) return false;
+      for (int k = 0; k < N; ++k) tiny[k] = around(y, k, radius);
+      if (rejected(tiny)) return std::nullopt;
       Box<N> narrowed = tiny;
       const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
-      if (outcome == KrawczykOutcome::no_root) return false;
-      if (outcome != KrawczykOutcome::unique_root) continue;
-      const int chart = sys_.chart(tiny);  // the chart krawczyk() proved the root in
-      roots_.push_back({tiny, chart});
-      regions_.push_back(uniqueness_region(*y, tiny, chart));
-      return true;
+      if (outcome == KrawczykOutcome::no_root) return std::nullopt;
+      if (outcome == KrawczykOutcome::unique_root) return tiny;
     }
-    return false;
+    return std::nullopt;
   }
 
   /// Whether y lies in one of the System's domains (lists: [0, list_max]).
