@@ -283,7 +283,8 @@ class FreeAxisSystem {
   double list_scale() const { return 1.0 + std::fabs(ratio_.value()); }
 
   /// The rotation terms of every point over an outer box and at its centre: a for R_w P_1,
-  /// b[i] for R_s P_(i+2).
+  /// b[i] for R_s P_(i+2). For a box wider than kMeanValueWidth, only a and b, without
+  /// derivatives.
   struct View {
     free_axis_detail::RotationTerms<Interval> a, a_centre;
     std::array<free_axis_detail::RotationTerms<Interval>, kLists> b, b_centre;
@@ -299,8 +300,9 @@ class FreeAxisSystem {
     v.centre = c;
     v.width = 0.0;
     for (const Interval& xk : x) v.width = std::max(v.width, xk.sup() - xk.inf());
-    terms(x, v.a, v.b, true);
-    terms(c, v.a_centre, v.b_centre, false);
+    const bool forms = v.width <= kMeanValueWidth;  // wider, may_hold needs no centre or derivatives
+    terms(x, v.a, v.b, forms);
+    if (forms) terms(c, v.a_centre, v.b_centre, false);
     return v;
   }
 
@@ -328,8 +330,9 @@ class FreeAxisSystem {
       b[j] = b_component(v.b[i], t[0], j);
       if (!may_vanish(a[j] - b[j])) return false;
     }
-    if (!((a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0)) return false;  // A . B > 0
-    if (v.width > kMeanValueWidth) return true;  // wider, the forms below hardly ever prune
+    // Wider boxes: A . B > 0 (the forms below hardly ever prune there). Narrower, the forms
+    // replace it (it pruned nothing there: measured over the sweep's problem 7).
+    if (v.width > kMeanValueWidth) return (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0;
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
     dx[4] = item.d - item.centre;
