@@ -14,7 +14,8 @@
 // each pruned on its own: `view(outer)` computes what all the lists of an outer box share,
 // `list_item(d, i)` what one interval d of list i carries down the tree (its `d` and whatever
 // depends on d alone, computed once), and `may_hold(view, item, i)` whether point i's equations
-// may vanish over the outer box x item.d (REQUIRES: false only when they cannot);
+// may vanish over the outer box x item.d (REQUIRES: false only when they cannot; it may note
+// in the view what the tests found, for the optional `narrow_outer`);
 // kIsolateWidth and kContractWidth are the outer widths below which boxes go to the Krawczyk
 // test in all N unknowns, and are narrowed by it. `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
@@ -28,7 +29,9 @@
 // narrows: an undecided box X is replaced by X intersected with K(X), which holds all its roots
 // (repeated while it narrows; a narrowed box inside a known U holds only that root), and outer
 // boxes narrower than the System's kContractWidth are narrowed the same way on the hull of their
-// lists before they are split.
+// lists before they are split. A System may have `narrow_outer(view, outer)`, called once every
+// list was filtered on the view's box: false when the lists together exclude every root of the
+// box, else `outer` (the box) narrowed to where roots may be (REQUIRES: it keeps every root).
 // Guarantee: when `certified`, every root in the domain is listed once (the System drops copies
 // and roots outside its fundamental domain); otherwise `undecided` boxes (narrower than
 // kMinBoxWidth and still undecided, or left when max_boxes was reached) may hold more.
@@ -131,6 +134,14 @@ template <typename T, int N>
 using Jacobian = std::array<std::array<T, N>, N>;
 template <int N>
 using Matrix = Eigen::Matrix<double, N, N>;
+
+/// Whether System has narrow_outer(view, outer) (see header).
+template <class System, class = void>
+struct has_narrow_outer : std::false_type {};
+template <class System>
+struct has_narrow_outer<System, std::void_t<decltype(std::declval<const System&>().narrow_outer(
+                                    std::declval<const typename System::View&>(), std::declval<typename System::Outer&>()))>>
+    : std::true_type {};
 
 template <int N>
 std::array<double, N> centre(const Box<N>& x) {
@@ -343,12 +354,20 @@ class BoxSearch {
   void step(Node node, std::vector<Node>& stack) {
     if (sys_.outside(node.outer)) return;  // only copies of roots inside the domain
     ++result_.boxes;
-    const auto view = sys_.view(node.outer);
+    auto view = sys_.view(node.outer);  // may_hold may note its findings in it
     for (int i = 0; i < kLists; ++i) {
       auto& list = node.lists[i];
       list.erase(std::remove_if(list.begin(), list.end(), [&](const Item& d) { return !sys_.may_hold(view, d, i); }),
                  list.end());
       if (list.empty()) return;
+    }
+    if constexpr (box_search_detail::has_narrow_outer<System>::value) {
+      const NodeContraction c = narrow_outer(node, view);
+      if (c == NodeContraction::done) return;
+      if (c == NodeContraction::narrowed) {
+        stack.push_back(std::move(node));  // its lists are tested again on the narrower box
+        return;
+      }
     }
     int widest = 0;
     for (int k = 1; k < kOuter; ++k)
@@ -382,6 +401,23 @@ class BoxSearch {
   }
 
   static double width(const Interval& x) { return x.sup() - x.inf(); }
+
+  /// The System's narrow_outer on a node whose lists were filtered on `view`: no root left
+  /// (done), or the node's outer box narrowed when that takes 30% or more off some width (at
+  /// most kMaxContractions times per box, with contract()'s).
+  template <class View>
+  NodeContraction narrow_outer(Node& node, const View& view) const {
+    Outer narrowed = node.outer;
+    if (!sys_.narrow_outer(view, narrowed)) return NodeContraction::done;
+    if (node.contractions >= kMaxContractions) return NodeContraction::unchanged;
+    for (int k = 0; k < kOuter; ++k)
+      if (width(narrowed[k]) < 0.7 * width(node.outer[k])) {
+        ++node.contractions;
+        node.outer = narrowed;
+        return NodeContraction::narrowed;
+      }
+    return NodeContraction::unchanged;
+  }
 
   /// Krawczyk on the hull X of a node (its outer box, each list's span): no root in X, or its one
   /// root recorded (done: record_wide_root); else the node narrowed to X intersected with K(X), which holds every
@@ -502,7 +538,7 @@ class BoxSearch {
   bool excluded(const Box<N>& x) const {
     Outer outer;
     for (int k = 0; k < kOuter; ++k) outer[k] = x[k];
-    const auto view = sys_.view(outer);
+    auto view = sys_.view(outer);
     for (int i = 0; i < kLists; ++i)
       if (!sys_.may_hold(view, item(x[kOuter + i], i), i)) return true;
     return false;

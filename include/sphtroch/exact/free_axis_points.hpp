@@ -22,7 +22,9 @@
 // two vanish at every root, and its mirror roots (A_ik = -B_ik) are dropped by solution().
 //
 // Certificate: the branch and bound of exact/box_search.hpp over the 18 face pairs (outer unknowns
-// s, w; one list per point for Delta_i), as in precision_points.hpp. `certified` means the
+// s, w; one list per point for Delta_i), as in precision_points.hpp; besides, the four points'
+// Delta-free combinations, one slab each in (s, w), drop or narrow outer boxes together
+// (narrow_outer: Krawczyk's operator in the four outer unknowns). `certified` means the
 // solutions are ALL the trains through the five points with a2, a3 in [1e-6, pi - 1e-6], each
 // once (the sun axis up to its sign). Reported: the sun axis with its sign chosen so that z > 0
 // (else y > 0, else x > 0; components within 1e-9 of 0 count as 0), the frame's x axis the
@@ -241,17 +243,43 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
 
 constexpr double kFaceOverlap = 1.0 / 64;
 
-/// The mean-value form of nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle (a: A
-/// over the box; centre: A - B at the centre; gradient: its derivatives by (s_u, s_v, w_u, w_v,
-/// Delta) over the box; dx: box - centre). nu is tangent to the sphere at A and normal to Delta's
-/// direction, so Delta's coefficient is O(width): the components tested apart may vanish for
-/// different Deltas, this one only near a Delta where both do. Any nu keeps it valid.
-inline Interval delta_free_combination(const Interval a[3], const Interval centre[3], const Interval gradient[3][5],
-                                       const Interval dx[5]) {
+/// The combination nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle, nu of unit
+/// length (a: A over the box; centre: A - B at the centre; gradient: its derivatives by (s_u, s_v,
+/// w_u, w_v, Delta) over the box; dx: box - centre). nu is tangent to the sphere at A and normal
+/// to Delta's direction, so Delta's coefficient is O(width): the components tested apart may
+/// vanish for different Deltas, this one only near a Delta where both do. Any nu keeps it valid.
+/// Its mean-value form over the box is value + sum_k coefficient_k dx_k (k: the four outer
+/// unknowns; Delta's part is in value): a slab in the outer unknowns. None when nu is zero or not
+/// finite (no information).
+struct DeltaFreeSlab {
+  Interval value;
+  std::array<Interval, 4> coefficient;
+};
+
+inline std::optional<DeltaFreeSlab> delta_free_slab(const Interval a[3], const Interval centre[3], const Interval gradient[3][5],
+                                                    const Interval dx[5]) {
   double am[3], dm[3];
   for (int j = 0; j < 3; ++j) am[j] = 0.5 * (a[j].inf() + a[j].sup()), dm[j] = 0.5 * (gradient[j][4].inf() + gradient[j][4].sup());
-  const std::array<double, 3> nu{am[1] * dm[2] - am[2] * dm[1], am[2] * dm[0] - am[0] * dm[2], am[0] * dm[1] - am[1] * dm[0]};
-  return combined_mean_value<3, 5>(nu, {centre[0], centre[1], centre[2]}, {gradient[0], gradient[1], gradient[2]}, dx);
+  double nu[3] = {am[1] * dm[2] - am[2] * dm[1], am[2] * dm[0] - am[0] * dm[2], am[0] * dm[1] - am[1] * dm[0]};
+  const double length = std::sqrt(nu[0] * nu[0] + nu[1] * nu[1] + nu[2] * nu[2]);
+  if (!(length > 0.0 && std::isfinite(length))) return std::nullopt;
+  for (double& x : nu) x /= length;  // rounded: any nu will do
+  const auto combined = [&](const auto& term) { return nu[0] * term(0) + nu[1] * term(1) + nu[2] * term(2); };
+  DeltaFreeSlab slab;
+  slab.value = combined([&](int j) { return centre[j]; }) + combined([&](int j) { return gradient[j][4]; }) * dx[4];
+  for (int k = 0; k < 4; ++k) slab.coefficient[k] = combined([&](int j) { return gradient[j][k]; });
+  return slab;
+}
+
+/// The smallest interval holding x and y.
+inline Interval hull(const Interval& x, const Interval& y) {
+  return Interval(std::min(x.inf(), y.inf()), std::max(x.sup(), y.sup()));
+}
+
+/// x widened to hold every y' of y (each interval its hull with y's).
+inline void widen_to_hold(DeltaFreeSlab& x, const DeltaFreeSlab& y) {
+  x.value = hull(x.value, y.value);
+  for (int k = 0; k < 4; ++k) x.coefficient[k] = hull(x.coefficient[k], y.coefficient[k]);
 }
 
 }  // namespace free_axis_detail
@@ -290,6 +318,10 @@ class FreeAxisSystem {
     std::array<free_axis_detail::RotationTerms<Interval>, kLists> b, b_centre;
     Outer box, centre;
     double width;  // of the widest outer unknown
+    // Noted by may_hold on boxes no wider than kMeanValueWidth: per list, the hull of the
+    // Delta-free slabs of the items that passed (for narrow_outer).
+    std::array<std::optional<free_axis_detail::DeltaFreeSlab>, kLists> slabs;
+    bool slabs_known = true;  // false once an item's slab gave no information
   };
 
   View view(const Outer& x) const {
@@ -319,8 +351,9 @@ class FreeAxisSystem {
 
   /// Whether point i + 2 may satisfy its equations on the outer box x item.d: the plain enclosure,
   /// then the mean-value form F(c) + J(X) (X - c) of each component of A - B and of the
-  /// combination in which Delta's coefficient vanishes at the box's middle.
-  bool may_hold(const View& v, const ListItem& item, int i) const {
+  /// combination in which Delta's coefficient vanishes at the box's middle (noted in the view
+  /// for narrow_outer when the item passes).
+  bool may_hold(View& v, const ListItem& item, int i) const {
     using free_axis_detail::a_component;
     using free_axis_detail::b_component;
     const auto& t = item.trig;
@@ -342,7 +375,52 @@ class FreeAxisSystem {
       free_axis_detail::component_gradient(v.a, v.b[i], t[0], t[1], n_interval_, j, gradient[j]);
       if (!may_vanish(mean_value<5>(centre[j], gradient[j], dx))) return false;
     }
-    return may_vanish(free_axis_detail::delta_free_combination(a, centre, gradient, dx));
+    const auto slab = free_axis_detail::delta_free_slab(a, centre, gradient, dx);
+    if (!slab) {
+      v.slabs_known = false;
+      return true;
+    }
+    Interval total = slab->value;
+    for (int k = 0; k < kOuter; ++k) total += slab->coefficient[k] * dx[k];
+    if (!may_vanish(total)) return false;
+    if (v.slabs[i])
+      free_axis_detail::widen_to_hold(*v.slabs[i], *slab);
+    else
+      v.slabs[i] = slab;
+    return true;
+  }
+
+  /// After every list was filtered on the view's box x: the four lists' Delta-free slabs must
+  /// vanish together at a root x*. So 0 = v + C (x* - c) for some v, C within the slabs, and with
+  /// Y ~ mid(C)^-1 (any Y keeps it valid) x* - c = -Y v + (I - Y C) (x* - c) lies in
+  /// K = -Y v + (I - Y C) (X - c): Krawczyk's operator in the outer unknowns alone. False when K
+  /// misses X - c (no root in x); else x narrowed to c + K. Boxes without slabs: x unchanged.
+  bool narrow_outer(const View& v, Outer& x) const {
+    if (v.width > kMeanValueWidth || !v.slabs_known) return true;
+    Eigen::Matrix4d middle;
+    for (int i = 0; i < kLists; ++i) {
+      if (!v.slabs[i]) return true;  // (every list kept an item, so each has one)
+      for (int k = 0; k < kOuter; ++k) middle(i, k) = 0.5 * (v.slabs[i]->coefficient[k].inf() + v.slabs[i]->coefficient[k].sup());
+    }
+    const Eigen::FullPivLU<Eigen::Matrix4d> lu(middle);
+    if (!lu.isInvertible()) return true;
+    const Eigen::Matrix4d y = lu.inverse();
+    if (!y.allFinite()) return true;
+    Interval dx[kOuter], k_box[kOuter];
+    for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
+    for (int r = 0; r < kOuter; ++r) {
+      Interval k_r(0.0);
+      for (int m = 0; m < kLists; ++m) k_r -= y(r, m) * v.slabs[m]->value;
+      for (int c = 0; c < kOuter; ++c) {
+        Interval e(r == c ? 1.0 : 0.0);
+        for (int m = 0; m < kLists; ++m) e -= y(r, m) * v.slabs[m]->coefficient[c];
+        k_r += e * dx[c];
+      }
+      if (k_r.sup() < dx[r].inf() || k_r.inf() > dx[r].sup()) return false;
+      k_box[r] = v.centre[r] + k_r;
+    }
+    for (int r = 0; r < kOuter; ++r) x[r] = Interval(std::max(x[r].inf(), k_box[r].inf()), std::min(x[r].sup(), k_box[r].sup()));
+    return true;
   }
 
   /// Per point, the dropped component of A - B (see header), as base-3 digits; -1 when for some
