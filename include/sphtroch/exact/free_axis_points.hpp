@@ -393,8 +393,8 @@ class FreeAxisSystem {
   /// After every list was filtered on the view's box x: the four lists' Delta-free slabs must
   /// vanish together at a root x*. So 0 = v + C (x* - c) for some v, C within the slabs, and with
   /// Y ~ mid(C)^-1 (any Y keeps it valid) x* - c = -Y v + (I - Y C) (x* - c) lies in
-  /// K = -Y v + (I - Y C) (X - c): Krawczyk's operator in the outer unknowns alone. False when K
-  /// misses X - c (no root in x); else x narrowed to c + K. Boxes without slabs: x unchanged.
+  /// K = -Y v + (I - Y C) (X - c): Krawczyk's operator in the outer unknowns alone. False when
+  /// c + K misses x (no root in x); else x narrowed to c + K. Boxes without slabs: x unchanged.
   bool narrow_outer(const View& v, Outer& x) const {
     if (v.width > kMeanValueWidth || !v.slabs_known) return true;
     Eigen::Matrix4d middle;
@@ -416,8 +416,8 @@ class FreeAxisSystem {
         for (int m = 0; m < kLists; ++m) e -= y(r, m) * v.slabs[m]->coefficient[c];
         k_r += e * dx[c];
       }
-      if (k_r.sup() < dx[r].inf() || k_r.inf() > dx[r].sup()) return false;
-      k_box[r] = v.centre[r] + k_r;
+      k_box[r] = v.centre[r] + k_r;  // holds every root's x*_r
+      if (k_box[r].sup() < x[r].inf() || k_box[r].inf() > x[r].sup()) return false;
     }
     for (int r = 0; r < kOuter; ++r) x[r] = Interval(std::max(x[r].inf(), k_box[r].inf()), std::min(x[r].sup(), k_box[r].sup()));
     return true;
