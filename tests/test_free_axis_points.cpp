@@ -118,9 +118,11 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
   // Every box holding the hidden root must pass may_hold for each point's item holding its Delta,
   // and narrow_outer must neither drop the box nor narrow the root out of it (boxes 1/4..1/64,
   // the root anywhere but within 5% of an edge: its doubles are within 1e-14 of the true root).
+  // Boxes 1/4..1/16 also test every item of each list's whole range after the root's: the slabs
+  // of those that pass are joined with the root's (a hull that kept only the last slab fails here).
   std::mt19937_64 rng(2027);
   std::uniform_real_distribution<double> offset(0.05, 0.95);
-  int narrowed = 0;
+  int narrowed = 0, joined = 0;
   for (int k = 0; k < 20; ++k) {
     const FreeProblem pr = random_free_problem(rng);
     const auto [sun, planet] = hidden_faces(pr);
@@ -135,9 +137,11 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
         box[j] = Interval(lo, lo + width);
       }
       auto view = system.view(box);
-      for (int i = 0; i < 4; ++i) {
+      for (int i = 0; i < 4; ++i) {  // the root's item, then every item of the whole range: slabs joined
         const double h = width / system.list_scale(), lo = root[4 + i] - offset(rng) * h;
         REQUIRE(system.may_hold(view, system.list_item(Interval(lo, lo + h), i), i));
+        for (double d = 0.0; width >= 1.0 / 16 && d < system.list_max(); d += h)
+          joined += system.may_hold(view, system.list_item(Interval(d, d + h), i), i);
       }
       FreeAxisSystem::Outer narrower = box;
       REQUIRE(system.narrow_outer(view, narrower));
@@ -149,6 +153,7 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
     }
   }
   CHECK(narrowed > 0);  // the narrowing is exercised (else this test proves nothing)
+  CHECK(joined > 0);    // and slabs of two items of one list joined
 }
 
 TEST_CASE("free axis: on the face pair of the hidden root the search finds it and certifies its list", "[synthesis][exact]") {

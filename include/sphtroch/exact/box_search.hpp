@@ -338,7 +338,7 @@ class BoxSearch {
   struct Node {
     Outer outer;
     std::array<std::vector<Item>, kLists> lists;
-    int contractions = 0;  // by contract(): bounded, so that a node cannot narrow forever
+    int contractions = 0;  // by contract() and narrow_outer(): bounded, so that a node cannot narrow forever
   };
 
   static constexpr int kMaxContractions = 8;

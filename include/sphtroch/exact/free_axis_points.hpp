@@ -395,6 +395,7 @@ class FreeAxisSystem {
   /// Y ~ mid(C)^-1 (any Y keeps it valid) x* - c = -Y v + (I - Y C) (x* - c) lies in
   /// K = -Y v + (I - Y C) (X - c): Krawczyk's operator in the outer unknowns alone. False when
   /// c + K misses x (no root in x); else x narrowed to c + K. Boxes without slabs: x unchanged.
+  /// REQUIRES: x is the view's box, and every list was filtered on the view.
   bool narrow_outer(const View& v, Outer& x) const {
     if (v.width > kMeanValueWidth || !v.slabs_known) return true;
     Eigen::Matrix4d middle;
