@@ -199,6 +199,39 @@ TEST_CASE("free axis: the whole search holds the hidden train once and agrees wi
   CHECK(on_z >= 1);
 }
 
+TEST_CASE("free axis: the points in another order give the same trains, each passing them at its params",
+          "[synthesis][exact]") {
+  // The search writes the points against a reference chosen from their geometry (the close pair
+  // below, wherever it is put), and reports params in input order: checked on a permutation.
+  FreeProblem pr;
+  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
+  pr.thetas = {0.3, 1.4, 2.6, 4.0, 4.05};
+  for (const double t : pr.thetas) pr.points.push_back(TracerCurve<double>(pr.hidden).point(t));
+  const std::vector<int> order = {3, 0, 4, 2, 1};  // permuted[i] = points[order[i]]
+  std::vector<Vector3d> permuted;
+  for (const int i : order) permuted.push_back(pr.points[i]);
+  CHECK(free_axis_detail::reference_point(pr.points) == 3);  // the first of the close pair 3, 4
+  CHECK(free_axis_detail::reference_point(permuted) == 0);
+  PrecisionPointsOptions options;
+  options.threads = 2;
+  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
+  const PrecisionPoints p = free_axis_points(permuted, pr.hidden.ratio(), options);
+  REQUIRE(r.certified);
+  REQUIRE(p.certified);
+  check_solutions_pass_points(r, pr.points);
+  check_solutions_pass_points(p, permuted);
+  REQUIRE(r.solutions.size() == p.solutions.size());
+  CHECK(std::count_if(p.solutions.begin(), p.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
+  for (std::size_t k = 0; k < r.solutions.size(); ++k) {
+    const PrecisionSolution &a = r.solutions[k], &b = p.solutions[k];
+    CHECK((a.frame - b.frame).norm() < 1e-9);
+    CHECK(std::abs(a.train.a2() - b.train.a2()) < 1e-9);
+    CHECK(std::abs(a.train.a3() - b.train.a3()) < 1e-9);
+    CHECK(std::abs(a.train.phase() - b.train.phase()) < 1e-9);
+    for (int i = 0; i < 5; ++i) CHECK(std::abs(std::remainder(a.params[order[i]] - b.params[i], a.train.period())) < 1e-9);
+  }
+}
+
 TEST_CASE("free axis: the Jacobian of every chart is the derivative of its equations (central differences)",
           "[synthesis][exact]") {
   // An exclusion or a Krawczyk proof with a wrong J would be wrong: J against (F(x + h) - F(x - h)) / 2h.
