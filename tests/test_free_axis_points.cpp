@@ -199,6 +199,22 @@ TEST_CASE("free axis: the whole search holds the hidden train once and agrees wi
   CHECK(on_z >= 1);
 }
 
+TEST_CASE("free axis: a sun axis on a corner of the cube charts is found once, certified", "[synthesis][exact]") {
+  // s = (1, 1, 1) / sqrt(3) lies on the edges of the faces +x, +y, +z (u = v = 1 on each): each
+  // face's domain reaches past its edges, so the root is inside three of them and listed once.
+  FreeProblem pr;
+  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
+  pr.rotation = Eigen::Quaterniond::FromTwoVectors(Vector3d::UnitZ(), Vector3d(1, 1, 1).normalized()).toRotationMatrix();
+  pr.thetas = {0.3, 1.4, 2.6, 4.0, 5.3};
+  for (const double t : pr.thetas) pr.points.push_back(pr.rotation * TracerCurve<double>(pr.hidden).point(t));
+  PrecisionPointsOptions options;
+  options.threads = 2;
+  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
+  REQUIRE(r.certified);
+  CHECK(std::count_if(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
+  check_solutions_pass_points(r, pr.points);
+}
+
 TEST_CASE("free axis: the points in another order give the same trains, each passing them at its params",
           "[synthesis][exact]") {
   // The search writes the points against a reference chosen from their geometry (the close pair

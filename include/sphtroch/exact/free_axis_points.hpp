@@ -15,7 +15,7 @@
 // eight equations (two per unit-vector equation) in the eight unknowns s, w (unit vectors, two
 // each) and Delta_2..Delta_5 in [0, 2 pi q]: no arccos, nothing folds. a2 = angle(s, w), a3 =
 // angle(w, P_1). s and w are charted by cube faces: a = c / |c| with c = +-e_f + u e_(f+1) + v
-// e_(f+2), u, v in [-1 - 1/64, 1 + 1/64] (boxes wholly outside [-1, 1] dropped, so no root sits on
+// e_(f+2), u, v in [-1 - 1/512, 1 + 1/512] (boxes wholly outside [-1, 1] dropped, so no root sits on
 // an edge). (s, w, Delta) and (-s, -w, -Delta) are the same motion (the same train seen with the
 // sun axis reversed: a3 becomes pi - a3), so s takes the three faces +x, +y, +z and w all six.
 // Of A_i - B_i, the component k where |A_i| is largest over a box is dropped (`chart`): the other
@@ -245,7 +245,7 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
   return f;
 }
 
-constexpr double kFaceOverlap = 1.0 / 64;
+constexpr double kFaceOverlap = 1.0 / 512;  // any margin keeps roots off the domain edges; wider only adds boxes
 
 /// The combination nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle, nu of unit
 /// length (a: A over the box; centre: A - B at the centre; gradient: its derivatives by (s_u, s_v,
