@@ -287,19 +287,24 @@ inline void widen_to_hold(DeltaFreeSlab& x, const DeltaFreeSlab& y) {
 }
 
 /// The point written as point 1 of the header (the reference): the one whose removal leaves the
-/// largest smallest chord among the other four (the first on ties). Two close points, neither
-/// the reference, give two nearly equal conditions that boxes tell apart only once they are about
-/// as narrow as their chord; with one of them the reference, the other's condition scales with
-/// the chord. (Measured on the sweep of bench/: up to 2.9x fewer boxes, 1.3x on the median.)
+/// largest smallest chord among the other four; on a tie (the same closest pair left), the one
+/// with the smallest sum of chords to the others; then the first. Two close points, neither the
+/// reference, give two nearly equal conditions that boxes tell apart only once they are about as
+/// narrow as their chord; with one of them the reference, the other's condition scales with the
+/// chord. (Measured: docs/cli.md, `synth points --free-axis`.)
 inline std::size_t reference_point(const std::vector<Vector3d>& points) {
+  const auto chord = [&](std::size_t i, std::size_t j) { return (points[i] - points[j]).norm(); };
   std::size_t best = 0;
-  double best_chord = -1.0;
+  double best_smallest = -1.0, best_sum = 0.0;
   for (std::size_t r = 0; r < points.size(); ++r) {
-    double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < points.size(); ++i)
+    double smallest = std::numeric_limits<double>::infinity(), sum = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (i != r) sum += chord(i, r);
       for (std::size_t j = i + 1; j < points.size(); ++j)
-        if (i != r && j != r) smallest = std::min(smallest, (points[i] - points[j]).norm());
-    if (smallest > best_chord) best = r, best_chord = smallest;
+        if (i != r && j != r) smallest = std::min(smallest, chord(i, j));
+    }
+    if (smallest > best_smallest || (smallest == best_smallest && sum < best_sum))
+      best = r, best_smallest = smallest, best_sum = sum;
   }
   return best;
 }
