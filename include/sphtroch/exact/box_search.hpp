@@ -409,14 +409,10 @@ class BoxSearch {
   NodeContraction narrow_outer(Node& node, const View& view) const {
     Outer narrowed = node.outer;
     if (!sys_.narrow_outer(view, narrowed)) return NodeContraction::done;
-    if (node.contractions >= kMaxContractions) return NodeContraction::unchanged;
-    for (int k = 0; k < kOuter; ++k)
-      if (width(narrowed[k]) < 0.7 * width(node.outer[k])) {
-        ++node.contractions;
-        node.outer = narrowed;
-        return NodeContraction::narrowed;
-      }
-    return NodeContraction::unchanged;
+    if (node.contractions >= kMaxContractions || !narrowed_by(node.outer, narrowed, 0.7)) return NodeContraction::unchanged;
+    ++node.contractions;
+    node.outer = narrowed;
+    return NodeContraction::narrowed;
   }
 
   /// Krawczyk on the hull X of a node (its outer box, each list's span): no root in X, or its one
@@ -475,8 +471,9 @@ class BoxSearch {
   }
 
   /// Whether some width of `after` is below `factor` times that of `before`.
-  static bool narrowed_by(const Box<N>& before, const Box<N>& after, double factor) {
-    for (int k = 0; k < N; ++k)
+  template <std::size_t M>
+  static bool narrowed_by(const std::array<Interval, M>& before, const std::array<Interval, M>& after, double factor) {
+    for (std::size_t k = 0; k < M; ++k)
       if (width(after[k]) < factor * width(before[k])) return true;
     return false;
   }
