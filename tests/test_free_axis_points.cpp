@@ -59,6 +59,26 @@ bool is_hidden(const PrecisionSolution& s, const FreeProblem& pr, double tol) {
   return false;
 }
 
+/// The train (1.2, 0.8, n = 1, phase 0.5) at five carrier angles, turned by `rotation`.
+FreeProblem nephroid_problem(const std::vector<double>& thetas, const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {
+  FreeProblem pr;
+  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
+  pr.rotation = rotation;
+  pr.thetas = thetas;
+  for (const double t : pr.thetas) pr.points.push_back(rotation * TracerCurve<double>(pr.hidden).point(t));
+  return pr;
+}
+
+/// The whole search on two threads, certified, holding the hidden train once.
+PrecisionPoints certified_search(const std::vector<Vector3d>& points, const FreeProblem& pr) {
+  PrecisionPointsOptions options;
+  options.threads = 2;
+  const PrecisionPoints r = free_axis_points(points, pr.hidden.ratio(), options);
+  REQUIRE(r.certified);
+  CHECK(std::count_if(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
+  return r;
+}
+
 /// Every solution passes its points at its parameters, with a right-handed orthonormal frame.
 void check_solutions_pass_points(const PrecisionPoints& r, const std::vector<Vector3d>& points) {
   for (const PrecisionSolution& s : r.solutions) {
@@ -172,15 +192,8 @@ TEST_CASE("free axis: on the face pair of the hidden root the search finds it an
 
 TEST_CASE("free axis: the whole search holds the hidden train once and agrees with the fixed frame where the axis is Z",
           "[synthesis][exact]") {
-  FreeProblem pr;  // the sun axis is Z: the fixed frame can check (a problem of ~1 s)
-  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
-  pr.thetas = {0.3, 1.4, 2.6, 4.0, 5.3};
-  for (const double t : pr.thetas) pr.points.push_back(TracerCurve<double>(pr.hidden).point(t));
-  PrecisionPointsOptions options;
-  options.threads = 2;
-  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
-  REQUIRE(r.certified);
-  CHECK(std::count_if(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
+  const FreeProblem pr = nephroid_problem({0.3, 1.4, 2.6, 4.0, 5.3});  // the sun axis is Z: the fixed frame can check
+  const PrecisionPoints r = certified_search(pr.points, pr);
   check_solutions_pass_points(r, pr.points);
   // Every train with the sun axis Z is among the fixed-frame trains through the first three points.
   const PrecisionPoints fixed = precision_points({pr.points[0], pr.points[1], pr.points[2]}, pr.hidden.ratio());
@@ -202,43 +215,26 @@ TEST_CASE("free axis: the whole search holds the hidden train once and agrees wi
 TEST_CASE("free axis: a sun axis on a corner of the cube charts is found once, certified", "[synthesis][exact]") {
   // s = (1, 1, 1) / sqrt(3) lies on the edges of the faces +x, +y, +z (u = v = 1 on each): each
   // face's domain reaches past its edges, so the root is inside three of them and listed once.
-  FreeProblem pr;
-  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
-  pr.rotation = Eigen::Quaterniond::FromTwoVectors(Vector3d::UnitZ(), Vector3d(1, 1, 1).normalized()).toRotationMatrix();
-  pr.thetas = {0.3, 1.4, 2.6, 4.0, 5.3};
-  for (const double t : pr.thetas) pr.points.push_back(pr.rotation * TracerCurve<double>(pr.hidden).point(t));
-  PrecisionPointsOptions options;
-  options.threads = 2;
-  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
-  REQUIRE(r.certified);
-  CHECK(std::count_if(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
-  check_solutions_pass_points(r, pr.points);
+  const FreeProblem pr = nephroid_problem(
+      {0.3, 1.4, 2.6, 4.0, 5.3}, Eigen::Quaterniond::FromTwoVectors(Vector3d::UnitZ(), Vector3d(1, 1, 1).normalized()).toRotationMatrix());
+  check_solutions_pass_points(certified_search(pr.points, pr), pr.points);
 }
 
 TEST_CASE("free axis: the points in another order give the same trains, each passing them at its params",
           "[synthesis][exact]") {
   // The search writes the points against a reference chosen from their geometry (the close pair
   // below, wherever it is put), and reports params in input order: checked on a permutation.
-  FreeProblem pr;
-  pr.hidden = GearTrain(1.2, 0.8, Ratio(1), 0.5);
-  pr.thetas = {0.3, 1.4, 2.6, 4.0, 4.05};
-  for (const double t : pr.thetas) pr.points.push_back(TracerCurve<double>(pr.hidden).point(t));
+  const FreeProblem pr = nephroid_problem({0.3, 1.4, 2.6, 4.0, 4.05});
   const std::vector<int> order = {3, 0, 4, 2, 1};  // permuted[i] = points[order[i]]
   std::vector<Vector3d> permuted;
   for (const int i : order) permuted.push_back(pr.points[i]);
   const std::size_t reference = free_axis_detail::reference_point(pr.points);
   CHECK((reference == 3 || reference == 4));  // one of the close pair
   CHECK(permuted[free_axis_detail::reference_point(permuted)] == pr.points[reference]);  // not the order
-  PrecisionPointsOptions options;
-  options.threads = 2;
-  const PrecisionPoints r = free_axis_points(pr.points, pr.hidden.ratio(), options);
-  const PrecisionPoints p = free_axis_points(permuted, pr.hidden.ratio(), options);
-  REQUIRE(r.certified);
-  REQUIRE(p.certified);
+  const PrecisionPoints r = certified_search(pr.points, pr), p = certified_search(permuted, pr);
   check_solutions_pass_points(r, pr.points);
   check_solutions_pass_points(p, permuted);
   REQUIRE(r.solutions.size() == p.solutions.size());
-  CHECK(std::count_if(p.solutions.begin(), p.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }) == 1);
   for (std::size_t k = 0; k < r.solutions.size(); ++k) {
     const PrecisionSolution &a = r.solutions[k], &b = p.solutions[k];
     CHECK((a.frame - b.frame).norm() < 1e-9);
