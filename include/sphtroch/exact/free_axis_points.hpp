@@ -15,9 +15,11 @@
 // eight equations (two per unit-vector equation) in the eight unknowns s, w (unit vectors, two
 // each) and Delta_2..Delta_5 in [0, 2 pi q]: no arccos, nothing folds. a2 = angle(s, w), a3 =
 // angle(w, P_1). s and w are charted by cube faces: a = c / |c| with c = +-e_f + u e_(f+1) + v
-// e_(f+2), u, v in [-1 - 1/512, 1 + 1/512] (boxes wholly outside [-1, 1] dropped, so no root sits on
-// an edge). (s, w, Delta) and (-s, -w, -Delta) are the same motion (the same train seen with the
-// sun axis reversed: a3 becomes pi - a3), so s takes the three faces +x, +y, +z and w all six.
+// e_(f+2), u, v in [-1 - 1/512, 1 + 1/512]: every axis has |u|, |v| <= 1 on the face of its
+// largest component, so each root lies inside some face pair's domain, off its edges (boxes
+// wholly outside [-1, 1] are dropped: those roots are another face pair's). (s, w, Delta) and
+// (-s, -w, -Delta) are the same motion (the same train seen with the sun axis reversed: a3
+// becomes pi - a3), so s takes the three faces +x, +y, +z and w all six.
 // Of A_i - B_i, the component k where |A_i| is largest over a box is dropped (`chart`): the other
 // two vanish at every root, and its mirror roots (A_ik = -B_ik) are dropped by solution().
 // Point 1 is the reference of free_axis_detail::reference_point (chosen from the points'
