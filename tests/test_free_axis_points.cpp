@@ -176,6 +176,51 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
   CHECK(joined > 0);    // and slabs of two items of one list joined
 }
 
+TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from the root)", "[synthesis][exact]") {
+  // A root x = (s, w, Delta_2..Delta_5) placed anywhere in a random box (up to 0.1% of its width
+  // from an edge, where the mean-value forms' columns are at their widest) and the points built
+  // from it: P_1 random, P_i = R_s(Delta_i) R_w(n Delta_i) P_1 (the header's equations). Each
+  // point's test must pass the item holding Delta_i, and narrow_outer must keep x. A column of
+  // the recursive form enclosed at the centre instead of over the box fails here.
+  std::mt19937_64 rng(1990);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::vector<Ratio> ratios{Ratio(1), Ratio(-1), Ratio(3, 2), Ratio(-2, 3), Ratio(3)};
+  for (int k = 0; k < 400; ++k) {
+    const Ratio n = ratios[k % ratios.size()];
+    const int sun = static_cast<int>(rng() % 3), planet = static_cast<int>(rng() % 6);
+    const double width = std::ldexp(1.0, -1 - static_cast<int>(rng() % 6));  // 1/2 .. 1/64
+    const auto near_edge = [&] { return 0.001 + 0.998 * (u(rng) < 0.5 ? u(rng) : std::round(u(rng))); };
+    FreeAxisSystem::Outer box;
+    std::array<double, 4> x{};
+    for (int j = 0; j < 4; ++j) {
+      const double lo = -1.0 + u(rng) * (2.0 - width);
+      box[j] = Interval(lo, lo + width);
+      x[j] = lo + near_edge() * width;
+    }
+    const auto axis = [&](int face, double a, double b) {
+      const auto c = free_axis_detail::face_axis(face, a, b).a;
+      return Vector3d(c[0], c[1], c[2]);
+    };
+    const Vector3d s = axis(sun, x[0], x[1]), w = axis(planet, x[2], x[3]);
+    const double scale = 1.0 + std::abs(n.value()), h = width / scale, period = 2 * kPi * double(n.q());
+    std::vector<Vector3d> points{Eigen::Quaterniond::UnitRandom().toRotationMatrix().col(0)};
+    std::array<double, 4> item_lo{}, delta{};
+    for (int i = 0; i < 4; ++i) {
+      item_lo[i] = u(rng) * (period - h);
+      delta[i] = item_lo[i] + near_edge() * h;
+      points.push_back(Eigen::AngleAxisd(delta[i], s) * (Eigen::AngleAxisd(n.value() * delta[i], w) * points[0]));
+    }
+    INFO("case " << k << ": n = " << n.str() << ", faces " << sun << ", " << planet << ", width " << width);
+    const FreeAxisSystem system(points, n, sun, planet);
+    const RoundingGuard upward;
+    auto view = system.view(box);
+    for (int i = 0; i < 4; ++i) REQUIRE(system.may_hold(view, system.list_item(Interval(item_lo[i], item_lo[i] + h), i), i));
+    FreeAxisSystem::Outer narrower = box;
+    REQUIRE(system.narrow_outer(view, narrower));
+    for (int j = 0; j < 4; ++j) CHECK((narrower[j].inf() <= x[j] + 1e-12 && narrower[j].sup() >= x[j] - 1e-12));
+  }
+}
+
 TEST_CASE("free axis: on the face pair of the hidden root the search finds it and certifies its list", "[synthesis][exact]") {
   std::mt19937_64 rng(1990);
   for (int k = 0; k < kFacePairProblems; ++k) {
