@@ -161,6 +161,43 @@ TEST_CASE("nearest_param: no nearer curve point than a dense brute-force search 
   }
 }
 
+TEST_CASE("nearest_param_certified: far points get the global nearest point, where a local foot can be another branch's",
+          "[synthesis]") {
+  // The fit of an n = 2 path by n = 1/3 with both cusps (a poor fit, points up to ~1 rad away):
+  // the latitude-based foot of some points is a farther branch's. The certified foot must match a
+  // dense search (period / 200000 apart: within (1 + |n|) of half that below it), and so must the
+  // feet of random points for random trains.
+  const auto brute = [](const TracerCurve<double>& curve, double period, const Vector3d& x, std::size_t samples) {
+    double best = 10;
+    for (std::size_t i = 0; i < samples; ++i) best = std::min(best, sphere_distance(curve.point(period * double(i) / double(samples)), x));
+    return best;
+  };
+  const GearTrain far(std::acos(-1.0 / 3), kPi / 2, Ratio(1, 3), 0.6438734786750422);
+  const FitShape s{far.a2(), far.a3(), far.n(), far.phase()};
+  const TracerCurve<double> curve(far);
+  const std::vector<Vector3d> path = sample_period(TracerCurve<double>(GearTrain(1.1, 0.9, Ratio(2), 0.4)), 60).points;
+  int local_wrong = 0;
+  for (const Vector3d& x : path) {
+    const double b = brute(curve, far.period(), x, 200000);
+    const double found = sphere_distance(curve.point(nearest_param_certified(s, far.period(), x, nearest_param(s, 1, far.period(), x))), x);
+    CHECK(found <= b + 1e-9);
+    CHECK(found >= b - (1 + 1.0 / 3) * far.period() / 400000);
+    local_wrong += sphere_distance(curve.point(nearest_param(s, 1, far.period(), x)), x) > b + 1e-3;
+  }
+  CHECK(local_wrong > 0);  // the case the certified search is for is exercised
+  std::mt19937_64 rng(8);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int k = 0; k < 20; ++k) {
+    const GearTrain& h = random_target(rng, 0.0).hidden;
+    const FitShape r{h.a2(), h.a3(), h.n(), h.phase()};
+    const TracerCurve<double> c(h);
+    const Vector3d x = Vector3d(g(rng), g(rng), g(rng)).normalized();
+    const double found = sphere_distance(c.point(nearest_param_certified(r, h.period(), x, 0.0)), x);
+    INFO("n = " << h.ratio().str() << " a2 = " << h.a2() << " a3 = " << h.a3());
+    CHECK(found <= brute(c, h.period(), x, 20000 * static_cast<std::size_t>(h.ratio().q())) + 1e-9);
+  }
+}
+
 TEST_CASE("fit: exact points give back the hidden train first", "[exact][synthesis]") {
   std::mt19937_64 rng(7);
   for (int k = 0; k < (kNoisyTargets >= 200 ? 20 : 3); ++k) {

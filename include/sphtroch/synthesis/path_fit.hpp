@@ -24,7 +24,9 @@
 //     shapes are refined.
 //  2. Refinement: Levenberg–Marquardt with the feet eliminated (variable projection: each point's
 //     theta2 is its nearest curve point's, the Jacobian is dP/d(parameters) with the tangent
-//     component removed); the feet are found again globally after convergence.
+//     component removed); the feet are found again globally after convergence. The reported
+//     distances (rms, max_deviation, and the max_deviation filter) use certified feet
+//     (nearest_param_certified: a local foot of a far point can be another branch's).
 //  3. Wanted node count K: a step is taken only to shapes whose root count is K (halved until it
 //     is), so the fit never leaves the cells of the map with K nodes; seeds come from those cells
 //     only (grid shapes with K nodes and the midpoint of every a3 interval with K nodes of the
@@ -340,6 +342,14 @@ inline std::vector<double> global_feet(const FitShape& s, const Ratio& n, const 
   const double period = 2 * kPi * static_cast<double>(n.q());
   std::vector<double> t(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) t[i] = nearest_param(s, n.abs_p(), period, pts[i]);
+  return t;
+}
+
+/// The feet of the reported distances: global_feet's, certified (nearest_param_certified).
+inline std::vector<double> certified_feet(const FitShape& s, const Ratio& n, const std::vector<Vector3d>& pts) {
+  const double period = 2 * kPi * static_cast<double>(n.q());
+  std::vector<double> t = global_feet(s, n, pts);
+  for (std::size_t i = 0; i < pts.size(); ++i) t[i] = nearest_param_certified(s, period, pts[i], t[i]);
   return t;
 }
 
@@ -736,7 +746,7 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
     if (!con.admissible(a2, a3)) continue;
     // The same design as a kept one, or farther than allowed from a polish point (a subset of
     // the points, so the full maximum is at least as large): skipped before the full pass.
-    full.t = global_feet(con.par.fit_shape(full.x), n, polish_pts);
+    full.t = certified_feet(con.par.fit_shape(full.x), n, polish_pts);
     FitCandidate sketch;
     try {
       sketch = candidate(con, polish_pts, full, false);
@@ -747,7 +757,7 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
     for (const FitCandidate& k : out.candidates) repeated = repeated || same_train(k, sketch, kFitSameDesign);
     if (repeated || sketch.max_deviation > options.max_deviation) continue;
     if (options.node_at && !(sketch.node_distance <= options.node_tolerance)) continue;
-    full.t = global_feet(con.par.fit_shape(full.x), n, points);
+    full.t = certified_feet(con.par.fit_shape(full.x), n, points);
     FitCandidate c = candidate(con, points, full, true);
     if (c.max_deviation <= options.max_deviation) out.candidates.push_back(std::move(c));
   }
