@@ -337,6 +337,17 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
     CHECK(e.field() == "points");
     CHECK(e.problem().find("too many") != std::string::npos);
   }
+  // The bound's own examples (sum over the ratios of points x (2|p| + 30) + 2e5 <= 2.4e7):
+  // 700,000 points for n = 2; for --ratios 7,7 (70 ratios, sum of 2|p| + 30: 2644) 3,782.
+  CHECK_NOTHROW(check_fit_cost(700000, {Ratio(2)}));
+  CHECK_THROWS_AS(check_fit_cost(700001, {Ratio(2)}), InvalidInput);
+  std::vector<Ratio> seven;
+  for (std::int64_t p = 1; p <= 7; ++p)
+    for (std::int64_t q = 1; q <= 7; ++q)
+      if (std::gcd(p, q) == 1) seven.insert(seven.end(), {Ratio(p, q), Ratio(-p, q)});
+  REQUIRE(seven.size() == 70);
+  CHECK_NOTHROW(check_fit_cost(3782, seven));
+  CHECK_THROWS_AS(check_fit_cost(3783, seven), InvalidInput);
   CHECK_THROWS_AS(map_margin(1.0, std::nan(""), Ratio(2)), InvalidInput);
   FitOptions node;
   node.node_at = Vector3d(0, 0, 1.01);

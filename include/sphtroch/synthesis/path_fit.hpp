@@ -129,21 +129,25 @@ struct PathFit {
 /// cost bound, cost_bounds.hpp).
 inline PathFit fit_path(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& options = {});
 
-/// Bound on the work that grows with the points: points x sum over the ratios of (2|p| + 30)
-/// (each candidate's distances are measured on every point, 2|p| latitude crossings and a few
-/// Newton steps each; ~0.5 us per unit here, so the bound is ~30 s).
-constexpr double kMaxFitPointWork = 6e7;
+/// Bound on a fit's work: sum over the ratios of points x (2|p| + 30) + kFitRatioWork (each
+/// candidate's distances are measured on every point: 2|p| latitude crossings, Newton steps and
+/// the certified foot's search; kFitRatioWork: the screening and refinement on subsampled
+/// points, ~0.25 s a ratio). Measured 2026-11-27 on this 2-core machine (one core): ~1.3 us
+/// per unit (n = 2 and 100,000 points 3.8 s; --ratios 3,3 and 1,000 / 20,000 / 100,000 points
+/// 4.3 / 15 / 65 s), so the bound is ~30 s.
+constexpr double kFitRatioWork = 2e5;
+constexpr double kMaxFitPointWork = 2.4e7;
 
 /// Refuses (InvalidInput "points") a fit of this many points over these ratios beyond
 /// kMaxFitPointWork, before any work.
 inline void check_fit_cost(std::size_t points, const std::vector<Ratio>& ratios) {
-  double per_point = 0;
-  for (const Ratio& n : ratios) per_point += 2 * static_cast<double>(n.abs_p()) + 30;
-  if (static_cast<double>(points) * per_point > kMaxFitPointWork)
+  double work = 0;
+  for (const Ratio& n : ratios) work += static_cast<double>(points) * (2 * static_cast<double>(n.abs_p()) + 30) + kFitRatioWork;
+  if (work > kMaxFitPointWork)
     throw InvalidInput("points", std::to_string(points) + " points",
-                       "too many for these ratios (points x sum (2|p| + 30) = " +
-                           number_text(static_cast<double>(points) * per_point) + ")",
-                       "points x sum over the ratios of (2|p| + 30) <= 6e7 (e.g. 1e6 points for n = 2, 22000 for --ratios 7,7)");
+                       "too many for these ratios (sum of points x (2|p| + 30) + 2e5 = " + number_text(work) + ")",
+                       "sum over the ratios of points x (2|p| + 30) + 2e5 <= 2.4e7 (e.g. 700,000 points for n = 2, "
+                       "3,700 for --ratios 7,7)");
 }
 
 /// Distance in the (a2, a3) plane to the nearest boundary of the map (see header); `on_cone`:
