@@ -102,6 +102,8 @@ TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "
                                   std::string("--input off.csv --n 1"), std::string("--input ok.csv"),
                                   std::string("--input ok.csv --n 1 --ratios 2,2"), std::string("--input ok.csv --ratios 30,30"),
                                   std::string("--input ok.csv --n 200/3"), std::string("--input ok.csv --ratios 3"),
+                                  std::string("--input ok.csv --n 40"),  // (41)^2 is in the bound, 40 (41)^2 with the censuses not
+                                  std::string("--input ok.csv --teeth 40:1"),
                                   std::string("--input ok.csv --n 1 --free-axis"),  // three points: five needed
                                   std::string("--input ok.csv --n 1 --threads 2"),  // threads only with --free-axis
                                   std::string("--input five.csv --ratios 7,7 --free-axis"),  // over the free axis's bound

@@ -3,6 +3,7 @@
 // sine enclosures, and an independent Gauss-Newton on P(theta_i) = P_i in all six unknowns
 // (a2, a3, phase, theta_1..3) from many random starts for completeness. Seeded.
 #include "catch2/catch.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/mpreal_support.hpp"
 #include "sphtroch/exact/precision_points.hpp"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -336,4 +338,25 @@ TEST_CASE("precision_points: the reference problems' trains (data/reference/prec
   CHECK(problems == 60);
   WARN("reference problems: " << certified << " of " << problems << " certified complete within " << kTestBoxes
                               << " boxes, the known train found in " << found);
+}
+
+TEST_CASE("precision points with censuses: the work bound's own examples, refused naming the field", "[synthesis][errors]") {
+  // Sum over the ratios of |p| (|p| + q)^2 <= 30000: n = 29 (26100) and --ratios 7,7 (23318) pass,
+  // 30 (30 * 31^2 = 28830) with 2 (18) passes; n = 40 (67240) and 30 with 10 (1210) are refused.
+  CHECK_NOTHROW(check_points_census_work({Ratio(29)}, "n", "29"));
+  std::vector<Ratio> seven;
+  for (std::int64_t p = 1; p <= 7; ++p)
+    for (std::int64_t q = 1; q <= 7; ++q)
+      if (std::gcd(p, q) == 1) seven.insert(seven.end(), {Ratio(p, q), Ratio(-p, q)});
+  CHECK(points_census_work(seven) == 23318);
+  CHECK_NOTHROW(check_points_census_work(seven, "ratios", "7,7"));
+  CHECK_NOTHROW(check_points_census_work({Ratio(30), Ratio(2)}, "n", "30"));
+  try {
+    check_points_census_work({Ratio(40)}, "n", "40");
+    FAIL("not refused");
+  } catch (const InvalidInput& e) {
+    CHECK(e.field() == "n");
+    CHECK(e.value() == "40");
+  }
+  CHECK_THROWS_AS(check_points_census_work({Ratio(30), Ratio(10)}, "n", "30"), InvalidInput);
 }

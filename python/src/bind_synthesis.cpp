@@ -5,6 +5,7 @@
 #include "bindings.hpp"
 #include "exact_calls.hpp"
 
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/parse.hpp"
@@ -127,7 +128,12 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
   std::string fields;
   TeethSpec teeth;
   const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
-  if (free_axis) check_ratio_work(set, !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth", repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text), kMaxFreeAxisWork);
+  const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
+  const std::string given = repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text);
+  if (free_axis)
+    check_ratio_work(set, field, given, kMaxFreeAxisWork);
+  else
+    check_points_census_work(set, field, given);
   std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
   if (!threads.is_none()) {
     const auto k = count_arg(threads, "threads");

@@ -4,6 +4,7 @@
 #include "synth_ratios.hpp"
 
 #include "sphtroch/classify.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
@@ -75,6 +76,9 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 void run_points(const PointsOptions& o) {
   const RatioRequest request =
       requested_ratios("synth points", o.n, o.ratios, o.teeth, o.shard, o.free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
+  if (!o.free_axis)
+    check_points_census_work(request.ratios, !o.n.empty() ? "n" : !o.ratios.empty() ? "ratios" : "teeth",
+                             !o.n.empty() ? o.n : !o.ratios.empty() ? o.ratios : o.teeth);
   PrecisionPointsOptions options;
   options.threads = parse_threads(o.threads);
   if (!o.threads.empty() && !o.free_axis)

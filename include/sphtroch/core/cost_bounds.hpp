@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace sphtroch {
 
@@ -52,6 +53,27 @@ inline void check_census_cost(const Ratio& n, const std::string& field = "n") {
                        "its curve has about |p|(|p|+q) = " + number_text(e) +
                            " node points, beyond what a node census does in bounded time and memory",
                        "|p|(|p|+q) <= 200000 for a census (e.g. 301/100); `sphtroch trace` has no such bound");
+}
+
+/// Bound on fixed-frame precision points with their censuses over a ratio set: the sum over the
+/// ratios of |p| (|p| + q)^2 (about 2 (|p| + q)^2 trains, each censused at a cost ~|p|). Measured
+/// 2026-11-27 on this 2-core machine (one core, three points): n = 10, 20, 29 took 0.8, 7.6, 28 s
+/// (0.6 to 1.1 ms a unit), so the bound is ~30 s; --ratios 7,7 is 23318, n = 40 (67240) is refused.
+constexpr double kMaxPointsCensusWork = 30000;
+
+inline double points_census_work(const std::vector<Ratio>& ratios) {
+  double work = 0;
+  for (const Ratio& n : ratios) work += static_cast<double>(n.abs_p()) * static_cast<double>(n.abs_p() + n.q()) * static_cast<double>(n.abs_p() + n.q());
+  return work;
+}
+
+/// Refuses (InvalidInput naming `field` = `value`, the ratio or set as given) fixed-frame
+/// precision points over `ratios` beyond kMaxPointsCensusWork, before any work.
+inline void check_points_census_work(const std::vector<Ratio>& ratios, const std::string& field, const std::string& value) {
+  const double work = points_census_work(ratios);
+  if (work > kMaxPointsCensusWork)
+    throw InvalidInput(field, value, "estimated work with the censuses " + std::to_string(static_cast<long long>(work)) + " over the bound",
+                       "sum over the ratios of |p| (|p| + q)^2 <= 30000 (n = 29 is 26100; --ratios 7,7 is 23318)");
 }
 
 }  // namespace sphtroch
