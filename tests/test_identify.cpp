@@ -120,6 +120,21 @@ TEST_CASE("identify: the report's Fig. 3 from trace's own sampling, and trace's 
   CHECK(curve_distance(b.train, g, open.t) < 1e-9);
 }
 
+TEST_CASE("identify: a planet circle of radius down to 5e-5 (a3 near 0 or pi) still gives n exactly", "[identify]") {
+  // The planet angles carry the points' rounding divided by sin a3: the ratio's window must hold
+  // it (a3 = 1e-4 gave a slope 2.2e-12 off n = 2, refused before).
+  for (const double a3 : {5e-5, 1e-4, 2e-4, kPi - 1e-5, kPi - 1e-4}) {
+    for (const Ratio n : {Ratio(2), Ratio(1, 7), Ratio(5, 3), Ratio(-3, 2)}) {
+      const GearTrain g(1.3, a3, n, 0.4);
+      const Trajectory<double> tr = sample_period(TracerCurve<double>(g), 1000);
+      INFO("a3 = " << a3 << ", n = " << n.str());
+      const Identified r = identify(tr.t, tr.points);
+      CHECK(r.train.ratio() == n);
+      CHECK(curve_distance(r.train, g, tr.t) < 1e-9);
+    }
+  }
+}
+
 TEST_CASE("identify: bad samples are one InvalidInput naming the field", "[identify][errors]") {
   std::mt19937_64 rng(7);
   const Problem pr = random_problem(rng);

@@ -232,6 +232,23 @@ inline std::optional<Ratio> simplest_fraction(double lo, double hi, std::int64_t
   return Ratio(negative ? -p : p, q);
 }
 
+namespace identify_detail {
+
+/// Half the window the ratio is looked for in around the fitted slope: 8 standard errors, and
+/// at least the planet angles' systematic error over the samples' span T (the points' rounding
+/// and the fitted circle's, ~5e-14 at most measured, over the circle's radius sin a3: 1e-12 /
+/// (sin a3 T), 20x margin; a3 = 2e-4, n = 1/7 gave a slope 5.7e-12 off; at most 1e-8, far below
+/// the 1e-6 that separates fractions with q <= 1000: a circle too small for that is refused), and
+/// 1e-12 relative.
+inline double slope_window(const Line& line, const Circle& circle, const std::vector<double>& t) {
+  const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
+  const double span = std::max(*hi - *lo, 1e-300);
+  const double rounding = std::min(1e-8, 1e-12 / (std::max(std::sin(circle.a3), 1e-300) * span));
+  return std::max({8 * line.slope_error, 1e-12 * std::max(1.0, std::abs(line.slope)), rounding});
+}
+
+}  // namespace identify_detail
+
 inline Identified identify(const std::vector<double>& t, const std::vector<Vector3d>& points,
                            const IdentifyOptions& options) {
   using namespace identify_detail;
@@ -250,7 +267,7 @@ inline Identified identify(const std::vector<double>& t, const std::vector<Vecto
     u[i] = std::atan2(d.x(), -d.y());
   }
   const Line line = planet_angle_line(t, u);
-  const double width = std::max(8 * line.slope_error, 1e-12 * std::max(1.0, std::abs(line.slope)));
+  const double width = slope_window(line, circle, t);
   const std::optional<Ratio> n = simplest_fraction(line.slope - width, line.slope + width, options.max_q);
   if (!n || n->abs_p() > options.max_p)
     throw InvalidInput("samples", "slope " + number_text(line.slope) + " +- " + number_text(width),
