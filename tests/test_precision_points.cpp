@@ -9,6 +9,7 @@
 #include "sphtroch/exact/precision_points.hpp"
 #include "sphtroch/io/parse.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -359,4 +360,24 @@ TEST_CASE("precision points with censuses: the work bound's own examples, refuse
     CHECK(e.value() == "40");
   }
   CHECK_THROWS_AS(check_points_census_work({Ratio(30), Ratio(10)}, "n", "30"), InvalidInput);
+}
+
+TEST_CASE("precision points: near a continuum of solutions the list is uncertified, at most 64 unisolated trains", "[synthesis]") {
+  // Three points on the equator, n = 2: as a2 -> 0 with a3 = pi/2 the tracer tends to the
+  // equator, so boxes near a2 = 0 stay undecided (30,000 within 60,000 boxes, 172 distinct
+  // trains from them without the bound). Each train listed from them must pass the points
+  // (kUnisolatedResidual), and at most kMaxUnisolatedSolutions are listed (each costs a census).
+  PrecisionPointsOptions o;
+  o.max_boxes = 60000;
+  const PrecisionPoints r = precision_points({Vector3d(1, 0, 0), Vector3d(0, 1, 0), Vector3d(-1, 0, 0)}, Ratio(2), o);
+  CHECK_FALSE(r.certified);
+  CHECK(r.undecided > 10 * kMaxUnisolatedSolutions);
+  const auto unisolated = std::count_if(r.solutions.begin(), r.solutions.end(), [](const PrecisionSolution& s) { return !s.isolated; });
+  CHECK(unisolated > 0);
+  CHECK(static_cast<std::size_t>(unisolated) <= kMaxUnisolatedSolutions);
+  const std::vector<Vector3d> points{Vector3d(1, 0, 0), Vector3d(0, 1, 0), Vector3d(-1, 0, 0)};
+  for (const PrecisionSolution& s : r.solutions) {
+    const TracerCurve<double> curve(s.train);
+    for (int i = 0; i < 3; ++i) CHECK((curve.point(s.params[i]) - points[i]).norm() <= 1e-12);
+  }
 }

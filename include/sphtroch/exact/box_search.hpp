@@ -34,7 +34,8 @@
 // box, else `outer` (the box) narrowed to where roots may be (REQUIRES: it keeps every root).
 // Guarantee: when `certified`, every root in the domain is listed once (the System drops copies
 // and roots outside its fundamental domain); otherwise `undecided` boxes (narrower than
-// kMinBoxWidth and still undecided, or left when max_boxes was reached) may hold more.
+// kMinBoxWidth and still undecided, or left when max_boxes was reached) may hold more, and at
+// most kMaxUnisolatedSolutions trains from them are listed (isolated = false).
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -63,6 +64,10 @@ namespace sphtroch {
 constexpr double kMinBoxWidth = 1e-11;
 /// A train from an undecided box is listed (isolated = false) only if it passes the points to this.
 constexpr double kUnisolatedResidual = 1e-12;
+/// At most this many such trains per search (the list is then not certified anyway): points on a
+/// continuum of near-solutions (three on the equator, n = 2: a2 -> 0, a3 = pi/2) leave thousands
+/// of undecided boxes, and each listed train costs its census (measured: 11,429 trains, 135 s).
+constexpr std::size_t kMaxUnisolatedSolutions = 64;
 
 struct PrecisionPointsOptions {
   std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
@@ -698,8 +703,11 @@ class BoxSearch {
 
   void finish() {
     for (const auto& [x, chart] : roots_) add(sys_.solution(box_search_detail::polish(sys_, x, chart), true));
-    for (const Box<N>& x : undecided_)
-      add(sys_.solution(box_search_detail::polish(sys_, x, box_search_detail::newton_chart(sys_, x)), false));
+    std::size_t unisolated = 0;
+    for (const Box<N>& x : undecided_) {
+      if (unisolated == kMaxUnisolatedSolutions) break;
+      unisolated += add(sys_.solution(box_search_detail::polish(sys_, x, box_search_detail::newton_chart(sys_, x)), false));
+    }
     std::sort(result_.solutions.begin(), result_.solutions.end(), [](const auto& a, const auto& b) {
       return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
     });
@@ -708,12 +716,13 @@ class BoxSearch {
 
   /// Keeps a solution unless it is none (outside the domain), an unisolated one that does not
   /// pass the points, or a repeat (a root on a shared face of two boxes, or a point that is a
-  /// node of the curve).
-  void add(std::optional<PrecisionSolution> s) {
-    if (!s || (!s->isolated && !(s->residual <= kUnisolatedResidual))) return;
+  /// node of the curve). Returns whether it was kept.
+  bool add(std::optional<PrecisionSolution> s) {
+    if (!s || (!s->isolated && !(s->residual <= kUnisolatedResidual))) return false;
     for (const auto& t : result_.solutions)
-      if (sys_.same(t, *s)) return;
+      if (sys_.same(t, *s)) return false;
     result_.solutions.push_back(std::move(*s));
+    return true;
   }
 
   const System sys_;  // a copy: a temporary System may be passed
