@@ -177,8 +177,9 @@ constexpr double kNearestSlack = 1e-10;
 /// more than kNearestSlack is dropped, the others halved; the best is polished by Newton. The
 /// answer's cos distance is within kNearestSlack of the global one (its distance within
 /// kNearestSlack / sin(distance) for a point off the curve, exact for one on it). Cost: about
-/// 4.5 (q + |p|) + 40 curve points (|p|, q: the ratio's terms); at most period (1 + |n|) / 3e-5
-/// for a target equidistant from a long arc. REQUIRES: target unit, period = 2 pi q.
+/// 4.5 (q + |p|) + 40 curve points (|p|, q: the ratio's terms); spans narrower than
+/// sqrt(8 kNearestSlack) / (1 + |n|) are never halved, so at most 2 period (1 + |n|) / 2.8e-5
+/// (a target equidistant from a long arc). REQUIRES: target unit, period = 2 pi q.
 inline double nearest_param_certified(const FitShape& s, double period, const Vector3d& target, double t_start) {
   struct Span {
     double a, b, fa, fb;
