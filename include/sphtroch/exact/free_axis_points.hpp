@@ -268,8 +268,9 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
 constexpr double kFaceOverlap = 1.0 / 512;  // any margin keeps roots off the domain edges; wider only adds boxes
 
 /// The combination nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle, nu of unit
-/// length (a: A over the box; centre: A - B at the centre; gradient: its derivatives by (s_u, s_v,
-/// w_u, w_v, Delta) over the box; dx: box - centre). nu is tangent to the sphere at A and normal
+/// length (a: A over the box; centre: A - B at the centre; gradient: the columns of its
+/// derivatives by (s_u, s_v, w_u, w_v, Delta) of a mean-value form over the box, plain or
+/// recursive (may_hold); dx: box - centre). nu is tangent to the sphere at A and normal
 /// to Delta's direction, so Delta's coefficient is O(width): the components tested apart may
 /// vanish for different Deltas, this one only near a Delta where both do. Any nu keeps it valid.
 /// Its mean-value form over the box is value + sum_k coefficient_k dx_k (k: the four outer

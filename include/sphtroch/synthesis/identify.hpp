@@ -238,8 +238,8 @@ namespace identify_detail {
 /// at least the planet angles' systematic error over the samples' span T (the points' rounding
 /// and the fitted circle's, ~5e-14 at most measured, over the circle's radius sin a3: 1e-12 /
 /// (sin a3 T), 20x margin; a3 = 2e-4, n = 1/7 gave a slope 5.7e-12 off; at most 1e-8, far below
-/// the 1e-6 that separates fractions with q <= 1000: a circle too small for that is refused), and
-/// 1e-12 relative.
+/// the 1e-6 that separates fractions with q <= 1000: on a circle too small for that, no fraction
+/// may fit, or one that does is refused by the rms check after the polish), and 1e-12 relative.
 inline double slope_window(const Line& line, const Circle& circle, const std::vector<double>& t) {
   const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
   const double span = std::max(*hi - *lo, 1e-300);

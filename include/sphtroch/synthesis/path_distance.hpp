@@ -176,7 +176,8 @@ constexpr double kNearestSlack = 1e-10;
 /// [a, b] f <= max(f(a), f(b)) + (1 + |n|)^2 (b - a)^2 / 8; a span that cannot beat the best by
 /// more than kNearestSlack is dropped, the others halved; the best is polished by Newton. The
 /// answer's cos distance is within kNearestSlack of the global one (its distance within
-/// kNearestSlack / sin(distance) for a point off the curve, exact for one on it). Cost: about
+/// kNearestSlack / sin(distance) for a point off the curve; for a point on it, Newton's polish
+/// gives 0 when t_start or the best sample lies in that foot's basin). Cost: about
 /// 4.5 (q + |p|) + 40 curve points (|p|, q: the ratio's terms); spans narrower than
 /// sqrt(8 kNearestSlack) / (1 + |n|) are never halved, so at most 2 period (1 + |n|) / 2.8e-5
 /// (a target equidistant from a long arc). REQUIRES: target unit, period = 2 pi q.

@@ -129,25 +129,31 @@ struct PathFit {
 /// cost bound, cost_bounds.hpp).
 inline PathFit fit_path(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& options = {});
 
-/// Bound on a fit's work: sum over the ratios of points x (2|p| + 30) + kFitRatioWork (each
-/// candidate's distances are measured on every point: 2|p| latitude crossings, Newton steps and
-/// the certified foot's search; kFitRatioWork: the screening and refinement on subsampled
-/// points, ~0.25 s a ratio). Measured 2026-11-27 on this 2-core machine (one core): ~1.3 us
-/// per unit (n = 2 and 100,000 points 3.8 s; --ratios 3,3 and 1,000 / 20,000 / 100,000 points
-/// 4.3 / 15 / 65 s), so the bound is ~30 s.
-constexpr double kFitRatioWork = 2e5;
-constexpr double kMaxFitPointWork = 2.4e7;
+/// Bound on a fit's work: sum over the ratios of points x (2|p| + 5 (|p| + q) + 40) +
+/// kFitRatioWork (each candidate's distances are measured on every point: 2|p| latitude
+/// crossings and Newton steps, then the certified foot's search over ~4.5 (|p| + q) spans;
+/// kFitRatioWork: the screening and refinement on subsampled points, ~0.26 s a ratio). Measured
+/// 2026-11-27 on this 2-core machine (one core): ~0.65 us per unit (n = 2 and 100,000 points
+/// 3.8 s; --ratios 3,3 and 1,000 / 20,000 / 100,000 points 4.3 / 15 / 65 s), so the bound is ~30 s.
+constexpr double kFitRatioWork = 4e5;
+constexpr double kMaxFitPointWork = 4.6e7;
+
+/// Work per point of one ratio (see kMaxFitPointWork).
+inline double fit_point_work(const Ratio& n) {
+  const double p = static_cast<double>(n.abs_p()), q = static_cast<double>(n.q());
+  return 2 * p + 5 * (p + q) + 40;
+}
 
 /// Refuses (InvalidInput "points") a fit of this many points over these ratios beyond
 /// kMaxFitPointWork, before any work.
 inline void check_fit_cost(std::size_t points, const std::vector<Ratio>& ratios) {
   double work = 0;
-  for (const Ratio& n : ratios) work += static_cast<double>(points) * (2 * static_cast<double>(n.abs_p()) + 30) + kFitRatioWork;
+  for (const Ratio& n : ratios) work += static_cast<double>(points) * fit_point_work(n) + kFitRatioWork;
   if (work > kMaxFitPointWork)
     throw InvalidInput("points", std::to_string(points) + " points",
-                       "too many for these ratios (sum of points x (2|p| + 30) + 2e5 = " + number_text(work) + ")",
-                       "sum over the ratios of points x (2|p| + 30) + 2e5 <= 2.4e7 (e.g. 700,000 points for n = 2, "
-                       "3,700 for --ratios 7,7)");
+                       "too many for these ratios (sum of points x (2|p| + 5 (|p| + q) + 40) + 4e5 = " + number_text(work) + ")",
+                       "sum over the ratios of points x (2|p| + 5 (|p| + q) + 40) + 4e5 <= 4.6e7 (e.g. 772,881 points for "
+                       "n = 2, 2,968 for --ratios 7,7)");
 }
 
 /// Distance in the (a2, a3) plane to the nearest boundary of the map (see header); `on_cone`:
