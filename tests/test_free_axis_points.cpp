@@ -159,9 +159,13 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
       auto view = system.view(box);
       for (int i = 0; i < 4; ++i) {  // the root's item, then every item of the whole range: slabs joined
         const double h = width / system.list_scale(), lo = root[4 + i] - offset(rng) * h;
-        REQUIRE(system.may_hold(view, system.list_item(Interval(lo, lo + h), i), i));
-        for (double d = 0.0; width >= 1.0 / 16 && d < system.list_max(); d += h)
-          joined += system.may_hold(view, system.list_item(Interval(d, d + h), i), i);
+        auto item = system.list_item(Interval(lo, lo + h), i);
+        REQUIRE(system.may_hold(view, item, i));
+        CHECK((item.d.inf() <= root[4 + i] + 1e-12 && item.d.sup() >= root[4 + i] - 1e-12));  // narrowed, it keeps the root
+        for (double d = 0.0; width >= 1.0 / 16 && d < system.list_max(); d += h) {
+          auto other = system.list_item(Interval(d, d + h), i);
+          joined += system.may_hold(view, other, i);
+        }
       }
       FreeAxisSystem::Outer narrower = box;
       REQUIRE(system.narrow_outer(view, narrower));
@@ -185,6 +189,7 @@ TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from 
   std::mt19937_64 rng(1990);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::vector<Ratio> ratios{Ratio(1), Ratio(-1), Ratio(3, 2), Ratio(-2, 3), Ratio(3)};
+  int narrowed_items = 0;
   for (int k = 0; k < 400; ++k) {
     const Ratio n = ratios[k % ratios.size()];
     const int sun = static_cast<int>(rng() % 3), planet = static_cast<int>(rng() % 6);
@@ -214,11 +219,18 @@ TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from 
     const FreeAxisSystem system(points, n, sun, planet);
     const RoundingGuard upward;
     auto view = system.view(box);
-    for (int i = 0; i < 4; ++i) REQUIRE(system.may_hold(view, system.list_item(Interval(item_lo[i], item_lo[i] + h), i), i));
+    for (int i = 0; i < 4; ++i) {
+      auto item = system.list_item(Interval(item_lo[i], item_lo[i] + h), i);
+      REQUIRE(system.may_hold(view, item, i));
+      // may_hold may narrow the item (Delta's Newton steps): never past the root's Delta_i
+      CHECK((item.d.inf() <= delta[i] + 1e-12 && item.d.sup() >= delta[i] - 1e-12));
+      narrowed_items += item.d.sup() - item.d.inf() < h;
+    }
     FreeAxisSystem::Outer narrower = box;
     REQUIRE(system.narrow_outer(view, narrower));
     for (int j = 0; j < 4; ++j) CHECK((narrower[j].inf() <= x[j] + 1e-12 && narrower[j].sup() >= x[j] - 1e-12));
   }
+  CHECK(narrowed_items > 0);  // the items' narrowing is exercised
 }
 
 TEST_CASE("free axis: on the face pair of the hidden root the search finds it and certifies its list", "[synthesis][exact]") {

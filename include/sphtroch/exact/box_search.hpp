@@ -15,9 +15,11 @@
 // `list_item(d, i)` what one interval d of list i carries down the tree (its `d` and whatever
 // depends on d alone, computed once), and `may_hold(view, item, i)` whether point i's equations
 // may vanish over the outer box x item.d (REQUIRES: false only when they cannot; it may note
-// in the view what the tests found, for the optional `narrow_outer`);
+// in the view what the tests found, for the optional `narrow_outer`, and may replace the item by
+// one of a narrower d that holds every root of x item.d);
 // kIsolateWidth and kContractWidth are the outer widths below which boxes go to the Krawczyk
-// test in all N unknowns, and are narrowed by it. `chart(box)` picks one of the System's square
+// test in all N unknowns, and are narrowed by it; list items are split to no wider (scaled) than
+// kListWidth times the widest outer width. `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
 // System's `solution` drops the others), or -1 when none is good over the whole box: the box is
 // then never certified (it is bisected) and Newton uses the chart of the box's centre. Small
@@ -362,8 +364,13 @@ class BoxSearch {
     auto view = sys_.view(node.outer);  // may_hold may note its findings in it
     for (int i = 0; i < kLists; ++i) {
       auto& list = node.lists[i];
-      list.erase(std::remove_if(list.begin(), list.end(), [&](const Item& d) { return !sys_.may_hold(view, d, i); }),
-                 list.end());
+      std::size_t kept = 0;  // may_hold may narrow an item: not remove_if
+      for (std::size_t k = 0; k < list.size(); ++k)
+        if (sys_.may_hold(view, list[k], i)) {
+          if (kept != k) list[kept] = std::move(list[k]);
+          ++kept;
+        }
+      list.erase(list.begin() + static_cast<std::ptrdiff_t>(kept), list.end());
       if (list.empty()) return;
     }
     if constexpr (box_search_detail::has_narrow_outer<System>::value) {
@@ -386,7 +393,7 @@ class BoxSearch {
         return;
       }
     }
-    if (split_lists(node, std::max(wb, kIsolateWidth))) {
+    if (split_lists(node, std::max(wb * System::kListWidth, kIsolateWidth))) {
       stack.push_back(std::move(node));
     } else if (wb <= kIsolateWidth) {
       std::array<std::vector<Interval>, kLists> runs;
@@ -541,8 +548,10 @@ class BoxSearch {
     Outer outer;
     for (int k = 0; k < kOuter; ++k) outer[k] = x[k];
     auto view = sys_.view(outer);
-    for (int i = 0; i < kLists; ++i)
-      if (!sys_.may_hold(view, item(x[kOuter + i], i), i)) return true;
+    for (int i = 0; i < kLists; ++i) {
+      Item d = item(x[kOuter + i], i);
+      if (!sys_.may_hold(view, d, i)) return true;
+    }
     return false;
   }
 
