@@ -264,7 +264,7 @@ inline Eigen::Matrix3d frame_of(const Vector3d& s) {
 constexpr double kFaceOverlap = 1.0 / 512;  // any margin keeps roots off the domain edges; wider only adds boxes
 
 /// The combination nu . (A - B) with nu = A x d(A - B)/dDelta at the box's middle, nu of unit
-/// length (a: A over the box; centre: A - B at the centre; gradient: the columns of its
+/// length (a: A at the box's centre; centre: A - B at the centre; gradient: the columns of its
 /// derivatives by (s_u, s_v, w_u, w_v, Delta) of a mean-value form over the box, plain or
 /// recursive (may_hold); dx: box - centre). nu is tangent to the sphere at A and normal
 /// to Delta's direction, so Delta's coefficient is O(width): the components tested apart may
@@ -419,8 +419,8 @@ class FreeAxisSystem {
     return {d, dc, interval_sincos_all<4>({d, n_interval_ * d, dc, n_interval_ * dc})};
   }
 
-  /// Whether point i + 2 may satisfy its equations on the outer box x item.d: the plain enclosure,
-  /// then the recursive mean-value form F(c) + sum_k J_k(X_k) (X_k - c_k) of each component of
+  /// Whether point i + 2 may satisfy its equations on the outer box x item.d: on boxes wider than
+  /// kMeanValueWidth plain_test, else the recursive mean-value form F(c) + sum_k J_k(X_k) (X_k - c_k) of each component of
   /// A - B and of the combination in which Delta's coefficient vanishes at the box's middle
   /// (noted in the view for narrow_outer when the item passes). Column k is enclosed with the
   /// unknowns before it (order Delta, s_u, s_v, w_u, w_v) over the box and those after it at the
@@ -433,24 +433,14 @@ class FreeAxisSystem {
     using free_axis_detail::a_component;
     using free_axis_detail::b_component;
     const auto& t = item.trig;
-    Interval a[3], b[3];
-    // Wider boxes: the plain enclosure of A - B, then A . B > 0 (the forms below hardly ever
-    // prune there). Narrower, the forms replace both (A . B pruned nothing there: measured over
-    // the sweep's problem 7; A - B left 0.08% more boxes and took 0.97x the time on six of seed 7's).
-    const bool wide = v.width > kMeanValueWidth;
-    for (int j = 0; j < 3; ++j) {
-      a[j] = a_component(v.a.box, t[1], j);  // (narrower: for the slab's direction)
-      if (!wide) continue;
-      b[j] = b_component(v.b[i].box, t[0], j);
-      if (!may_vanish(a[j] - b[j])) return false;
-    }
-    if (wide) return (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0;
+    if (v.width > kMeanValueWidth) return plain_test(v, item, i);
     Interval dx[5];
     for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
     dx[4] = item.d - item.centre;
-    Interval centre[3], gradient[3][5];
+    Interval a[3], centre[3], gradient[3][5];  // a: A at the centre (the slab's direction)
     for (int j = 0; j < 3; ++j) {
-      centre[j] = a_component(v.a.centre, t[3], j) - b_component(v.b[i].centre, t[2], j);
+      a[j] = a_component(v.a.centre, t[3], j);
+      centre[j] = a[j] - b_component(v.b[i].centre, t[2], j);
       free_axis_detail::gradient_columns<Interval>({&v.a.half, &v.a.box}, {&v.b[i].half, &v.b[i].box}, v.a.centre,
                                                    v.b[i].centre, t[0], t[1], n_interval_, j, gradient[j]);
       if (!may_vanish(mean_value<5>(centre[j], gradient[j], dx))) return false;
@@ -472,6 +462,20 @@ class FreeAxisSystem {
     }
     if (narrowed->sup() - narrowed->inf() < kNarrowItem * (item.d.sup() - item.d.inf())) item = list_item(*narrowed, i);
     return true;
+  }
+
+  /// may_hold on boxes wider than kMeanValueWidth, where the forms hardly ever prune: the plain
+  /// enclosure of A - B over the box, then A . B > 0. (Narrower, the forms replace both: A . B
+  /// pruned nothing there, measured over the sweep's problem 7; A - B left 0.08% more boxes and
+  /// took 0.97x the time on six of seed 7's problems.)
+  bool plain_test(const View& v, const ListItem& item, int i) const {
+    Interval a[3], b[3];
+    for (int j = 0; j < 3; ++j) {
+      a[j] = free_axis_detail::a_component(v.a.box, item.trig[1], j);
+      b[j] = free_axis_detail::b_component(v.b[i].box, item.trig[0], j);
+      if (!may_vanish(a[j] - b[j])) return false;
+    }
+    return (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]).sup() > 0.0;
   }
 
   /// After every list was filtered on the view's box x: the four lists' Delta-free slabs must
