@@ -111,6 +111,18 @@ Interval mean_value(const Interval& fc, const Interval* df, const Interval* dx) 
   return m;
 }
 
+/// The radius of x about 0: x lies within [-r, r].
+inline double radius(const Interval& x) { return std::max(-x.inf(), x.sup()); }
+
+/// sum_k G_k [-r_k, r_k] = [-s, s] with s = sum_k max|G_k| r_k (outward rounded): the terms of a
+/// mean-value form on a box about its centre (r_k = radius(X_k - c_k)), without interval products.
+template <int K>
+Interval centred_sum(const Interval* g, const double* r) {
+  Interval s(0.0);
+  for (int k = 0; k < K; ++k) s += r[k] * Interval(radius(g[k]));
+  return Interval(-s.sup(), s.sup());
+}
+
 /// The mean-value form of the combination sum_j nu_j F_j, its coefficients combined before they
 /// meet dx (so what cancels between the F_j cancels): encloses that combination over the box for
 /// any nu; a non-finite nu gives [-1, 1] (no information). fc[j], df[j]: as in mean_value.

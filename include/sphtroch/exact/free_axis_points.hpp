@@ -294,17 +294,15 @@ inline std::optional<DeltaFreeSlab> delta_free_slab(const Interval a[3], const I
 
 /// Delta's interval d (centre dc) narrowed by each component's interval Newton step: a root has
 /// F_j(c) + sum_k g_k (x_k - c_k) + g_Delta (Delta - dc) = 0 with every g in its column of the
-/// mean-value form (centre, gradient, dx as in delta_free_slab), so where g_Delta's column
-/// excludes 0, Delta lies in dc - (F_j(c) + sum_k G_k dx_k) / G_Delta. None when the steps
-/// leave nothing of d (no root in the box).
-inline std::optional<Interval> narrowed_delta(const Interval& d, const Interval& dc, const Interval centre[3],
-                                              const Interval gradient[3][5], const Interval dx[5]) {
+/// mean-value form (the gradient of delta_free_slab), so where g_Delta's column excludes 0, Delta
+/// lies in dc - rest_j / G_Delta, rest_j = F_j(c) + sum_k G_k (X_k - c_k) over the outer k.
+/// None when the steps leave nothing of d (no root in the box).
+inline std::optional<Interval> narrowed_delta(const Interval& d, const Interval& dc, const Interval rest[3],
+                                              const Interval gradient[3][5]) {
   double lo = d.inf(), hi = d.sup();
   for (int j = 0; j < 3; ++j) {
     if (may_vanish(gradient[j][4])) continue;
-    Interval rest = centre[j];
-    for (int k = 0; k < 4; ++k) rest += gradient[j][k] * dx[k];
-    const Interval step = dc - rest / gradient[j][4];
+    const Interval step = dc - rest[j] / gradient[j][4];
     lo = std::max(lo, step.inf());
     hi = std::min(hi, step.sup());
   }
@@ -435,24 +433,24 @@ class FreeAxisSystem {
     const auto& t = item.trig;
     if (v.width > kMeanValueWidth) return plain_test(v, item, i);
     Interval dx[5];
-    for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k];
-    dx[4] = item.d - item.centre;
-    Interval a[3], centre[3], gradient[3][5];  // a: A at the centre (the slab's direction)
+    double r[5];  // dx_k within [-r_k, r_k]: the forms' terms without interval products (centred_sum)
+    for (int k = 0; k < kOuter; ++k) dx[k] = v.box[k] - v.centre[k], r[k] = radius(dx[k]);
+    dx[4] = item.d - item.centre, r[4] = radius(dx[4]);
+    Interval a[3], centre[3], rest[3], gradient[3][5];  // a: A at the centre (the slab's direction)
     for (int j = 0; j < 3; ++j) {
       a[j] = a_component(v.a.centre, t[3], j);
       centre[j] = a[j] - b_component(v.b[i].centre, t[2], j);
       free_axis_detail::gradient_columns<Interval>({&v.a.half, &v.a.box}, {&v.b[i].half, &v.b[i].box}, v.a.centre,
                                                    v.b[i].centre, t[0], t[1], n_interval_, j, gradient[j]);
-      if (!may_vanish(mean_value<5>(centre[j], gradient[j], dx))) return false;
+      rest[j] = centre[j] + centred_sum<kOuter>(gradient[j], r);  // the form but Delta's term
+      if (!may_vanish(rest[j] + centred_sum<1>(&gradient[j][4], &r[4]))) return false;
     }
-    const std::optional<Interval> narrowed = free_axis_detail::narrowed_delta(item.d, item.centre, centre, gradient, dx);
+    const std::optional<Interval> narrowed = free_axis_detail::narrowed_delta(item.d, item.centre, rest, gradient);
     if (!narrowed) return false;
     dx[4] = *narrowed - item.centre;  // the slab's Delta term on what is left of the item
     const auto slab = free_axis_detail::delta_free_slab(a, centre, gradient, dx);
     if (slab) {
-      Interval total = slab->value;
-      for (int k = 0; k < kOuter; ++k) total += slab->coefficient[k] * dx[k];
-      if (!may_vanish(total)) return false;
+      if (!may_vanish(slab->value + centred_sum<kOuter>(slab->coefficient.data(), r))) return false;
       if (v.slabs[i])
         free_axis_detail::widen_to_hold(*v.slabs[i], *slab);
       else
