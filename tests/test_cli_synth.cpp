@@ -116,6 +116,23 @@ TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "
   }
 }
 
+TEST_CASE("cli synth points: a bad count is named whole, a negative one as out of range", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > ok.csv && "
+                "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n-1,0,0\\n0,-1,0\\n' > five.csv",
+                dir).status == 0);
+  const Result three = run("synth points --input ok.csv --ratios 1,1,1", dir, true);
+  CHECK(three.status == 2);
+  CHECK(three.out.empty());
+  CHECK(contains(three.err, "ratios = 1,1,1: not two counts P,Q"));
+  const Result part = run("synth points --input ok.csv --ratios 2,x", dir, true);
+  CHECK(part.status == 2);
+  CHECK(contains(part.err, "ratios = 2,x: not a whole number (x)"));
+  const Result negative = run("synth points --input five.csv --n 1 --free-axis --threads -1", dir, true);
+  CHECK(negative.status == 2);
+  CHECK(contains(negative.err, "threads = -1: outside the valid range"));
+}
+
 TEST_CASE("cli synth points --free-axis: five points of a turned trace give back its train, sun axis and frame",
           "[cli][synth]") {
   TempDir dir;

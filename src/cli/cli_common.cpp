@@ -64,8 +64,10 @@ std::size_t parse_threads(const std::string& text) {
 
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
   const std::string range = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
-    throw InvalidInput(field, text, "not a whole number", range);
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) {
+    const bool negative = text.size() > 1 && text[0] == '-' && text.find_first_not_of("0123456789", 1) == std::string::npos;
+    throw InvalidInput(field, text, negative ? "outside the valid range" : "not a whole number", range);
+  }
   errno = 0;
   const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
   if (errno == ERANGE || v < lo || v > hi) throw InvalidInput(field, text, "outside the valid range", range);

@@ -93,11 +93,16 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
       r.teeth.range = parse_tooth_range(teeth, "teeth");
       canonical = r.teeth.range->str();
     } else {
+      const std::string valid = "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q (each 1 .. 1000)";
       const auto comma = ratios.find(',');
-      if (comma == std::string::npos)
-        throw InvalidInput("ratios", ratios, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
-      canonical = std::to_string(parse_count(ratios.substr(0, comma), "ratios", 1, 1000)) + "," +
-                  std::to_string(parse_count(ratios.substr(comma + 1), "ratios", 1, 1000));
+      if (comma == std::string::npos || ratios.find(',', comma + 1) != std::string::npos)
+        throw InvalidInput("ratios", ratios, "not two counts P,Q", valid);
+      try {
+        canonical = std::to_string(parse_count(ratios.substr(0, comma), "ratios", 1, 1000)) + "," +
+                    std::to_string(parse_count(ratios.substr(comma + 1), "ratios", 1, 1000));
+      } catch (const InvalidInput& e) {  // name the whole P,Q, not the part
+        throw InvalidInput("ratios", ratios, e.problem() + " (" + e.value() + ")", valid);
+      }
     }
     r.ratios = named_ratio_set(field, canonical);
     r.json_fields = set_member(field, canonical) + ", ";
