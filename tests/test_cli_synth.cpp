@@ -116,7 +116,7 @@ TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "
   }
 }
 
-TEST_CASE("cli synth points: a bad count is named whole, a negative one as out of range", "[cli][synth][errors]") {
+TEST_CASE("cli synth: a bad count pair is named whole, a negative count as out of range", "[cli][synth][errors]") {
   TempDir dir;
   REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > ok.csv && "
                 "printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n-1,0,0\\n0,-1,0\\n' > five.csv",
@@ -127,7 +127,13 @@ TEST_CASE("cli synth points: a bad count is named whole, a negative one as out o
   CHECK(contains(three.err, "ratios = 1,1,1: not two counts P,Q"));
   const Result part = run("synth points --input ok.csv --ratios 2,x", dir, true);
   CHECK(part.status == 2);
+  CHECK(part.out.empty());
   CHECK(contains(part.err, "ratios = 2,x: not a whole number (x)"));
+  REQUIRE(run("trace --n 1 --a2 1 --a3 1 --samples 40 -o t.csv", dir, true).status == 0);
+  const Result terms = run("synth identify --input t.csv --max-terms 1,1,1", dir, true);
+  CHECK(terms.status == 2);
+  CHECK(terms.out.empty());
+  CHECK(contains(terms.err, "max-terms = 1,1,1: not two counts P,Q"));
   const Result negative = run("synth points --input five.csv --n 1 --free-axis --threads -1", dir, true);
   CHECK(negative.status == 2);
   CHECK(contains(negative.err, "threads = -1: outside the valid range"));

@@ -162,6 +162,7 @@ TEST_CASE("free axis: boxes around the hidden root keep it (each point's test an
         auto item = system.list_item(Interval(lo, lo + h), i);
         REQUIRE(system.may_hold(view, item, i));
         CHECK((item.d.inf() <= root[4 + i] + 1e-12 && item.d.sup() >= root[4 + i] - 1e-12));  // narrowed, it keeps the root
+        CHECK((item.d.inf() >= lo && item.d.sup() <= lo + h));                                  // inside the old item
         for (double d = 0.0; width >= 1.0 / 16 && d < system.list_max(); d += h) {
           auto other = system.list_item(Interval(d, d + h), i);
           joined += system.may_hold(view, other, i);
@@ -207,7 +208,9 @@ TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from 
       return Vector3d(c[0], c[1], c[2]);
     };
     const Vector3d s = axis(sun, x[0], x[1]), w = axis(planet, x[2], x[3]);
-    const double scale = 1.0 + std::abs(n.value()), h = width / scale, period = 2 * kPi * double(n.q());
+    // items as wide as the outer box, or as wide as the search starts them (kListWidth times)
+    const double scale = 1.0 + std::abs(n.value()), period = 2 * kPi * double(n.q());
+    const double h = (k % 2 ? FreeAxisSystem::kListWidth : 1.0) * width / scale;
     std::vector<Vector3d> points{Eigen::Quaterniond::UnitRandom().toRotationMatrix().col(0)};
     std::array<double, 4> item_lo{}, delta{};
     for (int i = 0; i < 4; ++i) {
@@ -224,6 +227,7 @@ TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from 
       REQUIRE(system.may_hold(view, item, i));
       // may_hold may narrow the item (Delta's Newton steps): never past the root's Delta_i
       CHECK((item.d.inf() <= delta[i] + 1e-12 && item.d.sup() >= delta[i] - 1e-12));
+      CHECK((item.d.inf() >= item_lo[i] && item.d.sup() <= item_lo[i] + h));  // inside the old item
       narrowed_items += item.d.sup() - item.d.inf() < h;
     }
     FreeAxisSystem::Outer narrower = box;
@@ -231,6 +235,32 @@ TEST_CASE("free axis: a root anywhere in a box keeps the box (points built from 
     for (int j = 0; j < 4; ++j) CHECK((narrower[j].inf() <= x[j] + 1e-12 && narrower[j].sup() >= x[j] - 1e-12));
   }
   CHECK(narrowed_items > 0);  // the items' narrowing is exercised
+}
+
+TEST_CASE("free axis: centred_sum encloses sum_k G_k dx_k over a centred box", "[synthesis][exact]") {
+  // Against the plain interval products, and at sampled points g_k in G_k, x_k in dx_k (both signs,
+  // intervals off 0 too): the sum must hold every such value; it is no wider than the products.
+  std::mt19937_64 rng(2020);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), t(0.0, 1.0);
+  const RoundingGuard upward;
+  for (int trial = 0; trial < 1000; ++trial) {
+    Interval g[4], dx[4];
+    double r[4];
+    for (int k = 0; k < 4; ++k) {
+      const double a = u(rng), b = a + 0.5 * t(rng), c = u(rng), w = 0.1 * t(rng);
+      g[k] = Interval(a, b);
+      dx[k] = (Interval(c - w, c + w)) - Interval(c);  // a box minus its centre
+      r[k] = radius(dx[k]);
+    }
+    const Interval sum = centred_sum<4>(g, r);
+    Interval products(0.0);
+    for (int k = 0; k < 4; ++k) products += g[k] * dx[k];
+    CHECK(sum.sup() - sum.inf() <= (products.sup() - products.inf()) * (1 + 1e-12) + 1e-300);
+    double sample = 0.0;  // (rounded: a margin of 1e-15 below)
+    for (int k = 0; k < 4; ++k) sample += (g[k].inf() + t(rng) * (g[k].sup() - g[k].inf())) * (dx[k].inf() + t(rng) * (dx[k].sup() - dx[k].inf()));
+    CHECK((sum.inf() <= sample + 1e-15 && sum.sup() >= sample - 1e-15));
+    CHECK((sum.inf() <= products.inf() + 1e-15 && sum.sup() >= products.sup() - 1e-15));
+  }
 }
 
 TEST_CASE("free axis: on the face pair of the hidden root the search finds it and certifies its list", "[synthesis][exact]") {

@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -106,6 +107,11 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
 
 /// A non-negative integer option value, or InvalidInput naming the option.
 std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
+
+/// Two counts "P,Q", each in [lo, hi]; InvalidInput naming the whole text (and the bad part) with
+/// `valid` as the valid range otherwise.
+std::pair<std::size_t, std::size_t> parse_count_pair(const std::string& text, const std::string& field, std::size_t lo,
+                                                     std::size_t hi, const std::string& valid);
 
 /// Every number the tool prints is sphtroch::number_text (core/number_text.hpp: the shortest form
 /// that reads back as the same double); measured times in text reports are seconds_text.

@@ -21,11 +21,9 @@ struct IdentifyOptions {
 sphtroch::IdentifyOptions identify_bounds(const std::string& text) {
   sphtroch::IdentifyOptions bounds;
   if (text.empty()) return bounds;
-  const auto comma = text.find(',');
-  if (comma == std::string::npos)
-    throw InvalidInput("max-terms", text, "not two counts P,Q", "P,Q with 1 <= P, Q <= 1000000 (|p| <= P, q <= Q)");
-  bounds.max_p = static_cast<std::int64_t>(parse_count(text.substr(0, comma), "max-terms", 1, Ratio::kMaxTerm));
-  bounds.max_q = static_cast<std::int64_t>(parse_count(text.substr(comma + 1), "max-terms", 1, Ratio::kMaxTerm));
+  const auto [p, q] = parse_count_pair(text, "max-terms", 1, Ratio::kMaxTerm, "P,Q with 1 <= P, Q <= 1000000 (|p| <= P, q <= Q)");
+  bounds.max_p = static_cast<std::int64_t>(p);
+  bounds.max_q = static_cast<std::int64_t>(q);
   return bounds;
 }
 

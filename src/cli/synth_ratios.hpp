@@ -93,16 +93,8 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
       r.teeth.range = parse_tooth_range(teeth, "teeth");
       canonical = r.teeth.range->str();
     } else {
-      const std::string valid = "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q (each 1 .. 1000)";
-      const auto comma = ratios.find(',');
-      if (comma == std::string::npos || ratios.find(',', comma + 1) != std::string::npos)
-        throw InvalidInput("ratios", ratios, "not two counts P,Q", valid);
-      try {
-        canonical = std::to_string(parse_count(ratios.substr(0, comma), "ratios", 1, 1000)) + "," +
-                    std::to_string(parse_count(ratios.substr(comma + 1), "ratios", 1, 1000));
-      } catch (const InvalidInput& e) {  // name the whole P,Q, not the part
-        throw InvalidInput("ratios", ratios, e.problem() + " (" + e.value() + ")", valid);
-      }
+      const auto [p, q] = parse_count_pair(ratios, "ratios", 1, 1000, "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q (each 1 .. 1000)");
+      canonical = std::to_string(p) + "," + std::to_string(q);
     }
     r.ratios = named_ratio_set(field, canonical);
     r.json_fields = set_member(field, canonical) + ", ";

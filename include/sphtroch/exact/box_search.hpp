@@ -16,10 +16,10 @@
 // depends on d alone, computed once), and `may_hold(view, item, i)` whether point i's equations
 // may vanish over the outer box x item.d (REQUIRES: false only when they cannot; it may note
 // in the view what the tests found, for the optional `narrow_outer`, and may replace the item by
-// one of a narrower d that holds every root of x item.d);
+// list_item(d') with d' inside item.d holding every root of x item.d, x the view's box);
 // kIsolateWidth and kContractWidth are the outer widths below which boxes go to the Krawczyk
 // test in all N unknowns, and are narrowed by it; list items are split to no wider (scaled) than
-// kListWidth times the widest outer width. `chart(box)` picks one of the System's square
+// max(kListWidth times the widest outer width, kIsolateWidth). `chart(box)` picks one of the System's square
 // formulations F for a box (each formulation's roots must include every true root, and the
 // System's `solution` drops the others), or -1 when none is good over the whole box: the box is
 // then never certified (it is bisected) and Newton uses the chart of the box's centre. Small

@@ -277,7 +277,7 @@ class FixedFrameSystem {
   static constexpr int kOuter = 2, kLists = 2, N = 4;
   static constexpr double kIsolateWidth = 1.0 / 1024;  // outer boxes this narrow go to Krawczyk
   static constexpr double kContractWidth = 1.0 / 64;   // below this, Krawczyk narrows outer boxes
-  static constexpr double kListWidth = 1.0;  // list items no wider (scaled) than this times the outer width
+  static constexpr double kListWidth = 1.0;  // list items split to this times the outer width (box_search.hpp)
   using Outer = std::array<Interval, kOuter>;
 
   /// Throws InvalidInput (field "points") as precision_points() does.
