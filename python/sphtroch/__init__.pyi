@@ -291,8 +291,8 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
 
 
 def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
-                 ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None,
-                 free_axis: bool = False, threads: Optional[Count] = None) -> Dict[str, Any]:
+                 ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None,
+                 free_axis: Flag = False, threads: Optional[Count] = None) -> Dict[str, Any]:
     """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7;
     or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
     as `--teeth`, each solution then echoing its "teeth")
@@ -304,11 +304,11 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     points (a (5, 3) array), the sun axis anywhere; each solution also has "axis" (the sun axis) and
     "frame" (the train's x, y, z axes in the points' coordinates), and the work bound is that of
     the CLI (sum of (|p| + q)^2 <= 500); threads (None: all cores) searches run at once.
-    Raises InvalidInput naming "points", "n", "ratios", "teeth" or "threads"."""
+    Raises InvalidInput naming "points", "n", "ratios", "teeth", "free_axis" or "threads"."""
 
 
 def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
-        ratios: Optional[Tuple[int, int]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
+        ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
         cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
         node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> Dict[str, Any]:
     """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7; or teeth="ZS:ZP"
@@ -320,5 +320,5 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     and/or cusps, every candidate has exactly those counts (confirmed by classify). With
     node_at=(x, y, z), every candidate's certified census has a node within node_tolerance
     (radians, default 1e-6; only with node_at) of that point ("node_distance": to its nearest
-    node). Raises InvalidInput naming "points", "n", "teeth", "nodes", "cusps", "candidates",
+    node). Raises InvalidInput naming "points", "n", "ratios", "teeth", "nodes", "cusps", "candidates",
     "max-deviation", "node-at" or "node-tolerance"."""

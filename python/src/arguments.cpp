@@ -7,6 +7,8 @@
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/parse.hpp"
 
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -15,8 +17,36 @@ namespace sphtroch::python {
 
 std::string repr_of(py::handle v) { return py::repr(v).cast<std::string>(); }
 
-/// A str as UTF-8, else InvalidInput (a lone surrogate such as "\ud800" cannot be encoded).
+namespace {
+
+/// numpy (from sys.modules after the first call).
+py::module_ numpy() { return py::module_::import("numpy"); }
+
+/// The dtype kind of a NumPy scalar or array ('b' bool, 'i'/'u' integer, 'f' float, 'c' complex,
+/// 'U'/'S' text, 'O' object, ...), or 0 for any other object.
+char numpy_kind(py::handle v) {
+  const py::module_ np = numpy();
+  if (!py::isinstance(v, np.attr("generic")) && !py::isinstance<py::array>(v)) return 0;
+  return py::dtype::from_args(v.attr("dtype")).kind();
+}
+
+/// Not a number whatever float() or __index__ would make of it: bool and numpy.bool_, None, text
+/// (str, bytes), complex numbers (also NumPy's), and NumPy values of a dtype other than integer or
+/// float (a 0-d text array).
+bool not_a_real(py::handle v) {
+  if (v.is_none() || py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) ||
+      PyByteArray_Check(v.ptr()) || PyComplex_Check(v.ptr()))
+    return true;
+  const char kind = numpy_kind(v);
+  return kind != 0 && kind != 'i' && kind != 'u' && kind != 'f';
+}
+
+}  // namespace
+
+/// A str as UTF-8, else InvalidInput: "not a string" (bytes, numbers, arrays), or not encodable
+/// (a lone surrogate such as "\ud800").
 std::string text_arg(py::handle v, const std::string& field, const std::string& valid) {
+  if (!py::isinstance<py::str>(v)) throw InvalidInput(field, repr_of(v), "not a string", valid);
   Py_ssize_t size = 0;
   const char* p = PyUnicode_AsUTF8AndSize(v.ptr(), &size);
   if (p == nullptr) {
@@ -31,15 +61,14 @@ std::string text_arg(py::handle v, const std::string& field, const std::string& 
 bool flag_arg(py::handle v, const std::string& field) {
   if (v.ptr() == Py_True) return true;
   if (v.ptr() == Py_False) return false;
-  const py::object np_bool = py::module_::import("numpy").attr("bool_");
-  if (py::isinstance(v, np_bool)) return v.ptr() == Py_True || PyObject_IsTrue(v.ptr()) == 1;
+  if (py::isinstance(v, numpy().attr("bool_"))) return PyObject_IsTrue(v.ptr()) == 1;
   throw InvalidInput(field, repr_of(v), "not a flag", "True or False");
 }
 
-/// A real number (anything float() accepts, except bool, None and str), else InvalidInput.
+/// A real number (anything float() accepts), else InvalidInput: bool, None, text and complex
+/// numbers are refused (NumPy's complex would lose its imaginary part, numpy.bool_ read as 1).
 double real_arg(py::handle v, const std::string& field, const std::string& valid) {
-  if (v.is_none() || py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v))
-    throw InvalidInput(field, repr_of(v), "not a real number", valid);
+  if (not_a_real(v)) throw InvalidInput(field, repr_of(v), "not a real number", valid);
   PyObject* f = PyNumber_Float(v.ptr());
   if (f == nullptr) {
     PyErr_Clear();
@@ -50,21 +79,99 @@ double real_arg(py::handle v, const std::string& field, const std::string& valid
   return x;
 }
 
-/// A whole number in [lo, hi] (int or any integer type with __index__; not bool), else InvalidInput.
-std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
-  const std::string valid = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
-  if (py::isinstance<py::bool_>(v) || !PyIndex_Check(v.ptr())) throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+namespace {
+
+/// The value of a whole number (int or any integer type with __index__; not bool or numpy.bool_):
+/// false when v is none; `overflow` when it does not fit a long long.
+bool whole_number(py::handle v, long long& x, bool& overflow) {
+  if (not_a_real(v) || !PyIndex_Check(v.ptr())) return false;
   PyObject* i = PyNumber_Index(v.ptr());
   if (i == nullptr) {
     PyErr_Clear();
-    throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+    return false;
   }
-  int overflow = 0;
-  const long long x = PyLong_AsLongLongAndOverflow(i, &overflow);
+  int o = 0;
+  x = PyLong_AsLongLongAndOverflow(i, &o);
   Py_DECREF(i);
-  if (overflow != 0 || x < 0 || static_cast<unsigned long long>(x) < lo || static_cast<unsigned long long>(x) > hi)
+  overflow = o != 0;
+  return true;
+}
+
+std::string count_range(std::size_t lo, std::size_t hi) {
+  return hi >= static_cast<std::size_t>(std::numeric_limits<long long>::max())
+             ? "integer >= " + std::to_string(lo)
+             : "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
+}
+
+}  // namespace
+
+/// A whole number in [lo, hi] (int or any integer type with __index__; not bool), else InvalidInput.
+std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
+  const std::string valid = count_range(lo, hi);
+  long long x = 0;
+  bool overflow = false;
+  if (!whole_number(v, x, overflow)) throw InvalidInput(field, repr_of(v), "not a whole number", valid);
+  if (overflow || x < 0 || static_cast<unsigned long long>(x) < lo || static_cast<unsigned long long>(x) > hi)
     throw InvalidInput(field, repr_of(v), "outside the valid range", valid);
   return static_cast<std::size_t>(x);
+}
+
+std::optional<std::size_t> optional_count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
+  if (v.is_none()) return std::nullopt;
+  try {
+    return count_arg(v, field, lo, hi);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(field, e.value(), e.problem(), "None or " + e.valid_range());
+  }
+}
+
+std::pair<std::size_t, std::size_t> count_pair_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi) {
+  const std::string valid = "(P, Q), two integers " + std::to_string(lo) + " .. " + std::to_string(hi);
+  if (py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v) || PyByteArray_Check(v.ptr()) ||
+      !py::isinstance<py::sequence>(v) || py::len(v) != 2)
+    throw InvalidInput(field, repr_of(v), "not a pair of whole numbers", valid);
+  const py::sequence s = py::reinterpret_borrow<py::sequence>(v);
+  std::size_t k[2] = {0, 0};
+  for (std::size_t i = 0; i < 2; ++i) {
+    long long x = 0;
+    bool overflow = false;
+    if (!whole_number(s[i], x, overflow)) throw InvalidInput(field, repr_of(v), "not a pair of whole numbers", valid);
+    if (overflow || x < 0 || static_cast<unsigned long long>(x) < lo || static_cast<unsigned long long>(x) > hi)
+      throw InvalidInput(field, repr_of(v), "outside the valid range", valid);
+    k[i] = static_cast<std::size_t>(x);
+  }
+  return {k[0], k[1]};
+}
+
+std::string shape_text(const py::array& a) {
+  std::string s = "array of shape (";
+  for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+RealArray real_array_arg(py::handle v, const std::string& field, const std::string& valid) {
+  const auto type_name = [&] { return "a " + std::string(py::str(py::type::of(v).attr("__name__"))); };
+  if (v.is_none()) throw InvalidInput(field, "None", "not an array", valid);
+  py::object arr = py::reinterpret_borrow<py::object>(v);
+  if (!py::isinstance<py::array>(v)) {
+    try {
+      arr = numpy().attr("asarray")(v);
+    } catch (const py::error_already_set&) {
+      throw InvalidInput(field, type_name(), "not convertible to an array", valid);
+    }
+  }
+  // Only integer and float dtypes: NumPy's cast would parse text ("1.5"), drop imaginary parts,
+  // and read bool and objects as numbers.
+  const py::dtype dt = py::reinterpret_borrow<py::array>(arr).dtype();
+  if (dt.kind() != 'f' && dt.kind() != 'i' && dt.kind() != 'u')
+    throw InvalidInput(field, "an array of dtype " + std::string(py::str(py::handle(dt))), "not numeric real (integer or float)",
+                       valid);
+  RealArray a = RealArray::ensure(arr);  // the same object when already C-contiguous float64
+  if (!a) {
+    PyErr_Clear();
+    throw InvalidInput(field, type_name(), "not convertible to a float64 array", valid);
+  }
+  return a;
 }
 
 /// An angle: radians as a real number, or the CLI's text ("2pi/3", "90deg"). `text` receives
@@ -95,7 +202,7 @@ A3Spec a3_arg(py::handle v, std::string& text) {
 /// (2.5 -> 5/2; a float that is no decimal of at most 9 places, e.g. 1/3, is refused: give "1/3").
 Ratio ratio_arg(py::handle v) {
   if (py::isinstance<py::str>(v)) return parse_ratio(text_arg(v, "n", kRatioForms), "n");
-  if (v.is_none() || py::isinstance<py::bool_>(v)) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
+  if (not_a_real(v)) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
   if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
     const py::object p = v.attr("numerator"), q = v.attr("denominator");
     if (!PyIndex_Check(p.ptr()) || !PyIndex_Check(q.ptr())) throw InvalidInput("n", repr_of(v), "not a gear ratio", kRatioForms);
@@ -113,10 +220,10 @@ Ratio ratio_arg(py::handle v) {
 std::pair<double, double> range_arg(py::handle v, const std::string& field) {
   const std::string valid = "(lo, hi) with angles as numbers (radians) or text (\"pi/3\"), or \"LO:HI\"";
   if (py::isinstance<py::str>(v)) {
-    const AngleRange r = parse_angle_range(v.cast<std::string>(), field, kAngleRangeForms);
+    const AngleRange r = parse_angle_range(text_arg(v, field, kAngleRangeForms), field, kAngleRangeForms);
     return {r.lo, r.hi};
   }
-  if (!py::isinstance<py::sequence>(v) || py::len(v) != 2)
+  if (py::isinstance<py::bytes>(v) || PyByteArray_Check(v.ptr()) || !py::isinstance<py::sequence>(v) || py::len(v) != 2)
     throw InvalidInput(field, repr_of(v), "not a pair (lo, hi)", valid);
   const py::sequence s = py::reinterpret_borrow<py::sequence>(v);
   std::string ignored;
@@ -137,8 +244,7 @@ Ratio ratio_or_teeth_arg(py::handle n, py::handle teeth, TrainText& text) {
     return nv;
   }
   if (!n.is_none()) throw InvalidInput("teeth", repr_of(teeth), "given together with n = " + repr_of(n), "one of n and teeth");
-  if (!py::isinstance<py::str>(teeth)) throw InvalidInput("teeth", repr_of(teeth), "not a string", teeth_valid);
-  const Teeth z = parse_teeth(teeth.cast<std::string>(), "teeth");
+  const Teeth z = parse_teeth(text_arg(teeth, "teeth", teeth_valid), "teeth");
   text.teeth = z.str();
   return z.ratio();
 }

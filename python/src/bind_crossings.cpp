@@ -21,12 +21,6 @@ namespace {
 constexpr const char* kPointsValid =
     "an (N, 3) array of x, y, z rows (float64; other integer or float dtypes are converted)";
 
-std::string shape_text(const py::array& a) {
-  std::string s = "array of shape (";
-  for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
-  return s + (a.ndim() == 1 ? ",)" : ")");
-}
-
 /// A list of the kind names, sharing one str object per kind (not one per row).
 py::list kind_list(const std::vector<std::uint8_t>& kinds) {
   py::list names;
@@ -38,27 +32,11 @@ py::list kind_list(const std::vector<std::uint8_t>& kinds) {
 
 py::dict crossings(py::handle points, py::handle closed_flag, py::handle pairs_flag, py::handle max_crossings,
                    py::handle max_work) {
-  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const bool closed = flag_arg(closed_flag, "closed");
   const bool with_pairs = flag_arg(pairs_flag, "pairs");
   const std::size_t limit_contacts = count_arg(max_crossings, "max_crossings", 0, kMaxCrossingLimit);
   const std::size_t limit_work = count_arg(max_work, "max_work", 0, kMaxCrossingLimit);
-  // Only integer and float dtypes: NumPy would parse strings ("1.5") and drop imaginary parts.
-  py::object arr = py::reinterpret_borrow<py::object>(points);
-  if (!py::isinstance<py::array>(points)) {
-    try {
-      arr = py::module_::import("numpy").attr("asarray")(points);
-    } catch (const py::error_already_set&) {
-      throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))),
-                         "not convertible to an array", kPointsValid);
-    }
-  }
-  const py::dtype dt = py::reinterpret_borrow<py::array>(arr).dtype();
-  if (dt.kind() != 'f' && dt.kind() != 'i' && dt.kind() != 'u')
-    throw InvalidInput("points", "an array of dtype " + std::string(py::str(py::handle(dt))), "not numeric real (integer or float)",
-                       kPointsValid);
-  Array a = Array::ensure(arr);  // the same object when already C-contiguous float64
-  if (!a) throw InvalidInput("points", "a " + std::string(py::str(py::type::of(points).attr("__name__"))), "not convertible to a float64 array", kPointsValid);
+  const RealArray a = real_array_arg(points, "points", kPointsValid);  // the same object when already C-contiguous float64
   if (a.ndim() != 2 || a.shape(1) != 3) throw InvalidInput("points", shape_text(a), "not an (N, 3) array", kPointsValid);
   const bool converted = !a.is(points);
   const auto n = static_cast<std::size_t>(a.shape(0));

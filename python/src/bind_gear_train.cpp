@@ -137,17 +137,8 @@ constexpr double kMaxKinematicsAngle = 2 * 3.141592653589793 * 1e6;
 /// kinematics(t): speed, geodesic curvature, tangential acceleration at each carrier angle.
 py::dict kinematics(const Train& self, py::handle t_arg) {
   const std::string valid = "an (N,) array of finite radians, |t| <= 2 pi 1e6";
-  py::array_t<double, py::array::c_style | py::array::forcecast> t;
-  try {
-    t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(t_arg);
-  } catch (const py::error_already_set&) {
-    t = {};
-  }
-  if (!t) {
-    PyErr_Clear();
-    throw InvalidInput("t", repr_of(t_arg), "not an array of numbers", valid);
-  }
-  if (t.ndim() != 1) throw InvalidInput("t", repr_of(t_arg), "not a 1-D array of carrier angles", valid);
+  const RealArray t = real_array_arg(t_arg, "t", valid);
+  if (t.ndim() != 1) throw InvalidInput("t", shape_text(t), "not a 1-D array of carrier angles", valid);
   const std::vector<double> in(t.data(), t.data() + t.shape(0));  // copied with the GIL held
   for (std::size_t i = 0; i < in.size(); ++i)
     if (!(std::fabs(in[i]) <= kMaxKinematicsAngle))

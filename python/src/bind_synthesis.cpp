@@ -28,15 +28,20 @@ namespace {
 constexpr const char* kTimesValid = "a 1-D array of carrier angles theta2 (radians), one per point";
 constexpr const char* kPointsValid = "an (N, 3) array of unit vectors x, y, z, one per time";
 
-py::dict identify_dict(py::handle t, py::handle points) {
-  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-  const Array ta = Array::ensure(t), pa = Array::ensure(points);
-  if (!ta || ta.ndim() != 1) throw InvalidInput("t", repr_of(py::type::of(t).attr("__name__")), "not a 1-D array", kTimesValid);
-  if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
-    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array", kPointsValid);
-  const std::vector<double> times(ta.data(), ta.data() + ta.shape(0));
+/// The (N, 3) rows of an array argument (real_array_arg: integer or float dtypes only).
+std::vector<Vector3d> rows_arg(py::handle points, const char* field, const char* valid) {
+  const RealArray pa = real_array_arg(points, field, valid);
+  if (pa.ndim() != 2 || pa.shape(1) != 3) throw InvalidInput(field, shape_text(pa), "not an (N, 3) array", valid);
   std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
+  return p;
+}
+
+py::dict identify_dict(py::handle t, py::handle points) {
+  const RealArray ta = real_array_arg(t, "t", kTimesValid);
+  if (ta.ndim() != 1) throw InvalidInput("t", shape_text(ta), "not a 1-D array", kTimesValid);
+  const std::vector<double> times(ta.data(), ta.data() + ta.shape(0));
+  const std::vector<Vector3d> p = rows_arg(points, "points", kPointsValid);
   Identified id{};
   {
     py::gil_scoped_release release;
@@ -53,18 +58,8 @@ py::dict identify_dict(py::handle t, py::handle points) {
   return d;
 }
 
-/// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
-/// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
 /// The (N, 3) points of a synthesis call.
-std::vector<Vector3d> points_arg(py::handle points, const char* valid) {
-  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-  const Array pa = Array::ensure(points);
-  if (!pa || pa.ndim() != 2 || pa.shape(1) != 3)
-    throw InvalidInput("points", repr_of(py::type::of(points).attr("__name__")), "not an (N, 3) array", valid);
-  std::vector<Vector3d> p(static_cast<std::size_t>(pa.shape(0)));
-  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vector3d(pa.at(i, 0), pa.at(i, 1), pa.at(i, 2));
-  return p;
-}
+std::vector<Vector3d> points_arg(py::handle points, const char* valid) { return rows_arg(points, "points", valid); }
 
 /// Bound on the sum over the ratios of (|p| + q)^2: the CLI's work bound (synth points / fit),
 /// and that of synth points --free-axis.
@@ -96,9 +91,7 @@ std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_
     set = {ratio_arg(n)};
     check_ratio_work(set, "n", set[0].str());
   } else if (!teeth_text.is_none()) {
-    if (!py::isinstance<py::str>(teeth_text))
-      throw InvalidInput("teeth", repr_of(teeth_text), "not a string", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
-    const std::string text = teeth_text.cast<std::string>();
+    const std::string text = text_arg(teeth_text, "teeth", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
     if (text.find("..") == std::string::npos) {
       teeth.pair = parse_teeth(text, "teeth");
       fields = "\"teeth\": \"" + teeth.pair->str() + "\", ";
@@ -110,19 +103,18 @@ std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_
     }
     check_ratio_work(set, "teeth", text);
   } else {
-    const auto bounds = ratios.cast<std::pair<std::int64_t, std::int64_t>>();
-    if (bounds.first < 1 || bounds.second < 1 || bounds.first > 7 || bounds.second > 7)
-      throw InvalidInput("ratios", repr_of(ratios), "bounds out of range", "(P, Q) with 1 <= P, Q <= 7 (the CLI's work bound)");
+    const auto bounds = count_pair_arg(ratios, "ratios", 1, 7);  // 7: the CLI's work bound
     fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
-    set = ratio_set(bounds.first, bounds.second);
+    set = ratio_set(static_cast<std::int64_t>(bounds.first), static_cast<std::int64_t>(bounds.second));
   }
   return set;
 }
 
-std::optional<std::int64_t> count_arg(py::handle v, const char* field);
-
-py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, bool free_axis,
+/// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
+/// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
+py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle free_axis_flag,
                         py::handle threads) {
+  const bool free_axis = flag_arg(free_axis_flag, "free_axis");
   const std::vector<Vector3d> p =
       points_arg(points, free_axis ? "a (5, 3) array of unit vectors x, y, z" : "a (3, 3) array of unit vectors x, y, z");
   std::string fields;
@@ -136,11 +128,9 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
     check_points_census_work(set, field, given);
   std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
   if (!threads.is_none()) {
-    const auto k = count_arg(threads, "threads");
-    if (!free_axis || *k < 1 || *k > 1024)
-      throw InvalidInput("threads", repr_of(threads), free_axis ? "outside the valid range" : "only with free_axis=True",
-                         "None or an integer 1 .. 1024, with free_axis=True");
-    workers = static_cast<std::size_t>(*k);
+    if (!free_axis)
+      throw InvalidInput("threads", repr_of(threads), "only with free_axis=True", "None or an integer 1 .. 1024, with free_axis=True");
+    workers = *optional_count_arg(threads, "threads", 1, 1024);
   }
   std::string json;
   {
@@ -150,47 +140,32 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
   return py::module_::import("json").attr("loads")(json);
 }
 
-/// A count argument: None or an int >= 0.
-std::optional<std::int64_t> count_arg(py::handle v, const char* field) {
-  if (v.is_none()) return std::nullopt;
-  if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v))
-    throw InvalidInput(field, repr_of(v), "not an integer", "None or an integer >= 0");
-  std::int64_t k = 0;
-  try {
-    k = v.cast<std::int64_t>();
-  } catch (const py::cast_error&) {
-    throw InvalidInput(field, repr_of(v), "too large", "None or an integer >= 0 below 2**63");
-  }
-  if (k < 0) throw InvalidInput(field, repr_of(v), "negative", "None or an integer >= 0");
-  return k;
-}
-
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
-               py::handle cusps, py::handle candidates, double max_deviation, py::handle node_at, py::handle node_tolerance) {
+               py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
   std::string fields;
   TeethSpec teeth;
   const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
   FitOptions o;
-  o.nodes = count_arg(nodes, "nodes");
-  o.cusps = count_arg(cusps, "cusps");
-  const auto wanted = count_arg(candidates, "candidates");
-  if (!wanted || *wanted < 1 || *wanted > 1000)
-    throw InvalidInput("candidates", repr_of(candidates), "outside the valid range", "an integer 1 .. 1000 (the CLI's --candidates)");
-  o.max_candidates = static_cast<std::size_t>(*wanted);
-  o.max_deviation = max_deviation;
+  constexpr std::size_t kAnyCount = static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max());
+  const auto count = [](const std::optional<std::size_t>& k) {
+    return k ? std::optional<std::int64_t>(static_cast<std::int64_t>(*k)) : std::nullopt;
+  };
+  o.nodes = count(optional_count_arg(nodes, "nodes", 0, kAnyCount));
+  o.cusps = count(optional_count_arg(cusps, "cusps", 0, kAnyCount));
+  o.max_candidates = count_arg(candidates, "candidates", 1, 1000);  // the CLI's --candidates
+  o.max_deviation = real_arg(max_deviation, "max-deviation", "radians > 0");
   if (!node_at.is_none()) {
-    using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-    const Array a = Array::ensure(node_at);
-    if (!a || a.ndim() != 1 || a.shape(0) != 3)
-      throw InvalidInput("node-at", repr_of(node_at), "not three numbers", "None or (x, y, z), a unit vector");
+    const char* const valid = "None or (x, y, z), a unit vector";
+    const RealArray a = real_array_arg(node_at, "node-at", valid);
+    if (a.ndim() != 1 || a.shape(0) != 3) throw InvalidInput("node-at", shape_text(a), "not three numbers", valid);
     o.node_at = Vector3d(a.at(0), a.at(1), a.at(2));
   }
   if (!node_tolerance.is_none()) {
     if (!o.node_at) throw InvalidInput("node-tolerance", repr_of(node_tolerance), "without node_at", "None, or an angle with node_at");
-    o.node_tolerance = node_tolerance.cast<double>();
+    o.node_tolerance = real_arg(node_tolerance, "node-tolerance", "radians in (0, pi]");
   }
   std::string json;
   {

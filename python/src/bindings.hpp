@@ -21,10 +21,12 @@
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/io/train_text.hpp"
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -48,15 +50,32 @@ void bind_errors(py::module_& m);
                                     py::handle root_nodes);
 
 // --- arguments.cpp: Python values -> C++ values, else InvalidInput naming the argument -----
+// The one home of argument conversion: no binding casts a user's value with pybind11 (whose
+// failures are RuntimeError / TypeError) or lets NumPy convert text, bool or complex silently.
 std::string repr_of(py::handle v);
-/// A str as UTF-8, else InvalidInput (a lone surrogate such as "\ud800" cannot be encoded).
+/// A str as UTF-8, else InvalidInput: "not a string", or not encodable (a lone surrogate "\ud800").
 std::string text_arg(py::handle v, const std::string& field, const std::string& valid);
 /// A flag: True or False (also numpy.bool_); truthy objects ("yes", 1, None) are refused.
 bool flag_arg(py::handle v, const std::string& field);
-/// A real number (anything float() accepts, except bool, None and str).
+/// A real number (anything float() accepts: int, float, NumPy integer and float scalars, Fraction),
+/// except bool and numpy.bool_, None, str and bytes, complex (also NumPy's) and NumPy values of
+/// another dtype (a 0-d text array).
 double real_arg(py::handle v, const std::string& field, const std::string& valid);
-/// A whole number in [lo, hi] (int or any integer type with __index__; not bool).
+/// A whole number in [lo, hi] (int or any integer type with __index__; not bool or numpy.bool_).
 std::size_t count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi);
+/// None (nullopt), or count_arg(v, field, lo, hi).
+std::optional<std::size_t> optional_count_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi);
+/// (P, Q): a sequence of exactly two whole numbers in [lo, hi] (not text); InvalidInput names the whole value.
+std::pair<std::size_t, std::size_t> count_pair_arg(py::handle v, const std::string& field, std::size_t lo, std::size_t hi);
+/// A C-contiguous float64 NumPy array.
+using RealArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+/// An array argument as RealArray: the same object when it already is one, anything array-like
+/// converted once (numpy.asarray); else InvalidInput(field, .., valid). Only integer and float
+/// dtypes: text (NumPy would parse "1.5"), bool, complex (its imaginary part would be dropped) and
+/// object arrays are refused. The shape is the caller's to check (shape_text names it).
+RealArray real_array_arg(py::handle v, const std::string& field, const std::string& valid);
+/// "array of shape (N, 3)", an array's shape as InvalidInput's value.
+std::string shape_text(const py::array& a);
 /// An angle: radians as a real number, or the CLI's text; `text` receives the text kept for reports.
 double angle_arg(py::handle v, const std::string& field, std::string& text);
 /// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
