@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <fstream>
 #include <regex>
@@ -487,4 +489,63 @@ TEST_CASE("hostile: D13 the a2 bound 1e-6 is inclusive and nothing below passes,
   CHECK(shell(kExe + " scene n.json", dir).status == 0);
   write_file(dir.path / "n.json", "{\"trains\":[{\"name\":\"a\",\"a2\":\"1\",\"a3\":\"1\",\"n\":\"2.5\",\"effects\":{\"trace\":\"p.csv\"}}]}");
   CHECK(shell(kExe + " scene n.json", dir).status == 0);
+}
+
+TEST_CASE("hostile: D3 extreme_radius: 1e100 and 1e-100 give finite kinematics in CSV and .npy, beyond them refused",
+          "[cli][hostile][radius]") {
+  TempDir dir;
+  // n = 3 with a3 on the pitch cone: cusps (speed 0) and a near-cusp's large curvature; n = 1000:
+  // large speeds and accelerations.
+  for (const std::string train : {"--n 3 --a2 1 --a3 ap+1e-9", "--n 1000 --a2 1 --a3 2"}) {
+    for (const std::string radius : {"1e100", "1e-100"}) {
+      const Result csv = shell(kExe + " trace " + train + " --samples 2000 --radius " + radius + " --kinematics --velocity", dir);
+      INFO(train << " --radius " << radius << ": " << csv.err);
+      REQUIRE(csv.status == 0);
+      std::istringstream rows(csv.out);
+      std::string line;
+      std::getline(rows, line);  // header
+      std::size_t values = 0;
+      while (std::getline(rows, line)) {
+        std::istringstream fields(line);
+        std::string field;
+        while (std::getline(fields, field, ',')) {
+          const double v = std::strtod(field.c_str(), nullptr);
+          CHECK(std::isfinite(v));
+          CHECK((v == 0.0 || std::abs(v) >= 2.2250738585072014e-308));  // normal, not subnormal
+          ++values;
+        }
+      }
+      CHECK(values == 2000 * 10);
+      REQUIRE(shell(kExe + " trace " + train + " --samples 2000 --radius " + radius + " --kinematics -o k.npy", dir).status == 0);
+      const std::string npy = slurp(dir.path / "k.npy");
+      const std::size_t header = npy.find('\n') + 1;
+      REQUIRE(npy.size() == header + 2000 * 7 * sizeof(double));
+      for (std::size_t at = header; at < npy.size(); at += sizeof(double)) {
+        double v;
+        std::memcpy(&v, npy.data() + at, sizeof v);
+        CHECK(std::isfinite(v));
+      }
+    }
+  }
+  write_file(dir.path / "keep.csv", "old");
+  for (const std::string radius : {"1e308", "1e101", "9.9e-101", "1e-310", "0", "-1", "inf", "nan"}) {
+    check_refused(shell(kExe + " trace --n 2 --a2 1 --a3 1 --kinematics --radius " + radius + " -o keep.csv", dir),
+                  "--radius = " + radius + ": ");
+    CHECK(slurp(dir.path / "keep.csv") == "old");
+  }
+  check_refused(shell(kExe + " nodes --n 2 --a2 1 --a3 1 --radius 1e-300", dir), "valid: a length in [1e-100, 1e100]");
+}
+
+TEST_CASE("hostile: D1 D6 identify_of_a_tiny_planet_circle says the samples do not determine n (exit 2), never one ratio",
+          "[cli][hostile][identify]") {
+  TempDir dir;
+  for (const std::string a3 : {"1e-9", "1e-8", "1e-6", "pi-1e-6", "pi-1e-9"}) {
+    const Result r = shell(kExe + " trace --n 2 --a2 1 --a3 " + a3 + " | " + kExe + " synth identify --input -", dir);
+    INFO("a3 = " << a3);
+    check_refused(r, "below the samples' resolution");
+    CHECK(!contains(r.err, "at least one period"));
+  }
+  const Result ok = shell(kExe + " trace --n 2 --a2 1 --a3 1e-4 | " + kExe + " synth identify --input -", dir);
+  CHECK(ok.status == 0);
+  CHECK(contains(ok.out, "n = 2\n"));
 }

@@ -175,3 +175,88 @@ TEST_CASE("identify: bad samples are one InvalidInput naming the field", "[ident
   const Trajectory<double> tr = sample_period(TracerCurve<double>(GearTrain(1.0, 1.0, Ratio(5, 3))), 900);
   CHECK(test::expect_invalid([&] { identify(tr.t, tr.points, tight); }).field() == "samples");
 }
+
+TEST_CASE("identify: D1 a planet circle below the samples' resolution (a3 1e-12 .. 1e-3, near pi) never gives a wrong n",
+          "[identify]") {
+  // |p|, q <= 50: every exit-0 answer must be the hidden ratio; a refusal names the samples. With
+  // exact samples the accepted rms is 1e-6, so a3 <= 1e-6 cannot determine n (any ratio fits within
+  // sin a3) and must be refused, while a3 >= 1e-4 is well resolved and must be identified.
+  std::mt19937_64 rng(40);
+  std::uniform_int_distribution<int> term(1, 50), sign(0, 1);
+  std::uniform_real_distribution<double> a2s(0.2, kPi - 0.2), phases(-kPi, kPi);
+  std::vector<double> a3s;
+  for (const double a3 : {1e-12, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 2e-6, 5e-6, 1e-5, 3e-5, 1e-4, 1e-3}) {
+    a3s.push_back(a3);
+    a3s.push_back(kPi - a3);
+  }
+  int identified = 0, refused = 0;
+  for (int k = 0; k < 12; ++k) {
+    std::int64_t p = term(rng), q = term(rng);
+    while (std::gcd(p, q) != 1) q = term(rng);
+    if (sign(rng)) p = -p;
+    const double a2 = a2s(rng), phase = phases(rng);
+    for (const double a3 : a3s) {
+      const GearTrain hidden(a2, a3, Ratio(p, q), phase);
+      const Trajectory<double> tr = sample_period(TracerCurve<double>(hidden), std::size_t(std::max<std::int64_t>(1000, 20 * (std::abs(p) + q))));
+      const double offset = std::min(a3, kPi - a3);
+      INFO("n = " << hidden.ratio().str() << ", a2 = " << a2 << ", a3 = " << a3);
+      try {
+        const Identified id = identify(tr.t, tr.points);
+        CHECK(id.train.ratio() == hidden.ratio());
+        CHECK(offset > 1e-6);
+        ++identified;
+      } catch (const InvalidInput& e) {
+        CHECK(e.field() == "samples");
+        CHECK(offset < 1e-4);
+        if (offset <= 1e-6) CHECK(e.problem().find("below the samples' resolution") != std::string::npos);
+        ++refused;
+      }
+    }
+  }
+  CHECK(identified > 0);
+  CHECK(refused > 0);
+}
+
+TEST_CASE("identify: D2 two trains mixed along t (a2 0.70, then 0.71) are a systematic misfit and refused", "[identify]") {
+  for (const Ratio n : {Ratio(2), Ratio(5, 2), Ratio(-1, 3)}) {
+    for (const double a3 : {1.0, 2.5}) {
+      const GearTrain first(0.70, a3, n), second(0.71, a3, n);
+      const Trajectory<double> a = sample_period(TracerCurve<double>(first), 2000);
+      const Trajectory<double> b = sample_period(TracerCurve<double>(second), 2000);
+      std::vector<double> t;
+      std::vector<Vector3d> p;
+      for (std::size_t i = 0; i < 2000; ++i) {
+        t.push_back(a.t[i]);
+        p.push_back(i < 1000 ? a.points[i] : b.points[i]);
+      }
+      INFO("n = " << n.str() << ", a3 = " << a3);
+      const InvalidInput e = test::expect_invalid([&] { identify(t, p); });
+      CHECK(e.field() == "samples");
+      // Either the circle or the systematic-misfit check refuses; never an answer.
+      CHECK((e.problem().find("systematically") != std::string::npos || e.problem().find("circle") != std::string::npos ||
+             e.problem().find("fits them") != std::string::npos));
+    }
+  }
+  // The same samples from one train with white noise of the mixture's size are identified.
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 2e-3);
+  const GearTrain one(0.70, 1.0, Ratio(2));
+  const Trajectory<double> tr = sample_period(TracerCurve<double>(one), 2000);
+  std::vector<Vector3d> noisy;
+  for (const Vector3d& x : tr.points) noisy.push_back((x + Vector3d(noise(rng), noise(rng), noise(rng))).normalized());
+  CHECK(identify(tr.t, noisy).train.ratio() == Ratio(2));
+}
+
+TEST_CASE("identify: D6 one point repeated 5000 times is refused as the samples' problem, not as a fitted a2",
+          "[identify][errors]") {
+  const Vector3d point = Vector3d(0.3, -0.5, 0.8).normalized();
+  std::vector<double> t;
+  std::vector<Vector3d> p;
+  for (int i = 0; i < 5000; ++i) {
+    t.push_back(0.001 * i);
+    p.push_back(point);
+  }
+  const InvalidInput e = test::expect_invalid([&] { identify(t, p); });
+  CHECK(e.field() == "samples");
+  CHECK(e.problem().find("sun axis") != std::string::npos);
+}

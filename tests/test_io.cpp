@@ -17,6 +17,9 @@
 #include "sphtroch/io/trace_output.hpp"
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <signal.h>
+#include <unistd.h>
 #include <sys/sysmacros.h>
 
 #include <algorithm>
@@ -635,6 +638,35 @@ TEST_CASE("output_file: D5 more than 64 live temporaries are all removable by th
   OutputFile g = OutputFile::open((dir.path / "g").string(), "--output");
   detail::TempRegistry::instance().unlink_all();
   CHECK(dir.entries().empty());
+}
+
+TEST_CASE("output_file: D0 a process that dies of abort() or a fault mid-write leaves no temporary", "[io][output][signals]") {
+  // Fault injection by death: a child process installs the cleanup, stages two outputs, writes
+  // part of them, then dies of the signal (as glibc's "stack smashing detected" calls abort()).
+  for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGXFSZ, SIGTERM}) {
+    TempDir dir;
+    std::ofstream(dir.path / "b.csv") << "old";
+    std::fflush(nullptr);
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      install_output_signal_cleanup();
+      OutputFile a = OutputFile::open((dir.path / "a.csv").string(), "--output");
+      OutputFile b = OutputFile::open((dir.path / "b.csv").string(), "--output");
+      a.write(std::string(3 << 20, 'x'));  // past the buffer: bytes on disk
+      b.write("partial");
+      if (sig == SIGABRT) std::abort();
+      ::raise(sig);
+      ::_exit(0);  // not reached
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    INFO("signal " << sig << ", status " << status);
+    CHECK(!(WIFEXITED(status) && WEXITSTATUS(status) == 0));  // it died (of the signal, or of a sanitizer's report)
+    const std::vector<std::string> left = dir.entries();
+    CHECK(left == std::vector<std::string>{"b.csv"});  // no a.csv, no .sphtroch-XXXXXX
+    CHECK(slurp(dir.path / "b.csv") == "old");
+  }
 }
 
 TEST_CASE("output_file: D6 finished staged outputs hold no descriptor until their common commit", "[io][output]") {

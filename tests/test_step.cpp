@@ -15,8 +15,13 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -84,7 +89,7 @@ TEST_CASE("STEP: the B-spline read back by OpenCASCADE is within the tolerance o
       {GearTrain(1.2, 1.9, Ratio(1, 3)), 1.0, 1e-7, 2.5},                            // open, 2.5 turns
       {GearTrain(1.0, 1.0, Ratio(5, 7)), 1.0, 1e-11, {}},
       {GearTrain(1.0, 1.0, Ratio(1, 20)), 1.0, 1e-10, {}},
-      {GearTrain(1.0, 1.0, Ratio(1, 30)), 1.0, 3e-10, {}}};  // tight, long: the file's reals need 17 digits
+      {GearTrain(1.0, 1.0, Ratio(1, 30)), 1.0, 3e-10, {}}};  // tight, long: the file's reals need 16 digits
   TempDir dir;
   for (const Case& c : cases) {
     StepOptions o;
@@ -104,10 +109,74 @@ TEST_CASE("STEP: the B-spline read back by OpenCASCADE is within the tolerance o
     CHECK(std::abs(r.last - period) < 1e-9);
     CHECK(deviation(r, c.train, period, c.radius) <= c.tolerance);
     char uncertainty[40];
-    std::snprintf(uncertainty, sizeof uncertainty, "%.17E", c.tolerance);
+    std::snprintf(uncertainty, sizeof uncertainty, kStepRealFormat, c.tolerance);
     CHECK(contains(slurp(file), uncertainty));  // the file's distance accuracy is the tolerance
     const gp_Pnt start = r.curve->Value(r.first), end = r.curve->Value(r.last);
     if (!c.turns) CHECK(start.Distance(end) == 0.0);  // closed: the same point
+  }
+}
+
+TEST_CASE("STEP: D0 every double, negative with a 3-digit exponent too, fits OpenCASCADE's 24-byte number buffer "
+          "and reads back to 16 digits", "[step]") {
+  // Send(Real) formats into char[24]: the text may hold at most 23 characters. The widest texts
+  // are negative numbers with a 3-digit exponent; subnormals and the extremes have 3 digits too.
+  const std::vector<double> widest = {-1.2345678901234567e-100, -1.2345678901234567e-308, -4.9406564584124654e-324,
+                                      -1.7976931348623157e308,  -9.9999999999999999e-101, -2.2250738585072014e-308,
+                                      1.2345678901234567e-200,  -0.0,                     -123.45678901234567};
+  std::mt19937_64 rng(40);
+  std::vector<double> values = widest;
+  for (int k = 0; k < 100000; ++k) {  // random bit patterns: every exponent, both signs
+    std::uint64_t bits = rng();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    if (std::isfinite(x)) values.push_back(x);
+  }
+  for (const double x : values) {
+    char text[64];
+    const int length = std::snprintf(text, sizeof text, kStepRealFormat, x);
+    INFO(text);
+    CHECK(length <= kStepRealChars);
+    CHECK(kStepRealChars < 24);
+    const double back = std::strtod(text, nullptr);
+    // 16 significant digits: half a unit of the 16th (5e-16 relative), then strtod's rounding
+    // (1.1e-16); a subnormal keeps only its own absolute precision.
+    CHECK(std::abs(back - x) <= 6.2e-16 * std::abs(x) + std::numeric_limits<double>::denorm_min());
+  }
+  char widest_text[64];
+  CHECK(std::snprintf(widest_text, sizeof widest_text, "%.17E", widest[0]) > 23);  // the overflowing format
+}
+
+TEST_CASE("STEP: D0 radius 1e-100 and 1e100: the file is written whole, every real within 23 characters, the "
+          "points R times the path", "[step]") {
+  // Reading such files back through OpenCASCADE is not asked: its own Precision::Confusion (1e-7)
+  // treats a 1e-100 edge as degenerate. The reals of the text are checked instead.
+  const GearTrain train(0.7, 2.5, Ratio(13, 5));
+  for (const double radius : {1e-100, 1e100}) {
+    StepOptions o;
+    o.radius = radius;
+    const StepPath path = step_path(train, o);
+    const std::string text = step_text(path);
+    INFO("radius " << radius);
+    CHECK(text.rfind("ISO-10303-21;", 0) == 0);
+    CHECK(contains(text, "END-ISO-10303-21;"));
+    std::size_t reals = 0, scaled = 0;
+    for (std::size_t i = 0; (i = text.find('E', i)) != std::string::npos; ++i) {  // d.dddE+ddd tokens
+      if (i == 0 || !std::isdigit(static_cast<unsigned char>(text[i - 1])) || i + 1 >= text.size() ||
+          (text[i + 1] != '+' && text[i + 1] != '-'))
+        continue;
+      std::size_t start = i;
+      while (start > 0 && (std::isdigit(static_cast<unsigned char>(text[start - 1])) || text[start - 1] == '.' ||
+                           text[start - 1] == '-'))
+        --start;
+      std::size_t end = i + 2;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+      CHECK(end - start <= std::size_t(kStepRealChars));
+      const double value = std::strtod(text.c_str() + start, nullptr);
+      ++reals;
+      if (std::abs(value) > 1e-3 * radius && std::abs(value) <= 1.0000001 * radius) ++scaled;  // a coordinate
+    }
+    CHECK(reals > 3 * path.points);   // every pole's three coordinates at least
+    CHECK(scaled > 2 * path.points);  // most of them of the radius' size
   }
 }
 
@@ -136,6 +205,8 @@ TEST_CASE("STEP: a radius or tolerance that cannot be met is refused naming it",
   };
   CHECK(refused_field(0.0, 1e-3) == "radius");
   CHECK(refused_field(1e101, 1e95) == "radius");  // beyond 1e100 products of positions overflow
+  CHECK(refused_field(9.9e-101, 1e-106) == "radius");  // below 1e-100 (core/cone_distance.hpp)
+  CHECK(refused_field(1e-310, 1e-316) == "radius");    // subnormal
   CHECK(refused_field(std::nan(""), 1e-3) == "radius");
   CHECK(refused_field(1.0, 1e-13) == "tolerance");
   CHECK(refused_field(1.0, -1.0) == "tolerance");
@@ -178,7 +249,8 @@ TEST_CASE("cli trace -o FILE.step: scaled by --radius and read back within --tol
   CHECK(deviation(read_step((dir.path / "p.step").string()), train, train.period(), 25.0) <= 1e-4);
 
   std::ofstream(dir.path / "keep.step") << "old";
-  for (const std::string args : {"--tolerance 0", "--tolerance 1e-20", "--radius -1", "--radius 1e305", "--samples 100",
+  for (const std::string args : {"--tolerance 0", "--tolerance 1e-20", "--radius -1", "--radius 1e305", "--radius 1e-101",
+                                  "--radius 1e-310", "--samples 100",
                                   "--kinematics", "--threads 2", "--turns 1e5"}) {
     const Result bad = run("trace --a2 0.7 --a3 2.5 --n 13/5 " + args + " -o keep.step", dir, true);
     INFO(args << ": " << bad.err);

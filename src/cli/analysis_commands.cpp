@@ -159,7 +159,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches,id");
     add_analysis_options(*cmd, *o);
-    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R > 0: the cone distance, any unit");
+    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R in [1e-100, 1e100]: the cone distance, any unit");
     cmd->add_flag("--degrees", o->degrees, "t1, t2 in degrees (header t1_deg,t2_deg)");
     cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians;\n"
                 "degrees with --degrees); id N1.. / C1.. as plot labels them.");

@@ -2,6 +2,7 @@
 
 #include "sphtroch/draw/svg.hpp"
 
+#include "sphtroch/core/cone_distance.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/parse.hpp"
 
@@ -52,8 +53,8 @@ void add_output_option(CLI::App& command, std::string& path, const std::string& 
 double parse_radius(const std::string& text) {
   if (text.empty()) return 1.0;
   const std::optional<double> r = parse_number(text);
-  if (!r || !(*r > 0) || !std::isfinite(*r))
-    throw InvalidInput("radius", text, "not a positive number", "a finite number > 0 (the cone distance, any unit)");
+  if (!r) throw InvalidInput("radius", text, "not a number", "a length in [1e-100, 1e100] (the cone distance, any unit)");
+  check_cone_distance(*r, "radius", text);
   return *r;
 }
 

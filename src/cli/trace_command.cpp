@@ -155,7 +155,7 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("--format", options->format, "csv, npy, dxf, obj or step (default: by -o's suffix, else csv)");
   cmd->add_option("--tolerance", options->tolerance,
                   "STEP only: max distance of the B-spline from the path, in --radius units (default 1e-6 * R)");
-  cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R > 0: the cone distance, any unit");
+  cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R in [1e-100, 1e100]: the cone distance, any unit");
   cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
   add_output_option(*cmd, options->output, "the trajectory");
   actions.emplace_back(cmd, [options] { run_trace(*options); });

@@ -17,8 +17,11 @@
 // care, because theta2 does not slow down there. Cost bound, up front: a path whose first N is
 // above kMaxStepPoints is refused (InvalidInput naming "turns", or "n" for a closed path), and so
 // is a tolerance that the first level's error predicts (e ~ N^-4) to need more (naming
-// "tolerance"). The file holds every real with 17 significant digits (OpenCASCADE's default of
-// 12-13 would move the curve by more than a tight tolerance), and its uncertainty is the tolerance.
+// "tolerance"). The file holds every real with 16 significant digits (kStepRealFormat: the most
+// that OpenCASCADE's 24-byte number buffer holds for every double, sign and 3-digit exponent
+// included; its default of 12-13 digits would move the curve by more than a tight tolerance, 16
+// move it by at most 5e-16 relative, 2000x below the tightest tolerance, 1e-12 * radius), and
+// its uncertainty is the tolerance.
 // Units: the file says millimetres; positions are radius (the cone distance, any unit the
 // caller means) times the unit-sphere path. The product name holds the train and the tolerance.
 // Side effects (OpenCASCADE's own process-wide state): step_text sets the STEP writer's static
@@ -31,6 +34,7 @@
 #error "sphtroch/cad/step_export.hpp needs OpenCASCADE: link the CMake target sphtroch::step"
 #endif
 
+#include "sphtroch/core/cone_distance.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/gear_train.hpp"
@@ -73,13 +77,17 @@ namespace sphtroch {
 /// knots in O(N) (BSplCLib::PoleIndex), so the check costs O(N^2): measured 30,000 points 1 s,
 /// a 4.4 MB file.
 constexpr std::size_t kMaxStepPoints = std::size_t(1) << 15;
-/// The largest radius (positions stay far from overflow in every product the kernel forms).
-constexpr double kMaxStepRadius = 1e100;
+/// The printf format of every real in the file: "-d.dddddddddddddddE-ddd" is 23 characters, so
+/// every double fits OpenCASCADE's number buffer (StepData_StepWriter::Send(Real): char[24] with
+/// the NUL; "%.17E" overflowed it by up to 2 bytes for a negative real with a 3-digit exponent).
+constexpr const char* kStepRealFormat = "%.15E";
+/// The longest text kStepRealFormat makes, NUL excluded (a test checks every kind of double).
+constexpr int kStepRealChars = 23;
 /// The fewest carrier turns of an open STEP path (a shorter arc's points merge in the kernel).
 constexpr double kMinStepTurns = 1e-6;
 
 struct StepOptions {
-  double radius = 1.0;              // positions are radius * P (the cone distance; (0, 1e100])
+  double radius = 1.0;              // positions are radius * P (the cone distance; core/cone_distance.hpp)
   std::optional<double> tolerance;  // max |B - radius P|, in the radius' unit; none: 1e-6 * radius
   std::optional<double> turns;      // an open path of this many carrier turns, [1e-6, 1e6] (else the period)
 };
@@ -97,7 +105,7 @@ struct StepPath {
 inline void check_step_options(const GearTrain& train, const StepOptions& options);
 
 /// The checked B-spline of the train's path (see header). Throws InvalidInput naming "radius"
-/// (not in (0, 1e100]), "tolerance" (not finite, below 1e-12 * radius, or needing more than
+/// (outside [1e-100, 1e100]: check_cone_distance), "tolerance" (not finite, below 1e-12 * radius, or needing more than
 /// kMaxStepPoints points), "turns" (outside [1e-6, 1e6], or a path too long) or "n" (a closed
 /// path too long); std::runtime_error if OpenCASCADE cannot interpolate.
 inline StepPath step_path(const GearTrain& train, const StepOptions& options);
@@ -169,8 +177,7 @@ inline std::string product_name(const GearTrain& train, const StepOptions& o, do
 
 /// The checked options: the tolerance (default 1e-6 radius) and the parameter span T.
 inline std::pair<double, double> checked_tolerance_and_span(const GearTrain& train, const StepOptions& o) {
-  if (!(std::isfinite(o.radius) && o.radius > 0.0 && o.radius <= kMaxStepRadius))
-    throw InvalidInput("radius", number_text(o.radius), "not a length STEP export takes", "a number in (0, 1e100]");
+  check_cone_distance(o.radius);
   const double tolerance = o.tolerance.value_or(1e-6 * o.radius);
   if (!(std::isfinite(tolerance) && tolerance >= 1e-12 * o.radius))
     throw InvalidInput("tolerance", number_text(tolerance), "below what double precision can check",
@@ -234,7 +241,7 @@ inline std::string step_text(const StepPath& path) {
     if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone) throw std::runtime_error("STEP: OpenCASCADE could not translate the path");
     const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
     StepData_StepWriter text_writer(writer.Model());
-    text_writer.FloatWriter().SetFormat("%.17E");  // every double read back exactly
+    text_writer.FloatWriter().SetFormat(kStepRealFormat);  // 16 digits, within OpenCASCADE's buffer
     text_writer.SendModel(protocol);
     std::ostringstream out;
     if (protocol.IsNull() || !text_writer.Print(out)) throw std::runtime_error("STEP: OpenCASCADE could not write the path");

@@ -20,6 +20,7 @@
 //               joins vertex e to e + 1; kind as to_string(pair.kind) gives it.
 #pragma once
 
+#include "sphtroch/core/cone_distance.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/number_text.hpp"
@@ -39,8 +40,8 @@ constexpr const char* kNodesCsvHeader = "kind,x,y,z,t1,t2,branches,id";
 constexpr const char* kScrewAxisCsvHeader = "t,wx,wy,wz";
 constexpr const char* kEdgePairsCsvHeader = "i,j,kind";
 
-/// How the nodes table is written: positions times `radius` (the cone distance, any unit; 1: the
-/// unit sphere), parameters in degrees (header t1_deg,t2_deg) when `degrees`.
+/// How the nodes table is written: positions times `radius` (the cone distance, any unit, in
+/// [1e-100, 1e100]: core/cone_distance.hpp, else InvalidInput; 1: the unit sphere), parameters in degrees (header t1_deg,t2_deg) when `degrees`.
 struct NodesCsvOptions {
   double radius = 1.0;
   bool degrees = false;
@@ -77,6 +78,7 @@ inline Vector3d scaled(const Vector3d& v, double radius) { return radius == 1.0 
 inline void write_nodes_csv(std::ostream& out, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
                             const NodesCsvOptions& options) {
   namespace d = csv_io_detail;
+  check_cone_distance(options.radius);  // before the first byte
   const auto angle = [&](double t) { return number_text(options.degrees ? degrees(t) : t); };
   out << (options.degrees ? "kind,x,y,z,t1_deg,t2_deg,branches,id" : kNodesCsvHeader) << '\n';
   std::size_t id = 0;

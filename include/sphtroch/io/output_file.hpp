@@ -14,8 +14,9 @@
 //     name (".sphtroch-XXXXXX") in the target's directory, given the mode of the file it
 //     replaces (new files 0666 & ~umask), fsynced and renamed onto the target by commit(). Until
 //     then the target is untouched; an OutputFile destroyed without commit() removes its
-//     temporary, and install_output_signal_cleanup() removes it on SIGINT, SIGTERM, SIGHUP too
-//     (any number of live temporaries). finish_writing() closes a staged temporary early (no
+//     temporary, and install_output_signal_cleanup() removes it on SIGINT, SIGTERM, SIGHUP and
+//     on a fault's death (SIGABRT, SIGSEGV, ...: detail::kCleanupSignals; any number of live
+//     temporaries). finish_writing() closes a staged temporary early (no
 //     descriptor, no buffer held until commit: thousands of outputs can wait for one commit,
 //     whose single syncfs replaces their fsyncs). Renames are not followed by a directory fsync.
 //   - refused (OutputError): a path with a NUL byte, a loop of symbolic links (ELOOP), a directory.
@@ -183,9 +184,26 @@ class TempRegistry {
   std::atomic<Node*> head_{nullptr};
 };
 
-inline void remove_temporaries_and_reraise(int sig) {
+/// The signals whose arrival removes every live temporary (install_output_signal_cleanup): the
+/// requests to stop (SIGINT, SIGTERM, SIGHUP) and the deaths a fault causes (SIGABRT: abort(), a
+/// failed assertion, glibc's "stack smashing detected" or heap check; SIGSEGV, SIGBUS, SIGFPE,
+/// SIGILL: a bad access or instruction, unless it is a stack overflow, whose handler has no stack
+/// to run on; SIGXFSZ: the file size limit). SIGKILL and a power cut cannot be caught: there a
+/// ".sphtroch-XXXXXX" may remain (the target itself is never partial).
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGXFSZ};
+constexpr std::size_t kCleanupSignalCount = sizeof(kCleanupSignals) / sizeof(kCleanupSignals[0]);
+
+/// The actions the cleanup replaced (one per kCleanupSignals entry), restored before the signal is
+/// raised again: the default death, or a handler installed earlier (a sanitizer's report).
+inline struct sigaction* replaced_signal_actions() {
+  static struct sigaction actions[kCleanupSignalCount];
+  return actions;
+}
+
+inline void remove_temporaries_and_reraise(int sig) {  // async-signal-safe
   TempRegistry::instance().unlink_all();
-  ::signal(sig, SIG_DFL);
+  for (std::size_t i = 0; i < kCleanupSignalCount; ++i)
+    if (kCleanupSignals[i] == sig) ::sigaction(sig, &replaced_signal_actions()[i], nullptr);
   ::raise(sig);
 }
 
@@ -207,18 +225,21 @@ inline mode_t new_file_mode() {
 
 }  // namespace detail
 
-/// Removes every live temporary file of this process on SIGINT, SIGTERM and SIGHUP, then dies of
-/// the signal as before; ignores SIGPIPE so that a closed pipe becomes BrokenPipe. For programs
-/// (the CLI calls it first); a library user decides about signals.
+/// Removes every live temporary file of this process on each of detail::kCleanupSignals (stop
+/// requests and fault deaths, SIGABRT included), then lets the signal do what it did before (dies
+/// of it, or runs the handler that was installed, e.g. a sanitizer's); ignores SIGPIPE so that a
+/// closed pipe becomes BrokenPipe. An ignored signal stays ignored (nohup, `cmd &`). For programs
+/// (the CLI calls it first); a library user decides about signals. Call it once.
 inline void install_output_signal_cleanup() {
   detail::TempRegistry::instance();  // constructed before any handler can run
   struct sigaction sa {};
   sa.sa_handler = detail::remove_temporaries_and_reraise;
   sigemptyset(&sa.sa_mask);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction old {};
+  for (std::size_t i = 0; i < detail::kCleanupSignalCount; ++i) {
+    const int sig = detail::kCleanupSignals[i];
+    struct sigaction& old = detail::replaced_signal_actions()[i];
     ::sigaction(sig, nullptr, &old);
-    if (old.sa_handler != SIG_IGN) ::sigaction(sig, &sa, nullptr);  // keep nohup's and `cmd &`'s ignores
+    if (old.sa_handler != SIG_IGN) ::sigaction(sig, &sa, nullptr);
   }
   ::signal(SIGPIPE, SIG_IGN);
 }

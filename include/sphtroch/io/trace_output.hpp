@@ -22,6 +22,7 @@
 // speed and the tangential acceleration, and divides the geodesic curvature (1/length).
 #pragma once
 
+#include "sphtroch/core/cone_distance.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/io/npy.hpp"
@@ -43,7 +44,7 @@ struct TraceWriteOptions {
   TraceFormat format = TraceFormat::csv;
   bool velocity = false;    // csv, npy only
   std::size_t threads = 1;  // worker threads that compute and format blocks (1: none)
-  double radius = 1.0;      // positions and velocities times this (finite, > 0)
+  double radius = 1.0;      // positions and velocities times this, [1e-100, 1e100] (core/cone_distance.hpp)
   bool closed = true;       // dxf, obj: the last sample joins the first (a period's samples)
   bool kinematics = false;  // csv, npy only: speed, geodesic_curvature, tangential_acceleration
   bool degrees = false;     // csv, npy only: the t column in degrees (header t_deg)
@@ -150,6 +151,7 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
                         const TraceWriteOptions& options) {
   namespace d = trace_output_detail;
   const bool vel = options.velocity, kin = options.kinematics;
+  check_cone_distance(options.radius);  // before the first byte
   const double scale = options.radius;
   const std::size_t cols = 4 + (vel ? 3 : 0) + (kin ? 3 : 0);
   if (options.format == TraceFormat::npy) out.write(npy_header(sampling.count, cols));

@@ -23,11 +23,19 @@
 //     |p| <= max_p and q <= max_q.
 //  4. Polish: Gauss–Newton on (a2, a3, theta_p) with n fixed, minimising sum |P(t_i) - P_i|^2.
 // What is guaranteed: the returned train reproduces the samples to `residual` (measured, max over
-// the samples); identify refuses (InvalidInput, field "samples") when the samples do not lie on
-// one planet circle, when the unwrapped angles are not a line (too sparse for this n), when no
-// fraction within the bounds fits, or when the fit leaves a residual above
-// max(kIdentifyTolerance, 10 x the noise seen off the circle). Noise of sigma radians gives a2,
-// a3 to a few sigma / sqrt(N). Cost: O(N) per step, about 10 steps.
+// the samples) and no train of another ratio does within the accepted rms (below). identify
+// refuses (InvalidInput, field "samples", one line with the reason) when:
+//  - the samples do not lie on one planet circle, or its axis is the sun axis (a2 = 0 or pi);
+//  - the planet circle is below the samples' resolution: with the accepted rms
+//    tau = max(kIdentifyTolerance, 10 x the noise off the circle), a train of any other ratio
+//    (the same a2, the planet circle shrunk) stays within about sin a3 of the samples, so n is
+//    determined only when sin a3 >= kResolutionMargin x tau (exact samples: a3 >= 4e-6 from 0 or pi);
+//  - the unwrapped angles are not a line (too sparse for this n), or no fraction within the bounds fits;
+//  - the fit leaves an rms above tau, or above kIdentifyTolerance while the residual is
+//    systematic: its point-to-point scatter (RMS of r_{i+1} - r_i over sqrt 2, which white noise
+//    leaves at the noise and a wrong or mixed model's smooth misfit leaves far below the rms) is
+//    below rms / kSystematicRatio. Two trains mixed along t are refused so.
+// Noise of sigma radians gives a2, a3 to a few sigma / sqrt(N). Cost: O(N) per step, about 10 steps.
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
@@ -56,6 +64,12 @@ constexpr std::size_t kMinIdentifySamples = 8;
 constexpr double kIdentifyTolerance = 1e-6;
 /// Samples must be unit vectors to this (the curve lies on the unit sphere).
 constexpr double kUnitTolerance = 1e-6;
+/// n is determined only when the planet circle's radius sin a3 is at least this many times the
+/// accepted rms (a train of another ratio misses the samples by about sin a3 / sqrt 2 to sin a3).
+constexpr double kResolutionMargin = 4.0;
+/// A residual above kIdentifyTolerance whose rms exceeds its point-to-point scatter this many
+/// times is a systematic misfit, not noise (white noise gives a ratio near 1).
+constexpr double kSystematicRatio = 3.0;
 
 struct IdentifyOptions {
   std::int64_t max_p = 1000;  // |p| <= max_p, 1 .. Ratio::kMaxTerm
@@ -113,6 +127,20 @@ inline void check_inputs(const std::vector<double>& t, const std::vector<Vector3
   }
 }
 
+/// The rms a fit may leave: kIdentifyTolerance, or 10 x the noise seen off the planet circle.
+inline double accepted_rms(double noise) { return std::max(kIdentifyTolerance, 10 * noise); }
+
+/// Refuses a planet circle too small for the samples to tell one ratio from another (see header).
+inline void check_resolution(double radius, double noise) {
+  const double tau = accepted_rms(noise);
+  if (radius >= kResolutionMargin * tau) return;
+  throw InvalidInput("samples", "planet circle radius sin a3 = " + number_text(radius),
+                     "below the samples' resolution (accepted rms " + number_text(tau) +
+                         "): a train of every ratio n reproduces them, so they do not determine n",
+                     "a tracer whose planet circle has sin a3 >= " + number_text(kResolutionMargin) +
+                         " x max(1e-6, 10 x the noise off the circle)");
+}
+
 /// Step 1: a2, a3 and the noise off the circle, from the plane through C_i = Rz(-t_i) P_i.
 struct Circle {
   double a2, a3, noise;
@@ -132,12 +160,20 @@ inline Circle planet_circle(const std::vector<Vector3d>& c) {
   for (const Vector3d& x : c) noise += (m.dot(x) - d) * (m.dot(x) - d);
   noise = std::sqrt(noise / static_cast<double>(c.size()));
   const double spread = std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / static_cast<double>(c.size()));
+  check_resolution(std::sqrt(2.0) * spread, noise);  // a circle of radius r spreads r / sqrt 2 each way
   if (!(spread > 10 * noise) || std::abs(m.x()) > 1e-3 + 10 * noise)
     throw InvalidInput("samples", std::to_string(c.size()) + " samples",
                        "do not lie on one circle of the carrier frame (off-plane " + number_text(noise) + ", spread " +
                            number_text(spread) + ", normal x " + number_text(m.x()) + ")",
                        "a timed trace of one gear train: t, P(t)");
-  return {std::atan2(-m.y(), m.z()), std::acos(d), noise};
+  const double a2 = std::atan2(-m.y(), m.z());
+  if (!carrier_twist_in_range(a2))
+    throw InvalidInput("samples", std::to_string(c.size()) + " samples",
+                       "lie on a circle about the sun axis (a2 = " + number_text(a2) +
+                           "): no gear train of a2 in [1e-6, pi - 1e-6] draws them",
+                       "a timed trace of one gear train: t, P(t)");
+  check_resolution(std::sin(std::acos(d)), noise);
+  return {a2, std::acos(d), noise};
 }
 
 /// Step 3: the line u = slope t + intercept through the unwrapped planet angles, and the
@@ -282,20 +318,35 @@ inline Identified identify(const std::vector<double>& t, const std::vector<Vecto
   }
   const Eigen::Vector3d x = polish(t, points, n->value(), Eigen::Vector3d(circle.a2, circle.a3, std::atan2(sy, sx)));
   Identified out;
-  out.train = GearTrain(x(0), x(1), *n, wrap(x(2)));
+  try {
+    out.train = GearTrain(x(0), x(1), *n, wrap(x(2)));
+  } catch (const InvalidInput& e) {  // the polish left the gear trains: the samples' problem, not a typed a2
+    throw InvalidInput("samples", std::to_string(t.size()) + " samples",
+                       "the best fit of n = " + n->str() + " is no gear train (" + e.field() + " = " + e.value() + ")",
+                       "a timed trace of one gear train: t, P(t)");
+  }
   out.noise = circle.noise;
   out.slope = line.slope;
   out.slope_error = line.slope_error;
-  double sum = 0;
+  double sum = 0, steps = 0;
+  Vector3d previous = Vector3d::Zero();
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const double e = (model_point(t[i], x(0), x(1), n->value(), x(2)) - points[i]).norm();
-    out.residual = std::max(out.residual, e);
-    sum += e * e;
+    const Vector3d r = model_point(t[i], x(0), x(1), n->value(), x(2)) - points[i];
+    out.residual = std::max(out.residual, r.norm());
+    sum += r.squaredNorm();
+    if (i > 0) steps += (r - previous).squaredNorm();
+    previous = r;
   }
   out.rms = std::sqrt(sum / static_cast<double>(t.size()));
-  if (!(out.rms <= std::max(kIdentifyTolerance, 10 * circle.noise)))
+  const double scatter = std::sqrt(steps / (2.0 * static_cast<double>(t.size() - 1)));
+  if (!(out.rms <= accepted_rms(circle.noise)))
     throw InvalidInput("samples", "rms " + number_text(out.rms), "no train of n = " + n->str() + " fits them",
                        "a timed trace of one gear train, noise below the fit (rms <= max(1e-6, 10 x noise))");
+  if (out.rms > kIdentifyTolerance && !(out.rms <= kSystematicRatio * scatter))
+    throw InvalidInput("samples", "rms " + number_text(out.rms),
+                       "the best train of n = " + n->str() + " misses them systematically (the residual's point-to-point "
+                           "scatter is only " + number_text(scatter) + "): not one gear train, e.g. two trains mixed",
+                       "a timed trace of one gear train, its residual noise-like (rms <= 3 x scatter) or below 1e-6");
   return out;
 }
 
