@@ -19,4 +19,7 @@ namespace fuzz {
 /// Bitwise equality of doubles (tells -0 from 0; NaNs equal when their bits are).
 inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+/// A message part the tool prints on its one error line: not empty, no line break.
+inline bool one_line(const std::string& s) { return !s.empty() && s.find_first_of("\r\n") == std::string::npos; }
+
 }  // namespace fuzz
