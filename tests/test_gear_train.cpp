@@ -189,12 +189,12 @@ TEST_CASE("GearTrain: D7 a slow planet (|Z1 + n Z2| < 1e-3) is refused only with
           "docs/cli.md's limits table says", "[gear_train][errors]") {
   // n = -1: |Z1 + n Z2| = sqrt(2 - 2 cos a2) = 2 sin(a2 / 2), 1e-4 at a2 = 1e-4.
   const double a2 = 1e-4, speed = 2 * std::sin(a2 / 2);
-  REQUIRE(speed < kMinPlanetSpeed);
+  REQUIRE(speed < sphtroch::kMinPlanetSpeed);
   const double ap = GearTrain::planet_cone_of(a2, Ratio(-1));
   CHECK_NOTHROW(GearTrain(a2, 1.0, Ratio(-1)));                     // far from the cones: accepted
-  CHECK_NOTHROW(GearTrain(a2, ap + 2 * kPitchConeGuard, Ratio(-1)));  // beyond the guard
-  CHECK(test::expect_invalid([&] { GearTrain(a2, ap + 0.5 * kPitchConeGuard, Ratio(-1)); }).field() == "a2");
-  CHECK(test::expect_invalid([&] { GearTrain::on_cone(a2, A3Reference::pitch_cone, 0.5, Ratio(-1)); }).field() == "a2");
+  CHECK_NOTHROW(GearTrain(a2, ap + 2 * sphtroch::kPitchConeGuard, Ratio(-1)));  // beyond the guard
+  CHECK(expect_invalid([&] { GearTrain(a2, ap + 0.5 * sphtroch::kPitchConeGuard, Ratio(-1)); }).field() == "a2");
+  CHECK(expect_invalid([&] { GearTrain::on_cone(a2, A3Reference::pitch_cone, 0.5, Ratio(-1)); }).field() == "a2");
   // A fast planet near its cone is fine.
   CHECK_NOTHROW(GearTrain(1.0, GearTrain::planet_cone_of(1.0, Ratio(-1)) + 1e-9, Ratio(-1)));
 }
