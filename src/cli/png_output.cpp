@@ -1,15 +1,12 @@
-// The SVG of plot / atlas rendered to PNG (with SPHTROCH_HAVE_PNG; else .png is refused up front) by librsvg (parsing, drawing through cairo) and cairo's
-// PNG writer, as their documentation shows: rsvg_handle_new_from_data, the intrinsic size in
-// pixels, rsvg_handle_render_document onto an ARGB32 image surface, cairo_surface_write_to_png_stream.
+// The SVG of plot / atlas as PNG: rendered by the PNG plugin (png_plugin.cpp, librsvg + cairo;
+// with SPHTROCH_HAVE_PNG, else .png is refused up front), opened only here (plugin_loader.hpp).
 #include "png_output.hpp"
 
 #if defined(SPHTROCH_HAVE_PNG)
-#include <cairo.h>
-#include <librsvg/rsvg.h>
+#include "plugin_loader.hpp"
 #endif
 
 #include <cctype>
-#include <cmath>
 #include <stdexcept>
 
 namespace sphtroch::cli {
@@ -17,49 +14,13 @@ namespace sphtroch::cli {
 namespace {
 
 #if defined(SPHTROCH_HAVE_PNG)
-/// Owns what one rendering allocates.
-struct Rendering {
-  RsvgHandle* handle = nullptr;
-  cairo_surface_t* surface = nullptr;
-  cairo_t* cairo = nullptr;
-  GError* error = nullptr;
-  ~Rendering() {
-    if (cairo) cairo_destroy(cairo);
-    if (surface) cairo_surface_destroy(surface);
-    if (handle) g_object_unref(handle);
-    if (error) g_error_free(error);
-  }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("PNG: librsvg could not " + what + (error ? std::string(": ") + error->message : std::string()));
-  }
-};
+/// The MODULE sphtroch_png (file name set in src/cli/CMakeLists.txt).
+constexpr OutputPlugin kPngPlugin{"sphtroch_png.so", "PNG", "librsvg",
+                                  "FILE.svg (convert it, e.g. rsvg-convert FILE.svg -o FILE.png)"};
 
-cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
-std::string png_from_svg(const std::string& svg) {
-  Rendering r;
-  r.handle = rsvg_handle_new_from_data(reinterpret_cast<const guint8*>(svg.data()), svg.size(), &r.error);
-  if (!r.handle) r.fail("read the SVG");
-  gdouble width = 0, height = 0;
-  if (!rsvg_handle_get_intrinsic_size_in_pixels(r.handle, &width, &height) || !(width >= 1 && height >= 1))
-    r.fail("find the SVG's size in pixels");
-  const int w = static_cast<int>(std::ceil(width)), h = static_cast<int>(std::ceil(height));
-  r.surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
-  r.cairo = cairo_create(r.surface);
-  cairo_set_source_rgb(r.cairo, 1, 1, 1);  // white under the picture: no transparent holes
-  cairo_paint(r.cairo);
-  const RsvgRectangle viewport{0, 0, width, height};
-  if (!rsvg_handle_render_document(r.handle, r.cairo, &viewport, &r.error)) r.fail("draw the SVG");
-  std::string png;
-  if (cairo_surface_write_to_png_stream(r.surface, append_bytes, &png) != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error("PNG: cairo could not encode the picture");
-  return png;
-}
+std::string png_from_svg(const std::string& svg, const std::string& path) { return run_output_plugin(kPngPlugin, path, svg); }
 #else
-std::string png_from_svg(const std::string&) {  // unreachable: check_svg_name refuses .png here
+std::string png_from_svg(const std::string&, const std::string&) {  // unreachable: check_svg_name refuses .png here
   throw std::runtime_error("PNG: this build of sphtroch has no librsvg component");
 }
 #endif
@@ -74,7 +35,7 @@ bool names_png(const std::string& path) {
 }
 
 std::string picture_bytes(const std::string& svg, const std::string& path) {
-  return names_png(path) ? png_from_svg(svg) : svg;
+  return names_png(path) ? png_from_svg(svg, path) : svg;
 }
 
 }  // namespace sphtroch::cli

@@ -1,5 +1,6 @@
 // PNG pictures of `sphtroch plot -o FILE.png` and `sphtroch atlas --svg FILE.png`: the tool's SVG
-// rendered by librsvg + cairo (png_output.cpp, built only with them: SPHTROCH_HAVE_PNG).
+// rendered by librsvg + cairo in the PNG plugin (png_plugin.cpp, in a build with PNG:
+// SPHTROCH_HAVE_PNG), which the tool opens only when it writes a PNG (plugin_loader.hpp).
 #pragma once
 
 #include <string>
@@ -11,8 +12,8 @@ bool names_png(const std::string& path);
 
 /// What to write for a picture to `path`: the SVG itself, or its PNG rendering when `path` ends
 /// in .png (at the SVG's own size in pixels, white where the SVG is). REQUIRES: a .png path only
-/// in a build with PNG (check_svg_name refuses it otherwise). Throws std::runtime_error if
-/// librsvg cannot render the SVG.
+/// in a build with PNG (check_svg_name refuses it otherwise). Throws UsageError (naming `path`)
+/// if the PNG plugin cannot be opened, std::runtime_error if librsvg cannot render the SVG.
 std::string picture_bytes(const std::string& svg, const std::string& path);
 
 }  // namespace sphtroch::cli

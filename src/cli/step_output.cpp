@@ -1,14 +1,25 @@
-// sphtroch trace -o FILE.step: the checked B-spline of cad/step_export.hpp through OutputFile.
+// sphtroch trace -o FILE.step: the checked B-spline of cad/step_export.hpp, made by the STEP
+// plugin (step_plugin.cpp, opened only here: plugin_loader.hpp), written through OutputFile.
 #include "step_output.hpp"
 
-#include "sphtroch/cad/step_export.hpp"
-#include "sphtroch/core/number_text.hpp"
+#include "plugin_loader.hpp"
+#include "step_request.hpp"
+
+#include "sphtroch/core/errors.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/io/parse.hpp"
 
 #include <cmath>
 
 namespace sphtroch::cli {
+
+namespace {
+
+/// The MODULE sphtroch_step (file name set in src/cli/CMakeLists.txt).
+constexpr OutputPlugin kStepPlugin{"sphtroch_step.so", "STEP", "OpenCASCADE",
+                                   "another --format: csv, npy, dxf (3-D polyline), obj (polyline)"};
+
+}  // namespace
 
 double parse_tolerance(const std::string& text) {
   const std::optional<double> t = parse_number(text);
@@ -18,13 +29,12 @@ double parse_tolerance(const std::string& text) {
 }
 
 void write_step_output(const GearTrain& train, const StepOutputOptions& options, const std::string& output) {
-  StepOptions o;
-  o.radius = options.radius;
-  o.turns = options.turns;
-  o.tolerance = options.tolerance;
-  check_step_options(train, o);                          // the input first,
-  OutputFile out = OutputFile::open(output, "--output");  // then the output (staged: nothing partial),
-  out.write(step_text(step_path(train, o)));              // then the work
+  const std::string named = "--output = " + (output.empty() ? std::string("-") : output);
+  StepRequest request{true, train, options};
+  run_output_plugin(kStepPlugin, named, step_request_text(request));  // the input first (check_step_options),
+  OutputFile out = OutputFile::open(output, "--output");              // then the output (staged: nothing partial),
+  request.check_only = false;
+  out.write(run_output_plugin(kStepPlugin, named, step_request_text(request)));  // then the work
   out.commit();
 }
 

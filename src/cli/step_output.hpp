@@ -1,5 +1,6 @@
-// The STEP output of `sphtroch trace` (step_output.cpp: the one translation unit that includes
-// OpenCASCADE; built only with the sphtroch::step component, SPHTROCH_HAVE_STEP).
+// The STEP output of `sphtroch trace` (step_output.cpp; in a build with STEP,
+// SPHTROCH_HAVE_STEP). OpenCASCADE is in the STEP plugin (step_plugin.cpp), which the
+// tool opens only when it writes STEP (plugin_loader.hpp).
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
@@ -19,7 +20,8 @@ struct StepOutputOptions {
 double parse_tolerance(const std::string& text);
 
 /// The path as STEP to `output` ("" or "-": stdout), through OutputFile (never left partial).
-/// Throws InvalidInput (radius, tolerance) before anything is written.
+/// Throws UsageError if the STEP plugin cannot be opened, and InvalidInput (radius, tolerance,
+/// turns, n) for what check_step_options refuses, both before the output is opened.
 void write_step_output(const GearTrain& train, const StepOutputOptions& options, const std::string& output);
 
 }  // namespace sphtroch::cli

@@ -1,0 +1,34 @@
+// src/cli/plugin_loader.hpp — the tool's side of output_plugin.hpp: finds an output plugin next
+// to the executable, opens it (dlopen) the first time a command writes its format, and runs it.
+// The plugins live in plugin_directory(): the executable's own directory (/proc/self/exe) joined
+// with SPHTROCH_PLUGIN_DIR, a relative path fixed at configure time, the same in the build tree
+// (<build>/bin/sphtroch, <build>/lib/sphtroch/) and the install tree (<prefix>/bin/sphtroch,
+// <prefix>/<libdir>/sphtroch/), so that an installed tree can be moved as a whole.
+#pragma once
+
+#include <string>
+
+namespace sphtroch::cli {
+
+/// One output plugin, as the messages name it.
+struct OutputPlugin {
+  const char* file;         // "sphtroch_step.so": the MODULE's file name (src/cli/CMakeLists.txt)
+  const char* format;       // "STEP"
+  const char* library;      // "OpenCASCADE"
+  const char* alternative;  // the valid alternatives a refusal names
+};
+
+/// The directory the plugins are looked up in (absolute; see the header). Throws UsageError if
+/// the executable's path cannot be read.
+std::string plugin_directory();
+
+/// The bytes `plugin` makes of `request`, for the output errors name as `output` ("--output =
+/// p.step", "p.png"). Opens the plugin at first use (RTLD_NOW | RTLD_LOCAL; kept open for the
+/// life of the process). Throws UsageError (exit 2, one line "<output>: ..." naming the plugin's
+/// path and why) if it is not there,
+/// cannot be opened or is of another ABI revision; InvalidInput as the plugin reports it;
+/// std::bad_alloc if it ran out of memory; std::runtime_error with its message for any other
+/// failure. Thread-safe.
+std::string run_output_plugin(const OutputPlugin& plugin, const std::string& output, const std::string& request);
+
+}  // namespace sphtroch::cli
