@@ -195,15 +195,18 @@ constexpr std::size_t kCleanupSignalCount = sizeof(kCleanupSignals) / sizeof(kCl
 
 /// The actions the cleanup replaced (one per kCleanupSignals entry), restored before the signal is
 /// raised again: the default death, or a handler installed earlier (a sanitizer's report).
-inline struct sigaction* replaced_signal_actions() {
-  static struct sigaction actions[kCleanupSignalCount];
+struct ReplacedSignalActions {
+  struct sigaction action[kCleanupSignalCount];
+};
+inline ReplacedSignalActions& replaced_signal_actions() {
+  static ReplacedSignalActions actions{};
   return actions;
 }
 
 inline void remove_temporaries_and_reraise(int sig) {  // async-signal-safe
   TempRegistry::instance().unlink_all();
   for (std::size_t i = 0; i < kCleanupSignalCount; ++i)
-    if (kCleanupSignals[i] == sig) ::sigaction(sig, &replaced_signal_actions()[i], nullptr);
+    if (kCleanupSignals[i] == sig) ::sigaction(sig, &replaced_signal_actions().action[i], nullptr);
   ::raise(sig);
 }
 
@@ -237,7 +240,7 @@ inline void install_output_signal_cleanup() {
   sigemptyset(&sa.sa_mask);
   for (std::size_t i = 0; i < detail::kCleanupSignalCount; ++i) {
     const int sig = detail::kCleanupSignals[i];
-    struct sigaction& old = detail::replaced_signal_actions()[i];
+    struct sigaction& old = detail::replaced_signal_actions().action[i];
     ::sigaction(sig, nullptr, &old);
     if (old.sa_handler != SIG_IGN) ::sigaction(sig, &sa, nullptr);
   }
