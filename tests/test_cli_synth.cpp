@@ -7,14 +7,87 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 using namespace sphtroch::test;
 
 namespace {
 
 std::string exe() { return std::string("'") + SPHTROCH_EXE + "'"; }
+
+/// FNV-1a, 64 bits (offset basis 14695981039346656037, prime 1099511628211).
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  return h;
+}
+
+/// A part with its "digest" computed again as docs/cli.md (synth points) defines it: the FNV-1a
+/// of the part's bytes with the digest's 16 digits as 0. Unchanged without a "digest".
+std::string resigned(std::string part) {
+  const std::string key = "\"digest\": \"";
+  const auto at = part.find(key);
+  if (at == std::string::npos) return part;
+  part.replace(at + key.size(), 16, std::string(16, '0'));
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(part)));
+  return part.replace(at + key.size(), 16, hex);
+}
+
+void write_text(const TempDir& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir.path / name, std::ios::binary) << text;
+}
+
+/// The text of a number member `"key": V` in `line` replaced by `value`.
+std::string with_member(std::string line, const std::string& key, const std::string& value) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = line.find(tag);
+  REQUIRE(at != std::string::npos);
+  const auto begin = at + tag.size(), end = line.find_first_of(",}", begin);
+  return line.replace(begin, end - begin, value);
+}
+
+/// Line k (0 = the first) of text.
+std::string line_of(const std::string& text, std::size_t k) {
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i < k; ++i) begin = text.find('\n', begin) + 1;
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+/// A train's line as JSON (without the comma that follows all but the last).
+nlohmann::json train_of(std::string line) {
+  if (!line.empty() && line.back() == ',') line.pop_back();
+  return nlohmann::json::parse(line);
+}
+
+/// Line k (0 = the first) of text replaced by f(line).
+template <class F>
+std::string with_line(const std::string& text, std::size_t k, F f) {
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i < k; ++i) begin = text.find('\n', begin) + 1;
+  const auto end = text.find('\n', begin);
+  return text.substr(0, begin) + f(text.substr(begin, end - begin)) + text.substr(end);
+}
+
+/// `synth merge ARGS -o merged.json` refused: exit 2, one stderr line naming `part` and holding
+/// each of `words`, nothing on stdout, no merged.json.
+void check_merge_refused(const TempDir& dir, const std::string& args, const std::string& part, const std::vector<std::string>& words) {
+  INFO(args);
+  const Result r = run("synth merge -o merged.json " + args, dir, true);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, part));
+  for (const std::string& w : words) CHECK(contains(r.err, w));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "merged.json"));
+}
 
 }  // namespace
 
@@ -372,5 +445,99 @@ TEST_CASE("cli synth fit --node-at: a node of the traced train gives it back, wi
     CHECK(bad.status == 2);
     CHECK(bad.out.empty());
     CHECK(count_lines(bad.err) == 1);
+  }
+}
+
+TEST_CASE("cli synth merge: hand edits that keep every value plausible (a2 + 0.05, rms 1e-30, counts 99) are refused by the digest",
+          "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 60 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv && (echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv",
+                dir).status == 0);
+  for (int i = 1; i <= 2; ++i) {
+    const std::string part = std::to_string(i) + "/2 -o ";
+    REQUIRE(run("synth fit --input path.csv --ratios 2,2 --json --shard " + part + "fit" + std::to_string(i) + ".json", dir, true).status == 0);
+    REQUIRE(run("synth points --input pts.csv --ratios 2,2 --json --shard " + part + "points" + std::to_string(i) + ".json", dir, true).status == 0);
+  }
+  REQUIRE(run("synth merge fit2.json fit1.json -o fit.json", dir, true).status == 0);  // unedited: merged
+  const std::string fit = slurp(dir.path / "fit1.json"), points = slurp(dir.path / "points1.json");
+  // The first candidate of part 1 (line 2): each edit leaves it inside every range synth fit prints.
+  const double a2 = train_of(line_of(fit, 1))["a2"].get<double>();
+  REQUIRE(a2 + 0.05 < M_PI);
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"a2.json", with_line(fit, 1, [&](const std::string& l) { return with_member(l, "a2", shortest_g(a2 + 0.05)); })},
+      {"rms.json", with_line(fit, 1, [](const std::string& l) { return with_member(l, "rms", "1e-30"); })},
+      {"counts.json", with_line(fit, 1, [](const std::string& l) {
+         return with_member(with_member(with_member(with_member(l, "nodes", "99"), "crossings", "99"), "tangencies", "0"), "cusps", "0");
+       })}};
+  for (const auto& [name, text] : edits) {
+    REQUIRE(text != fit);
+    write_text(dir, name, text);
+    check_merge_refused(dir, name + " fit2.json", name, {"digest"});
+  }
+  // A solution of a synth points part, a2 moved by 1e-3 (inside [1e-6, pi - 1e-6]).
+  REQUIRE(contains(points, "\n  {"));
+  const double a2_points = train_of(line_of(points, 1))["a2"].get<double>();
+  const std::string moved = with_line(points, 1, [&](const std::string& l) { return with_member(l, "a2", shortest_g(a2_points + 1e-3)); });
+  REQUIRE(moved != points);
+  write_text(dir, "solution.json", moved);
+  check_merge_refused(dir, "solution.json points2.json", "solution.json", {"digest"});
+}
+
+TEST_CASE("cli synth merge: a points part edited and re-signed is still refused member by member", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
+  for (int i = 1; i <= 3; ++i)
+    REQUIRE(run("synth points --input pts.csv --ratios 3,2 --json --shard " + std::to_string(i) + "/3 -o part" + std::to_string(i) + ".json",
+                dir, true).status == 0);
+  const std::string p1 = slurp(dir.path / "part1.json"), p2 = slurp(dir.path / "part2.json"), p3 = slurp(dir.path / "part3.json");
+  CHECK(resigned(p1) == p1);  // the digest as docs/cli.md defines it
+  REQUIRE(run("synth merge part1.json part2.json part3.json -o all.json", dir, true).status == 0);
+  // Solutions are lines "  {...}" (",") between the first line and the last ("], ...").
+  REQUIRE(contains(p1, "\n  {"));
+  REQUIRE(contains(p3, "\n  {"));
+  // The first train of part 3 (its ratios come after part 1's) appended to part 1's trains.
+  std::string train3 = line_of(p3, 1);
+  if (train3.back() == ',') train3.pop_back();
+  const std::string n3 = train_of(train3)["n"];
+  std::string moved = p1;
+  moved.insert(moved.rfind("\n], "), ",\n" + train3);
+  struct Edit {
+    std::string name, text, part_of;
+    std::vector<std::string> words;
+  };
+  const std::vector<Edit> edits{
+      {"undecided.json", resigned(with_member(p2, "undecided_boxes", "-1")), "2", {"undecided_boxes", "-1"}},
+      {"incomplete.json", resigned(with_member(p2, "undecided_boxes", "5")), "2", {"undecided_boxes", "5", "complete"}},
+      {"moved.json", resigned(moved), "1", {"n = " + n3}},
+      {"a2.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "a2", "7"); })), "1", {"a2", "7"}},
+      {"counts.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "tangencies", "1"); })), "1",
+       {"counts"}},
+      {"n.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "n", "\"-6/2\""); })), "1", {"-6/2"}}};
+  for (const Edit& e : edits) {
+    write_text(dir, e.name, e.text);
+    std::string args;
+    for (const char* i : {"1", "2", "3"}) args += std::string(" ") + (e.part_of == i ? e.name : "part" + std::string(i) + ".json");
+    check_merge_refused(dir, args, e.name, e.words);
+  }
+}
+
+TEST_CASE("cli synth merge: a part relabelled to another shard count is named with the counts that differ", "[cli][synth][errors]") {
+  TempDir dir;
+  REQUIRE(run("trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; sed -n '3p;12p;30p' t.csv | cut -d, -f2-4) > pts.csv", dir).status == 0);
+  for (int i = 1; i <= 3; ++i)
+    REQUIRE(run("synth points --input pts.csv --ratios 2,2 --json --shard " + std::to_string(i) + "/3 -o part" + std::to_string(i) + ".json",
+                dir, true).status == 0);
+  const std::string p1 = slurp(dir.path / "part1.json");
+  REQUIRE(contains(p1, "\"shard\": \"1/3\""));
+  const std::string relabelled = with_member(p1, "shard", "\"1/4\"");
+  for (const std::string& text : {relabelled, resigned(relabelled)}) {
+    write_text(dir, "four.json", text);
+    // Parts 2/3 and 3/3 say K = 3: the part that says 4 is named, with "1/4", 4 and 3.
+    check_merge_refused(dir, "part3.json four.json part2.json", "four.json", {"\"1/4\"", "4 parts", "3"});
+    const Result r = run("synth merge part3.json four.json part2.json", dir, true);
+    CHECK_FALSE(contains(r.err, "\"ratios\": \"2,2\", not"));
   }
 }

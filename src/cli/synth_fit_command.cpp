@@ -90,13 +90,13 @@ std::string options_text(const FitOptions& f) {
          " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates) + " node " + node;
 }
 
-/// Shard members the merge needs besides the unsharded output: the run's fingerprint, the
-/// candidate bound and every ratio's reason.
+/// Shard members the merge needs besides the unsharded output: the run's fingerprint, the part's
+/// digest (filled in by signed_part), the candidate bound and every ratio's reason.
 std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f, const std::string& run) {
   nlohmann::json reasons = nlohmann::json::array();
   for (const RatioFit& rf : all) reasons.push_back(rf.reason);
-  return "\"run\": \"" + run + "\", \"max_candidates\": " + std::to_string(f.max_candidates) + ", \"reasons\": " +
-         reasons.dump() + ", ";
+  return "\"run\": \"" + run + "\", " + digest_placeholder() + "\"max_candidates\": " + std::to_string(f.max_candidates) +
+         ", \"reasons\": " + reasons.dump() + ", ";
 }
 
 void run_fit(const FitCommandOptions& o) {
@@ -115,8 +115,9 @@ void run_fit(const FitCommandOptions& o) {
   const std::string fields =
       request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
   write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << fit_json(all, f, fields, request.teeth);
-    else write_fit_text(out, all, f, request.teeth);
+    if (!o.json) write_fit_text(out, all, f, request.teeth);
+    else if (o.shard.empty()) out << fit_json(all, f, fields, request.teeth);
+    else out << signed_part(fit_json(all, f, fields, request.teeth));
   });
   for (const auto* c : ranked_candidates(all, f))
     if (!c->census.certified())
@@ -124,80 +125,126 @@ void run_fit(const FitCommandOptions& o) {
                               " is not certified (exit status 3; see docs/cli.md: Certified counts)"};
 }
 
+/// One shard of `synth fit --ratios P,Q --shard I/K --json`: its header and members (parsed and
+/// checked), and its candidate lines as printed with their rms (kept verbatim so that the merge
+/// equals the unsharded output).
 struct FitShard {
-  std::string ratios, run;
-  std::size_t index = 0, count = 0, max_candidates = 0, dropped = 0;
+  std::string path, text, run, digest;
+  ShardHeader header;
+  std::size_t max_candidates = 0, dropped = 0;
   std::vector<std::string> reasons;
+  std::vector<Ratio> ratios;                          // each candidate's n
   std::vector<std::pair<double, std::string>> lines;  // (rms, the candidate's line as printed)
 };
 
-/// A count member: an unsigned integer (not -3, 2.5 or 1e20).
-std::size_t count_member(const nlohmann::json& j, const char* key) {
-  const nlohmann::json& v = j.at(key);
-  if (!v.is_number_unsigned()) throw InvalidInput("shard", key, "not a count", "an integer >= 0");
-  return v.get<std::size_t>();
-}
+const std::string kFitPart = "the JSON of sphtroch synth fit --ratios P,Q | --teeth MIN..MAX --shard I/K --json";
 
-/// One candidate line as synth fit prints it, its values checked; returns its rms.
-double checked_candidate(const std::string& line, const std::optional<ToothRange>& range) {
-  const nlohmann::json c = nlohmann::json::parse(line);
-  const Ratio n = parse_ratio(c.at("n").get<std::string>(), "n");
-  const double pi = Constants<double>::pi();
-  auto number = [&](const char* key, double lo, double hi) {
-    const double v = c.at(key).get<double>();
-    if (!(v >= lo && v <= hi)) throw InvalidInput("shard", std::string(key) + " " + number_text(v), "out of range", "as synth fit prints it");
-    return v;
-  };
-  number("a2", 0, pi);
-  number("a3", 0, pi);
-  number("phase", 0, 2 * pi / double(n.q()));
-  const double rms = number("rms", 0, pi);
-  number("max_deviation", rms, pi);
-  number("margin", 0, pi);
-  const nlohmann::json& k = c.at("counts");
-  if (count_member(k, "nodes") != count_member(k, "crossings") + count_member(k, "tangencies"))
-    throw InvalidInput("shard", "counts", "nodes != crossings + tangencies", "as synth fit prints it");
-  count_member(k, "cusps");
+/// One candidate as synth fit prints it (path_fit_output.hpp), every member checked; returns its n
+/// and rms.
+std::pair<Ratio, double> checked_candidate(const nlohmann::json& c, const std::optional<ToothRange>& range, std::size_t k) {
+  std::string where = "candidate " + std::to_string(k + 1) + ": ";
+  if (!c.is_object() || !c.contains("n")) throw InvalidInput("shard", where + brief_json(c), "not a candidate", "{\"n\", \"a2\", ...}");
+  const Ratio n = ratio_member(c, where);
+  where = "candidate " + std::to_string(k + 1) + " (n = " + n.str() + "): ";
+  std::vector<std::string> names{"n", "a2", "a3", "phase", "rms", "max_deviation", "margin", "counts", "census_certified"};
+  if (c.contains("teeth")) names.push_back("teeth");
+  if (c.contains("node_distance")) names.push_back("node_distance");
+  check_members(c, where + "candidate", names);
   check_train_teeth(c, n, range);
-  if (c.contains("node_distance")) number("node_distance", 0, pi);
-  if (!c.at("census_certified").is_boolean() || c.size() != 9u + c.contains("teeth") + c.contains("node_distance") || k.size() != 4)
-    throw InvalidInput("shard", "candidate", "not as synth fit prints it", "the members of docs/cli.md: synth fit");
-  return rms;
+  const double pi = Constants<double>::pi();
+  number_member(c, where, "a2", 0, pi);
+  number_member(c, where, "a3", 0, pi);
+  number_member(c, where, "phase", 0, 2 * pi / double(n.q()));
+  const double rms = number_member(c, where, "rms", 0, pi);
+  number_member(c, where, "max_deviation", rms, pi);
+  number_member(c, where, "margin", 0, pi);
+  if (c.contains("node_distance")) number_member(c, where, "node_distance", 0, pi);
+  const nlohmann::json& k4 = c.at("counts");
+  check_members(k4, where + "\"counts\"", {"nodes", "crossings", "tangencies", "cusps"});
+  if (count_member(k4, where, "nodes") != count_member(k4, where, "crossings") + count_member(k4, where, "tangencies"))
+    throw InvalidInput("shard", where + "\"counts\" " + brief_json(k4), "nodes != crossings + tangencies", "the census as classify counts it");
+  count_member(k4, where, "cusps");
+  bool_member(c, where, "census_certified");
+  return {n, rms};
 }
 
+/// A part read and checked on its own: every member (InvalidInput "shard" = path naming the first
+/// that is not as the run writes it). What depends on the other parts is checked by check_fit_part.
 FitShard read_fit_shard(const std::string& path, const std::string& text) {
-  const std::string valid = "the JSON of sphtroch synth fit --ratios P,Q | --teeth MIN..MAX --shard I/K --json";
   FitShard s;
+  s.path = path;
+  s.text = text;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
-    const ShardHeader header = read_shard_header(j);
-    s.ratios = header.set;
-    s.index = header.index;
-    s.count = header.count;
-    const std::size_t ratios_here = header.ratios;
+    s.header = read_shard_header(j);
+    check_members(j, "the part",
+                  {s.header.set_name, "shard", "run", "digest", "max_candidates", "reasons", "candidates", "reason", "dropped"});
     s.run = j.at("run").get<std::string>();
-    s.max_candidates = count_member(j, "max_candidates");
+    s.digest = j.at("digest").get<std::string>();
+    if (!is_hex16(s.run)) throw InvalidInput("shard", "\"run\" " + brief_json(j.at("run")), "not a fingerprint", "16 hex digits as the run writes them");
+    if (!is_hex16(s.digest)) throw InvalidInput("shard", "\"digest\" " + brief_json(j.at("digest")), "not a digest", "16 hex digits as the run writes them");
+    s.max_candidates = count_member(j, "", "max_candidates");
+    if (s.max_candidates < 1 || s.max_candidates > 1000)
+      throw InvalidInput("shard", "\"max_candidates\" " + std::to_string(s.max_candidates), "out of range", "1 .. 1000 (--candidates)");
+    s.dropped = count_member(j, "", "dropped");
     s.reasons = j.at("reasons").get<std::vector<std::string>>();
-    s.dropped = count_member(j, "dropped");
-    const auto& candidates = j.at("candidates");
-    if (s.reasons.size() != ratios_here || candidates.size() > s.max_candidates || s.max_candidates < 1 ||
-        s.max_candidates > 1000)
-      throw InvalidInput("shard", path, "its reasons or candidates do not fit its ratios", valid);
+    const nlohmann::json& candidates = j.at("candidates");
+    if (!candidates.is_array() || candidates.size() > s.max_candidates)
+      throw InvalidInput("shard", "\"candidates\"", "more than \"max_candidates\" " + std::to_string(s.max_candidates),
+                         "at most max_candidates candidates");
+    std::vector<RatioFit> reasons;
+    for (const std::string& r : s.reasons) reasons.push_back(RatioFit{Ratio(1), {}, r, 0});
+    const std::string reason = candidates.empty() ? fit_reason(reasons) : "";
+    if (!j.at("reason").is_string() || j.at("reason") != reason)
+      throw InvalidInput("shard", "\"reason\" " + brief_json(j.at("reason")), "not what its \"reasons\" give",
+                         "\"\" with candidates, else the ratios' reasons once each");
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const auto [n, rms] = checked_candidate(candidates[k], s.header.teeth, k);
+      if (k > 0 && rms < s.lines.back().first)
+        throw InvalidInput("shard", "candidate " + std::to_string(k + 1) + " rms " + number_text(rms), "not best first",
+                           "candidates in increasing rms");
+      s.ratios.push_back(n);
+      s.lines.push_back({rms, ""});
+    }
+    // The lines copied into the merge: one per candidate, each the candidate it stands for.
     std::istringstream lines(text);
+    std::size_t k = 0;
     for (std::string line; std::getline(lines, line);)
       if (line.rfind("  {", 0) == 0) {
         if (line.back() == ',') line.pop_back();
-        const double rms = checked_candidate(line, header.teeth);
-        if (!s.lines.empty() && rms < s.lines.back().first) throw InvalidInput("shard", path, "candidates not best first", valid);
-        s.lines.push_back({rms, line});
+        if (k >= candidates.size() || nlohmann::json::parse(line) != candidates[k])
+          throw InvalidInput("shard", "candidate line " + std::to_string(k + 1), "not laid out as synth fit prints it", "one candidate per line");
+        s.lines[k++].second = line;
       }
-    if (s.lines.size() != candidates.size()) throw InvalidInput("shard", path, "not laid out as synth fit prints it", valid);
+    if (k != candidates.size()) throw InvalidInput("shard", "candidate lines", "not laid out as synth fit prints it", "one candidate per line");
   } catch (const nlohmann::json::exception&) {
-    throw InvalidInput("shard", path, "not a synth fit shard", valid);
+    throw InvalidInput("shard", path, "not a synth fit shard", kFitPart);
   } catch (const InvalidInput& e) {
-    throw InvalidInput("shard", path, e.value() + ": " + e.problem(), valid);
+    throw InvalidInput("shard", path, e.value() + ": " + e.problem(), e.valid_range());
   }
   return s;
+}
+
+/// What a part holds that depends on its place in the run (checked once the parts form one run):
+/// a reason per own ratio, every candidate's n among the own ratios, with an empty reason; then
+/// its digest.
+void check_fit_part(const FitShard& s) {
+  try {
+    if (s.reasons.size() != s.header.own.size())
+      throw InvalidInput("shard", "\"reasons\" of " + std::to_string(s.reasons.size()) + " ratio(s)", "not one per ratio of the part",
+                         std::to_string(s.header.own.size()) + " reasons (shard " + std::to_string(s.header.index) + "/" +
+                             std::to_string(s.header.count) + " of " + s.header.set + ")");
+    for (std::size_t k = 0; k < s.ratios.size(); ++k) {
+      const std::string where = "candidate " + std::to_string(k + 1) + ": ";
+      const std::size_t at = own_ratio_index(s.header, s.ratios[k], where);
+      if (!s.reasons[at].empty())
+        throw InvalidInput("shard", where + "n = " + s.ratios[k].str(), "has a candidate and a reason why there is none",
+                           "an empty reason for a ratio with candidates");
+    }
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("shard", s.path, e.value() + ": " + e.problem(), e.valid_range());
+  }
+  check_part_digest(s.path, s.text, s.digest, kFitPart + " (unedited)");
 }
 
 }  // namespace
@@ -209,22 +256,30 @@ void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std:
                    const std::string& output) {
   std::vector<FitShard> shards;
   for (std::size_t k = 0; k < paths.size(); ++k) shards.push_back(read_fit_shard(paths[k], texts[k]));
-  std::sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  std::stable_sort(shards.begin(), shards.end(), [](const auto& a, const auto& b) { return a.header.index < b.header.index; });
   std::vector<ShardName> names;
-  for (const FitShard& s : shards) names.push_back({s.ratios, s.index, s.count, s.run + " " + std::to_string(s.max_candidates)});
+  for (const FitShard& s : shards)
+    names.push_back({s.path, s.header.index, s.header.count,
+                     {{s.header.set_name, nlohmann::json(s.header.set_text).dump()},
+                      {"run", nlohmann::json(s.run).dump()},
+                      {"max_candidates", std::to_string(s.max_candidates)}}});
   check_shard_set(names);
+  for (const FitShard& s : shards) check_fit_part(s);
   std::vector<std::pair<double, std::string>> lines;
   std::vector<RatioFit> reasons;  // only the reasons matter when nothing is left
   std::size_t dropped = 0;
   for (const FitShard& s : shards) {
     lines.insert(lines.end(), s.lines.begin(), s.lines.end());
     for (const std::string& r : s.reasons) reasons.push_back(RatioFit{Ratio(1), {}, r, 0});
+    if (s.dropped > std::numeric_limits<std::size_t>::max() - dropped)
+      throw InvalidInput("shard", s.path, "\"dropped\" " + std::to_string(s.dropped) + ": the sum over the parts overflows",
+                         "counts whose sum is below 2^64");
     dropped += s.dropped;
   }
   std::stable_sort(lines.begin(), lines.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   if (lines.size() > shards[0].max_candidates) lines.resize(shards[0].max_candidates);
   std::string reason = lines.empty() ? fit_reason(reasons) : "";
-  std::string out = "{" + shards[0].ratios + ", \"candidates\": [";
+  std::string out = "{" + shards[0].header.set + ", \"candidates\": [";
   for (std::size_t k = 0; k < lines.size(); ++k) out += (k ? ",\n" : "\n") + lines[k].second;
   out += std::string(lines.empty() ? "" : "\n") + "], \"reason\": " + nlohmann::json(reason).dump() +
          ", \"dropped\": " + std::to_string(dropped) + "}\n";

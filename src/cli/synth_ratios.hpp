@@ -14,7 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -114,26 +116,70 @@ inline RatioRequest requested_ratios(const std::string& command, const std::stri
   return r;
 }
 
-/// A fingerprint (FNV-1a, 64 bits, hex) of what a run of a synth command computed from: its
-/// points and `options` (the options as parsed), so that `synth merge` joins only shards of one run.
-inline std::string run_fingerprint(const std::vector<Vector3d>& points, const std::string& options) {
-  std::uint64_t h = 14695981039346656037ull;
-  auto mix = [&h](const void* data, std::size_t size) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  };
-  for (const Vector3d& p : points) mix(p.data(), 3 * sizeof(double));
-  mix(options.data(), options.size());
+/// FNV-1a (64 bits) of `size` bytes, continuing from `h` (the offset basis by default).
+inline std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t h = 14695981039346656037ull) {
+  const auto* b = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  return h;
+}
+
+/// 64 bits as 16 lowercase hex digits.
+inline std::string hex16(std::uint64_t h) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
   return hex;
 }
 
-/// What a shard's JSON says of itself: its set (as its JSON member, set_member), I of K, and how
-/// many ratios of the set are its own.
+/// True for 16 lowercase hex digits (a fingerprint or a digest as a run writes it).
+inline bool is_hex16(const std::string& s) {
+  return s.size() == 16 && s.find_first_not_of("0123456789abcdef") == std::string::npos;
+}
+
+/// A fingerprint (FNV-1a, 64 bits, hex) of what a run of a synth command computed from: its
+/// points and `options` (the options as parsed), so that `synth merge` joins only shards of one run.
+inline std::string run_fingerprint(const std::vector<Vector3d>& points, const std::string& options) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (const Vector3d& p : points) h = fnv1a(p.data(), 3 * sizeof(double), h);
+  return hex16(fnv1a(options.data(), options.size(), h));
+}
+
+/// The "digest" member of a part (a shard's JSON): written as 16 zeros among the part's first
+/// members, then filled in by signed_part with the FNV-1a (64 bits) of the whole part as it is
+/// with those zeros. `synth merge` recomputes it: any edit of a part's bytes shows.
+inline const std::string kDigestKey = "\"digest\": \"";
+inline std::string digest_placeholder() { return kDigestKey + std::string(16, '0') + "\", "; }
+
+/// `text`, a whole part holding digest_placeholder() once, with its digest filled in.
+inline std::string signed_part(std::string text) {
+  const auto at = text.find(digest_placeholder()) + kDigestKey.size();
+  text.replace(at, 16, hex16(fnv1a(text.data(), text.size())));
+  return text;
+}
+
+/// Refuses (InvalidInput "shard" = path) a part whose "digest" is not the FNV-1a of its bytes
+/// with the digest's 16 digits as zeros (see signed_part): a part edited after its run.
+inline void check_part_digest(const std::string& path, const std::string& text, const std::string& recorded,
+                              const std::string& valid) {
+  const auto at = text.find(kDigestKey);
+  if (at == std::string::npos || text.find(kDigestKey, at + 1) != std::string::npos ||
+      text.compare(at + kDigestKey.size(), 16, recorded) != 0)
+    throw InvalidInput("shard", path, "its \"digest\" is not one member as the run writes it", valid);
+  std::string zeroed = text;
+  zeroed.replace(at + kDigestKey.size(), 16, std::string(16, '0'));
+  const std::string computed = hex16(fnv1a(zeroed.data(), zeroed.size()));
+  if (computed != recorded)
+    throw InvalidInput("shard", path,
+                       "its bytes do not match its \"digest\": they hash to " + computed + ", the digest says " + recorded +
+                           " (FNV-1a 64 of the part with the digest's 16 digits as 0): edited after its run",
+                       valid);
+}
+
+/// What a shard's JSON says of itself: its set (as its JSON member, set_member), I of K, and the
+/// ratios of the set that are its own.
 struct ShardHeader {
-  std::string set;
-  std::size_t index = 0, count = 0, ratios = 0;
+  std::string set, set_name, set_text;  // set = set_member(set_name, set_text)
+  std::size_t index = 0, count = 0;
+  std::vector<Ratio> own;           // this part's ratios, in the set's order
   std::optional<ToothRange> teeth;  // the set is a tooth range: what each train echoes
 };
 
@@ -145,14 +191,86 @@ inline ShardHeader read_shard_header(const nlohmann::json& j) {
   const std::string name = j.contains("teeth") ? "teeth" : "ratios";
   const std::string text = j.at(name).get<std::string>();
   const std::string shard = j.at("shard").get<std::string>();
-  const auto [begin, end] = shard_range(shard, named_ratio_set(name, text).size());
+  const std::vector<Ratio> set = named_ratio_set(name, text);
+  const auto [begin, end] = shard_range(shard, set.size());
   const auto slash = shard.find('/');
-  ShardHeader h{set_member(name, text), parse_count(shard.substr(0, slash), "shard", 1, 1000000),
-                parse_count(shard.substr(slash + 1), "shard", 1, 1000000), end - begin, std::nullopt};
+  ShardHeader h{set_member(name, text), name, text, parse_count(shard.substr(0, slash), "shard", 1, 1000000),
+                parse_count(shard.substr(slash + 1), "shard", 1, 1000000),
+                std::vector<Ratio>(set.begin() + static_cast<std::ptrdiff_t>(begin), set.begin() + static_cast<std::ptrdiff_t>(end)),
+                std::nullopt};
   if (shard != std::to_string(h.index) + "/" + std::to_string(h.count))
     throw InvalidInput("shard", shard, "not written as the run writes it", "I/K");
   if (name == "teeth") h.teeth = parse_tooth_range(text, "teeth");
   return h;
+}
+
+/// Refuses (InvalidInput "shard") a JSON object whose members are not exactly `names`.
+inline void check_members(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  bool ok = j.is_object() && j.size() == names.size();
+  for (const std::string& n : names) ok = ok && j.contains(n);
+  if (!ok) throw InvalidInput("shard", where, "not the members the run writes", "exactly the members " + list);
+}
+
+/// A JSON value as text for a message: at most 60 bytes of it, then "...".
+inline std::string brief_json(const nlohmann::json& v) {
+  const std::string text = v.dump();
+  return text.size() <= 60 ? text : text.substr(0, 60) + "...";
+}
+
+/// The number v inside [lo, hi] (InvalidInput "shard" = what and v otherwise).
+inline double checked_number(const nlohmann::json& v, const std::string& what, double lo, double hi) {
+  const double x = v.is_number() ? v.get<double>() : std::nan("");
+  if (!(x >= lo && x <= hi))
+    throw InvalidInput("shard", what + " " + brief_json(v), v.is_number() ? "out of range" : "not a number",
+                       "a number in [" + number_text(lo) + ", " + number_text(hi) + "]");
+  return x;
+}
+
+/// A number member `key` of `j` inside [lo, hi] (InvalidInput "shard" naming it and its value otherwise).
+inline double number_member(const nlohmann::json& j, const std::string& where, const std::string& key, double lo, double hi) {
+  return checked_number(j.at(key), where + "\"" + key + "\"", lo, hi);
+}
+
+/// Element i of the array j inside [lo, hi].
+inline double number_member(const nlohmann::json& j, const std::string& where, std::size_t i, double lo, double hi) {
+  return checked_number(j.at(i), where + "[" + std::to_string(i) + "]", lo, hi);
+}
+
+/// A count member `key` of `j`: an integer >= 0 (not -3, 2.5 or 1e20), InvalidInput "shard" otherwise.
+inline std::size_t count_member(const nlohmann::json& j, const std::string& where, const std::string& key) {
+  const nlohmann::json& v = j.at(key);
+  if (!v.is_number_unsigned()) throw InvalidInput("shard", where + "\"" + key + "\" " + brief_json(v), "not a count", "an integer >= 0");
+  return v.get<std::size_t>();
+}
+
+/// A boolean member `key` of `j`, InvalidInput "shard" otherwise.
+inline bool bool_member(const nlohmann::json& j, const std::string& where, const std::string& key) {
+  const nlohmann::json& v = j.at(key);
+  if (!v.is_boolean()) throw InvalidInput("shard", where + "\"" + key + "\" " + brief_json(v), "not true or false", "true or false");
+  return v.get<bool>();
+}
+
+/// The "n" of a train of a part: a ratio written as the run writes it (5/2, not 10/4 or 2.5).
+inline Ratio ratio_member(const nlohmann::json& train, const std::string& where) {
+  const nlohmann::json& v = train.at("n");
+  const std::string text = v.is_string() ? v.get<std::string>() : brief_json(v);
+  const Ratio n = parse_ratio(text, "n");
+  if (!v.is_string() || n.str() != text) throw InvalidInput("shard", where + "\"n\" " + brief_json(v), "not written as the run writes it", "p/q in lowest terms, q > 0 (q = 1: p)");
+  return n;
+}
+
+/// The position of n among a part's own ratios; InvalidInput "shard" when it is not one of them.
+inline std::size_t own_ratio_index(const ShardHeader& h, const Ratio& n, const std::string& where) {
+  const auto it = std::find(h.own.begin(), h.own.end(), n);
+  if (it == h.own.end()) {
+    const std::string range = h.own.empty() ? "none" : h.own.front().str() + " .. " + h.own.back().str();
+    throw InvalidInput("shard", where + "n = " + n.str(), "not one of this part's ratios",
+                       "the ratios of shard " + std::to_string(h.index) + "/" + std::to_string(h.count) + " of " + h.set +
+                           ": " + std::to_string(h.own.size()) + " ratio(s), " + range);
+  }
+  return static_cast<std::size_t>(it - h.own.begin());
 }
 
 /// Refuses (InvalidInput "shard") a train's "teeth" member that is not what the run writes: the
@@ -163,27 +281,50 @@ inline void check_train_teeth(const nlohmann::json& train, const Ratio& n, const
   if (!ok) throw InvalidInput("shard", "teeth of n = " + n.str(), "not what the run writes", "the smallest tooth pair in the range");
 }
 
-/// What names one shard of a ratio-set run: the set, I of K, and `run` (anything else that
-/// must agree between the shards of one run, e.g. the candidate bound).
+/// What names one shard of a ratio-set run: its file, I of K, and the members that every part
+/// of one run writes alike (JSON name, value as JSON text: the set, "run", ...).
 struct ShardName {
-  std::string ratios;  // the set's JSON member (set_member)
+  std::string path;
   std::size_t index = 0, count = 0;
-  std::string run;
+  std::vector<std::pair<std::string, std::string>> members;
 };
 
 /// Refuses (InvalidInput "shard") a set of shards, sorted by index, that is not I = 1..K of one
-/// run, each once.
+/// run, each once. A part whose K or member differs from what most parts say is named, with what
+/// differs and a part that says otherwise.
 inline void check_shard_set(const std::vector<ShardName>& shards) {
   const std::string valid = "every shard I/K of one run, I = 1..K, each once";
+  auto shard_text = [](const ShardName& s) { return "\"shard\": \"" + std::to_string(s.index) + "/" + std::to_string(s.count) + "\""; };
+  // The value most parts have (ties: the lowest shard's); returns a part that has it.
+  auto most = [&shards](auto value) {
+    std::size_t best = 0, best_votes = 0;
+    for (std::size_t a = 0; a < shards.size(); ++a) {
+      std::size_t votes = 0;
+      for (const ShardName& b : shards) votes += value(b) == value(shards[a]);
+      if (votes > best_votes) best = a, best_votes = votes;
+    }
+    return shards[best];
+  };
+  const ShardName& by_count = most([](const ShardName& s) { return s.count; });
+  for (const ShardName& s : shards)
+    if (s.count != by_count.count)
+      throw InvalidInput("shard", s.path,
+                         "its shard count differs: " + shard_text(s) + " is one of " + std::to_string(s.count) + " parts, " +
+                             by_count.path + "'s " + shard_text(by_count) + " one of " + std::to_string(by_count.count),
+                         valid);
+  for (std::size_t m = 0; m < shards[0].members.size(); ++m) {
+    const ShardName& usual = most([m](const ShardName& s) { return s.members[m].second; });
+    for (const ShardName& s : shards)
+      if (s.members[m] != usual.members[m])
+        throw InvalidInput("shard", s.path,
+                           "from another run: its \"" + s.members[m].first + "\": " + s.members[m].second + ", " + usual.path +
+                               "'s \"" + usual.members[m].first + "\": " + usual.members[m].second,
+                           valid);
+  }
   for (std::size_t k = 0; k < shards.size(); ++k) {
     const ShardName& s = shards[k];
-    const std::string name = std::to_string(s.index) + "/" + std::to_string(s.count);
-    if (s.ratios != shards[0].ratios || s.count != shards[0].count)
-      throw InvalidInput("shard", name, "from another run (" + s.ratios + ", not " + shards[0].ratios + ")", valid);
-    if (s.run != shards[0].run)
-      throw InvalidInput("shard", name, "from another run (other points or options than shard " +
-                                            std::to_string(shards[0].index) + "/" + std::to_string(shards[0].count) + ")", valid);
-    if (k > 0 && s.index == shards[k - 1].index) throw InvalidInput("shard", name, "given twice", valid);
+    if (k > 0 && s.index == shards[k - 1].index)
+      throw InvalidInput("shard", s.path, shard_text(s) + " given twice (also " + shards[k - 1].path + ")", valid);
     if (s.index != k + 1) throw InvalidInput("shard", std::to_string(k + 1) + "/" + std::to_string(s.count), "missing", valid);
   }
   if (shards.back().index != shards.back().count)
