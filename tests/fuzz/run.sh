@@ -65,7 +65,8 @@ for target in "${targets[@]}"; do
   mkdir -p "$corpus" "$artifacts"
   cp tests/fuzz/corpus/"$target"/* "$corpus"/
   echo "fuzz: $target for $seconds s"
-  if "$build_dir/bin/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  # TMPDIR: the targets' scratch files (fuzz_files.hpp) go under $work, removed below even after a crash.
+  if TMPDIR="$work" "$build_dir/bin/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts/" "$corpus" \
       >"$work/$target.log" 2>&1; then
     echo "fuzz: $target ok: $(grep -E '^stat::number_of_executed_units' "$work/$target.log" | awk '{print $2}') inputs," \
