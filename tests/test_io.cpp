@@ -16,6 +16,7 @@
 #include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/io/trace_output.hpp"
 
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <signal.h>
@@ -643,7 +644,9 @@ TEST_CASE("output_file: D5 more than 64 live temporaries are all removable by th
 TEST_CASE("output_file: D0 a process that dies of abort() or a fault mid-write leaves no temporary", "[io][output][signals]") {
   // Fault injection by death: a child process installs the cleanup, stages two outputs, writes
   // part of them, then dies of the signal (as glibc's "stack smashing detected" calls abort()).
-  for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGXFSZ, SIGTERM}) {
+  // 0: a real fault (a write to a PROT_NONE page: SIGSEGV from the kernel, which the handler
+  // leaves to happen again so that the replaced action, e.g. ASan's report, sees it).
+  for (const int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGXFSZ, SIGTERM, 0}) {
     TempDir dir;
     std::ofstream(dir.path / "b.csv") << "old";
     std::fflush(nullptr);
@@ -656,6 +659,10 @@ TEST_CASE("output_file: D0 a process that dies of abort() or a fault mid-write l
       a.write(std::string(3 << 20, 'x'));  // past the buffer: bytes on disk
       b.write("partial");
       if (sig == SIGABRT) std::abort();
+      if (sig == 0) {
+        void* page = ::mmap(nullptr, 4096, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (page != MAP_FAILED) *static_cast<volatile char*>(page) = 1;
+      }
       ::raise(sig);
       ::_exit(0);  // not reached
     }

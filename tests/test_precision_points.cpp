@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -380,4 +381,28 @@ TEST_CASE("precision points: near a continuum of solutions the list is uncertifi
     const TracerCurve<double> curve(s.train);
     for (int i = 0; i < 3; ++i) CHECK((curve.point(s.params[i]) - points[i]).norm() <= 1e-12);
   }
+}
+
+TEST_CASE("precision_points: phases on a sector boundary (a phase-0 trace) reduce into [0, 2 pi / q), never a few ulp below 0",
+          "[exact][synthesis]") {
+  // phase = k * sector rounded: phase / sector rounds to k from either side, and phase - k sector
+  // is then a few ulp below 0 for some k (synth merge refused such parts: a phase below 0).
+  const double pi = Constants<double>::pi();
+  int below_zero_unreduced = 0;
+  for (int q = 1; q <= 60; ++q) {
+    const double sector = 2 * pi / q;
+    for (int k = -200; k <= 200; ++k) {
+      const double on = k * sector;
+      for (const double phase : {on, std::nextafter(on, -1e300), std::nextafter(on, 1e300)}) {
+        const auto [m, r] = precision_detail::reduce_to_sector(phase, sector);
+        INFO("q = " << q << ", k = " << k << ", phase = " << phase);
+        CHECK(r >= 0.0);
+        CHECK(r < sector);
+        CHECK(m == std::floor(m));
+        CHECK(std::abs(m * sector + r - phase) <= 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase) + sector));
+        if (phase - std::floor(phase / sector) * sector < 0) ++below_zero_unreduced;
+      }
+    }
+  }
+  CHECK(below_zero_unreduced > 0);  // the plain formula does go below 0 on these inputs
 }

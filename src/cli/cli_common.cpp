@@ -1,5 +1,7 @@
 #include "cli_common.hpp"
 
+#include "png_output.hpp"
+
 #include "sphtroch/draw/svg.hpp"
 
 #include "sphtroch/core/cone_distance.hpp"
@@ -37,7 +39,7 @@ void check_svg_name(const std::string& path, const std::string& field) {
   const std::optional<std::string> ext = other_picture_format(path);
   if (!ext) return;
 #if defined(SPHTROCH_HAVE_PNG)
-  if (*ext == "png") return;  // rendered (png_output.hpp)
+  if (*ext == "png") return require_png_writer(path, field);  // rendered by the plugin (png_output.hpp)
   const std::string valid = "FILE.svg or FILE.png (another format: convert the SVG)";
 #else
   const std::string valid = "FILE.svg (PNG needs the librsvg component, which this build of sphtroch does not have; "

@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", version_text());
   app.require_subcommand(1);
   app.option_defaults()->disable_flag_override();  // --velocity=value is an error, not a value
-  sphtroch::install_output_signal_cleanup();  // temporaries removed on SIGINT/SIGTERM; EPIPE instead of SIGPIPE
+  sphtroch::install_output_signal_cleanup();  // temporaries removed on stop and fault signals; EPIPE, not SIGPIPE
   std::vector<std::pair<CLI::App*, Action>> actions;
   register_trace(app, actions);
   register_atlas(app, actions);

@@ -77,6 +77,8 @@ std::string plugin_directory() {
   return (exe.parent_path() / SPHTROCH_PLUGIN_DIR).lexically_normal().string();
 }
 
+void require_output_plugin(const OutputPlugin& plugin, const std::string& output) { (void)open_plugin(plugin, output); }
+
 std::string run_output_plugin(const OutputPlugin& plugin, const std::string& output, const std::string& request) {
   const PluginRunFunction run = open_plugin(plugin, output);
   char* bytes = nullptr;

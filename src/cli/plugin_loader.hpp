@@ -31,4 +31,8 @@ std::string plugin_directory();
 /// failure. Thread-safe.
 std::string run_output_plugin(const OutputPlugin& plugin, const std::string& output, const std::string& request);
 
+/// Opens `plugin` now (as run_output_plugin does at first use), so that a command refuses a
+/// missing or broken plugin before its work. Throws as run_output_plugin's opening does.
+void require_output_plugin(const OutputPlugin& plugin, const std::string& output);
+
 }  // namespace sphtroch::cli

@@ -34,6 +34,15 @@ bool names_png(const std::string& path) {
   return tail == ".png";
 }
 
+void require_png_writer(const std::string& path, const std::string& field) {
+#if defined(SPHTROCH_HAVE_PNG)
+  if (names_png(path)) require_output_plugin(kPngPlugin, "--" + field + " = " + path);
+#else
+  (void)path;
+  (void)field;
+#endif
+}
+
 std::string picture_bytes(const std::string& svg, const std::string& path) {
   return names_png(path) ? png_from_svg(svg, path) : svg;
 }

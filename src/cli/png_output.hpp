@@ -10,6 +10,10 @@ namespace sphtroch::cli {
 /// Whether `path` ends in .png (any case).
 bool names_png(const std::string& path);
 
+/// Opens the PNG plugin now when `path` ends in .png (a build with PNG), so that a missing plugin
+/// is refused before the work: UsageError "--<field> = <path>: PNG is written by the plugin ...".
+void require_png_writer(const std::string& path, const std::string& field);
+
 /// What to write for a picture to `path`: the SVG itself, or its PNG rendering when `path` ends
 /// in .png (at the SVG's own size in pixels, white where the SVG is). REQUIRES: a .png path only
 /// in a build with PNG (check_svg_name refuses it otherwise). Throws UsageError (naming `path`)

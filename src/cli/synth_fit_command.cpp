@@ -156,7 +156,7 @@ std::pair<Ratio, double> checked_candidate(const nlohmann::json& c, const std::o
   number_member(c, where, "a3", 0, pi);
   number_member(c, where, "phase", 0, 2 * pi / double(n.q()));
   const double rms = number_member(c, where, "rms", 0, pi);
-  number_member(c, where, "max_deviation", rms, pi);
+  number_member(c, where, "max_deviation", rms * (1 - 4 * std::numeric_limits<double>::epsilon()), pi);  // rms <= max, to rounding
   number_member(c, where, "margin", 0, pi);
   if (c.contains("node_distance")) number_member(c, where, "node_distance", 0, pi);
   const nlohmann::json& k4 = c.at("counts");

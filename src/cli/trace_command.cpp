@@ -85,7 +85,8 @@ void run_step_trace(const TraceOptions& o, const GearTrain& train, std::optional
 }
 #endif
 
-/// --radius R: the cone distance in any unit, positions scaled by it; finite and > 0.
+/// trace: the sampled path as CSV, .npy, DXF or OBJ (or STEP above); --radius R, the cone distance
+/// in any unit in [1e-100, 1e100] (core/cone_distance.hpp), scales positions and velocities.
 void run_trace(const TraceOptions& o) {
   const GearTrain train = o.train.train();
   if (!o.samples.empty() && !o.turns.empty())

@@ -247,6 +247,22 @@ T ratio_as(const Ratio& n, const Interval& enclosure) {
 /// carrier angle of every point (theta_1 first): a3 = acos(Q_1z), theta_p = atan2(Q_1x, -Q_1y) -
 /// n theta_1, the phase reduced to [0, 2 pi / q) and the angles shifted by the matching 2 pi k
 /// into [0, 2 pi q). None when a3 is outside [kMinCarrierTwist, pi - kMinCarrierTwist].
+namespace precision_detail {
+
+/// (m, r) with phase = m sector + r and r in [0, sector), to rounding: phase / sector may round to
+/// an integer m from either side, leaving phase - m sector a few ulp below 0 (then r = 0: the
+/// curve moves by that much) or at sector (then m + 1). REQUIRES sector > 0, phase finite.
+inline std::pair<double, double> reduce_to_sector(double phase, double sector) {
+  double m = std::floor(phase / sector), r = phase - m * sector;
+  if (r >= sector) {
+    m += 1;
+    r -= sector;
+  }
+  return {m, std::clamp(r, 0.0, std::nextafter(sector, 0.0))};
+}
+
+}  // namespace precision_detail
+
 inline std::optional<PrecisionSolution> train_through_points(const Ratio& ratio, double a2, const double q1[3],
                                                              const std::vector<double>& thetas, bool isolated) {
   const double two_pi = 2 * Constants<double>::pi();
@@ -255,10 +271,10 @@ inline std::optional<PrecisionSolution> train_through_points(const Ratio& ratio,
   if (!(a3 >= kMinCarrierTwist && a3 <= Constants<double>::pi() - kMinCarrierTwist)) return std::nullopt;
   const double phase = std::atan2(q1[0], -q1[1]) - ratio.value() * thetas[0];
   const double sector = two_pi / static_cast<double>(q);
-  const double m = std::floor(phase / sector);
+  const auto [m, reduced] = precision_detail::reduce_to_sector(phase, sector);
   const std::int64_t m_mod = static_cast<std::int64_t>(std::fmod(std::fmod(m, double(q)) + double(q), double(q)));
   const std::int64_t k = (m_mod * precision_detail::inverse_mod(ratio.p(), q)) % q;
-  PrecisionSolution s{GearTrain(a2, a3, ratio, phase - m * sector), {}, 0.0, isolated};
+  PrecisionSolution s{GearTrain(a2, a3, ratio, reduced), {}, 0.0, isolated};
   const double shift = two_pi * static_cast<double>(k), period = two_pi * static_cast<double>(q);
   for (const double t : thetas) s.params.push_back(std::fmod(std::fmod(t + shift, period) + period, period));
   return s;

@@ -203,11 +203,19 @@ inline ReplacedSignalActions& replaced_signal_actions() {
   return actions;
 }
 
-inline void remove_temporaries_and_reraise(int sig) {  // async-signal-safe
+/// The handler (async-signal-safe; errno kept): removes the temporaries and puts the replaced
+/// action back. A fault the kernel raised (si_code > 0: a bad access, a bad instruction) is left to
+/// happen again on return, so that the replaced action sees the real fault and its address; a
+/// signal sent by a process or raise() (abort() included) is raised again.
+inline void remove_temporaries_and_reraise(int sig, siginfo_t* info, void*) {
+  const int saved_errno = errno;
   TempRegistry::instance().unlink_all();
   for (std::size_t i = 0; i < kCleanupSignalCount; ++i)
     if (kCleanupSignals[i] == sig) ::sigaction(sig, &replaced_signal_actions().action[i], nullptr);
-  ::raise(sig);
+  const bool kernel_fault = info && info->si_code > 0 && sig != SIGINT && sig != SIGTERM && sig != SIGHUP &&
+                            sig != SIGABRT && sig != SIGXFSZ;
+  if (!kernel_fault) ::raise(sig);
+  errno = saved_errno;
 }
 
 /// The directory part of a path ("." for a bare name) and its file name.
@@ -236,7 +244,8 @@ inline mode_t new_file_mode() {
 inline void install_output_signal_cleanup() {
   detail::TempRegistry::instance();  // constructed before any handler can run
   struct sigaction sa {};
-  sa.sa_handler = detail::remove_temporaries_and_reraise;
+  sa.sa_sigaction = detail::remove_temporaries_and_reraise;
+  sa.sa_flags = SA_SIGINFO;
   sigemptyset(&sa.sa_mask);
   for (std::size_t i = 0; i < detail::kCleanupSignalCount; ++i) {
     const int sig = detail::kCleanupSignals[i];

@@ -34,7 +34,10 @@
 //  - the fit leaves an rms above tau, or above kIdentifyTolerance while the residual is
 //    systematic: its point-to-point scatter (RMS of r_{i+1} - r_i over sqrt 2, which white noise
 //    leaves at the noise and a wrong or mixed model's smooth misfit leaves far below the rms) is
-//    below rms / kSystematicRatio. Two trains mixed along t are refused so.
+//    below rms / kSystematicRatio. Two trains mixed along t are refused so. The rule assumes noise
+//    that is independent from sample to sample: smoothed samples, or dense samples rounded to
+//    few digits (the same rounding error over many neighbours), have a scatter below their rms
+//    and are refused too when their rms is above 1e-6 (thin them, or write more digits).
 // Noise of sigma radians gives a2, a3 to a few sigma / sqrt(N). Cost: O(N) per step, about 10 steps.
 #pragma once
 
