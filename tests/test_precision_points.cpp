@@ -383,7 +383,7 @@ TEST_CASE("precision points: near a continuum of solutions the list is uncertifi
   }
 }
 
-TEST_CASE("precision_points: phases on a sector boundary (a phase-0 trace) reduce into [0, 2 pi / q), never a few ulp below 0",
+TEST_CASE("precision_points: phases on a sector boundary (a phase-0 trace) reduce into 0 .. 2 pi / q, never a few ulp below 0",
           "[exact][synthesis]") {
   // phase = k * sector rounded: phase / sector rounds to k from either side, and phase - k sector
   // is then a few ulp below 0 for some k (synth merge refused such parts: a phase below 0).

@@ -2,8 +2,7 @@
 // curve into a user's unit (mm, ...) in every output that takes one (trace CSV/.npy/DXF/OBJ/STEP,
 // the nodes table): positions and velocities times R, the geodesic curvature divided by R.
 //
-//   sphtroch::check_cone_distance(25.0);    // fine
-//   sphtroch::check_cone_distance(1e-300);  // throws InvalidInput("radius", ...)
+//   sphtroch::check_cone_distance(25.0);  // fine: 1e-300 or 1e300 would throw InvalidInput("radius", ...)
 //
 // Valid: [1e-100, 1e100]. Within it every scaled value the library writes is a finite, normal
 // double: a position or velocity is at most R (1 + |n|) <= 1e106 (|n| <= 1e6), an acceleration
