@@ -52,6 +52,16 @@ namespace portable_trig_detail {
 constexpr double kPio2[4] = {0x1.921fb544p+0, 0x1.0b4611a6p-34, 0x1.3198a2ep-69, 0x1.b839a252049c1p-104};
 constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;  // 2/pi rounded
 
+/// 1/k! rounded to nearest, k = 0 .. 18, as exact hexadecimal literals: written out, not 1.0 / k!,
+/// because under -frounding-math (added by CGAL's targets to whatever links them, the tool
+/// included) a quotient of constants is divided at run time, in the current mode: 16 divisions a call.
+constexpr double kInvFactorial[19] = {
+    0x1p+0,                 0x1p+0,                 0x1p-1,                 0x1.5555555555555p-3,
+    0x1.5555555555555p-5,   0x1.1111111111111p-7,   0x1.6c16c16c16c17p-10,  0x1.a01a01a01a01ap-13,
+    0x1.a01a01a01a01ap-16,  0x1.71de3a556c734p-19,  0x1.27e4fb7789f5cp-22,  0x1.ae64567f544e4p-26,
+    0x1.1eed8eff8d898p-29,  0x1.6124613a86d09p-33,  0x1.93974a8c07c9dp-37,  0x1.ae7f3e733b81fp-41,
+    0x1.ae7f3e733b81fp-45,  0x1.952c77030ad4ap-49,  0x1.6827863b97d97p-53};
+
 struct DoubleDouble {
   double hi, lo;
 };
@@ -81,17 +91,17 @@ inline DoubleDouble reduce(double x, double k) {
 /// sin r for r = hi + lo, |hi| <= pi/4 + 2^-30, |lo| <= ulp(hi).
 inline double sin_kernel(const DoubleDouble& r) {
   const double z = r.hi * r.hi;
-  const double s = -1.0 / 6 + z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
-                   z * (1.0 / 6227020800.0 + z * (-1.0 / 1307674368000.0 + z * (1.0 / 355687428096000.0)))))));
+  const double s = -kInvFactorial[3] + z * (kInvFactorial[5] + z * (-kInvFactorial[7] + z * (kInvFactorial[9] +
+                   z * (-kInvFactorial[11] + z * (kInvFactorial[13] + z * (-kInvFactorial[15] + z * kInvFactorial[17]))))));
   return r.hi + (r.hi * z * s + r.lo * (1.0 - 0.5 * z));
 }
 
 /// cos r for r = hi + lo as above: 1 - r^2/2 with the roundings of r^2 and of 1 - r^2/2 carried.
 inline double cos_kernel(const DoubleDouble& r) {
   const DoubleDouble z = two_square(r.hi);
-  const double c = 1.0 / 24 + z.hi * (-1.0 / 720 + z.hi * (1.0 / 40320 + z.hi * (-1.0 / 3628800 +
-                   z.hi * (1.0 / 479001600 + z.hi * (-1.0 / 87178291200.0 + z.hi * (1.0 / 20922789888000.0 +
-                   z.hi * (-1.0 / 6402373705728000.0)))))));
+  const double c = kInvFactorial[4] + z.hi * (-kInvFactorial[6] + z.hi * (kInvFactorial[8] + z.hi * (-kInvFactorial[10] +
+                   z.hi * (kInvFactorial[12] + z.hi * (-kInvFactorial[14] + z.hi * (kInvFactorial[16] +
+                   z.hi * -kInvFactorial[18]))))));
   const double half = 0.5 * z.hi, w = 1.0 - half;
   return w + (((1.0 - w) - half) + (z.hi * z.hi * c - (0.5 * z.lo + r.hi * r.lo)));
 }

@@ -15,10 +15,11 @@
 // NumPy: float64 or float32, C order, shape (N, 3) = x,y,z, or (N, 4) / (N, 7) = the arrays that
 // `sphtroch trace` writes (t,x,y,z[,vx,vy,vz]): columns 1..3 are taken (see npy.hpp); each row
 // is checked as it is read (finite, not all zero), so a bad row is named before memory grows.
-// Sizes (a regular file's, a shape) only hint how much to reserve (kMaxReservedVertices at most).
+// Sizes (a regular file's, a shape) only hint how much to reserve: toward the hint in steps of at
+// most kMaxReservedVertices or kReserveGrowth times the rows already read (reserve_ahead).
 // Errors: InvalidInput(field, path, problem naming the line or what is wrong, the valid form).
 // Cost: one pass over the bytes in 4 MiB blocks, CSV rows parsed on `threads` threads (default 2);
-// memory: the vertices (24 bytes each) plus two blocks.
+// memory: the vertices (24 bytes each, about 5% reserved beyond them) plus two blocks.
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
@@ -133,16 +134,28 @@ inline CsvLayout layout_from_first_line(std::string_view line, const std::string
   return layout;
 }
 
-/// Vertices reserved ahead from a declared or estimated count, at most: a size is a hint (a
-/// sparse 64 GB file declares a lot and holds nothing), so the vector grows past it as rows are
-/// actually read and checked, and a reservation that fails is skipped.
-constexpr std::size_t kMaxReservedVertices = std::size_t(1) << 22;  // 96 MiB
+/// A declared or estimated vertex count is a hint (a sparse 64 GB file declares a lot and holds
+/// nothing): the vertices are reserved toward it in steps of at most kMaxReservedVertices or
+/// kReserveGrowth times the vertices already read and checked, whichever is more; a step short of
+/// the hint reserves at most half of it, so that the copy at the next step (old and new storage
+/// both held) stays within the hint's own size. Past the hint the vector doubles; a reservation
+/// that fails is skipped. The memory peak of a real file of N vertices is thus about its 24 N
+/// bytes (plus the hint's margin), not the up to 2 x 24 N of doubling.
+constexpr std::size_t kMaxReservedVertices = std::size_t(1) << 20;  // 24 MiB
+constexpr double kReserveGrowth = 16;
 
-inline void reserve_hint(std::vector<Vector3d>& v, double estimate) {
-  const double n = std::min(std::max(estimate, 0.0), static_cast<double>(kMaxReservedVertices));
+/// Makes room for `more` vertices after v's (see kMaxReservedVertices); `expected` is the hint of
+/// the total (0: none).
+inline void reserve_ahead(std::vector<Vector3d>& v, std::size_t more, double expected) {
+  const std::size_t want = v.size() + more;
+  if (v.capacity() >= want) return;
+  const double hint = std::max(expected, 0.0);
+  const double bound = std::max(static_cast<double>(kMaxReservedVertices), kReserveGrowth * static_cast<double>(v.size()));
+  const double step = hint <= bound ? hint : std::min(bound, hint / 2);
+  const std::size_t target = step >= static_cast<double>(want) ? static_cast<std::size_t>(step) : std::max(want, 2 * v.size());
   try {
-    v.reserve(static_cast<std::size_t>(n) + 1024);
-  } catch (const std::bad_alloc&) {  // only a hint
+    v.reserve(target);
+  } catch (const std::bad_alloc&) {  // only a hint: the vector grows as it must
   }
 }
 
@@ -186,17 +199,27 @@ inline std::size_t parse_rows(const char* first, const char* last, const CsvLayo
     double xyz[4] = {0, 0, 0, 0};
     q = p;
     for (std::size_t k = 0; k < layout.fields; ++k) {
-      const char* comma = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)));
-      const char* field_end = comma ? comma : end;
-      if (const int r = role_of(k); r != 0) {
-        const std::string_view text = trim(std::string_view(q, static_cast<std::size_t>(field_end - q)));
-        const std::optional<double> v = parse_number(text);  // the whole field: "1e" and "0x1p3" are not numbers
-        if (!v) {
+      const char* field_end = end;  // the field's ',' or the line's end
+      if (const int r = role_of(k); r == 0) {
+        if (const char* c = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)))) field_end = c;
+      } else {
+        // The number read in place: the field is one when it ends, after blanks, at ',' or the line's
+        // end (no character of a number is ',' or blank, so this is parse_number of the trimmed field).
+        const char* s = q;
+        while (s < end && is_blank(*s)) ++s;
+        double v = 0;
+        const char* after = parse_number_prefix(s, end, v);
+        while (after != nullptr && after < end && is_blank(*after)) ++after;
+        if (after == nullptr || (after < end && *after != ',') || !std::isfinite(v)) {
+          const char* c = static_cast<const char*>(std::memchr(q, ',', static_cast<std::size_t>(end - q)));
+          const std::string_view text = trim(std::string_view(q, static_cast<std::size_t>((c ? c : end) - q)));
           error = RowError{line, "column " + std::to_string(k + 1) + " is not a finite number: \"" + printable(text) + "\""};
-          return lines;
+          return lines;  // the whole field: "1e" and "0x1p3" are not numbers
         }
-        xyz[r - 1] = *v;
+        xyz[r - 1] = v;
+        field_end = after;
       }
+      const bool comma = field_end < end;
       if (k + 1 < layout.fields && !comma) {
         error = RowError{line, "has " + std::to_string(k + 1) + " fields, not " + std::to_string(layout.fields)};
         return lines;
@@ -290,10 +313,14 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
                   path, lines, timed ? &result.t : nullptr);
       line_base += lines;
     }
-    if (consumed == 0 && complete > 0 && in.size() && *in.size() > complete)  // from the first block's row density
-      reserve_hint(result.vertices, static_cast<double>(result.vertices.size()) / static_cast<double>(complete) * 1.05 *
-                                        static_cast<double>(*in.size()));
     consumed += complete;
+    if (!eof && result.vertices.size() > 0) {  // room for the next two blocks, at the rows' density so far
+      const double per_byte = static_cast<double>(result.vertices.size()) / static_cast<double>(consumed);
+      double ahead = 2.0 * kBlockBytes;
+      if (in.size()) ahead = std::min(ahead, static_cast<double>(*in.size() - std::min(*in.size(), consumed)));
+      reserve_ahead(result.vertices, static_cast<std::size_t>(per_byte * ahead * 1.05) + 1024,
+                    in.size() ? per_byte * static_cast<double>(*in.size()) * 1.05 + 1024 : 0.0);
+    }
     block.erase(0, complete);
     if (eof && block.empty()) break;
   }
@@ -301,8 +328,13 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
 }
 
 inline bool finite_nonzero_row(const double (&xyz)[3]) {
-  return std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2]) &&
-         (xyz[0] != 0.0 || xyz[1] != 0.0 || xyz[2] != 0.0);
+  // By the bits (one pass, no branch a coordinate): an exponent of all ones is inf or NaN; a
+  // coordinate is zero when all but the sign bit are.
+  std::uint64_t b[3];
+  std::memcpy(b, xyz, sizeof b);
+  constexpr std::uint64_t exponent = 0x7ff0000000000000u;
+  const bool finite = (b[0] & exponent) != exponent && (b[1] & exponent) != exponent && (b[2] & exponent) != exponent;
+  return finite && ((b[0] | b[1] | b[2]) << 1) != 0;
 }
 
 inline std::string shape_text(const NpyHeader& h) {
@@ -337,7 +369,6 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result, bo
     const std::uint64_t have = *in.size() - std::min<std::uint64_t>(*in.size(), h.data_offset);
     if (have < bytes) throw truncated(have);
     if (have > bytes) throw InvalidInput(field, path, std::to_string(have - bytes) + " bytes after the array's data", kNpyValid);
-    reserve_hint(result.vertices, static_cast<double>(h.rows()));
   }
   const std::size_t first = cols == 3 ? 0 : 1;  // x,y,z, or t,x,y,z[,vx,vy,vz]
   const std::size_t row_bytes = static_cast<std::size_t>(cols) * h.item_bytes;
@@ -346,35 +377,38 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result, bo
   std::uint64_t rows_left = h.rows();
   for (;;) {
     const std::size_t whole = static_cast<std::size_t>(std::min<std::uint64_t>(data.size() / row_bytes, rows_left));
-    for (std::size_t r = 0; r < whole; ++r) {
-      const char* row = data.data() + r * row_bytes + first * h.item_bytes;
-      double xyz[3];
-      if (h.item_bytes == 8) {
-        std::memcpy(xyz, row, sizeof xyz);
-      } else {
-        float f[3];
-        std::memcpy(f, row, sizeof f);
-        for (int a = 0; a < 3; ++a) xyz[a] = f[a];
+    reserve_ahead(result.vertices, whole, static_cast<double>(h.rows()));
+    const std::uint64_t row0 = h.rows() - rows_left;
+    const auto take = [&](auto item) {  // item: a value of the array's type, double or float
+      using Item = decltype(item);
+      const std::size_t base = result.vertices.size();
+      result.vertices.resize(base + whole);  // reserved; Eigen's vectors are not initialised
+      Vector3d* out = result.vertices.data() + base;
+      const char* row = data.data();
+      for (std::size_t r = 0; r < whole; ++r, row += row_bytes) {
+        Item f[3];
+        std::memcpy(f, row + first * sizeof(Item), sizeof f);
+        const double xyz[3] = {f[0], f[1], f[2]};
+        if (!finite_nonzero_row(xyz)) {  // refused as it is read: a sparse (3e9, 3) file fails at its first row
+          result.vertices.resize(base + r);
+          throw InvalidInput(field, path,
+                             "row " + std::to_string(row0 + r) + " (" + number_text(xyz[0]) + ", " +
+                                 number_text(xyz[1]) + ", " + number_text(xyz[2]) + ") is not a finite nonzero vector",
+                             kNpyValid);
+        }
+        out[r] = Vector3d(xyz[0], xyz[1], xyz[2]);
       }
-      if (!finite_nonzero_row(xyz))  // refused as it is read: a sparse (3e9, 3) file fails at its first row
-        throw InvalidInput(field, path,
-                           "row " + std::to_string(h.rows() - rows_left + r) + " (" + number_text(xyz[0]) + ", " +
-                               number_text(xyz[1]) + ", " + number_text(xyz[2]) + ") is not a finite nonzero vector",
-                           kNpyValid);
-      result.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
       if (timed) {
-        const char* t0 = data.data() + r * row_bytes;
-        if (h.item_bytes == 8) {
-          double v;
-          std::memcpy(&v, t0, sizeof v);
-          result.t.push_back(v);
-        } else {
-          float v;
-          std::memcpy(&v, t0, sizeof v);
-          result.t.push_back(v);
+        row = data.data();
+        for (std::size_t r = 0; r < whole; ++r, row += row_bytes) {
+          Item t;
+          std::memcpy(&t, row, sizeof t);
+          result.t.push_back(t);
         }
       }
-    }
+    };
+    if (h.item_bytes == 8) take(double{});
+    else take(float{});
     rows_left -= whole;
     data.erase(0, whole * row_bytes);
     if (rows_left == 0) break;

@@ -53,7 +53,8 @@ struct TraceWriteOptions {
 /// Indices on one OBJ "l" line at most.
 constexpr std::size_t kObjLineVertices = 1000;
 
-/// Rows per block: 16384 rows are at most 2.9 MB of CSV with velocities (1.3 MB without).
+/// Rows per block: a CSV block of c columns takes at most 16384 c (kMaxNumberChars + 1) bytes,
+/// 1.6 MB for t,x,y,z, 2.9 MB with velocities, 4.1 MB with kinematics too.
 constexpr std::size_t kTraceBlockRows = 16384;
 
 inline std::string trace_csv_header(bool velocity, bool kinematics = false, bool degrees = false) {
@@ -207,7 +208,7 @@ inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const
       }
       return;
     }
-    text.resize((last - first) * kMaxTraceRowChars);
+    text.resize((last - first) * cols * (kMaxNumberChars + 1));  // this row's width, not kMaxTraceRowChars
     char* p = text.data();
     for (std::size_t i = first; i < last; ++i) {
       row_of(i, row);
