@@ -68,6 +68,11 @@ def missing_plugin(args, cwd, output, plugin):
     check(done.stderr.count("\n") == 1 and plugin in done.stderr and "is not there" in done.stderr,
           f"{shown}: stderr is not one line naming {plugin}: {done.stderr!r}")
     check(not os.path.exists(os.path.join(cwd, output)), f"{shown}: {output} was written")
+    alone_version = subprocess.run([os.path.join(alone, "sphtroch"), "--version"], capture_output=True, text=True,
+                                   timeout=60).stdout
+    component = "step" if plugin == "sphtroch_step.so" else "png"
+    check(f"{component} missing" in alone_version,
+          f"sphtroch --version (no plugin) does not say '{component} missing': {alone_version!r}")
 
 
 os.makedirs(WORK, exist_ok=True)

@@ -635,6 +635,11 @@ TEST_CASE("invalid polylines throw InvalidInput naming the vertices", "[polyline
   throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, 2, 0), V(0, 0, 1)}, true, "index 1");  // same direction
   throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, -3, 0), V(0, 0, 1)}, false, "antipodal");
   throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 0, 0)}, true, "index 3");  // closing edge
+  // One pass checks vertices and edges: a bad vertex is still named before an earlier bad edge,
+  // and the first bad edge before a later one.
+  throws_vertices({V(1, 0, 0), V(2, 0, 0), V(0, 1, 0), V(0, 0, 1), V(nan, 0, 1)}, true, "index 4");
+  throws_vertices({V(1, 0, 0), V(2, 0, 0), V(0, 1, 0), V(0, -1, 0), V(0, 0, 1)}, true, "index 0");
+  throws_vertices({V(1, 0, 0), V(0, 1, 0), V(0, -1, 0), V(0, 0, 1), V(0, 0, 2)}, false, "index 1");
   CHECK_NOTHROW(sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 0, 0)}, false));
   CHECK_NOTHROW(sphtroch::find_self_crossings({V(1, 0, 0), V(0, 1, 0)}, false));
   CHECK_THROWS_AS(sphtroch::exact_brute_force_crossings({V(1, 0, 0), V(-1, 0, 0)}, false), sphtroch::InvalidInput);

@@ -57,8 +57,9 @@ class TracerCurve {
   /// written out so that the bits do not depend on Eigen's vectorisation (with sin_cos, the
   /// explorer's WebAssembly module computes the same bits: portable_trig.hpp).
   Vec3 point(const Scalar& theta2) const {
-    const Vec3 v = point_in_carrier(theta2);
-    const SinCos<Scalar> t = sin_cos(theta2);
+    const SinCosPair<Scalar> angles = sin_cos_pair(planet_angle(theta2), theta2);  // = two sin_cos
+    const SinCos<Scalar>& t = angles.second;
+    const Vec3 v(angles.first.sin * trig_.sin_a3, -angles.first.cos * trig_.sin_a3, trig_.cos_a3);  // point_in_carrier
     const Scalar wy = trig_.cos_a2 * v.y() - trig_.sin_a2 * v.z();  // Rx(a2) v
     const Scalar wz = trig_.sin_a2 * v.y() + trig_.cos_a2 * v.z();
     return Vec3(t.cos * v.x() - t.sin * wy, t.sin * v.x() + t.cos * wy, wz);  // Rz(theta2)

@@ -45,6 +45,22 @@ SinCos<Scalar> sin_cos(const Scalar& x) {
   return {Scalar(sin(x)), Scalar(cos(x))};
 }
 
+/// sin and cos of two angles.
+template <typename Scalar>
+struct SinCosPair {
+  SinCos<Scalar> first, second;
+};
+
+/// sin_cos(x) and sin_cos(y), the same bits as two calls; in double the two are evaluated
+/// together, two lanes of one vector (one evaluation instead of two).
+inline SinCosPair<double> sin_cos_pair(double x, double y);
+
+/// Other scalar types: two calls.
+template <typename Scalar>
+SinCosPair<Scalar> sin_cos_pair(const Scalar& x, const Scalar& y) {
+  return {sin_cos(x), sin_cos(y)};
+}
+
 // Implementation details follow.
 namespace portable_trig_detail {
 
@@ -62,49 +78,80 @@ constexpr double kInvFactorial[19] = {
     0x1.1eed8eff8d898p-29,  0x1.6124613a86d09p-33,  0x1.93974a8c07c9dp-37,  0x1.ae7f3e733b81fp-41,
     0x1.ae7f3e733b81fp-45,  0x1.952c77030ad4ap-49,  0x1.6827863b97d97p-53};
 
+/// Lanes: double, or two doubles evaluated together (GCC/Clang vector extension: each lane takes
+/// the same IEEE operations as a double, so the same bits; sin_cos_pair below).
+#if defined(__GNUC__) || defined(__clang__)
+#define SPHTROCH_PORTABLE_TRIG_LANES 1
+typedef double Lanes2 __attribute__((vector_size(16)));
+#endif
+
+template <typename Lanes>
 struct DoubleDouble {
-  double hi, lo;
+  Lanes hi, lo;
 };
 
 /// a + b = hi + lo exactly (Knuth's two-sum).
-inline DoubleDouble two_sum(double a, double b) {
-  const double s = a + b, bb = s - a;
+template <typename Lanes>
+DoubleDouble<Lanes> two_sum(Lanes a, Lanes b) {
+  const Lanes s = a + b, bb = s - a;
   return {s, (a - (s - bb)) + (b - bb)};
 }
 
 /// a * a = hi + lo exactly (Dekker's product; |a| < 2^995).
-inline DoubleDouble two_square(double a) {
-  const double t = 134217729.0 * a;  // 2^27 + 1: splits a into two 26-bit halves
-  const double high = t - (t - a), low = a - high;
-  const double p = a * a;
+template <typename Lanes>
+DoubleDouble<Lanes> two_square(Lanes a) {
+  const Lanes t = 134217729.0 * a;  // 2^27 + 1: splits a into two 26-bit halves
+  const Lanes high = t - (t - a), low = a - high;
+  const Lanes p = a * a;
   return {p, ((high * high - p) + 2.0 * high * low) + low * low};
 }
 
-/// x - k pi/2 as a double-double, for |k| <= 2^20 and k = round(x 2/pi) (see header).
-inline DoubleDouble reduce(double x, double k) {
-  const double r1 = x - k * kPio2[0];                   // exact
-  const DoubleDouble a = two_sum(r1, -(k * kPio2[1]));  // k kPio2[1] exact: a exact
-  const DoubleDouble c = two_sum(a.hi, -(k * kPio2[2]));
+/// x - k pi/2 as a double-double, for |k| <= 2^20 and k = round(x 2/pi) (see header). For k = 0
+/// (either sign) it is exactly {x, +0}.
+template <typename Lanes>
+DoubleDouble<Lanes> reduce(Lanes x, Lanes k) {
+  const Lanes r1 = x - k * kPio2[0];                   // exact
+  const DoubleDouble<Lanes> a = two_sum(r1, -(k * kPio2[1]));  // k kPio2[1] exact: a exact
+  const DoubleDouble<Lanes> c = two_sum(a.hi, -(k * kPio2[2]));
   return two_sum(c.hi, (a.lo + c.lo) - k * kPio2[3]);
 }
 
 /// sin r for r = hi + lo, |hi| <= pi/4 + 2^-30, |lo| <= ulp(hi).
-inline double sin_kernel(const DoubleDouble& r) {
-  const double z = r.hi * r.hi;
-  const double s = -kInvFactorial[3] + z * (kInvFactorial[5] + z * (-kInvFactorial[7] + z * (kInvFactorial[9] +
-                   z * (-kInvFactorial[11] + z * (kInvFactorial[13] + z * (-kInvFactorial[15] + z * kInvFactorial[17]))))));
+template <typename Lanes>
+Lanes sin_kernel(const DoubleDouble<Lanes>& r) {
+  const Lanes z = r.hi * r.hi;
+  const Lanes s = -kInvFactorial[3] + z * (kInvFactorial[5] + z * (-kInvFactorial[7] + z * (kInvFactorial[9] +
+                  z * (-kInvFactorial[11] + z * (kInvFactorial[13] + z * (-kInvFactorial[15] + z * kInvFactorial[17]))))));
   return r.hi + (r.hi * z * s + r.lo * (1.0 - 0.5 * z));
 }
 
 /// cos r for r = hi + lo as above: 1 - r^2/2 with the roundings of r^2 and of 1 - r^2/2 carried.
-inline double cos_kernel(const DoubleDouble& r) {
-  const DoubleDouble z = two_square(r.hi);
-  const double c = kInvFactorial[4] + z.hi * (-kInvFactorial[6] + z.hi * (kInvFactorial[8] + z.hi * (-kInvFactorial[10] +
-                   z.hi * (kInvFactorial[12] + z.hi * (-kInvFactorial[14] + z.hi * (kInvFactorial[16] +
-                   z.hi * -kInvFactorial[18]))))));
-  const double half = 0.5 * z.hi, w = 1.0 - half;
+template <typename Lanes>
+Lanes cos_kernel(const DoubleDouble<Lanes>& r) {
+  const DoubleDouble<Lanes> z = two_square(r.hi);
+  const Lanes c = kInvFactorial[4] + z.hi * (-kInvFactorial[6] + z.hi * (kInvFactorial[8] + z.hi * (-kInvFactorial[10] +
+                  z.hi * (kInvFactorial[12] + z.hi * (-kInvFactorial[14] + z.hi * (kInvFactorial[16] +
+                  z.hi * -kInvFactorial[18]))))));
+  const Lanes half = 0.5 * z.hi, w = 1.0 - half;
   return w + (((1.0 - w) - half) + (z.hi * z.hi * c - (0.5 * z.lo + r.hi * r.lo)));
 }
+
+/// k = round(x 2/pi) as a double: not nearbyint (the same in every rounding mode); of |x|, so that
+/// sin stays odd bit for bit.
+inline double quadrant_count(double x) { return std::copysign(std::floor(std::fabs(x) * kTwoOverPi + 0.5), x); }
+
+/// sin and cos of x = k pi/2 + r from sin r and cos r.
+inline SinCos<double> in_quadrant(double s, double c, double k) {
+  switch (static_cast<long>(k) & 3) {
+    case 0: return {s, c};
+    case 1: return {c, -s};
+    case 2: return {-s, -c};
+    default: return {-c, s};
+  }
+}
+
+/// Whether sin_cos computes x here (not the C library, not the x = 0 shortcut).
+inline bool in_kernel_range(double x) { return std::fabs(x) <= kPortableTrigMax && x != 0.0; }
 
 }  // namespace portable_trig_detail
 
@@ -112,16 +159,22 @@ inline SinCos<double> sin_cos(double x) {
   using namespace portable_trig_detail;
   if (!(std::fabs(x) <= kPortableTrigMax)) return {std::sin(x), std::cos(x)};  // also inf, NaN
   if (x == 0.0) return {x, 1.0};                                                 // keeps -0
-  // Not nearbyint: the same in every rounding mode; of |x|, so that sin stays odd bit for bit.
-  const double k = std::copysign(std::floor(std::fabs(x) * kTwoOverPi + 0.5), x);
-  const DoubleDouble r = k == 0.0 ? DoubleDouble{x, 0.0} : reduce(x, k);
-  const double s = sin_kernel(r), c = cos_kernel(r);
-  switch (static_cast<long>(k) & 3) {
-    case 0: return {s, c};
-    case 1: return {c, -s};
-    case 2: return {-s, -c};
-    default: return {-c, s};
+  const double k = quadrant_count(x);
+  const DoubleDouble<double> r = reduce(x, k);
+  return in_quadrant(sin_kernel(r), cos_kernel(r), k);
+}
+
+inline SinCosPair<double> sin_cos_pair(double x, double y) {
+  using namespace portable_trig_detail;
+#if defined(SPHTROCH_PORTABLE_TRIG_LANES)
+  if (in_kernel_range(x) && in_kernel_range(y)) {
+    const double kx = quadrant_count(x), ky = quadrant_count(y);
+    const DoubleDouble<Lanes2> r = reduce(Lanes2{x, y}, Lanes2{kx, ky});
+    const Lanes2 s = sin_kernel(r), c = cos_kernel(r);
+    return {in_quadrant(s[0], c[0], kx), in_quadrant(s[1], c[1], ky)};
   }
+#endif
+  return {sin_cos(x), sin_cos(y)};
 }
 
 }  // namespace sphtroch

@@ -292,30 +292,32 @@ inline bool validate_polyline(VertexSpan vertices, bool closed) {
   if (vertices.size() >= std::numeric_limits<std::uint32_t>::max())
     throw InvalidInput("vertices", std::to_string(vertices.size()) + " vertices", "too many vertices",
                        "fewer than 2^32 - 1");
+  // One pass over the vertices (they may be hundreds of MB): each vertex, then the edge that ends
+  // at it. A vertex's fault is reported before any edge's, the first edge's before later ones.
+  const std::size_t n = vertices.size();
+  const std::size_t no_edge = std::numeric_limits<std::size_t>::max();
+  std::size_t bad_edge = no_edge;  // the first edge e whose ends coincide or are antipodal
+  auto edge_ok = [&](std::size_t e, std::size_t h) {
+    return surely_distinct(vertices[e], vertices[h]) || relate_vertices(vertices[e], vertices[h]) == VertexRelation::distinct;
+  };
   bool all_unit = true;
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d& v = vertices[i];
     if (!finite_nonzero(v))
       throw InvalidInput("vertices", vertex_text(vertices, i), "not a finite nonzero vector",
                          "finite coordinates, not all zero (a direction from the sphere centre)");
     all_unit = all_unit && std::fabs(v.squaredNorm() - 1.0) <= kUnitNormTolerance;
+    if (i > 0 && bad_edge == no_edge && !edge_ok(i - 1, i)) bad_edge = i - 1;
   }
-  const std::size_t n = vertices.size();
-  const std::size_t edges = closed ? n : n - 1;
-  for (std::size_t e = 0; e < edges; ++e) {
-    const std::size_t h = e + 1 == n ? 0 : e + 1;
-    if (surely_distinct(vertices[e], vertices[h])) continue;
-    const VertexRelation rel = relate_vertices(vertices[e], vertices[h]);
-    if (rel == VertexRelation::distinct) continue;
-    throw InvalidInput("vertices", vertex_text(vertices, e),
-                       std::string(rel == VertexRelation::same_direction ? "the same point as" : "antipodal to") +
-                           " the next vertex (index " + std::to_string(h) + ")" +
-                           (rel == VertexRelation::same_direction && h == 0 && closed
-                                ? "; a closed polyline lists each vertex once"
-                                : ""),
-                       "consecutive vertices distinct and not antipodal (each edge a great-circle arc shorter than pi)");
-  }
-  return all_unit;
+  if (closed && bad_edge == no_edge && !edge_ok(n - 1, 0)) bad_edge = n - 1;
+  if (bad_edge == no_edge) return all_unit;
+  const std::size_t e = bad_edge, h = e + 1 == n ? 0 : e + 1;
+  const bool same = relate_vertices(vertices[e], vertices[h]) == VertexRelation::same_direction;
+  throw InvalidInput("vertices", vertex_text(vertices, e),
+                     std::string(same ? "the same point as" : "antipodal to") + " the next vertex (index " +
+                         std::to_string(h) + ")" +
+                         (same && h == 0 && closed ? "; a closed polyline lists each vertex once" : ""),
+                     "consecutive vertices distinct and not antipodal (each edge a great-circle arc shorter than pi)");
 }
 
 /// The polyline prepared for the box search: (nearly) unit vectors and the edge count. Points

@@ -273,29 +273,38 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
   if (block.size() >= 3 && block.compare(0, 3, "\xEF\xBB\xBF") == 0) block.erase(0, 3);  // UTF-8 BOM
   std::optional<CsvLayout> layout;
   std::size_t line_base = 0;
-  std::unique_ptr<char[]> chunk(new char[kBlockBytes]);
+  // The bytes not parsed yet are buffer[begin, begin + filled): reads land right after them (no
+  // copy) at a page boundary (the kernel copies faster there); only a block's unfinished last
+  // line moves, to end just before a page boundary.
+  constexpr std::size_t kPage = 4096;
+  const std::size_t capacity = std::max(2 * kBlockBytes, block.size() + kBlockBytes) + 2 * kPage;
+  std::unique_ptr<char[]> storage(new char[capacity]);
+  char* const buffer = storage.get() + (kPage - reinterpret_cast<std::uintptr_t>(storage.get()) % kPage) % kPage;
+  std::size_t begin = 0, filled = block.size();
+  std::memcpy(buffer, block.data(), filled);
   bool eof = false;
   std::uint64_t consumed = 0;
-  while (!block.empty() || !eof) {
-    if (!eof && block.size() < kBlockBytes) {
-      const std::size_t got = in.read(chunk.get(), kBlockBytes);
-      block.append(chunk.get(), got);
+  while (filled > 0 || !eof) {
+    if (!eof && filled < kBlockBytes) {
+      const std::size_t got = in.read(buffer + begin + filled, kBlockBytes);
+      filled += got;
       eof = got < kBlockBytes;
       if (!eof) continue;
     }
+    const std::string_view view(buffer + begin, filled);
     // The complete lines of the block; at the end of the input, the last line needs no '\n'.
-    std::size_t complete = block.size();
+    std::size_t complete = filled;
     if (!eof) {
-      const std::size_t nl = block.rfind('\n');
+      const std::size_t nl = view.rfind('\n');
       if (nl == std::string::npos)
         throw InvalidInput(field, path, "line " + std::to_string(line_base + 1) + " is longer than 4 MiB", kPolylineCsvValid);
       complete = nl + 1;
     }
     std::size_t start = 0;
     while (!layout && start < complete) {  // find the first non-blank line
-      const std::size_t nl = block.find('\n', start);
+      const std::size_t nl = view.find('\n', start);
       const std::size_t end = nl == std::string::npos || nl > complete ? complete : nl;
-      const std::string_view line = trim(std::string_view(block).substr(start, end - start));
+      const std::string_view line = trim(view.substr(start, end - start));
       start = end < complete ? end + 1 : complete;
       ++line_base;
       if (line.empty()) continue;
@@ -309,7 +318,7 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
       std::size_t lines = 0;
       if (timed && !layout->t)
         throw InvalidInput(field, path, "no column t (line 1 must be a header naming t, x, y, z)", kTimedPolylineValid);
-      parse_block(block.data() + start, block.data() + complete, *layout, threads, line_base, result.vertices, field,
+      parse_block(view.data() + start, view.data() + complete, *layout, threads, line_base, result.vertices, field,
                   path, lines, timed ? &result.t : nullptr);
       line_base += lines;
     }
@@ -321,8 +330,11 @@ inline void read_csv(InputFile& in, std::string block, std::size_t threads, Poly
       reserve_ahead(result.vertices, static_cast<std::size_t>(per_byte * ahead * 1.05) + 1024,
                     in.size() ? per_byte * static_cast<double>(*in.size()) * 1.05 + 1024 : 0.0);
     }
-    block.erase(0, complete);
-    if (eof && block.empty()) break;
+    filled -= complete;
+    const std::size_t to = (kPage - filled % kPage) % kPage;  // buffer + to + filled: page-aligned offset
+    std::memmove(buffer + to, buffer + begin + complete, filled);
+    begin = to;
+    if (eof && filled == 0) break;
   }
   result.format = layout && layout->header ? "csv with header" : "csv";
 }
