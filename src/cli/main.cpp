@@ -6,6 +6,10 @@
 // killed by SIGPIPE (shell status 141) when the reader of stdout goes away; 1 only for an
 // internal error (a bug).
 #include "cli_common.hpp"
+#include "png_output.hpp"
+#ifdef SPHTROCH_HAVE_STEP
+#include "step_output.hpp"
+#endif
 
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/io/output_file.hpp"
@@ -131,9 +135,11 @@ void check_no_empty_values(const CLI::App& app) {
                              " --help (leave the option out for its default)"};
 }
 
-/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|no, png yes|no)": the optional
-/// components this build has: analysis (CGAL: classify, nodes, plot, scene, synth points/fit),
-/// step (OpenCASCADE: trace -o FILE.step) and png (librsvg: plot -o FILE.png, atlas --svg FILE.png).
+/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|missing|no, png yes|missing|no)": the
+/// optional components this build has: analysis (CGAL: classify, nodes, plot, scene, synth
+/// points/fit), step (OpenCASCADE: trace -o FILE.step) and png (librsvg: plot -o FILE.png, atlas
+/// --svg FILE.png); "missing": built with it, but its plugin file is not where the tool looks
+/// (plugin_loader.hpp), so that format is refused.
 std::string version_text() {
 #ifdef SPHTROCH_HAVE_ANALYSIS
   const char* analysis = "yes";
@@ -141,15 +147,11 @@ std::string version_text() {
   const char* analysis = "no";
 #endif
 #ifdef SPHTROCH_HAVE_STEP
-  const char* step = "yes";
+  const char* step = sphtroch::cli::step_plugin_state();
 #else
   const char* step = "no";
 #endif
-#ifdef SPHTROCH_HAVE_PNG
-  const char* png = "yes";
-#else
-  const char* png = "no";
-#endif
+  const char* png = sphtroch::cli::png_plugin_state();
   return std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " + analysis + ", step " + step +
          ", png " + png + ")";
 }

@@ -8,6 +8,7 @@
 #include "sphtroch/core/errors.hpp"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -75,6 +76,15 @@ std::string plugin_directory() {
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) throw UsageError{"the tool's own path (/proc/self/exe), next to which its plugins lie, cannot be read: " + ec.message()};
   return (exe.parent_path() / SPHTROCH_PLUGIN_DIR).lexically_normal().string();
+}
+
+const char* output_plugin_state(const OutputPlugin& plugin) noexcept {
+  try {
+    const std::string path = plugin_directory() + "/" + plugin.file;
+    return ::access(path.c_str(), R_OK) == 0 ? "yes" : "missing";
+  } catch (...) {  // the executable's path unreadable, or out of memory
+    return "missing";
+  }
 }
 
 void require_output_plugin(const OutputPlugin& plugin, const std::string& output) { (void)open_plugin(plugin, output); }

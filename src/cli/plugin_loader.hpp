@@ -3,7 +3,10 @@
 // The plugins live in plugin_directory(): the executable's own directory (/proc/self/exe) joined
 // with SPHTROCH_PLUGIN_DIR, a relative path fixed at configure time, the same in the build tree
 // (<build>/bin/sphtroch, <build>/lib/sphtroch/) and the install tree (<prefix>/bin/sphtroch,
-// <prefix>/<libdir>/sphtroch/), so that an installed tree can be moved as a whole.
+// <prefix>/<libdir>/sphtroch/), so that an installed tree can be moved as a whole. The install
+// directories must be relative to the prefix (src/cli/CMakeLists.txt refuses absolute ones). A tool
+// started through the dynamic loader (`ld.so ./sphtroch`) sees the loader as /proc/self/exe: its
+// plugins are then not found and STEP and PNG are refused (one line, exit 2).
 #pragma once
 
 #include <string>
@@ -30,6 +33,10 @@ std::string plugin_directory();
 /// std::bad_alloc if it ran out of memory; std::runtime_error with its message for any other
 /// failure. Thread-safe.
 std::string run_output_plugin(const OutputPlugin& plugin, const std::string& output, const std::string& request);
+
+/// "yes" when `plugin`'s file is in plugin_directory() and readable (not opened: cheap), else
+/// "missing"; for `sphtroch --version`.
+const char* output_plugin_state(const OutputPlugin& plugin) noexcept;
 
 /// Opens `plugin` now (as run_output_plugin does at first use), so that a command refuses a
 /// missing or broken plugin before its work. Throws as run_output_plugin's opening does.

@@ -34,6 +34,14 @@ bool names_png(const std::string& path) {
   return tail == ".png";
 }
 
+const char* png_plugin_state() noexcept {
+#if defined(SPHTROCH_HAVE_PNG)
+  return output_plugin_state(kPngPlugin);
+#else
+  return "no";
+#endif
+}
+
 void require_png_writer(const std::string& path, const std::string& field) {
 #if defined(SPHTROCH_HAVE_PNG)
   if (names_png(path)) require_output_plugin(kPngPlugin, "--" + field + " = " + path);

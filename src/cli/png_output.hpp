@@ -10,6 +10,10 @@ namespace sphtroch::cli {
 /// Whether `path` ends in .png (any case).
 bool names_png(const std::string& path);
 
+/// For --version: "yes" (a build with PNG, the plugin file present), "missing" (with PNG, the
+/// file absent), "no" (a build without PNG).
+const char* png_plugin_state() noexcept;
+
 /// Opens the PNG plugin now when `path` ends in .png (a build with PNG), so that a missing plugin
 /// is refused before the work: UsageError "--<field> = <path>: PNG is written by the plugin ...".
 void require_png_writer(const std::string& path, const std::string& field);

@@ -21,6 +21,8 @@ constexpr OutputPlugin kStepPlugin{"sphtroch_step.so", "STEP", "OpenCASCADE",
 
 }  // namespace
 
+const char* step_plugin_state() noexcept { return output_plugin_state(kStepPlugin); }
+
 double parse_tolerance(const std::string& text) {
   const std::optional<double> t = parse_number(text);
   if (!t || !(*t > 0) || !std::isfinite(*t))

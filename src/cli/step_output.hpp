@@ -19,6 +19,9 @@ struct StepOutputOptions {
 /// --tolerance T: a finite number > 0 (checked against the radius by step_path).
 double parse_tolerance(const std::string& text);
 
+/// For --version, in a build with STEP: "yes" (the plugin file present) or "missing".
+const char* step_plugin_state() noexcept;
+
 /// The path as STEP to `output` ("" or "-": stdout), through OutputFile (never left partial).
 /// Throws UsageError if the STEP plugin cannot be opened, and InvalidInput (radius, tolerance,
 /// turns, n) for what check_step_options refuses, both before the output is opened.

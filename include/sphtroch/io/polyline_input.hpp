@@ -436,7 +436,9 @@ inline void read_npy(InputFile& in, std::string block, PolylineInput& result, bo
 }  // namespace polyline_input_detail
 
 /// Reads a polyline from `path` ("-": standard input), CSV or .npy by its first bytes. Throws
-/// InvalidInput(field, path, ...) for anything it cannot read (see the top of this header).
+/// InvalidInput(field, path, ...) for anything it cannot read (see the top of this header). An
+/// input with no rows (empty, blank lines only, a header only, shape (0, 3)) gives no vertices:
+/// too few vertices is the caller's refusal (validate_spherical_polyline).
 inline PolylineInput read_polyline(const std::string& path, const std::string& field = "input", std::size_t threads = 2) {
   namespace d = polyline_input_detail;
   InputFile in = InputFile::open(path, field);
@@ -450,8 +452,9 @@ inline PolylineInput read_polyline(const std::string& path, const std::string& f
 
 /// A timed polyline: the vertices and their carrier angles t, from a CSV whose header names t, x,
 /// y, z (what `sphtroch trace` writes) or a .npy array (N, 4) / (N, 7) (column 0 is t). Throws
-/// InvalidInput(field, path, ...) as read_polyline does, and when there is no column t; a t that
-/// is not a finite number is refused with its line. Finite, increasing t is the caller's check.
+/// InvalidInput(field, path, ...) as read_polyline does, and when there is no column t; in a CSV
+/// a t that is not a finite number is refused with its line, in a .npy t is not checked here.
+/// Finite, increasing t is the caller's check (identify names the first t that is not).
 inline PolylineInput read_timed_polyline(const std::string& path, const std::string& field = "input",
                                          std::size_t threads = 2) {
   namespace d = polyline_input_detail;
