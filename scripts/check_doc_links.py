@@ -11,7 +11,7 @@ Scans README.md, docs/*.md and every tracked source file under include/, src/, p
     path from the repository root or from include/ (sphtroch/core/types.hpp); a bare name must be
     some tracked file's name.
 Names of other projects' files (Eigen/, CGAL/, pybind11/, nlohmann/, catch2/, s2/ ...) and the
-README's table of moved headers (between the markers "moved-headers" and "end moved-headers",
+CHANGELOG's table of moved headers, if scanned (between the markers "moved-headers" and "end moved-headers",
 whose left column names files that no longer exist) are skipped.
 """
 import pathlib

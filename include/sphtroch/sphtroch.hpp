@@ -1,10 +1,12 @@
 // sphtroch/sphtroch.hpp — umbrella header: every header the linked CMake components provide, by layer.
 //   sphtroch::sphtroch (Eigen only): core/ (the train, the curve, sampling), io/ (numbers, parsing,
 //     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
-//     criteria, the root function, the boundary events), census/ (the root census), atlas/.
+//     criteria, the root function, the boundary events), census/ (the root census), atlas/,
+//     synthesis/ (identify, path distance, path fit).
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT): adds exact/: the
 //     exact crossing search, the polyline census, classify(), the lazy Analysis, the classification
-//     output (text/JSON) and scenes.
+//     output (text/JSON), scenes, and the certified inverse design (box search, precision points,
+//     free axis).
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (core/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
@@ -19,17 +21,21 @@
 #include "sphtroch/version.hpp"
 
 #include "sphtroch/core/arc_crossing_point.hpp"
+#include "sphtroch/core/cone_distance.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/parameters.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/reading.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/core/work.hpp"
 
@@ -78,8 +84,11 @@
 #if !defined(SPHTROCH_SEPARATE_EXACT)
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/arc_predicates.hpp"
+#include "sphtroch/exact/box_search.hpp"
 #include "sphtroch/exact/certified_census.hpp"
+#include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"
+#include "sphtroch/exact/free_axis_points.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/exact/precision_points.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"

@@ -1,5 +1,5 @@
 // python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
-// the argument converters (arguments.cpp), the exception classes (errors.cpp) and one bind_*
+// the argument converters (arguments.cpp), the exception classes (bind_errors.cpp) and one bind_*
 // function per topic (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp), called by
 // module.cpp.
 // The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
@@ -41,7 +41,7 @@ namespace py = pybind11;
 /// stub and the bindings cannot drift apart).
 const char* doc(const char* name);
 
-// --- errors.cpp ---------------------------------------------------------------------------
+// --- bind_errors.cpp -----------------------------------------------------------------------
 /// sphtroch.InvalidInput (a ValueError) and sphtroch.UncertifiedResult (a RuntimeError), with the
 /// translator that raises the first for the library's InvalidInput.
 void bind_errors(py::module_& m);

@@ -1,4 +1,4 @@
-// python/src/errors.cpp — sphtroch.InvalidInput and sphtroch.UncertifiedResult (bindings.hpp).
+// python/src/bind_errors.cpp — sphtroch.InvalidInput and sphtroch.UncertifiedResult (bindings.hpp).
 #include "bindings.hpp"
 
 #include "sphtroch/core/errors.hpp"
