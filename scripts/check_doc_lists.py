@@ -54,7 +54,7 @@ def check_guarded(root, library, problems):
         problems.append("docs/library.md: no guarded-headers list (<!-- guarded-headers --> ... <!-- end guarded-headers -->)")
         return
     listed = {}
-    # "`a.hpp`, `b.hpp` (`sphtroch::exact`); `c.hpp` (`sphtroch::mpfr`)": each group's target.
+    # Groups separated by ";", each a list of backquoted header paths and then its target in parentheses.
     for group in m.group(1).split(";"):
         target = re.search(r"\(`(sphtroch::\w+)`\)", group)
         for header in re.findall(r"`([\w/]+\.hpp)`", group):
