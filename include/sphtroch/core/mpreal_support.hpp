@@ -8,7 +8,7 @@
 // per thread (Debian's MPFR is built thread-safe: the default lives in thread-local storage). A
 // new thread starts at 53 bits, so a worker that does not set it computes "mpreal" results that
 // are only double-accurate. Set it explicitly in every thread that evaluates mpfr_real, with
-// MpfrPrecision (tested in tests/test_scalar_types.cpp, from a second thread). MPFR also keeps
+// MpfrPrecision (tested in tests/core/test_scalar_types.cpp, from a second thread). MPFR also keeps
 // per-thread caches (constants such as pi): a thread should call mpfr_free_cache() before it
 // ends, or LeakSanitizer reports them.
 //

@@ -16,7 +16,7 @@
 // emscripten's libc++, the explorer's WebAssembly build) the same texts come from
 // detail::shortest_text and detail::read_decimal (snprintf/strtod in the "C" locale, digit
 // counts tried upward): byte-identical to std::to_chars / std::from_chars, tested against them
-// natively on random and extreme doubles (tests/test_io.cpp).
+// natively on random and extreme doubles (tests/io/test_io.cpp).
 #pragma once
 
 #include <algorithm>

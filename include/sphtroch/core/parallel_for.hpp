@@ -37,7 +37,7 @@ using ParallelProgress = std::function<void(std::size_t done, std::size_t total)
 
 #if defined(SPHTROCH_PARALLEL_FAULT_INJECTION)
 namespace parallel_detail {
-/// Test seam (tests/test_parallel_for.cpp only): the body of this index throws instead of running.
+/// Test seam (tests/core/test_parallel_for.cpp only): the body of this index throws instead of running.
 inline std::atomic<std::size_t> fault_index{static_cast<std::size_t>(-1)};
 }  // namespace parallel_detail
 #endif

@@ -12,7 +12,7 @@
 // and cos r through r^17 and r^18 (truncation < 2^-62 relative for |r| <= pi/4 + 2^-30), with
 // r's low part and the rounding of r^2 carried as corrections, and the quadrant k mod 4.
 // Error: below one ulp (faithful: the result is the correctly rounded value or its neighbour);
-// tests/test_portable_trig.cpp checks that against MPFR on 10^6 arguments of every scale and
+// tests/core/test_portable_trig.cpp checks that against MPFR on 10^6 arguments of every scale and
 // on the doubles nearest k pi/2 and k pi/4. Identical bits need IEEE double arithmetic in
 // round-to-nearest without FMA contraction (-ffp-contract=off: the project's flags; WebAssembly
 // has neither other modes nor contraction); in another rounding mode the result is within a few

@@ -25,7 +25,7 @@
 // Several outputs that must appear together: commit_together() (all or none; see there).
 // Not thread-safe: one OutputFile per thread.
 // Tests: compiled with SPHTROCH_OUTPUT_FAULT_INJECTION, detail::output_fault_hook makes any system
-// call or allocation of the writer fail (tests/test_io.cpp checks that nothing partial is left).
+// call or allocation of the writer fail (tests/io/test_io.cpp checks that nothing partial is left).
 #pragma once
 
 #include <fcntl.h>

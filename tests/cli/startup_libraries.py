@@ -3,7 +3,7 @@
 librsvg, cairo or an output plugin; checks that STEP and PNG still load them, and that a missing
 plugin is one line, exit 2, no file.
 
-  python3 tests/startup_libraries.py SPHTROCH_EXE WORK_DIR
+  python3 tests/cli/startup_libraries.py SPHTROCH_EXE WORK_DIR
 
 Every shared library a process loads (at start and through dlopen) is read from the dynamic
 loader's own log (LD_DEBUG=libs, LD_DEBUG_OUTPUT: glibc's ld.so writes one file per process). The
@@ -78,6 +78,7 @@ def missing_plugin(args, cwd, output, plugin):
 os.makedirs(WORK, exist_ok=True)
 with tempfile.TemporaryDirectory(dir=WORK) as d:
     version = no_heavy_libraries(["--version"], d).stdout
+    check("missing" not in version, f"--version of the built tool names a missing plugin: {version.strip()}")
     no_heavy_libraries(["trace", *TRAIN, "--samples", "10"], d)
     no_heavy_libraries(["trace", *TRAIN, "--samples", "10", "-o", "p.dxf"], d)
     no_heavy_libraries(["atlas", "--n", "2", "--grid", "4", "--svg", "a.svg"], d)

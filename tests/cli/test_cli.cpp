@@ -126,7 +126,7 @@ TEST_CASE("cli: trace --kinematics adds speed, geodesic curvature, tangential ac
     const double v[3] = {row[4], row[5], row[6]};
     // speed = |omega x P| (Eq. 47a), here from the printed velocity columns.
     CHECK(std::abs(row[7] - std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])) <= 1e-15 * (1 + n));
-    // The columns are the library's kinematics at the printed t (tests/test_kinematics.cpp checks
+    // The columns are the library's kinematics at the printed t (tests/core/test_kinematics.cpp checks
     // those against MPFR finite differences).
     const sphtroch::PathKinematics k = sphtroch::path_kinematics(curve, t);
     CHECK(row[7] == k.speed);
