@@ -37,6 +37,24 @@ run_all() {
   "$exe" boundaries --n -5/2 --a2 0.2:3 --steps 60 >"$d/loci.csv" 2>&1 || true
   "$exe" trace --n 5/2 --a2 pi/3 --a3 pi/2 --samples 4000 -o "$d/t.csv" >/dev/null 2>&1 || true
   "$exe" crossings "$d/t.csv" >"$d/crossings.txt" 2>&1 || true
+  # Inverse design: identify, precision points (fixed frame, teeth, free axis, shards merged), fit
+  # (text, JSON, shards merged).
+  "$exe" trace --n -7/3 --a2 0.5 --a3 2.5 --phase 1 --turns 3 >"$d/timed.csv" 2>/dev/null || true
+  "$exe" synth identify --input "$d/timed.csv" >"$d/identify.txt" 2>&1 || true
+  "$exe" trace --n 1/2 --a2 1 --a3 2 --phase 0.3 --samples 40 2>/dev/null | sed -n '3p;12p;30p' | cut -d, -f2-4 \
+    | (echo x,y,z; cat) >"$d/pts3.csv"
+  "$exe" synth points --input "$d/pts3.csv" --n 1/2 >"$d/points.txt" 2>&1 || true
+  "$exe" synth points --input "$d/pts3.csv" --teeth 12:24 --json >"$d/points_teeth.json" 2>&1 || true
+  for k in 1 2; do "$exe" synth points --input "$d/pts3.csv" --ratios 2,2 --shard "$k/2" --json -o "$d/pp$k.json" >/dev/null 2>&1 || true; done
+  "$exe" synth merge "$d/pp2.json" "$d/pp1.json" >"$d/points_merged.json" 2>&1 || true
+  "$exe" trace --n 1 --a2 1.2 --a3 0.8 --phase 0.5 --samples 50 2>/dev/null | sed -n '3p;11p;20p;34p;45p' \
+    | awk -F, '{print $3","$4","$2}' | (echo x,y,z; cat) >"$d/pts5.csv"
+  "$exe" synth points --input "$d/pts5.csv" --n 1 --free-axis >"$d/free_axis.txt" 2>&1 || true
+  "$exe" trace --n 2 --a2 1.1 --a3 0.9 --phase 0.4 --samples 300 2>/dev/null | cut -d, -f2-4 >"$d/path.csv"
+  "$exe" synth fit --input "$d/path.csv" --n 2 --nodes 4 --candidates 3 >"$d/fit.txt" 2>&1 || true
+  "$exe" synth fit --input "$d/path.csv" --n 2 --json >"$d/fit.json" 2>&1 || true
+  for k in 1 2; do "$exe" synth fit --input "$d/path.csv" --ratios 2,1 --shard "$k/2" --json -o "$d/pf$k.json" >/dev/null 2>&1 || true; done
+  "$exe" synth merge "$d/pf1.json" "$d/pf2.json" >"$d/fit_merged.json" 2>&1 || true
   # Refusals: the one stderr line and the status of each.
   local k=0
   for args in "classify --n 0 --a2 1 --a3 1" "classify --n 2 --a2 4 --a3 1" "trace --n 2 --a2 1 --a3 1 --turns 2e6" \
