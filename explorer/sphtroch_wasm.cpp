@@ -7,6 +7,7 @@
 // field, the value, the valid range), and the page shows that line instead of any number.
 // Nothing here starts a thread.
 #include "sphtroch/census/root_classification.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
@@ -17,7 +18,7 @@
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
-#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <emscripten/bind.h>
@@ -25,7 +26,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -193,7 +193,7 @@ val trace(const std::string& a2, const std::string& a3, const std::string& n, co
 val events(const std::string& a2, const std::string& n, const std::string& teeth) {
   return guarded([&] {
     const double a2v = sphtroch::parse_angle(a2, "a2");
-    const Ratio ratio = train_text(a2, "1", n, "0", teeth).ratio();
+    const Ratio ratio = sphtroch::ratio_of(n, teeth);
     const sphtroch::BoundarySet set = sphtroch::boundary_set(a2v, ratio);
     val list = val::array();
     for (const sphtroch::BoundaryEvent& e : set.events) {
@@ -230,7 +230,7 @@ std::int32_t cell_count(double a2, double a3, const Ratio& ratio) {
 val map_counts(const std::string& n, const std::string& teeth, double a2_lo, double a2_hi, double a3_lo,
                double a3_hi, double nx, double ny) {
   return guarded([&] {
-    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    const Ratio ratio = sphtroch::ratio_of(n, teeth);
     if (!(nx >= 1 && ny >= 1 && nx * ny <= 1 << 22))
       throw sphtroch::InvalidInput("map", sphtroch::number_text(nx) + "x" + sphtroch::number_text(ny),
                                    "outside the valid range", "1 .. 4194304 cells");
@@ -252,7 +252,7 @@ val map_counts(const std::string& n, const std::string& teeth, double a2_lo, dou
 /// {kind, name, points: Float64Array a2 a3 a2 a3 ...}. One thread (no thread is started).
 val loci(const std::string& n, const std::string& teeth, double steps) {
   return guarded([&] {
-    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    const Ratio ratio = sphtroch::ratio_of(n, teeth);
     if (!(steps >= 1 && steps <= static_cast<double>(sphtroch::kMaxLocusSteps) && steps == std::floor(steps)))
       throw sphtroch::InvalidInput("steps", sphtroch::number_text(steps), "outside the valid range", "integer 1 .. 10000");
     const double pi = sphtroch::Constants<double>::pi();
@@ -293,16 +293,11 @@ constexpr double kPageFitWork = 2e6;
 /// classifies it as any state (its count check). {candidates: [], reason} when none can be.
 val fit(const std::string& points, const std::string& n, const std::string& teeth, const std::string& nodes) {
   return guarded([&] {
-    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    const Ratio ratio = sphtroch::ratio_of(n, teeth);
     sphtroch::FitOptions options;
     if (!nodes.empty()) {
-      // As `sphtroch synth fit --nodes` reads it (src/cli: parse_count).
-      const std::string range = "integer 0 .. 100000000";
-      if (nodes.find_first_not_of("0123456789") != std::string::npos)
-        throw sphtroch::InvalidInput("nodes", nodes, "not a whole number", range);
-      errno = 0;
-      const unsigned long long k = std::strtoull(nodes.c_str(), nullptr, 10);
-      if (errno == ERANGE || k > 100000000) throw sphtroch::InvalidInput("nodes", nodes, "outside the valid range", range);
+      // As `sphtroch synth fit --nodes` reads it.
+      const std::size_t k = sphtroch::parse_count(nodes, "nodes", 0, sphtroch::kMaxWantedCount);
       options.nodes = static_cast<std::int64_t>(k);
     }
     const std::vector<sphtroch::Vector3d> path = read_page_points(points);
@@ -337,13 +332,13 @@ constexpr double kPagePointsWork = 400;
 constexpr std::size_t kPagePointsBoxes = 1000000;
 
 /// Every train of ratio n (or teeth) whose tracer passes through three points (the text of
-/// `sphtroch synth points --input`), fixed frame, certified as exact/precision_points.hpp says
+/// `sphtroch synth points --input`), fixed frame, certified as synthesis/interval/precision_points.hpp says
 /// (the module's intervals: CGAL_ALWAYS_ROUND_TO_NEAREST, see explorer/CMakeLists.txt).
 /// {solutions: [{n, a2, a3, phase, params, residual, isolated}], certified, undecided, boxes,
 /// boxLimit}; the page classifies each solution as any state.
 val points(const std::string& text, const std::string& n, const std::string& teeth) {
   return guarded([&] {
-    const Ratio ratio = train_text("1", "1", n, "0", teeth).ratio();
+    const Ratio ratio = sphtroch::ratio_of(n, teeth);
     const double size = static_cast<double>(ratio.abs_p()) + static_cast<double>(ratio.q());
     if (size * size > kPagePointsWork)
       throw sphtroch::InvalidInput(teeth.empty() ? "n" : "teeth", teeth.empty() ? n : teeth,

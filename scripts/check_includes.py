@@ -2,9 +2,12 @@
 """Checks the include graph of include/sphtroch (CI runs it; exit 1 on a violation).
 
 0. Folders are layers (docs/design.md, "Layers"): a header in folder F may include only headers
-   of the folders LAYERS[F] allows; the entry headers at the top may include anything. CGAL and
-   nlohmann-json are included only under exact/, OpenCASCADE only under cad/ (the folder says
-   what a header costs).
+   of the folders LAYERS[F] allows; the entry headers at the top may include anything. A layer
+   may have sub-layers, one folder deeper (synthesis/interval/): a header's layer is its folder
+   path, and a sub-layer names what it may include like any other layer (its parent included).
+   CGAL and nlohmann-json are included only under exact/, except CGAL's interval type (CGAL
+   headers only) under synthesis/interval/; OpenCASCADE only under cad/ (the folder says what a
+   header costs).
 
 1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
    runs back up; each one found is printed with its path.
@@ -29,13 +32,16 @@ LAYERS = {
     "draw": ["core", "io"],                       # SVG
     "map": ["core", "io"],                        # closed-form boundaries, criteria, g(b), events
     "census": ["core", "io", "map"],              # refinement, node assembly, the root census
-    "exact": ["core", "io", "draw", "map", "census", "synthesis"],  # CGAL: crossings, classify, scenes, certified synthesis
+    "exact": ["core", "io", "draw", "map", "census", "synthesis", "synthesis/interval"],  # CGAL: crossings, classify, scenes, synthesis reports
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
     "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
+    "synthesis/interval": ["core", "io", "map", "census", "synthesis"],  # its certified part: CGAL's intervals
     "cad": ["core", "io"],                        # OpenCASCADE: the path as a STEP B-spline
 }
 TOP_LEVEL_MAX = 8
 HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
+# What synthesis/interval/ may include of CGAL: the interval number type (headers only, no GMP).
+INTERVAL_ONLY = re.compile(r'^\s*#\s*include\s+<(?!CGAL/Interval_nt\.h>)(CGAL|nlohmann)/', re.M)
 OPENCASCADE = re.compile(r'^\s*#\s*include\s+<\w+\.hxx>', re.M)
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
@@ -49,7 +55,8 @@ problems = []
 
 
 def folder(h):
-    return h.split("/")[0] if "/" in h else ""
+    """The header's layer: its folder path below include/sphtroch ("" at the top)."""
+    return h.rsplit("/", 1)[0] if "/" in h else ""
 
 
 # 0. Folder rules.
@@ -65,8 +72,11 @@ for h in headers:
         if f and folder(d) != f and folder(d) not in LAYERS[f]:
             problems.append(f"{h}: includes sphtroch/{d}, but {f}/ may include only "
                             + ", ".join(x + "/" for x in [f] + LAYERS[f]))
-    if f != "exact" and f and HEAVY.search(text[h]):
-        problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/")
+    if f == "synthesis/interval":
+        if INTERVAL_ONLY.search(text[h]):
+            problems.append(f"{h}: includes more of CGAL than <CGAL/Interval_nt.h>, or nlohmann-json")
+    elif f != "exact" and f and HEAVY.search(text[h]):
+        problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/ (and CGAL's intervals outside synthesis/interval/)")
     if f != "cad" and OPENCASCADE.search(text[h]):
         problems.append(f"{h}: includes OpenCASCADE outside cad/")
 

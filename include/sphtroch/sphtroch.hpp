@@ -3,14 +3,16 @@
 //     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit).
-//   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT): adds exact/: the
-//     exact crossing search, the polyline census, classify(), the lazy Analysis, the classification
-//     output (text/JSON), scenes, and the certified inverse design (box search, precision points,
-//     free axis).
+//   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds synthesis/interval/:
+//     interval arithmetic, certified root isolation, precision points (fixed frame, free axis).
+//   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
+//     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
+//     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
+//     inverse design (each train confirmed by classify()).
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (core/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
-// classify()'s declaration and its result types (exact/classification.hpp) and parses no CGAL
+// classify()'s declaration and its result types (exact/classification.hpp), no synthesis/interval/, and parses no CGAL
 // header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
 #pragma once
 
@@ -46,6 +48,7 @@
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
+#include "sphtroch/io/ratio_set.hpp"
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/train_text.hpp"
 
@@ -58,6 +61,7 @@
 #include "sphtroch/map/closed_form_boundaries.hpp"
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/map/map_cells.hpp"
 #include "sphtroch/map/root_function.hpp"
 
 #include "sphtroch/census/node_assembly.hpp"
@@ -79,21 +83,24 @@
 #include "sphtroch/synthesis/path_fit.hpp"
 #include "sphtroch/atlas/atlas_slices.hpp"
 
+#if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
+#include "sphtroch/synthesis/interval/free_axis_points.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
+#include "sphtroch/synthesis/interval/precision_points.hpp"
+#include "sphtroch/synthesis/interval/root_isolation.hpp"
+#endif
+
 #if defined(SPHTROCH_HAVE_EXACT)
 #include "sphtroch/classify.hpp"
 #if !defined(SPHTROCH_SEPARATE_EXACT)
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/arc_predicates.hpp"
-#include "sphtroch/exact/box_search.hpp"
 #include "sphtroch/exact/certified_census.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"
-#include "sphtroch/exact/free_axis_points.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
-#include "sphtroch/exact/precision_points.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
-#include "sphtroch/exact/interval_trig.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 #endif

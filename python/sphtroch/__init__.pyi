@@ -293,7 +293,7 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
 def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
                  ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None,
                  free_axis: Flag = False, threads: Optional[Count] = None) -> Dict[str, Any]:
-    """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`, P, Q <= 7;
+    """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`;
     or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
     as `--teeth`, each solution then echoing its "teeth")
     whose tracer passes through the three points (a (3, 3) array of
@@ -311,7 +311,7 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
         ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
         cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
         node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> Dict[str, Any]:
-    """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), P, Q <= 7; or teeth="ZS:ZP"
+    """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`; or teeth="ZS:ZP"
     or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),
     as `sphtroch synth fit --json`: {"candidates": [{"n", "a2", "a3", "phase", "rms",

@@ -1,6 +1,6 @@
 // python/src/bind_synthesis.cpp — the inverse question (bindings.hpp): sphtroch.identify(t, P), the
 // train of a timed trace (synthesis/identify.hpp), sphtroch.synth_points(P, n=...), every train
-// through three points (exact/precision_points.hpp), and sphtroch.fit(P, n=..., nodes=..., cusps=...),
+// through three points (synthesis/interval/precision_points.hpp), and sphtroch.fit(P, n=..., nodes=..., cusps=...),
 // ranked trains nearest a path (synthesis/path_fit.hpp); NumPy in, a dict out, the GIL released.
 #include "bindings.hpp"
 #include "exact_calls.hpp"
@@ -9,6 +9,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/ratio_set.hpp"
 #include "sphtroch/synthesis/identify.hpp"
 
 #include <pybind11/numpy.h>
@@ -61,52 +62,26 @@ py::dict identify_dict(py::handle t, py::handle points) {
 /// The (N, 3) points of a synthesis call.
 std::vector<Vector3d> points_arg(py::handle points, const char* valid) { return rows_arg(points, "points", valid); }
 
-/// Bound on the sum over the ratios of (|p| + q)^2: the CLI's work bound (synth points / fit),
-/// and that of synth points --free-axis.
-constexpr double kMaxRatioWork = 20000;
-constexpr double kMaxFreeAxisWork = 500;
-
-/// Refuses (InvalidInput `field`) a set of ratios beyond the CLI's work bound `max_work`.
-void check_ratio_work(const std::vector<Ratio>& set, const char* field, const std::string& value,
-                      double max_work = kMaxRatioWork) {
-  double work = 0;
-  for (const Ratio& k : set) work += double(k.abs_p() + k.q()) * double(k.abs_p() + k.q());
-  if (work > max_work)
-    throw InvalidInput(field, value, "estimated work " + number_text(work) + " over the bound",
-                       "sum over the ratios of (|p| + q)^2 <= " + number_text(max_work) +
-                           " (the CLI's bound; ratios=(7, 7) is 4832)");
-}
-
-/// The ratios of n=R, teeth="ZS:ZP" | "MIN..MAX" (the CLI's --teeth) or ratios=(P, Q) (P, Q <= 7),
-/// within the CLI's work bound; sets `fields` (the JSON members naming a set) and `teeth` (what
-/// is echoed).
-std::vector<Ratio> ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, std::string& fields, TeethSpec& teeth) {
+/// The ratios of n=R, teeth="ZS:ZP" | "MIN..MAX" or ratios=(P, Q), read as the CLI reads --n,
+/// --teeth and --ratios (io/ratio_set.hpp), within the work bound `max_work` (core/cost_bounds.hpp).
+RatioSet ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, double max_work) {
   if (int(!n.is_none()) + int(!ratios.is_none()) + int(!teeth_text.is_none()) != 1) {
     const bool by_teeth = !teeth_text.is_none();
     throw InvalidInput(by_teeth ? "teeth" : "n", repr_of(by_teeth ? teeth_text : n), "give exactly one of n, teeth and ratios",
                        "n=R, teeth='ZS:ZP' or 'MIN..MAX', or ratios=(P, Q) as `--ratios P,Q`");
   }
-  std::vector<Ratio> set;
+  RatioRequestText request;
   if (!n.is_none()) {
-    set = {ratio_arg(n)};
-    check_ratio_work(set, "n", set[0].str());
+    request.n = ratio_arg(n).str();
   } else if (!teeth_text.is_none()) {
-    const std::string text = text_arg(teeth_text, "teeth", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
-    if (text.find("..") == std::string::npos) {
-      teeth.pair = parse_teeth(text, "teeth");
-      fields = "\"teeth\": \"" + teeth.pair->str() + "\", ";
-      set = {teeth.pair->ratio()};
-    } else {
-      teeth.range = parse_tooth_range(text, "teeth");
-      fields = "\"teeth\": \"" + teeth.range->str() + "\", ";
-      set = ratio_set(*teeth.range);
-    }
-    check_ratio_work(set, "teeth", text);
+    request.teeth = text_arg(teeth_text, "teeth", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
   } else {
-    const auto bounds = count_pair_arg(ratios, "ratios", 1, 7);  // 7: the CLI's work bound
-    fields = "\"ratios\": \"" + std::to_string(bounds.first) + "," + std::to_string(bounds.second) + "\", ";
-    set = ratio_set(static_cast<std::int64_t>(bounds.first), static_cast<std::int64_t>(bounds.second));
+    const auto bounds = count_pair_arg(ratios, "ratios", 1, 1000);
+    request.ratios = std::to_string(bounds.first) + "," + std::to_string(bounds.second);
   }
+  const RatioSet set = parse_ratio_set(request);
+  const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
+  check_ratio_work(set, field, ratios.is_none() ? request.n + request.teeth : repr_of(ratios), max_work);
   return set;
 }
 
@@ -117,15 +92,11 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
   const bool free_axis = flag_arg(free_axis_flag, "free_axis");
   const std::vector<Vector3d> p =
       points_arg(points, free_axis ? "a (5, 3) array of unit vectors x, y, z" : "a (3, 3) array of unit vectors x, y, z");
-  std::string fields;
-  TeethSpec teeth;
-  const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
-  const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
-  const std::string given = repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text);
-  if (free_axis)
-    check_ratio_work(set, field, given, kMaxFreeAxisWork);
-  else
-    check_points_census_work(set, field, given);
+  const RatioSet request = ratios_arg(n, ratios, teeth_text, free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
+  if (!free_axis) {
+    const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
+    check_points_census_work(request.ratios, field, repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text));
+  }
   std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
   if (!threads.is_none()) {
     if (!free_axis)
@@ -135,7 +106,7 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
   std::string json;
   {
     py::gil_scoped_release release;
-    json = precision_points_json_text(p, set, fields, teeth, free_axis, workers);
+    json = precision_points_json_text(p, request.ratios, request.json_members(), request.teeth, free_axis, workers);
   }
   return py::module_::import("json").attr("loads")(json);
 }
@@ -145,16 +116,13 @@ py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
                py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance) {
   const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
-  std::string fields;
-  TeethSpec teeth;
-  const std::vector<Ratio> set = ratios_arg(n, ratios, teeth_text, fields, teeth);
+  const RatioSet request = ratios_arg(n, ratios, teeth_text, kMaxFitWork);
   FitOptions o;
-  constexpr std::size_t kAnyCount = static_cast<std::size_t>(std::numeric_limits<std::int64_t>::max());
   const auto count = [](const std::optional<std::size_t>& k) {
     return k ? std::optional<std::int64_t>(static_cast<std::int64_t>(*k)) : std::nullopt;
   };
-  o.nodes = count(optional_count_arg(nodes, "nodes", 0, kAnyCount));
-  o.cusps = count(optional_count_arg(cusps, "cusps", 0, kAnyCount));
+  o.nodes = count(optional_count_arg(nodes, "nodes", 0, kMaxWantedCount));
+  o.cusps = count(optional_count_arg(cusps, "cusps", 0, kMaxWantedCount));
   o.max_candidates = count_arg(candidates, "candidates", 1, 1000);  // the CLI's --candidates
   o.max_deviation = real_arg(max_deviation, "max-deviation", "radians > 0");
   if (!node_at.is_none()) {
@@ -170,7 +138,7 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
   std::string json;
   {
     py::gil_scoped_release release;
-    json = fit_json_text(p, set, o, fields, teeth);
+    json = fit_json_text(p, request.ratios, o, request.json_members(), request.teeth);
   }
   return py::module_::import("json").attr("loads")(json);
 }

@@ -20,7 +20,7 @@ struct BoundariesOptions {
 const char* const kA2Forms = "one angle in (0, pi) (1.2, pi/2, 90deg) for the events, or LO:HI with 0 <= LO < HI <= pi for the curves";
 
 void run_boundaries(const BoundariesOptions& o) {
-  const Ratio n = TrainText{"", "", o.n, "0", o.teeth}.ratio();  // --n, or --teeth ZS:ZP
+  const Ratio n = ratio_of(o.n, o.teeth);  // --n, or --teeth ZS:ZP
   const auto colon = o.a2.find(':');
   if (colon == std::string::npos) {  // one a2: the events
     if (!o.steps.empty())

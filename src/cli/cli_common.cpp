@@ -65,31 +65,6 @@ std::size_t parse_threads(const std::string& text) {
   return std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxThreads);
 }
 
-std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
-  const std::string range = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) {
-    const bool negative = text.size() > 1 && text[0] == '-' && text.find_first_not_of("0123456789", 1) == std::string::npos &&
-                          text.find_first_not_of('0', 1) != std::string::npos;  // (-0 is not below 0)
-    throw InvalidInput(field, text, negative ? "outside the valid range" : "not a whole number", range);
-  }
-  errno = 0;
-  const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
-  if (errno == ERANGE || v < lo || v > hi) throw InvalidInput(field, text, "outside the valid range", range);
-  return static_cast<std::size_t>(v);
-}
-
-std::pair<std::size_t, std::size_t> parse_count_pair(const std::string& text, const std::string& field, std::size_t lo,
-                                                     std::size_t hi, const std::string& valid) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
-    throw InvalidInput(field, text, "not two counts P,Q", valid);
-  try {
-    return {parse_count(text.substr(0, comma), field, lo, hi), parse_count(text.substr(comma + 1), field, lo, hi)};
-  } catch (const InvalidInput& e) {  // name the whole P,Q, not the part
-    throw InvalidInput(field, text, e.problem() + " (" + e.value() + ")", valid);
-  }
-}
-
 std::string file_key(const std::string& path) {
   if (path.empty() || path == "-") return {};
   struct stat st {};

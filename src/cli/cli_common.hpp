@@ -5,6 +5,7 @@
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
@@ -105,13 +106,9 @@ struct NamedFile {
 /// (an output must never replace what the command reads, nor another output).
 void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vector<NamedFile>& inputs);
 
-/// A non-negative integer option value, or InvalidInput naming the option.
-std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi);
-
-/// Two counts "P,Q", each in [lo, hi]; InvalidInput naming the whole text (and the bad part) with
-/// `valid` as the valid range otherwise.
-std::pair<std::size_t, std::size_t> parse_count_pair(const std::string& text, const std::string& field, std::size_t lo,
-                                                     std::size_t hi, const std::string& valid);
+/// Counts and count pairs are read by io/parse.hpp (one reader for every front end).
+using sphtroch::parse_count;
+using sphtroch::parse_count_pair;
 
 /// Every number the tool prints is sphtroch::number_text (core/number_text.hpp: the shortest form
 /// that reads back as the same double); measured times in text reports are seconds_text.

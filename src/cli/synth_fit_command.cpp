@@ -5,6 +5,7 @@
 #include "synth_ratios.hpp"
 
 #include "sphtroch/classify.hpp"
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
@@ -22,10 +23,6 @@ namespace sphtroch::cli {
 
 namespace {
 
-/// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
-/// screening and the census grow with |p| and q; measured: --ratios 7,7 on 300 points 11 s).
-constexpr double kMaxFitWork = 20000;
-
 struct FitCommandOptions {
   std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation, node_at, node_tolerance;
   bool json = false;
@@ -33,8 +30,8 @@ struct FitCommandOptions {
 
 FitOptions fit_options(const FitCommandOptions& o) {
   FitOptions f;
-  if (!o.nodes.empty()) f.nodes = static_cast<std::int64_t>(parse_count(o.nodes, "nodes", 0, 100000000));
-  if (!o.cusps.empty()) f.cusps = static_cast<std::int64_t>(parse_count(o.cusps, "cusps", 0, 100000000));
+  if (!o.nodes.empty()) f.nodes = static_cast<std::int64_t>(parse_count(o.nodes, "nodes", 0, kMaxWantedCount));
+  if (!o.cusps.empty()) f.cusps = static_cast<std::int64_t>(parse_count(o.cusps, "cusps", 0, kMaxWantedCount));
   if (!o.candidates.empty()) f.max_candidates = parse_count(o.candidates, "candidates", 1, 1000);
   if (!o.max_deviation.empty()) {
     const double v = parse_angle(o.max_deviation, "max-deviation");
@@ -100,7 +97,7 @@ std::string shard_fields(const std::vector<RatioFit>& all, const FitOptions& f, 
 }
 
 void run_fit(const FitCommandOptions& o) {
-  const RatioRequest request = requested_ratios("synth fit", o.n, o.ratios, o.teeth, o.shard, kMaxFitWork);
+  const RatioSet request = requested_ratios("synth fit", {o.n, o.ratios, o.teeth, o.shard}, kMaxFitWork);
   const FitOptions f = fit_options(o);
   check_distinct_files({{o.output, "--output"}}, {{o.input, "--input"}});
   const PolylineInput in = read_polyline(o.input, "input");
@@ -113,7 +110,7 @@ void run_fit(const FitCommandOptions& o) {
     }
   }();
   const std::string fields =
-      request.json_fields + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
+      request.json_members() + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
   write_output(o.output, [&](std::ostream& out) {
     if (!o.json) write_fit_text(out, all, f, request.teeth);
     else if (o.shard.empty()) out << fit_json(all, f, fields, request.teeth);

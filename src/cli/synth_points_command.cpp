@@ -1,4 +1,4 @@
-// sphtroch synth points — every train through three precision points (exact/precision_points.hpp),
+// sphtroch synth points — every train through three precision points (synthesis/interval/precision_points.hpp),
 // each with its census (classify). Parsing and printing only. CGAL: a separate translation unit.
 #include "cli_common.hpp"
 #include "synth_ratios.hpp"
@@ -23,13 +23,6 @@
 namespace sphtroch::cli {
 
 namespace {
-
-/// Bound on the estimated work of one call: the sum over the ratio set of (|p| + q)^2 (the
-/// unknowns Delta span 2 pi q and the equations turn |n| times faster; measured in bench/).
-constexpr double kMaxPointsWork = 20000;
-/// The same bound with --free-axis (five points, 18 searches in eight unknowns: ~10-30 s for one
-/// small ratio on two cores, measured in bench/): 500 allows --ratios 3,3 (208), not 4,4 (504).
-constexpr double kMaxFreeAxisWork = 500;
 
 struct PointsOptions {
   std::string input, output, n, ratios, teeth, shard, threads;
@@ -76,8 +69,8 @@ void check_points_certified(const std::vector<RatioSolutions>& all) {
 }
 
 void run_points(const PointsOptions& o) {
-  const RatioRequest request =
-      requested_ratios("synth points", o.n, o.ratios, o.teeth, o.shard, o.free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
+  const RatioSet request =
+      requested_ratios("synth points", {o.n, o.ratios, o.teeth, o.shard}, o.free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
   if (!o.free_axis)
     check_points_census_work(request.ratios, !o.n.empty() ? "n" : !o.ratios.empty() ? "ratios" : "teeth",
                              !o.n.empty() ? o.n : !o.ratios.empty() ? o.ratios : o.teeth);
@@ -97,7 +90,7 @@ void run_points(const PointsOptions& o) {
   // A shard names its run (points and ratio set), so that synth merge joins only one run's shards,
   // and carries a digest of its bytes, so that it refuses an edited one.
   const std::string fields =
-      request.json_fields + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, o.free_axis ? "points free-axis" : "points") +
+      request.json_members() + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, o.free_axis ? "points free-axis" : "points") +
                                                          "\", " + digest_placeholder());
   write_output(o.output, [&](std::ostream& out) {
     if (!o.json) write_points_text(out, all, request.teeth);

@@ -1,6 +1,6 @@
 // The ratio set of a synth command (--n R | --teeth ZS:ZP | --ratios P,Q | --teeth MIN..MAX, with
-// --shard I/K for a set), shared by `synth points` and `synth fit`, with the work bound each
-// command states. Parsing only.
+// --shard I/K for a set; read by io/ratio_set.hpp), shared by `synth points` and `synth fit`, and
+// the shard parts' fingerprints, digests and readers.
 #pragma once
 
 #include "cli_common.hpp"
@@ -11,6 +11,7 @@
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/ratio_set.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,93 +27,23 @@
 
 namespace sphtroch::cli {
 
-/// The ratios to solve, the JSON members that name them ("ratios" or "teeth", "shard"), and the
-/// teeth each report echoes.
-struct RatioRequest {
-  std::vector<Ratio> ratios;
-  std::string json_fields;
-  TeethSpec teeth;
-};
-
 /// The JSON member that names a ratio set in a run's output: "ratios": "P,Q" or "teeth": "MIN..MAX".
 inline std::string set_member(const std::string& name, const std::string& text) {
   return "\"" + name + "\": \"" + text + "\"";
 }
 
-/// --shard I/K of a ratio set of `size`: indices floor((I-1) size / K) .. floor(I size / K) - 1.
-inline std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::size_t size) {
-  const std::string valid = "I/K with 1 <= I <= K <= 1000000";
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
-  try {
-    const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
-    const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
-    return {(i - 1) * size / k, i * size / k};
-  } catch (const InvalidInput& e) {  // name the whole I/K, not the part
-    throw InvalidInput("shard", text, e.problem() + " (" + e.value() + ")", valid);
-  }
-}
-
-/// The set of --ratios P,Q (name "ratios") or --teeth MIN..MAX (name "teeth"), refused
-/// (InvalidInput) unless `text` is written as a run writes it (canonical), so shards compare by text.
-inline std::vector<Ratio> named_ratio_set(const std::string& name, const std::string& text) {
-  if (name == "teeth") {
-    const ToothRange range = parse_tooth_range(text, "teeth");
-    if (text != range.str()) throw InvalidInput("teeth", text, "not MIN..MAX", "MIN..MAX as written by the run");
-    return ratio_set(range);
-  }
-  const auto comma = text.find(',');
-  if (comma == std::string::npos)
-    throw InvalidInput("ratios", text, "not two counts P,Q", "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q");
-  const std::size_t p = parse_count(text.substr(0, comma), "ratios", 1, 1000);
-  const std::size_t q = parse_count(text.substr(comma + 1), "ratios", 1, 1000);
-  if (text != std::to_string(p) + "," + std::to_string(q)) throw InvalidInput("ratios", text, "not P,Q", "P,Q as written by the run");
-  return ratio_set(static_cast<std::int64_t>(p), static_cast<std::int64_t>(q));
-}
-
-/// The ratios of --n, --teeth (ZS:ZP, or a range MIN..MAX) or --ratios [--shard]; refused
-/// (InvalidInput) when the sum over them of (|p| + q)^2 exceeds max_work, the estimate of `command`'s cost.
-inline RatioRequest requested_ratios(const std::string& command, const std::string& n, const std::string& ratios,
-                                     const std::string& teeth, const std::string& shard, double max_work) {
-  if (int(!n.empty()) + int(!ratios.empty()) + int(!teeth.empty()) != 1)
+/// The ratios of --n, --teeth (ZS:ZP, or a range MIN..MAX) or --ratios [--shard] (io/ratio_set.hpp);
+/// refused (InvalidInput) when their work (ratio_work) exceeds max_work, `command`'s bound.
+inline RatioSet requested_ratios(const std::string& command, const RatioRequestText& request, double max_work) {
+  if (int(!request.n.empty()) + int(!request.ratios.empty()) + int(!request.teeth.empty()) != 1)
     throw UsageError{command + ": give exactly one of --n R, --teeth ZS:ZP|MIN..MAX and --ratios P,Q (see docs/cli.md: " +
                      command + ")"};
-  const bool is_set = !ratios.empty() || teeth.find("..") != std::string::npos;
-  if (!shard.empty() && !is_set)
-    throw UsageError{"--shard = " + shard + ": shards a ratio set; valid: with --ratios P,Q or --teeth MIN..MAX"};
-  RatioRequest r;
-  const std::string field = !n.empty() ? "n" : !ratios.empty() ? "ratios" : "teeth";
-  const std::string& given = !n.empty() ? n : !ratios.empty() ? ratios : teeth;
-  if (!n.empty()) {
-    r.ratios.push_back(parse_ratio(n, "n"));
-  } else if (!is_set) {
-    r.teeth.pair = parse_teeth(teeth, "teeth");
-    r.ratios.push_back(r.teeth.pair->ratio());
-    r.json_fields = set_member("teeth", r.teeth.pair->str()) + ", ";
-  } else {
-    std::string canonical = ratios;
-    if (!teeth.empty()) {
-      r.teeth.range = parse_tooth_range(teeth, "teeth");
-      canonical = r.teeth.range->str();
-    } else {
-      const auto [p, q] = parse_count_pair(ratios, "ratios", 1, 1000, "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q (each 1 .. 1000)");
-      canonical = std::to_string(p) + "," + std::to_string(q);
-    }
-    r.ratios = named_ratio_set(field, canonical);
-    r.json_fields = set_member(field, canonical) + ", ";
-    if (!shard.empty()) {
-      const auto [begin, end] = shard_range(shard, r.ratios.size());
-      r.ratios = std::vector<Ratio>(r.ratios.begin() + begin, r.ratios.begin() + end);
-      r.json_fields += "\"shard\": \"" + shard + "\", ";
-    }
-  }
-  double work = 0;
-  for (const Ratio& k : r.ratios) work += std::pow(double(k.abs_p() + k.q()), 2);
-  if (work > max_work)
-    throw InvalidInput(field, given,
-                       "estimated work " + number_text(work) + " over the bound" + (shard.empty() ? "" : " for this shard"),
-                       "sum over the ratios of (|p| + q)^2 <= " + number_text(max_work) +
-                           " (--ratios 7,7 is 4832; --shard I/K splits a set)");
+  if (!request.shard.empty() && !names_a_set(request))
+    throw UsageError{"--shard = " + request.shard + ": shards a ratio set; valid: with --ratios P,Q or --teeth MIN..MAX"};
+  const RatioSet r = parse_ratio_set(request);
+  const std::string field = !request.n.empty() ? "n" : !request.ratios.empty() ? "ratios" : "teeth";
+  const std::string& given = !request.n.empty() ? request.n : !request.ratios.empty() ? request.ratios : request.teeth;
+  check_ratio_work(r, field, given, max_work);
   return r;
 }
 

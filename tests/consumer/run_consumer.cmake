@@ -1,8 +1,9 @@
 # Builds and runs tests/consumer against sphtroch; called by ctest:
 #   cmake -DSOURCE_DIR=<sphtroch source> -DWORK_DIR=<scratch> -DMODE=find_package|add_subdirectory
-#         -DPART=eigen|exact|exact_unlinked -P run_consumer.cmake
+#         -DPART=eigen|interval|exact|exact_unlinked -P run_consumer.cmake
 # PART eigen configures the consumer with CGAL hidden (CMAKE_DISABLE_FIND_PACKAGE_CGAL): the
-# Eigen-only package must not need it. PART exact_unlinked must FAIL to build, with the #error
+# Eigen-only package must not need it; PART interval too: CGAL's headers, not its package (which
+# brings GMP and MPFR). PART exact_unlinked must FAIL to build, with the #error
 # that names sphtroch::exact.
 # find_package:     configure + install sphtroch (tests, CLI, benchmarks off) into WORK_DIR/<mode>/prefix,
 #                   then configure, build and run the consumer with CMAKE_PREFIX_PATH = that prefix.
@@ -34,7 +35,7 @@ function(step name)
 endfunction()
 
 set(part_flags -DSPHTROCH_CONSUMER_PART=${PART})
-if(PART STREQUAL "eigen")
+if(PART STREQUAL "eigen" OR PART STREQUAL "interval")
   list(APPEND part_flags -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE)
 endif()
 set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF -DSPHTROCH_BUILD_PYTHON=OFF)
@@ -97,5 +98,11 @@ if(PART STREQUAL "exact_unlinked")
   return()
 endif()
 step("build consumer" ${CMAKE_COMMAND} --build "${consumer_build}")
+if(PART STREQUAL "interval")  # CGAL's headers only: no GMP or MPFR on the link line
+  file(READ "${consumer_build}/CMakeFiles/consumer.dir/link.txt" link_line)
+  if(link_line MATCHES "gmp|mpfr")
+    message(FATAL_ERROR "consumer (${MODE}, ${PART}): sphtroch::interval linked GMP or MPFR: ${link_line}")
+  endif()
+endif()
 step("run consumer" "${consumer_build}/consumer")
 message(STATUS "consumer (${MODE}): ${step_output}")

@@ -455,7 +455,7 @@ TEST_CASE("samples_on_node: vertices landing on the node (0, 1, 0)", "[polyline_
   CHECK(ex.touchings == expected);
 }
 
-TEST_CASE("run box search: the sweep (few runs) and CGAL's segment tree (many runs) agree", "[polyline_crossings]") {
+TEST_CASE("run box intersection: the sweep (few runs) and CGAL's segment tree (many runs) agree", "[polyline_crossings]") {
   // Up to kSweepMaxBoxes run boxes the overlapping run pairs come from a sweep, above from
   // CGAL::box_self_intersection_d. The same polyline searched both ways, each against brute force.
   const Polyline vs = trochoid(1.0, 2.0, 13, 5, 3000);

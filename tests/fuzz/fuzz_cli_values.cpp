@@ -1,8 +1,8 @@
 // tests/fuzz/fuzz_cli_values.cpp — the option values of the synth commands (and atlas --teeth):
-// parse_teeth, parse_tooth_range, parse_unit_point (--node-at) from io/parse.hpp; parse_count and
-// parse_count_pair (--threads, --ratios P,Q, --max-terms P,Q) from src/cli/cli_common.cpp; and
-// from src/cli/synth_ratios.hpp the --shard I/K parser (shard_range), the shard JSON's set
-// (named_ratio_set) and the whole request (requested_ratios: --n, --ratios, --teeth, --shard).
+// parse_teeth, parse_tooth_range, parse_unit_point (--node-at), parse_count and parse_count_pair
+// (--threads, --ratios P,Q, --max-terms P,Q) from io/parse.hpp; from io/ratio_set.hpp the --shard
+// I/K parser (shard_range) and the shard JSON's set (named_ratio_set); and the whole request
+// (src/cli/synth_ratios.hpp's requested_ratios: --n, --ratios, --teeth, --shard).
 //
 // Input: lines separated by '\n'. Every line (at most 8) and the whole input go through every
 // value parser; lines 1-4 are also --n, --ratios, --teeth and --shard of one request ("" = not
@@ -116,7 +116,7 @@ void unit_point(const std::string& text) {
 
 std::optional<std::size_t> count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
   try {
-    const std::size_t v = sphtroch::cli::parse_count(text, field, lo, hi);
+    const std::size_t v = sphtroch::parse_count(text, field, lo, hi);
     FUZZ_CHECK(v >= lo && v <= hi);
     FUZZ_CHECK(std::to_string(v) == canonical_count(text));
     return v;
@@ -134,7 +134,7 @@ std::optional<std::pair<std::size_t, std::size_t>> count_pair(const std::string&
   const std::string valid = max_terms ? "P,Q with 1 <= P, Q <= 1000000 (|p| <= P, q <= Q)"
                                       : "P,Q: every p/q with 1 <= |p| <= P, 1 <= q <= Q (each 1 .. 1000)";
   try {
-    const auto [p, q] = sphtroch::cli::parse_count_pair(text, field, 1, hi, valid);
+    const auto [p, q] = sphtroch::parse_count_pair(text, field, 1, hi, valid);
     FUZZ_CHECK(p >= 1 && p <= hi && q >= 1 && q <= hi);
     const std::size_t comma = text.find(',');
     FUZZ_CHECK(comma != std::string::npos && text.find(',', comma + 1) == std::string::npos);
@@ -151,7 +151,7 @@ std::optional<std::pair<std::size_t, std::size_t>> count_pair(const std::string&
 /// --shard I/K of a set of `size` ratios: the I-th of K consecutive pieces covering the set.
 void shard(const std::string& text, std::size_t size) {
   try {
-    const auto [begin, end] = sphtroch::cli::shard_range(text, size);
+    const auto [begin, end] = sphtroch::shard_range(text, size);
     FUZZ_CHECK(begin <= end && end <= size);
     const std::size_t slash = text.find('/');
     FUZZ_CHECK(slash != std::string::npos);
@@ -161,7 +161,7 @@ void shard(const std::string& text, std::size_t size) {
     FUZZ_CHECK(begin == (i - 1) * size / k && end == i * size / k);
     if (i == 1) FUZZ_CHECK(begin == 0);
     if (i == k) FUZZ_CHECK(end == size);
-    if (i < k) FUZZ_CHECK(sphtroch::cli::shard_range(std::to_string(i + 1) + "/" + std::to_string(k), size).first == end);
+    if (i < k) FUZZ_CHECK(sphtroch::shard_range(std::to_string(i + 1) + "/" + std::to_string(k), size).first == end);
   } catch (const InvalidInput& e) {
     check_error(e, "shard", text);
   }
@@ -180,12 +180,12 @@ void named_set(const std::string& text) {
       if (pq && pq->first * pq->second > 1600) continue;
     }
     try {
-      const std::vector<Ratio> set = sphtroch::cli::named_ratio_set(name, text);
+      const std::vector<Ratio> set = sphtroch::named_ratio_set(name, text);
       FUZZ_CHECK(!set.empty());
       if (is_teeth) {
         FUZZ_CHECK(text == sphtroch::parse_tooth_range(text, "teeth").str());
       } else {
-        const auto [p, q] = sphtroch::cli::parse_count_pair(text, "ratios", 1, 1000, "P,Q");
+        const auto [p, q] = sphtroch::parse_count_pair(text, "ratios", 1, 1000, "P,Q");
         FUZZ_CHECK(text == std::to_string(p) + "," + std::to_string(q));
         for (const Ratio& r : set)
           FUZZ_CHECK(r.abs_p() <= std::int64_t(p) && r.q() <= std::int64_t(q) && std::gcd(r.abs_p(), r.q()) == 1);
@@ -202,7 +202,7 @@ void named_set(const std::string& text) {
 void request(const std::string& n, const std::string& ratios, const std::string& teeth_text, const std::string& shard_text) {
   if (!ratios.empty()) {
     try {
-      const auto [p, q] = sphtroch::cli::parse_count_pair(ratios, "ratios", 1, 1000, "P,Q");
+      const auto [p, q] = sphtroch::parse_count_pair(ratios, "ratios", 1, 1000, "P,Q");
       if (p * q > 1600) return;
     } catch (const InvalidInput&) {
     }
@@ -213,10 +213,9 @@ void request(const std::string& n, const std::string& ratios, const std::string&
     } catch (const InvalidInput&) {
     }
   }
-  constexpr double kMaxWork = 20000;  // synth points' bound (synth_points_command.cpp)
+  constexpr double kMaxWork = sphtroch::kMaxPointsWork;  // synth points' bound
   try {
-    const sphtroch::cli::RatioRequest r =
-        sphtroch::cli::requested_ratios("synth points", n, ratios, teeth_text, shard_text, kMaxWork);
+    const sphtroch::RatioSet r = sphtroch::cli::requested_ratios("synth points", {n, ratios, teeth_text, shard_text}, kMaxWork);
     FUZZ_CHECK(int(!n.empty()) + int(!ratios.empty()) + int(!teeth_text.empty()) == 1);
     double work = 0;
     for (const Ratio& k : r.ratios) {
@@ -225,7 +224,7 @@ void request(const std::string& n, const std::string& ratios, const std::string&
     }
     FUZZ_CHECK(work <= kMaxWork);
     if (!n.empty()) FUZZ_CHECK(r.ratios.size() == 1 && r.ratios[0] == sphtroch::parse_ratio(n, "n"));
-    if (!shard_text.empty()) FUZZ_CHECK(r.json_fields.find("\"shard\": ") != std::string::npos);
+    if (!shard_text.empty()) FUZZ_CHECK(r.json_members().find("\"shard\": ") != std::string::npos);
     if (r.teeth.pair) FUZZ_CHECK(r.ratios.size() == 1 && r.teeth.of(r.ratios[0]).has_value());
   } catch (const InvalidInput& e) {
     FUZZ_CHECK(e.field() == "n" || e.field() == "ratios" || e.field() == "teeth" || e.field() == "shard");

@@ -350,7 +350,6 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
   REQUIRE(seven.size() == 70);
   CHECK_NOTHROW(check_fit_cost(2968, seven));
   CHECK_THROWS_AS(check_fit_cost(2969, seven), InvalidInput);
-  CHECK_THROWS_AS(map_margin(1.0, std::nan(""), Ratio(2)), InvalidInput);
   FitOptions node;
   node.node_at = Vector3d(0, 0, 1.01);
   CHECK(field_of(ok, node) == "node-at");

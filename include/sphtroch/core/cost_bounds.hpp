@@ -76,4 +76,17 @@ inline void check_points_census_work(const std::vector<Ratio>& ratios, const std
                        "sum over the ratios of |p| (|p| + q)^2 <= 30000 (n = 29 is 26100; --ratios 7,7 is 23318)");
 }
 
+/// The work bounds of the inverse design over a ratio set, as the sum over its ratios of
+/// (|p| + q)^2 (ratio_work, io/ratio_set.hpp; --ratios 7,7 is 4832). Precision points with a
+/// fixed frame: the unknowns Delta span 2 pi q and the equations turn |n| times faster; path
+/// fits: the screening and the census grow with |p| and q; the free axis (five points, 18
+/// searches in eight unknowns, ~10-30 s for one small ratio on two cores): 500 allows
+/// --ratios 3,3 (208), not 4,4 (504). Measured in bench/ (docs/performance.md).
+constexpr double kMaxPointsWork = 20000;
+constexpr double kMaxFitWork = 20000;
+constexpr double kMaxFreeAxisWork = 500;
+
+/// The largest node or cusp count a fit may be asked for (--nodes, --cusps).
+constexpr std::size_t kMaxWantedCount = 100000000;
+
 }  // namespace sphtroch

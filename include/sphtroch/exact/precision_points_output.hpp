@@ -22,8 +22,8 @@
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
-#include "sphtroch/exact/free_axis_points.hpp"
-#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/synthesis/interval/free_axis_points.hpp"
+#include "sphtroch/synthesis/interval/precision_points.hpp"
 
 #include <sstream>
 #include <string>

@@ -3,7 +3,7 @@
 // What it is for: given the vertices of a polyline on the sphere (edges are great-circle arcs),
 // list every pair of non-adjacent edges that cross, and separately every pair that only touches
 // or overlaps, exactly for the double vertices as given (arc_predicates.hpp). Candidate pairs
-// come from an O(N log N + K) box search (CGAL::box_self_intersection_d), never from all pairs.
+// come from an O(N log N + K) box intersection (CGAL::box_self_intersection_d), never from all pairs.
 // Usable on any spherical polyline, not only on trajectories.
 //
 //   #include <sphtroch/exact/self_crossings.hpp>   // needs the sphtroch::exact target (CGAL)
@@ -111,7 +111,7 @@
 //     box (none, often); pair few survivors directly, else merge their sorted interval lists
 //     along one axis in O(L_a + L_b + overlaps); then check the other two axes.
 // The visited set is exactly the set of non-adjacent pairs whose (run-padded) edge boxes overlap;
-// the work is O(N) plus O(R log R + K_runs) for the box search over R runs, plus the merges.
+// the work is O(N) plus O(R log R + K_runs) for the box intersection over R runs, plus the merges.
 // CandidateSearch::edges boxes every edge separately (the simple first version, kept for
 // comparison and tests).
 // CAVEAT: adjacent edges are skipped even if one folds back along the other (an exact 180-degree
@@ -224,7 +224,7 @@ struct CrossingCounts {
   std::size_t touchings = 0;        // touching or overlap
   std::size_t vertices = 0;
   std::size_t edges = 0;
-  std::size_t boxes = 0;            // boxes given to the box search
+  std::size_t boxes = 0;            // boxes given to the box intersection
   std::size_t box_pairs = 0;        // pairs of overlapping run boxes examined (runs search)
   std::size_t candidate_pairs = 0;  // non-adjacent edge pairs tested with exact predicates
   std::size_t predicates = 0;       // exact predicates evaluated by those tests
@@ -320,7 +320,7 @@ inline bool validate_polyline(VertexSpan vertices, bool closed) {
                      "consecutive vertices distinct and not antipodal (each edge a great-circle arc shorter than pi)");
 }
 
-/// The polyline prepared for the box search: (nearly) unit vectors and the edge count. Points
+/// The polyline prepared for the box intersection: (nearly) unit vectors and the edge count. Points
 /// at the caller's vertices when they are unit within kUnitNormTolerance, else at normalised copies.
 class PreparedPolyline {
  public:
@@ -613,7 +613,7 @@ using SearchBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint
 /// The cutoff of box_self_intersection_d (below it, the streamed segment tree scans boxes
 /// directly). CGAL's default is 10; on run boxes of trochoid polylines (4e3..4e4 boxes, up to
 /// 6e4 overlapping pairs) 300..1000 was 2..4 times faster than 10 and than 3000.
-constexpr std::ptrdiff_t kBoxSearchCutoff = 512;
+constexpr std::ptrdiff_t kBoxIntersectionCutoff = 512;
 
 /// Up to this many run boxes, the overlapping pairs come from sweep_overlapping_runs instead of
 /// box_self_intersection_d. Both report exactly the pairs of closed boxes that overlap; below
@@ -675,7 +675,7 @@ struct VisitStats {
   std::size_t boxes = 0;
 };
 
-/// The work of one search and its limit, shared by the box search (box pairs) and the visitor
+/// The work of one search and its limit, shared by the box intersection (box pairs) and the visitor
 /// (candidate pairs): exceeded once box_pairs + candidate_pairs > limit.
 struct WorkBudget {
   std::size_t limit = std::numeric_limits<std::size_t>::max();
@@ -686,7 +686,7 @@ struct WorkBudget {
   bool spend_candidate() { return ++candidate_pairs <= limit - std::min(limit, box_pairs); }
 };
 
-/// Whether the run-box pairs may fit in budget.limit, decided before the box search so that a
+/// Whether the run-box pairs may fit in budget.limit, decided before the box intersection so that a
 /// hopeless search (random vertices: Theta(N^2) pairs) is refused at once. Cost O(R log R + S R)
 /// with S <= 256, S R <= ~2^24: the pairs overlapping along one axis are counted exactly (an
 /// upper bound); only if they exceed the limit, S evenly spaced boxes are tested against all R
@@ -732,7 +732,7 @@ struct StopSearch {};
 constexpr std::size_t kPairChunk = std::size_t(1) << 16;
 
 /// Collects pairs (a, b) as (min, max) and hands each full chunk, sorted (locality, and a
-/// deterministic order: the box searches are deterministic), to visit(i, j) -> bool.
+/// deterministic order: the box intersections are deterministic), to visit(i, j) -> bool.
 template <typename Visit>
 class PairChunks {
  public:
@@ -756,7 +756,7 @@ class PairChunks {
 
 /// Every overlapping pair of `boxes` (CLOSED) to chunks.push; false if a push stopped the search.
 template <typename Chunks>
-bool box_search(std::vector<SearchBox>& boxes, Chunks& chunks, const PreparedPolyline* skip_adjacent) {
+bool overlapping_box_pairs(std::vector<SearchBox>& boxes, Chunks& chunks, const PreparedPolyline* skip_adjacent) {
   try {
     CGAL::box_self_intersection_d(
         boxes.begin(), boxes.end(),
@@ -765,7 +765,7 @@ bool box_search(std::vector<SearchBox>& boxes, Chunks& chunks, const PreparedPol
           if (skip_adjacent != nullptr && skip_adjacent->adjacent(i, j)) return;
           if (!chunks.push(i, j)) throw StopSearch{};
         },
-        kBoxSearchCutoff, CGAL::Box_intersection_d::CLOSED);
+        kBoxIntersectionCutoff, CGAL::Box_intersection_d::CLOSED);
   } catch (const StopSearch&) {
     return false;
   }
@@ -809,7 +809,7 @@ VisitStats visit_runs(const PreparedPolyline& p, double margin, std::size_t max_
       double hi[3] = {runs[r].hi[0], runs[r].hi[1], runs[r].hi[2]};
       boxes.emplace_back(lo, hi, static_cast<std::uint32_t>(r));
     }
-    go = box_search(boxes, chunks, nullptr);
+    go = overlapping_box_pairs(boxes, chunks, nullptr);
   }
   stats.completed = go && chunks.flush();
   return stats;
@@ -834,7 +834,7 @@ VisitStats visit_edges(const PreparedPolyline& p, double margin, Visitor& visito
   stats.boxes = boxes.size();
   auto visit_pair = [&visitor](std::uint32_t i, std::uint32_t j) { return call_visitor(visitor, i, j); };
   PairChunks<decltype(visit_pair)> chunks(visit_pair);
-  stats.completed = box_search(boxes, chunks, &p) && chunks.flush();
+  stats.completed = overlapping_box_pairs(boxes, chunks, &p) && chunks.flush();
   return stats;
 }
 
@@ -905,7 +905,7 @@ CrossingCounts visit_self_crossings(VertexSpan vertices, bool closed, Visitor&& 
   const detail::VisitStats stats = detail::visit_prepared(p, options.margin, options.search, options.max_run_edges,
                                                           options.max_run_extent, test, &budget);
   out.estimated_box_pairs = budget.estimate;
-  if (!stats.completed && out.stop == SearchStop::complete)  // stopped by the box search
+  if (!stats.completed && out.stop == SearchStop::complete)  // stopped by the box intersection
     out.stop = budget.box_pairs == 0 && budget.estimate > 0 ? SearchStop::estimate : SearchStop::work;
   out.boxes = stats.boxes;
   out.box_pairs = budget.box_pairs;

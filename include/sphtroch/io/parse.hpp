@@ -6,12 +6,15 @@
 //   sphtroch::parse_teeth("39:15", "teeth");     // Teeth{39, 15}: n = 13/5 (core/teeth.hpp)
 //   sphtroch::parse_tooth_range("12..60", "teeth");   // ToothRange{12, 60}
 //   sphtroch::parse_unit_point("0.6,0,0.8", "node-at");  // Vector3d(0.6, 0, 0.8)
+//   sphtroch::parse_count("64", "grid", 1, 4096);        // 64: a whole number in [lo, hi]
+//   sphtroch::parse_count_pair("7,5", "ratios", 1, 1000, "P,Q");  // {7, 5}
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
 //   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
 //   ratio  := [sign] integer ["/" integer] | [sign] digits "." digits     (decimal, <= 9 places)
 //   a3     := angle | ref [("+" | "-") angle]     ref := "ap" | "pi-ap" | "a2" | "pi-a2"
 //   teeth  := [sign] integer ":" integer          tooth range := integer ".." integer
+//   count  := digits (no sign, no spaces)         count pair := count "," count
 // Every failure throws InvalidInput naming the field, the text and the accepted forms.
 // Range checks (a2 in (0, pi) ...) are the GearTrain's; parsing only rejects non-numbers,
 // NaN and infinities.
@@ -25,6 +28,7 @@
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -34,6 +38,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <utility>
 
 namespace sphtroch {
 
@@ -289,6 +295,37 @@ inline Vector3d parse_unit_point(std::string_view text, const std::string& field
   if (!(std::abs(p.norm() - 1.0) <= 1e-6))
     throw InvalidInput(field, std::string(text), "not on the unit sphere (|P| = " + number_text(p.norm()) + ")", valid);
   return p.normalized();
+}
+
+/// A whole number in [lo, hi] written as digits only (no sign, space or exponent: leading zeros
+/// allowed); InvalidInput naming `field` otherwise.
+inline std::size_t parse_count(const std::string& text, const std::string& field, std::size_t lo, std::size_t hi) {
+  const std::string range = "integer " + std::to_string(lo) + " .. " + std::to_string(hi);
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) {
+    const bool negative = text.size() > 1 && text[0] == '-' && text.find_first_not_of("0123456789", 1) == std::string::npos &&
+                          text.find_first_not_of('0', 1) != std::string::npos;  // (-0 is not below 0)
+    throw InvalidInput(field, text, negative ? "outside the valid range" : "not a whole number", range);
+  }
+  const std::size_t first = std::min(text.find_first_not_of('0'), text.size() - 1);  // leading zeros
+  std::uint64_t v = 0;
+  const auto [end, error] = std::from_chars(text.data() + first, text.data() + text.size(), v);
+  if (error == std::errc::result_out_of_range || end != text.data() + text.size() || v < lo || v > hi)
+    throw InvalidInput(field, text, "outside the valid range", range);
+  return static_cast<std::size_t>(v);
+}
+
+/// Two counts "P,Q", each in [lo, hi]; InvalidInput naming the whole text (and the bad part) with
+/// `valid` as the valid range otherwise.
+inline std::pair<std::size_t, std::size_t> parse_count_pair(const std::string& text, const std::string& field,
+                                                            std::size_t lo, std::size_t hi, const std::string& valid) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+    throw InvalidInput(field, text, "not two counts P,Q", valid);
+  try {
+    return {parse_count(text.substr(0, comma), field, lo, hi), parse_count(text.substr(comma + 1), field, lo, hi)};
+  } catch (const InvalidInput& e) {  // name the whole P,Q, not the part
+    throw InvalidInput(field, text, e.problem() + " (" + e.value() + ")", valid);
+  }
 }
 
 }  // namespace sphtroch

@@ -5,6 +5,7 @@
 //   sphtroch::TrainText text{"pi/2", "ap+1e-6", "5/2"};   // phase defaults to "0"
 //   sphtroch::GearTrain train = text.train();              // InvalidInput naming "a2", "a3", "n" or "phase"
 //   sphtroch::TrainText gears{"1", "2", "", "0", "39:15"};  // n as tooth counts: n = 13/5, "39:15" echoed
+//   sphtroch::Ratio n = sphtroch::ratio_of("", "39:15");      // 13/5: the ratio alone, of n or of teeth
 //
 // The forms are those of parse.hpp (angles, ratios, a3 relative to a pitch cone). The CLI's
 // options and a scene's train entries both fill one of these; classification_output.hpp prints it.
@@ -17,18 +18,22 @@
 
 namespace sphtroch {
 
+/// n from its text or from tooth counts "ZS:ZP" (exactly one of the two non-empty). Throws
+/// InvalidInput naming "n" or "teeth".
+inline Ratio ratio_of(const std::string& n, const std::string& teeth) {
+  if (teeth.empty() && n.empty()) throw InvalidInput("n", "(none)", "not given", "n = p/q, or tooth counts teeth ZS:ZP");
+  if (teeth.empty()) return parse_ratio(n, "n");
+  if (!n.empty()) throw InvalidInput("teeth", teeth, "given together with n = " + n, "one of n = p/q and teeth ZS:ZP");
+  return parse_teeth(teeth, "teeth").ratio();
+}
+
 struct TrainText {
   std::string a2, a3, n, phase = "0";
   std::string teeth = "";  // "ZS:ZP" (core/teeth.hpp) instead of n, or empty
 
   /// n: from the tooth counts when given (then n must be empty), else from n. Throws InvalidInput
   /// naming "n" or "teeth".
-  Ratio ratio() const {
-    if (teeth.empty() && n.empty()) throw InvalidInput("n", "(none)", "not given", "n = p/q, or tooth counts teeth ZS:ZP");
-    if (teeth.empty()) return parse_ratio(n, "n");
-    if (!n.empty()) throw InvalidInput("teeth", teeth, "given together with n = " + n, "one of n = p/q and teeth ZS:ZP");
-    return parse_teeth(teeth, "teeth").ratio();
-  }
+  Ratio ratio() const { return ratio_of(n, teeth); }
 
   /// " (teeth 39:15)" when n was given as tooth counts, else "": what reports echo after n.
   std::string teeth_note() const { return teeth.empty() ? "" : " (teeth " + parse_teeth(teeth, "teeth").str() + ")"; }

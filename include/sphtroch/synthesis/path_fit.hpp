@@ -41,9 +41,8 @@
 //     the point count in turn, so a self-crossing is pulled onto N; a candidate whose two branches
 //     pass farther than node_tolerance from N is dropped (the census confirms it, exact layer).
 // Margin: the distance in the (a2, a3) plane (radians) to the nearest boundary of the map, to first
-// order: for each event of the boundary set at the candidate's a2, its a3 distance times the cosine
-// of the boundary's slope (from the boundary set at a2 + 1e-4). The cone a cusp candidate lies on
-// is not counted. Cost: about kFitGrid^2 screenings on <= 120 points, kFitSeeds refinements on
+// order (map/map_cells.hpp's map_margin). The cone a cusp candidate lies on is not counted.
+// Cost: about kFitGrid^2 screenings on <= 120 points, kFitSeeds refinements on
 // <= 100 points, one per candidate on <= 2000 points; kFitGrid boundary sets when a node count is wanted.
 #pragma once
 
@@ -53,6 +52,7 @@
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/map/boundary_events.hpp"
+#include "sphtroch/map/map_cells.hpp"
 #include "sphtroch/synthesis/path_distance.hpp"
 
 #include <Eigen/Dense>
@@ -156,11 +156,6 @@ inline void check_fit_cost(std::size_t points, const std::vector<Ratio>& ratios)
                        "n = 2, 2,968 for --ratios 7,7)");
 }
 
-/// Distance in the (a2, a3) plane to the nearest boundary of the map (see header); `on_cone`:
-/// the candidate lies on a pitch cone by design, which is not counted. First order, an upper
-/// estimate: a boundary that does not cross this a2 (a tangency locus's fold just beyond it) is
-/// not seen. Throws InvalidInput naming "a2" or "a3" outside (0, pi).
-inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone = false);
 
 // =============================================================================================
 // Implementation details follow.
@@ -485,53 +480,30 @@ inline std::string count_list(const std::set<std::int64_t>& counts, std::int64_t
 
 inline double grid_angle(int k) { return (static_cast<double>(k) + 0.5) * kPi / kFitGrid; }
 
-/// The cells of the boundary set at grid column i: a3 intervals (lo, hi) and their node count.
-struct ColumnCell {
-  double lo, hi;
-  std::int64_t nodes;
-};
-
-inline std::vector<ColumnCell> column(int i, const Ratio& n) {
-  const double a2 = grid_angle(i);
-  const BoundarySet b = boundary_set(a2, n);
-  std::vector<ColumnCell> cells;
-  double lo = 0;
-  std::int64_t count = b.events.empty() ? root_nodes(a2, kPi / 2, n, Family::free) : b.events.front().nodes_below;
-  for (std::size_t k = 0; k <= b.events.size(); ++k) {
-    const double hi = k < b.events.size() ? b.events[k].a3 : kPi;
-    cells.push_back({lo, hi, count});
-    if (k < b.events.size()) {
-      count = b.events[k].nodes_above;
-      lo = hi;
-    }
-  }
-  return cells;
-}
-
 /// Columns kept at most (100 ratios' grids); beyond, a column lives until the next overflow.
 constexpr std::size_t kFitColumnCache = 100 * kFitGrid;
 
 /// Storage for a column computed when the cache is full: the last kFitGrid of them stay valid
 /// (the reference is used within one seeds() call, which asks for kFitGrid columns).
-inline const std::vector<ColumnCell>* new_column_overflow(std::vector<ColumnCell>&& cells) {
-  static std::vector<std::vector<ColumnCell>> ring(kFitGrid);
+inline const std::vector<MapCell>* new_column_overflow(std::vector<MapCell>&& cells) {
+  static std::vector<std::vector<MapCell>> ring(kFitGrid);
   static std::size_t next = 0;
-  std::vector<ColumnCell>& slot = ring[next++ % kFitGrid];
+  std::vector<MapCell>& slot = ring[next++ % kFitGrid];
   slot = std::move(cells);
   return &slot;
 }
 
-/// column(i, n), computed once per process (the grid columns are the same for every fit; a
+/// map_cells at grid column i, computed once per process (the grid columns are the same for every fit; a
 /// design session fits one ratio many times). Thread-safe.
-inline const std::vector<ColumnCell>& cached_column(int i, const Ratio& n) {
+inline const std::vector<MapCell>& cached_column(int i, const Ratio& n) {
   static std::mutex mutex;
-  static std::map<std::tuple<std::int64_t, std::int64_t, int>, std::vector<ColumnCell>> cache;
+  static std::map<std::tuple<std::int64_t, std::int64_t, int>, std::vector<MapCell>> cache;
   const auto key = std::make_tuple(n.p(), n.q(), i);
   {
     const std::lock_guard<std::mutex> lock(mutex);
     if (const auto it = cache.find(key); it != cache.end()) return it->second;
   }
-  std::vector<ColumnCell> cells = column(i, n);  // outside the lock: another thread may do the same
+  std::vector<MapCell> cells = map_cells(grid_angle(i), n);  // outside the lock: another thread may do the same
   const std::lock_guard<std::mutex> lock(mutex);
   if (const auto it = cache.find(key); it != cache.end()) return it->second;
   if (cache.size() >= kFitColumnCache) return *new_column_overflow(std::move(cells));
@@ -540,23 +512,6 @@ inline const std::vector<ColumnCell>& cached_column(int i, const Ratio& n) {
 
 }  // namespace path_fit_detail
 
-inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone) {
-  if (!(a3 > 0 && a3 < path_fit_detail::kPi)) throw InvalidInput("a3", number_text(a3), "outside the valid range", "(0, pi) radians");
-  const double h = a2 + 1e-4 < path_fit_detail::kPi - kFitMinTwist ? 1e-4 : -1e-4;
-  const BoundarySet here = boundary_set(a2, n), near = boundary_set(a2 + h, n);
-  double margin = std::numeric_limits<double>::infinity();
-  for (const BoundaryEvent& e : here.events) {
-    if (on_cone && e.kind == BoundaryEventKind::pitch_cone && std::abs(e.a3 - a3) < 1e-9) continue;
-    double slope = 0, nearest = 0.05;
-    for (const BoundaryEvent& f : near.events)
-      if (f.kind == e.kind && f.name == e.name && std::abs(f.a3 - e.a3) < nearest) {
-        nearest = std::abs(f.a3 - e.a3);
-        slope = (f.a3 - e.a3) / h;
-      }
-    margin = std::min(margin, std::abs(a3 - e.a3) / std::sqrt(1 + slope * slope));
-  }
-  return std::isfinite(margin) ? margin : std::min(a3, path_fit_detail::kPi - a3);
-}
 
 namespace path_fit_detail {
 
@@ -620,7 +575,7 @@ inline std::vector<Seed> seeds(const Constraint& con, const std::vector<Vector3d
       for (double diff : {d, -d}) shapes.push_back({(sum + diff) / 2, (sum - diff) / 2});
     if (con.nodes)
       for (int i = 0; i < kFitGrid; ++i)
-        for (const ColumnCell& c : cached_column(i, con.n)) {
+        for (const MapCell& c : cached_column(i, con.n)) {
           seen.insert(c.nodes);
           if (c.nodes == *con.nodes && c.hi - c.lo > 4 * kFitBoundaryClearance)
             shapes.push_back({grid_angle(i), (c.lo + c.hi) / 2});

@@ -1,5 +1,6 @@
-// sphtroch/exact/interval_trig.hpp — enclosures of sin and cos over an interval of radians, for
-// CGAL's Interval_nt (which has the field operations and sqrt, not the trigonometric functions).
+// sphtroch/synthesis/interval/interval.hpp — the interval arithmetic of the certified solvers:
+// CGAL's Interval_nt (the field operations and sqrt, outward rounded), enclosures of sin and cos
+// over an interval of radians (which Interval_nt lacks), and the mean-value forms.
 //
 //   sphtroch::RoundingGuard upward;   // interval arithmetic REQUIRES the upward rounding mode
 //   sphtroch::Interval s = sphtroch::interval_sin(sphtroch::Interval(0.1, 2.0));  // [0.0998.., 1]
@@ -10,12 +11,16 @@
 // [lo, hi] are at the ends or at pi/2 + k pi inside. The ends are
 // evaluated in round-to-nearest and widened outward by at least 2 ulps: this rests on an error
 // bound of 1 ulp — glibc's sincos, which documents it on x86-64 (MPFR at 200 bits confirms it in
-// test_precision_points.cpp), elsewhere (the explorer's WebAssembly module, whose musl documents
+// tests/synthesis/interval/test_precision_points.cpp), elsewhere (the explorer's WebAssembly module, whose musl documents
 // none) core/portable_trig.hpp's sin_cos, faithful, checked against MPFR in
-// test_portable_trig.cpp (up to 2^20 rad; beyond, [-1, 1] there). Whether an interior
+// tests/core/test_portable_trig.cpp (up to 2^20 rad; beyond, [-1, 1] there). Whether an interior
 // extreme lies inside is decided with a margin (4e-9 of a quarter turn + 1e-15 |t|) in the safe direction: a
 // doubtful extreme is counted, which only widens the result. Intervals of 2 pi or more give [-1, 1].
 #pragma once
+
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/synthesis/interval/interval.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
+#endif
 
 #include "sphtroch/core/portable_trig.hpp"
 
@@ -147,6 +152,53 @@ std::array<std::pair<double, double>, N> interval_sincos_all(const std::array<do
   std::array<std::pair<double, double>, N> out;
   for (std::size_t k = 0; k < N; ++k) out[k] = interval_sincos(x[k]);
   return out;
+}
+
+// The mean-value forms: enclosures of a function over a box from its value at the centre and its
+// gradient enclosed over the box (first-order sharp).
+
+/// Whether the interval contains 0 (an equation may vanish over the box it encloses).
+inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
+/// The midpoint of x as a point interval.
+inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
+
+/// The mean-value form of F over a box: F(c) + sum_k dF/dx_k(X) (x_k - c_k) (fc: F at the centre
+/// c; df: the gradient enclosed over the box X; dx: X - c). Encloses F over X.
+template <int K>
+Interval mean_value(const Interval& fc, const Interval* df, const Interval* dx) {
+  Interval m = fc;
+  for (int k = 0; k < K; ++k) m += df[k] * dx[k];
+  return m;
+}
+
+/// The radius of x about 0: x lies within [-r, r].
+inline double radius(const Interval& x) { return std::max(-x.inf(), x.sup()); }
+
+/// sum_k G_k [-r_k, r_k] = [-s, s] with s = sum_k max|G_k| r_k (outward rounded): the terms of a
+/// mean-value form on a box about its centre (r_k = radius(X_k - c_k)), without interval products.
+template <int K>
+Interval centred_sum(const Interval* g, const double* r) {
+  Interval s(0.0);
+  for (int k = 0; k < K; ++k) s += r[k] * Interval(radius(g[k]));
+  return Interval(-s.sup(), s.sup());
+}
+
+/// The mean-value form of the combination sum_j nu_j F_j, its coefficients combined before they
+/// meet dx (so what cancels between the F_j cancels): encloses that combination over the box for
+/// any nu; a non-finite nu gives [-1, 1] (no information). fc[j], df[j]: as in mean_value.
+template <int J, int K>
+Interval combined_mean_value(const std::array<double, J>& nu, const std::array<Interval, J>& fc,
+                             const std::array<const Interval*, J>& df, const Interval* dx) {
+  for (const double v : nu)
+    if (!std::isfinite(v)) return Interval(-1.0, 1.0);
+  Interval m = nu[0] * fc[0];
+  for (int j = 1; j < J; ++j) m += nu[j] * fc[j];
+  for (int k = 0; k < K; ++k) {
+    Interval coefficient = nu[0] * df[0][k];
+    for (int j = 1; j < J; ++j) coefficient += nu[j] * df[j][k];
+    m += coefficient * dx[k];
+  }
+  return m;
 }
 
 }  // namespace sphtroch

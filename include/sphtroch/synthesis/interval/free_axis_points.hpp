@@ -1,4 +1,4 @@
-// sphtroch/exact/free_axis_points.hpp — every gear train of ratio n whose tracer passes through
+// sphtroch/synthesis/interval/free_axis_points.hpp — every gear train of ratio n whose tracer passes through
 // five given points when the sun axis may be placed anywhere (free axis), certified.
 //
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
@@ -25,7 +25,7 @@
 // Point 1 is the reference of free_axis_detail::reference_point (chosen from the points'
 // geometry, not their order); params are reported in input order.
 //
-// Certificate: the branch and bound of exact/box_search.hpp over the 18 face pairs (outer unknowns
+// Certificate: the branch and bound of root_isolation.hpp over the 18 face pairs (outer unknowns
 // s, w; one list per point for Delta_i), as in precision_points.hpp; besides, the four points'
 // Delta-free combinations, one slab each in (s, w), drop or narrow outer boxes together
 // (narrow_outer: Krawczyk's operator in the four outer unknowns). `certified` means the
@@ -36,17 +36,17 @@
 // that frame. Cost: measured in bench/ and the README.
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/free_axis_points.hpp needs CGAL: link the CMake target sphtroch::exact"
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/synthesis/interval/free_axis_points.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
 #endif
 
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
-#include "sphtroch/exact/box_search.hpp"
-#include "sphtroch/exact/interval_trig.hpp"
-#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
+#include "sphtroch/synthesis/interval/root_isolation.hpp"
+#include "sphtroch/synthesis/interval/precision_points.hpp"
 
 #include <Eigen/Dense>
 
@@ -70,7 +70,7 @@ inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, con
 // Implementation details follow.
 namespace free_axis_detail {
 
-/// {sin, cos} of one angle (interval_trig.hpp).
+/// {sin, cos} of one angle (interval.hpp).
 template <typename T>
 using SinCos = std::pair<T, T>;
 
@@ -346,16 +346,17 @@ inline std::size_t reference_point(const std::vector<Vector3d>& points) {
 
 }  // namespace free_axis_detail
 
-/// The free-axis system for box_search.hpp on one pair of cube faces (s on face sun_face of
+/// The free-axis system for root_isolation.hpp on one pair of cube faces (s on face sun_face of
 /// +x, +y, +z; w on planet_face of all six): outer (s_u, s_v, w_u, w_v), lists Delta_2..Delta_5.
 class FreeAxisSystem {
  public:
+  using Solution = PrecisionSolution;
   static constexpr int kOuter = 4, kLists = 4, N = 8;
   static constexpr double kIsolateWidth = 1.0 / 64;
   static constexpr double kContractWidth = 1.0 / 16;  // below this, Krawczyk narrows outer boxes
   static constexpr double kMeanValueWidth = 0.5;  // may_hold's mean-value forms on boxes this narrow
   // List items up to twice the outer width: may_hold narrows them (measured on the sweep's seed 7,
-  // problems 0, 3, 6, 10, 12, 16: 1x 0.78 of the time before narrowing, 2x 0.74, 3x 0.75).
+  // problems 0, 3, 6, 10, 12, 16: the time against no narrowing: 1x 0.78, 2x 0.74, 3x 0.75).
   static constexpr double kListWidth = 2.0;
   static constexpr double kNarrowItem = 0.7;  // an item is replaced when narrowed below this of its width
   using Outer = std::array<Interval, kOuter>;
@@ -650,7 +651,7 @@ inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, con
     for (int planet = 0; planet < 6; ++planet) systems.emplace_back(ordered, n, sun, planet);
   std::vector<PrecisionPoints> parts(systems.size());
   parallel_for(systems.size(), options.threads,
-               [&](std::size_t k) { parts[k] = BoxSearch<FreeAxisSystem>(systems[k], options).run(); });
+               [&](std::size_t k) { parts[k] = RootIsolation<FreeAxisSystem>(systems[k], options.max_boxes).run(); });
   PrecisionPoints all;
   for (std::size_t k = 0; k < parts.size(); ++k) {  // in face order: the result does not depend on threads
     all.boxes += parts[k].boxes;
@@ -669,9 +670,7 @@ inline PrecisionPoints free_axis_points(const std::vector<Vector3d>& points, con
     for (std::size_t k = 0; k < order.size(); ++k) params[order[k]] = s.params[k];
     s.params = std::move(params);
   }
-  std::sort(all.solutions.begin(), all.solutions.end(), [](const auto& a, const auto& b) {
-    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
-  });
+  sort_solutions(all);
   all.certified = all.undecided == 0;
   return all;
 }

@@ -1,4 +1,4 @@
-// Tests of exact/precision_points.hpp and exact/interval_trig.hpp. Expected values: the hidden
+// Tests of synthesis/interval/precision_points.hpp and synthesis/interval/interval.hpp. Expected values: the hidden
 // train the points were drawn from (forward model TracerCurve, Eq. 4), MPFR at 200 bits for the
 // sine enclosures, and an independent Gauss-Newton on P(theta_i) = P_i in all six unknowns
 // (a2, a3, phase, theta_1..3) from many random starts for completeness. Seeded.
@@ -6,7 +6,7 @@
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/mpreal_support.hpp"
-#include "sphtroch/exact/precision_points.hpp"
+#include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/io/parse.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// sphtroch/exact/precision_points.hpp — every gear train of ratio n whose tracer passes through
+// sphtroch/synthesis/interval/precision_points.hpp — every gear train of ratio n whose tracer passes through
 // three given points (fixed frame: the sun axis is Z of the points' frame), certified.
 //
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
@@ -23,7 +23,7 @@
 // (searched over [-1/16, 2 pi + 1/16], boxes wholly outside [0, 2 pi] dropped: no root on an edge).
 //
 // Certificate. Branch and bound over boxes of x in interval arithmetic (CGAL::Interval_nt; sin
-// and cos from interval_trig.hpp; the engine is exact/box_search.hpp). A box is discarded when
+// and cos from interval.hpp; the engine is root_isolation.hpp). A box is discarded when
 // f, g or the sign condition excludes zero on it (point 2 and point 3 are pruned separately over
 // their own Delta). A small box is given to the Krawczyk operator K(X) = y - Y F(y) + (I - Y J(X))
 // (X - y): K(X) inside X proves exactly one root in X (it is then polished by Newton); K(X)
@@ -37,8 +37,8 @@
 // Cost: grows with q (Delta spans 2 pi q); measured in bench/ and the README.
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/precision_points.hpp needs CGAL: link the CMake target sphtroch::exact"
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/synthesis/interval/precision_points.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
 #endif
 
 #include "sphtroch/core/curve.hpp"
@@ -47,8 +47,8 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
-#include "sphtroch/exact/box_search.hpp"
-#include "sphtroch/exact/interval_trig.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
+#include "sphtroch/synthesis/interval/root_isolation.hpp"
 
 #include <Eigen/Dense>
 
@@ -64,6 +64,35 @@
 #include <vector>
 
 namespace sphtroch {
+
+struct PrecisionPointsOptions {
+  std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
+                                    // (free axis: the bound of each of its 18 searches)
+  std::size_t threads = 1;          // free axis: searches run at once (the result is the same)
+};
+
+struct PrecisionSolution {
+  GearTrain train;               // phase reduced to [0, 2 pi / q)
+  std::vector<double> params;    // theta2 at each point (input order), in [0, 2 pi q)
+  double residual = 0.0;         // max |P(params[i]) - points[i]| (chord), measured in double
+  /// false: Newton's limit in a box the certificate could not decide (a near-singular root, e.g.
+  /// two roots closer than the arithmetic resolves); it passes the points (residual <= 1e-12)
+  /// but is not proven to be a single root, and the list is then not certified.
+  bool isolated = true;
+  /// Columns x, y, z of the train's frame in the points' coordinates (z: the sun axis), so that
+  /// points[i] = frame * P(params[i]); the identity for a fixed frame.
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
+};
+
+/// solutions by a2, then a3; certified, undecided, boxes: as root_isolation.hpp's IsolatedRoots.
+using PrecisionPoints = IsolatedRoots<PrecisionSolution>;
+
+/// Orders a problem's solutions by a2, then a3.
+inline void sort_solutions(PrecisionPoints& r) {
+  std::sort(r.solutions.begin(), r.solutions.end(), [](const PrecisionSolution& a, const PrecisionSolution& b) {
+    return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
+  });
+}
 
 /// Input points must be unit vectors to this, and no two closer than kDistinctPoints (chord).
 constexpr double kPrecisionUnitTolerance = 1e-6;
@@ -87,7 +116,7 @@ struct CarrierView {
   T d_a2[3];     // (0, q_z, -q_y)
 };
 
-/// {sin, cos} of one angle (interval_trig.hpp).
+/// {sin, cos} of one angle (interval.hpp).
 template <typename T>
 using SinCos = std::pair<T, T>;
 
@@ -202,7 +231,7 @@ inline bool outside_theta1_period(const Interval& theta1) {
 
 }  // namespace precision_detail
 
-// Building blocks shared with the free-axis solver (exact/free_axis_points.hpp).
+// Building blocks shared with the free-axis solver (synthesis/interval/free_axis_points.hpp).
 
 /// Points given as unit vectors: checked (count, finite, |P| within kPrecisionUnitTolerance of 1,
 /// no two closer than kDistinctPoints) and normalised. Throws InvalidInput (field "points").
@@ -287,13 +316,14 @@ inline bool same_train_in_frame(const GearTrain& a, const GearTrain& b) {
   return std::fabs(a.a2() - b.a2()) < 1e-9 && std::fabs(a.a3() - b.a3()) < 1e-9 && dp < 1e-9;
 }
 
-/// The fixed-frame system for box_search.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
+/// The fixed-frame system for root_isolation.hpp: outer (a2, theta_1), lists Delta_2, Delta_3.
 class FixedFrameSystem {
  public:
+  using Solution = PrecisionSolution;
   static constexpr int kOuter = 2, kLists = 2, N = 4;
   static constexpr double kIsolateWidth = 1.0 / 1024;  // outer boxes this narrow go to Krawczyk
   static constexpr double kContractWidth = 1.0 / 64;   // below this, Krawczyk narrows outer boxes
-  static constexpr double kListWidth = 1.0;  // list items split to this times the outer width (box_search.hpp)
+  static constexpr double kListWidth = 1.0;  // list items split to this times the outer width (root_isolation.hpp)
   using Outer = std::array<Interval, kOuter>;
 
   /// Throws InvalidInput (field "points") as precision_points() does.
@@ -422,7 +452,9 @@ class FixedFrameSystem {
 inline PrecisionPoints precision_points(const std::vector<Vector3d>& points, const Ratio& n,
                                         const PrecisionPointsOptions& options) {
   const FixedFrameSystem system(points, n);  // checks the points
-  return BoxSearch<FixedFrameSystem>(system, options).run();
+  PrecisionPoints r = RootIsolation<FixedFrameSystem>(system, options.max_boxes).run();
+  sort_solutions(r);
+  return r;
 }
 
 }  // namespace sphtroch

@@ -1,11 +1,11 @@
-// Tests of exact/free_axis_points.hpp: precision points with the sun axis free. Expected values:
+// Tests of synthesis/interval/free_axis_points.hpp: precision points with the sun axis free. Expected values:
 // the hidden train and the hidden rotation the five points were drawn with (forward model
 // TracerCurve, Eq. 4, then a random rotation), the invariant that every solution passes its
-// points, and the fixed-frame solver (exact/precision_points.hpp, another formulation) where the
+// points, and the fixed-frame solver (synthesis/interval/precision_points.hpp, another formulation) where the
 // sun axis is Z. Seeded.
 #include "catch2/catch.hpp"
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/exact/free_axis_points.hpp"
+#include "sphtroch/synthesis/interval/free_axis_points.hpp"
 
 #include <cmath>
 #include <random>
@@ -270,7 +270,7 @@ TEST_CASE("free axis: on the face pair of the hidden root the search finds it an
     const auto [sun, planet] = hidden_faces(pr);
     INFO("problem " << k << ": n = " << pr.hidden.ratio().str() << ", faces " << sun << ", " << planet);
     const FreeAxisSystem system(checked_precision_points(pr.points, 5, "test"), pr.hidden.ratio(), sun, planet);
-    const PrecisionPoints r = BoxSearch<FreeAxisSystem>(system, {20000000}).run();
+    const PrecisionPoints r = RootIsolation<FreeAxisSystem>(system, 20000000).run();
     CHECK(r.certified);
     CHECK(std::any_of(r.solutions.begin(), r.solutions.end(), [&](const PrecisionSolution& s) { return is_hidden(s, pr, 1e-9); }));
     check_solutions_pass_points(r, pr.points);

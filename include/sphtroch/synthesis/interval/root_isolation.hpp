@@ -1,13 +1,14 @@
-// sphtroch/exact/box_search.hpp — certified isolation of ALL roots of a square system F(x) = 0 in
-// a box: interval branch and bound with the Krawczyk operator. The engine of precision points
-// (exact/precision_points.hpp: fixed frame, 4 unknowns; exact/free_axis_points.hpp: free axis, 8).
+// sphtroch/synthesis/interval/root_isolation.hpp — certified isolation of ALL roots of a square
+// system F(x) = 0 in a box: interval branch and bound with the Krawczyk operator. The engine of
+// precision points (precision_points.hpp: fixed frame, 4 unknowns; free_axis_points.hpp: free
+// axis, 8). Needs CGAL's Interval_nt only (headers): the CMake target sphtroch::interval.
 //
 //   // a System: FixedFrameSystem of precision_points.hpp, three points of a train of ratio 1/2
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
 //   const sphtroch::FixedFrameSystem system({curve.point(0.5), curve.point(2.0), curve.point(7.0)},
 //                                                          sphtroch::Ratio(1, 2));
 //   sphtroch::PrecisionPoints r =
-//       sphtroch::BoxSearch<sphtroch::FixedFrameSystem>(system, {}).run();
+//       sphtroch::RootIsolation<sphtroch::FixedFrameSystem>(system, 4000000).run();  // r.solutions: unsorted
 //
 // A System (see FixedFrameSystem in precision_points.hpp for one) has kOuter unknowns split by the
 // outer loop and kLists unknowns (one parameter per precision point) kept as lists of intervals,
@@ -40,13 +41,12 @@
 // most kMaxUnisolatedSolutions trains from them are listed (isolated = false).
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/box_search.hpp needs CGAL: link the CMake target sphtroch::exact"
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/synthesis/interval/root_isolation.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
 #endif
 
-#include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/types.hpp"
-#include "sphtroch/exact/interval_trig.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
 
 #include <Eigen/Dense>
 
@@ -71,81 +71,21 @@ constexpr double kUnisolatedResidual = 1e-12;
 /// of undecided boxes, and each listed train costs its census (measured: 11,429 trains, 135 s).
 constexpr std::size_t kMaxUnisolatedSolutions = 64;
 
-struct PrecisionPointsOptions {
-  std::size_t max_boxes = 4000000;  // work bound: beyond it the result is returned uncertified
-                                    // (free axis: the bound of each of its 18 searches)
-  std::size_t threads = 1;          // free axis: searches run at once (the result is the same)
+/// What a search returns: the System's solutions (its `Solution` type, which has the members
+/// `isolated` and `residual`), in the order found, whether the list is certified complete, and the work.
+template <class Solution>
+struct IsolatedRoots {
+  std::vector<Solution> solutions;
+  bool certified = true;      // every box was excluded or isolated one root (see header)
+  std::size_t undecided = 0;  // boxes left undecided (0 when certified)
+  std::size_t boxes = 0;      // boxes examined (the work)
 };
-
-struct PrecisionSolution {
-  GearTrain train;               // phase reduced to [0, 2 pi / q)
-  std::vector<double> params;    // theta2 at each point (input order), in [0, 2 pi q)
-  double residual = 0.0;         // max |P(params[i]) - points[i]| (chord), measured in double
-  /// false: Newton's limit in a box the certificate could not decide (a near-singular root, e.g.
-  /// two roots closer than the arithmetic resolves); it passes the points (residual <= 1e-12)
-  /// but is not proven to be a single root, and the list is then not certified.
-  bool isolated = true;
-  /// Columns x, y, z of the train's frame in the points' coordinates (z: the sun axis), so that
-  /// points[i] = frame * P(params[i]); the identity for a fixed frame.
-  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
-};
-
-struct PrecisionPoints {
-  std::vector<PrecisionSolution> solutions;  // by a2, then a3
-  bool certified = true;         // every box was excluded or isolated one root (see header)
-  std::size_t undecided = 0;     // boxes left undecided (0 when certified)
-  std::size_t boxes = 0;         // boxes examined (the work)
-};
-
-/// Whether the interval contains 0 (an equation may vanish over the box it encloses).
-inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
-/// The midpoint of x as a point interval.
-inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
-
-/// The mean-value form of F over a box: F(c) + sum_k dF/dx_k(X) (x_k - c_k) (fc: F at the centre
-/// c; df: the gradient enclosed over the box X; dx: X - c). Encloses F over X.
-template <int K>
-Interval mean_value(const Interval& fc, const Interval* df, const Interval* dx) {
-  Interval m = fc;
-  for (int k = 0; k < K; ++k) m += df[k] * dx[k];
-  return m;
-}
-
-/// The radius of x about 0: x lies within [-r, r].
-inline double radius(const Interval& x) { return std::max(-x.inf(), x.sup()); }
-
-/// sum_k G_k [-r_k, r_k] = [-s, s] with s = sum_k max|G_k| r_k (outward rounded): the terms of a
-/// mean-value form on a box about its centre (r_k = radius(X_k - c_k)), without interval products.
-template <int K>
-Interval centred_sum(const Interval* g, const double* r) {
-  Interval s(0.0);
-  for (int k = 0; k < K; ++k) s += r[k] * Interval(radius(g[k]));
-  return Interval(-s.sup(), s.sup());
-}
-
-/// The mean-value form of the combination sum_j nu_j F_j, its coefficients combined before they
-/// meet dx (so what cancels between the F_j cancels): encloses that combination over the box for
-/// any nu; a non-finite nu gives [-1, 1] (no information). fc[j], df[j]: as in mean_value.
-template <int J, int K>
-Interval combined_mean_value(const std::array<double, J>& nu, const std::array<Interval, J>& fc,
-                             const std::array<const Interval*, J>& df, const Interval* dx) {
-  for (const double v : nu)
-    if (!std::isfinite(v)) return Interval(-1.0, 1.0);
-  Interval m = nu[0] * fc[0];
-  for (int j = 1; j < J; ++j) m += nu[j] * fc[j];
-  for (int k = 0; k < K; ++k) {
-    Interval coefficient = nu[0] * df[0][k];
-    for (int j = 1; j < J; ++j) coefficient += nu[j] * df[j][k];
-    m += coefficient * dx[k];
-  }
-  return m;
-}
 
 template <class System>
-class BoxSearch;
+class RootIsolation;
 
 // Implementation details follow.
-namespace box_search_detail {
+namespace root_isolation_detail {
 
 template <int N>
 using Box = std::array<Interval, N>;
@@ -309,25 +249,29 @@ std::optional<std::array<double, System::N>> newton_limit(const System& sys, con
   return y;
 }
 
-}  // namespace box_search_detail
+}  // namespace root_isolation_detail
 
 /// Branch and bound over the outer unknowns with, per point, the list of intervals of its own
 /// unknown still possible; small boxes go to the Krawczyk test in all N unknowns (see header).
 template <class System>
-class BoxSearch {
+class RootIsolation {
   template <int M>
-  using Box = box_search_detail::Box<M>;
-  using KrawczykOutcome = box_search_detail::KrawczykOutcome;
+  using Box = root_isolation_detail::Box<M>;
+  using KrawczykOutcome = root_isolation_detail::KrawczykOutcome;
 
  public:
   static constexpr int N = System::N, kOuter = System::kOuter, kLists = System::kLists;
   using Outer = std::array<Interval, kOuter>;
   using Item = typename System::ListItem;
 
-  BoxSearch(const System& system, const PrecisionPointsOptions& options) : sys_(system), options_(options) {}
+  using Solution = typename System::Solution;
+  using Result = IsolatedRoots<Solution>;
+
+  /// `max_boxes`: the work bound; beyond it the search stops and its result is not certified.
+  RootIsolation(const System& system, std::size_t max_boxes) : sys_(system), max_boxes_(max_boxes) {}
 
   /// Searches the System's domain.
-  PrecisionPoints run() {
+  Result run() {
     std::vector<Node> stack;
     {
       const RoundingGuard upward;  // the interval arithmetic's mode; doubles here are estimates only
@@ -363,7 +307,7 @@ class BoxSearch {
   static constexpr int kMaxContractions = 8;
   enum class NodeContraction { done, narrowed, unchanged };
 
-  bool over_budget() const { return result_.boxes >= options_.max_boxes; }
+  bool over_budget() const { return result_.boxes >= max_boxes_; }
 
   double scaled_width(const Box<N>& x, int k) const {
     const double w = x[k].sup() - x[k].inf();
@@ -385,7 +329,7 @@ class BoxSearch {
       list.erase(list.begin() + static_cast<std::ptrdiff_t>(kept), list.end());
       if (list.empty()) return;
     }
-    if constexpr (box_search_detail::has_narrow_outer<System>::value) {
+    if constexpr (root_isolation_detail::has_narrow_outer<System>::value) {
       const NodeContraction c = narrow_outer(node, view);
       if (c == NodeContraction::done) return;
       if (c == NodeContraction::narrowed) {
@@ -447,7 +391,7 @@ class BoxSearch {
     for (int k = 0; k < kOuter; ++k) x[k] = node.outer[k];
     for (int i = 0; i < kLists; ++i) x[kOuter + i] = span(node.lists[i]);
     const Box<N> before = x;
-    const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
+    const KrawczykOutcome outcome = root_isolation_detail::krawczyk(sys_, x);
     if (outcome == KrawczykOutcome::no_root) return NodeContraction::done;
     if (outcome == KrawczykOutcome::unique_root)
       return record_wide_root(x) ? NodeContraction::done : NodeContraction::unchanged;
@@ -466,7 +410,7 @@ class BoxSearch {
   /// its region. False, with nothing recorded, when that fails: x is then searched as usual.
   bool record_wide_root(const Box<N>& x) {
     const int chart = sys_.chart(x);
-    const auto tiny = proven_tiny_box(box_search_detail::polish(sys_, x, chart),
+    const auto tiny = proven_tiny_box(root_isolation_detail::polish(sys_, x, chart),
                                       [&](const Box<N>& t) { return !contains(x, t) || sys_.chart(t) != chart; });
     if (!tiny) return false;
     roots_.push_back({*tiny, chart});
@@ -598,7 +542,7 @@ class BoxSearch {
   KrawczykOutcome narrowing_krawczyk(Box<N>& x) const {
     for (int round = 1;; ++round) {
       const Box<N> before = x;
-      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, x);
+      const KrawczykOutcome outcome = root_isolation_detail::krawczyk(sys_, x);
       if (outcome != KrawczykOutcome::undecided || round == 4 || !narrowed_by(before, x, 0.8)) return outcome;
     }
   }
@@ -626,8 +570,8 @@ class BoxSearch {
 
   std::optional<int> most_smeared(const Box<N>& x) const {
     std::array<double, N> f{};
-    box_search_detail::Jacobian<double, N> jac{};
-    sys_.equations(box_search_detail::centre<N>(x), f, &jac, box_search_detail::newton_chart(sys_, x));
+    root_isolation_detail::Jacobian<double, N> jac{};
+    sys_.equations(root_isolation_detail::centre<N>(x), f, &jac, root_isolation_detail::newton_chart(sys_, x));
     int best = -1;
     double best_smear = 0.0;
     for (int k = 0; k < N; ++k) {
@@ -662,7 +606,7 @@ class BoxSearch {
   /// certified (Krawczyk on a box of 1e-10 around it) and given its uniqueness region.
   /// Returns whether a region was added.
   bool certify_newton_root(const Box<N>& x) {
-    const auto y = box_search_detail::newton_limit(sys_, x, [&](const std::array<double, N>& p) { return in_known_region(p); });
+    const auto y = root_isolation_detail::newton_limit(sys_, x, [&](const std::array<double, N>& p) { return in_known_region(p); });
     if (!y || !in_domain(*y)) return false;
     const auto tiny = proven_tiny_box(*y, [&](const Box<N>& t) {
       return std::any_of(regions_.begin(), regions_.end(), [&](const Box<N>& u) { return contains(u, t); });
@@ -684,7 +628,7 @@ class BoxSearch {
       for (int k = 0; k < N; ++k) tiny[k] = around(y, k, radius);
       if (rejected(tiny)) return std::nullopt;
       Box<N> narrowed = tiny;
-      const KrawczykOutcome outcome = box_search_detail::krawczyk(sys_, narrowed);
+      const KrawczykOutcome outcome = root_isolation_detail::krawczyk(sys_, narrowed);
       if (outcome == KrawczykOutcome::no_root) return std::nullopt;
       if (outcome == KrawczykOutcome::unique_root) return tiny;
     }
@@ -716,29 +660,26 @@ class BoxSearch {
       Box<N> u;
       for (int k = 0; k < N; ++k) u[k] = around(y, k, r);
       if (!contains(u, tiny)) continue;
-      if (!box_search_detail::contraction_holds(sys_, y, u, chart)) break;
+      if (!root_isolation_detail::contraction_holds(sys_, y, u, chart)) break;
       best = u;
     }
     return best;
   }
 
   void finish() {
-    for (const auto& [x, chart] : roots_) add(sys_.solution(box_search_detail::polish(sys_, x, chart), true));
+    for (const auto& [x, chart] : roots_) add(sys_.solution(root_isolation_detail::polish(sys_, x, chart), true));
     std::size_t unisolated = 0;
     for (const Box<N>& x : undecided_) {
       if (unisolated == kMaxUnisolatedSolutions) break;
-      unisolated += add(sys_.solution(box_search_detail::polish(sys_, x, box_search_detail::newton_chart(sys_, x)), false));
+      unisolated += add(sys_.solution(root_isolation_detail::polish(sys_, x, root_isolation_detail::newton_chart(sys_, x)), false));
     }
-    std::sort(result_.solutions.begin(), result_.solutions.end(), [](const auto& a, const auto& b) {
-      return std::make_pair(a.train.a2(), a.train.a3()) < std::make_pair(b.train.a2(), b.train.a3());
-    });
     result_.certified = result_.undecided == 0;
   }
 
   /// Keeps a solution unless it is none (outside the domain), an unisolated one that does not
   /// pass the points, or a repeat (a root on a shared face of two boxes, or a point that is a
   /// node of the curve). Returns whether it was kept.
-  bool add(std::optional<PrecisionSolution> s) {
+  bool add(std::optional<Solution> s) {
     if (!s || (!s->isolated && !(s->residual <= kUnisolatedResidual))) return false;
     for (const auto& t : result_.solutions)
       if (sys_.same(t, *s)) return false;
@@ -747,8 +688,8 @@ class BoxSearch {
   }
 
   const System sys_;  // a copy: a temporary System may be passed
-  PrecisionPointsOptions options_;
-  PrecisionPoints result_;
+  std::size_t max_boxes_;
+  Result result_;
   std::vector<std::pair<Box<N>, int>> roots_;  // each holds exactly one root (of its chart's equations)
   std::vector<Box<N>> regions_;    // each holds at most one root, one of roots_
   std::vector<Box<N>> undecided_;  // narrower than kMinBoxWidth, still undecided
