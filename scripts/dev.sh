@@ -114,6 +114,6 @@ case $mode in
     "$build_dir/bin/sphtroch" trace --a2 pi/2 --a3 pi/2 --n 1 --samples 16
     ;;
   test)
-    ctest --test-dir "$build_dir" --output-on-failure -j2
+    ctest --test-dir "$build_dir" --output-on-failure -j3  # 3 on 2 cores: several tests wait (FIFO timeouts, Slurm, cmake runs) rather than compute
     ;;
 esac

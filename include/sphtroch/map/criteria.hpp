@@ -332,11 +332,10 @@ inline Criterion pitch_cone_criterion(const GearTrain& train, double tol) {
   return c;
 }
 
-inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) {
-  using namespace criteria_detail;
-  if (!is_n(train, 1))
-    throw InvalidInput("n", train.ratio().str(), "Eq. 25 is the n = 1 node", "n = 1");
-  const Criterion c = criterion_eq24(train, tol);
+namespace criteria_detail {
+
+/// nodes_eq25 with its criterion `c` computed once by the caller (classify_analytic).
+inline std::vector<AnalyticNode> nodes_eq25_of(const GearTrain& train, const Criterion& c, double tol) {
   if (c.status != CriterionStatus::holds_strictly) return {};
   const TwistTrig<double> t = train.trig<double>();
   // Eq. 22b: cos theta2 = -sin a2 cos a3 / (sin a3 (1 + cos a2)). With D = sin a3 (1 + cos a2) > 0,
@@ -353,11 +352,19 @@ inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) 
                       "Eq. 25")};
 }
 
-inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol) {
+}  // namespace criteria_detail
+
+inline std::vector<AnalyticNode> nodes_eq25(const GearTrain& train, double tol) {
   using namespace criteria_detail;
-  if (!is_n(train, 2))
-    throw InvalidInput("n", train.ratio().str(), "Eq. 39b is an n = 2 node", "n = 2");
-  const Criterion c = criterion_eq43(train, tol);
+  if (!is_n(train, 1))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 25 is the n = 1 node", "n = 1");
+  return criteria_detail::nodes_eq25_of(train, criterion_eq24(train, tol), tol);
+}
+
+namespace criteria_detail {
+
+/// nodes_eq39b with its criterion `c` computed once by the caller (classify_analytic).
+inline std::vector<AnalyticNode> nodes_eq39b_of(const GearTrain& train, const Criterion& c, double tol) {
   const double pi_ = pi();
   if (c.status == CriterionStatus::equality_at_upper) {
     // a3 = pi - a2: sin theta2 = 0 in Eq. 39b; theta2 = 0 and pi both reach z = cos(a2 + a3) = -1.
@@ -388,11 +395,19 @@ inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol)
                       "Eq. 39b")};
 }
 
-inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol) {
+}  // namespace criteria_detail
+
+inline std::vector<AnalyticNode> nodes_eq39b(const GearTrain& train, double tol) {
   using namespace criteria_detail;
   if (!is_n(train, 2))
-    throw InvalidInput("n", train.ratio().str(), "Eq. 44b is an n = 2 node", "n = 2");
-  const Criterion c = criterion_eq46(train, tol);
+    throw InvalidInput("n", train.ratio().str(), "Eq. 39b is an n = 2 node", "n = 2");
+  return criteria_detail::nodes_eq39b_of(train, criterion_eq43(train, tol), tol);
+}
+
+namespace criteria_detail {
+
+/// nodes_eq44b with its criterion `c` computed once by the caller (classify_analytic).
+inline std::vector<AnalyticNode> nodes_eq44b_of(const GearTrain& train, const Criterion& c, double tol) {
   const double pi_ = pi();
   if (c.status == CriterionStatus::equality_at_lower) {
     // a3 = a2: cos theta2 = 0 in Eq. 44b; theta2 = pi/2 and 3 pi/2 both reach z = cos(a2 - a3) = 1.
@@ -419,8 +434,19 @@ inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol)
           phased_node(train, Vector3d(0.0, -y, z), {pi_ - theta, pi_ + theta}, NodeKind::crossing, "Eq. 44b")};
 }
 
-inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double tol) {
+}  // namespace criteria_detail
+
+inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tol) {
   using namespace criteria_detail;
+  if (!is_n(train, 2))
+    throw InvalidInput("n", train.ratio().str(), "Eq. 44b is an n = 2 node", "n = 2");
+  return criteria_detail::nodes_eq44b_of(train, criterion_eq46(train, tol), tol);
+}
+
+namespace criteria_detail {
+
+/// pitch_cone_cusps with its criterion `c` computed once by the caller (classify_analytic).
+inline std::vector<AnalyticCusp> pitch_cone_cusps_of(const GearTrain& train, const Criterion& c) {
   // Derivation. dP/dtheta2 = omega x P (Eq. 47a) vanishes iff P is parallel to omega. In the
   // carrier frame omega ~ (0, sin a2, cos a2 + n) = |omega| (0, sin a_p, cos a_p) (Eq. 47b) and
   // the tracer is (sin th3 sin a3, -cos th3 sin a3, cos a3) (Eq. 4). Since sin a3 > 0, parallel
@@ -431,7 +457,6 @@ inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double
   // Each planet angle is reached at |p| carrier angles per period (convention 2). In the base
   // frame omega_hat = Rz(th2) Rx(a2) (0, sin a_p, cos a_p) = (sin a_s sin th2, -sin a_s cos th2,
   // cos a_s): the sun's pitch cone.
-  const Criterion c = pitch_cone_criterion(train, tol);
   const bool on_pitch = c.status == CriterionStatus::equality_at_lower || c.status == CriterionStatus::equality_at_both;
   const bool on_mirror = c.status == CriterionStatus::equality_at_upper || c.status == CriterionStatus::equality_at_both;
   const double a_s = train.sun_cone();
@@ -448,6 +473,13 @@ inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double
   return out;
 }
 
+}  // namespace criteria_detail
+
+inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double tol) {
+  using namespace criteria_detail;
+  return criteria_detail::pitch_cone_cusps_of(train, pitch_cone_criterion(train, tol));
+}
+
 inline AnalyticClassification classify_analytic(const GearTrain& train, double tol) {
   using namespace criteria_detail;
   if (!(tol >= 0.0))
@@ -455,20 +487,20 @@ inline AnalyticClassification classify_analytic(const GearTrain& train, double t
   AnalyticClassification a;
   a.tolerance = tol;
   a.boundaries_hit = boundaries_hit(train, tol);
-  if (is_n(train, 1)) {
+  if (is_n(train, 1)) {  // each criterion computed once, its nodes read from it
     a.applicable = true;
     a.criteria.push_back(criterion_eq24(train, tol));
-    a.nodes = nodes_eq25(train, tol);
+    a.nodes = nodes_eq25_of(train, a.criteria.back(), tol);
   } else if (is_n(train, 2)) {
     a.applicable = true;
     a.criteria.push_back(criterion_eq43(train, tol));
+    a.nodes = nodes_eq39b_of(train, a.criteria.back(), tol);
     a.criteria.push_back(criterion_eq46(train, tol));
-    a.nodes = nodes_eq39b(train, tol);
-    const std::vector<AnalyticNode> more = nodes_eq44b(train, tol);
+    const std::vector<AnalyticNode> more = nodes_eq44b_of(train, a.criteria.back(), tol);
     a.nodes.insert(a.nodes.end(), more.begin(), more.end());
   }
   a.criteria.push_back(pitch_cone_criterion(train, tol));
-  a.cusps = pitch_cone_cusps(train, tol);
+  a.cusps = pitch_cone_cusps_of(train, a.criteria.back());
   a.predicted_cusps = a.cusps.size();
   if (a.applicable) {
     a.predicted_nodes = a.nodes.size();
