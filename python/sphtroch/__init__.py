@@ -19,9 +19,11 @@ from ._sphtroch import (  # noqa: F401
     classify_a3_range,
     crossings,
     fit,
+    fit_text,
     identify,
     scene,
     synth_points,
+    synth_points_text,
     _doc,
 )
 from . import _plot
@@ -30,4 +32,4 @@ from ._arrays import PointSet, attach as _attach
 _attach(GearTrain, _doc)
 _plot.attach(GearTrain, _doc)
 
-__all__ = ["GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "identify", "scene", "synth_points", "__version__"]
+__all__ = ["GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "fit_text", "identify", "scene", "synth_points", "synth_points_text", "__version__"]

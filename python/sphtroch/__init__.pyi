@@ -307,6 +307,14 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     Raises InvalidInput naming "points", "n", "ratios", "teeth", "free_axis" or "threads"."""
 
 
+def synth_points_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
+                      ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None,
+                      free_axis: Flag = False, threads: Optional[Count] = None) -> str:
+    """What synth_points computes, as the text `sphtroch synth points` prints (the same arguments,
+    the same refusals): per ratio its train count and whether the list is certified complete, then
+    each train with its angles, theta2 at the points, residual, census and the command that plots it."""
+
+
 def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
         ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
         cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
@@ -322,3 +330,12 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     (radians, default 1e-6; only with node_at) of that point ("node_distance": to its nearest
     node). Raises InvalidInput naming "points", "n", "ratios", "teeth", "nodes", "cusps", "candidates",
     "max-deviation", "node-at" or "node-tolerance"."""
+
+
+def fit_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
+             ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
+             cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
+             node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> str:
+    """What fit computes, as the text `sphtroch synth fit` prints (the same arguments, the same
+    refusals): the wanted counts, the reason when there is no candidate, then each candidate best
+    first with its distances, margin, census and the command that plots it."""

@@ -85,39 +85,68 @@ RatioSet ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, doub
   return set;
 }
 
+/// What a synth_points call computes from: its points, ratios and searches at once.
+struct PointsCall {
+  std::vector<Vector3d> points;
+  RatioSet request;
+  bool free_axis = false;
+  std::size_t workers = 1;
+};
+
+/// The arguments of synth_points / synth_points_text, checked as the CLI checks them.
+PointsCall points_call(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle free_axis_flag,
+                       py::handle threads) {
+  PointsCall c;
+  c.free_axis = flag_arg(free_axis_flag, "free_axis");
+  c.points = points_arg(points, c.free_axis ? "a (5, 3) array of unit vectors x, y, z" : "a (3, 3) array of unit vectors x, y, z");
+  c.request = ratios_arg(n, ratios, teeth_text, c.free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
+  if (!c.free_axis) {
+    const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
+    check_points_census_work(c.request.ratios, field, repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text));
+  }
+  c.workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
+  if (!threads.is_none()) {
+    if (!c.free_axis)
+      throw InvalidInput("threads", repr_of(threads), "only with free_axis=True", "None or an integer 1 .. 1024, with free_axis=True");
+    c.workers = *optional_count_arg(threads, "threads", 1, 1024);
+  }
+  return c;
+}
+
+/// The report of a synth_points call, the GIL released: JSON text, or with `text` the CLI's text.
+std::string points_report(const PointsCall& c, bool text) {
+  py::gil_scoped_release release;
+  return precision_points_report(c.points, c.request.ratios, c.request.json_members(), c.request.teeth, c.free_axis,
+                                 c.workers, text);
+}
+
 /// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
 /// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
 py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle free_axis_flag,
                         py::handle threads) {
-  const bool free_axis = flag_arg(free_axis_flag, "free_axis");
-  const std::vector<Vector3d> p =
-      points_arg(points, free_axis ? "a (5, 3) array of unit vectors x, y, z" : "a (3, 3) array of unit vectors x, y, z");
-  const RatioSet request = ratios_arg(n, ratios, teeth_text, free_axis ? kMaxFreeAxisWork : kMaxPointsWork);
-  if (!free_axis) {
-    const char* field = !n.is_none() ? "n" : !ratios.is_none() ? "ratios" : "teeth";
-    check_points_census_work(request.ratios, field, repr_of(!n.is_none() ? n : !ratios.is_none() ? ratios : teeth_text));
-  }
-  std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 1024);
-  if (!threads.is_none()) {
-    if (!free_axis)
-      throw InvalidInput("threads", repr_of(threads), "only with free_axis=True", "None or an integer 1 .. 1024, with free_axis=True");
-    workers = *optional_count_arg(threads, "threads", 1, 1024);
-  }
-  std::string json;
-  {
-    py::gil_scoped_release release;
-    json = precision_points_json_text(p, request.ratios, request.json_members(), request.teeth, free_axis, workers);
-  }
-  return py::module_::import("json").attr("loads")(json);
+  const PointsCall c = points_call(points, n, ratios, teeth_text, free_axis_flag, threads);
+  return py::module_::import("json").attr("loads")(points_report(c, false));
 }
 
-/// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
-/// synth fit --json` prints it (a dict).
-py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
-               py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance) {
-  const std::vector<Vector3d> p = points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4");
-  const RatioSet request = ratios_arg(n, ratios, teeth_text, kMaxFitWork);
-  FitOptions o;
+/// sphtroch.synth_points_text(P, n=...): the same, as the text `sphtroch synth points` prints.
+py::str synth_points_text(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text,
+                          py::handle free_axis_flag, py::handle threads) {
+  return py::str(points_report(points_call(points, n, ratios, teeth_text, free_axis_flag, threads), true));
+}
+
+/// What a fit call computes from: the path's points, the ratios and the options.
+struct FitCall {
+  std::vector<Vector3d> points;
+  RatioSet request;
+  FitOptions options;
+};
+
+/// The arguments of fit / fit_text, checked as the CLI checks them.
+FitCall fit_call(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
+                 py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at,
+                 py::handle node_tolerance) {
+  FitCall c{points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4"), ratios_arg(n, ratios, teeth_text, kMaxFitWork), {}};
+  FitOptions& o = c.options;
   const auto count = [](const std::optional<std::size_t>& k) {
     return k ? std::optional<std::int64_t>(static_cast<std::int64_t>(*k)) : std::nullopt;
   };
@@ -135,12 +164,29 @@ py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle te
     if (!o.node_at) throw InvalidInput("node-tolerance", repr_of(node_tolerance), "without node_at", "None, or an angle with node_at");
     o.node_tolerance = real_arg(node_tolerance, "node-tolerance", "radians in (0, pi]");
   }
-  std::string json;
-  {
-    py::gil_scoped_release release;
-    json = fit_json_text(p, request.ratios, o, request.json_members(), request.teeth);
-  }
-  return py::module_::import("json").attr("loads")(json);
+  return c;
+}
+
+/// The report of a fit call, the GIL released: JSON text, or with `text` the CLI's text.
+std::string fit_call_report(const FitCall& c, bool text) {
+  py::gil_scoped_release release;
+  return fit_report(c.points, c.request.ratios, c.options, c.request.json_members(), c.request.teeth, text);
+}
+
+/// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
+/// synth fit --json` prints it (a dict).
+py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
+               py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance) {
+  const FitCall c = fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance);
+  return py::module_::import("json").attr("loads")(fit_call_report(c, false));
+}
+
+/// sphtroch.fit_text(P, n=...): the same, as the text `sphtroch synth fit` prints.
+py::str fit_text_report(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
+                        py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at,
+                        py::handle node_tolerance) {
+  return py::str(fit_call_report(
+      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance), true));
 }
 
 }  // namespace
@@ -150,10 +196,18 @@ void bind_synthesis(py::module_& m) {
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("free_axis") = false,
         py::arg("threads") = py::none(), doc("synth_points"));
+  m.def("synth_points_text", &synth_points_text, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
+        py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("free_axis") = false,
+        py::arg("threads") = py::none(), doc("synth_points_text"));
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
         py::arg("node_tolerance") = py::none(), doc("fit"));
+  m.def("fit_text", &fit_text_report, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
+        py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("nodes") = py::none(),
+        py::arg("cusps") = py::none(), py::arg("candidates") = 5,
+        py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
+        py::arg("node_tolerance") = py::none(), doc("fit_text"));
 }
 
 }  // namespace sphtroch::python

@@ -85,17 +85,19 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
       .dump();
 }
 
-std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields, const TeethSpec& teeth,
-                                      bool free_axis, std::size_t threads) {
+std::string precision_points_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                    const std::string& json_fields, const TeethSpec& teeth, bool free_axis,
+                                    std::size_t threads, bool text) {
   PrecisionPointsOptions options;
   options.threads = threads;
-  return precision_points_json(precision_points_with_census(points, ratios, options, free_axis), json_fields, teeth);
+  const auto all = precision_points_with_census(points, ratios, options, free_axis);
+  return text ? precision_points_text(all, teeth) : precision_points_json(all, json_fields, teeth);
 }
 
-std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                          const std::string& json_fields, const TeethSpec& teeth) {
-  return fit_json(fit_with_census(points, ratios, options), options, json_fields, teeth);
+std::string fit_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
+                       const std::string& json_fields, const TeethSpec& teeth, bool text) {
+  const auto all = fit_with_census(points, ratios, options);
+  return text ? fit_text(all, options, teeth) : fit_json(all, options, json_fields, teeth);
 }
 
 std::string root_classification_json_text(const GearTrain& train, bool literal) {

@@ -47,16 +47,18 @@ std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool li
 /// root_classification_json (classification_output.hpp), JSON text.
 std::string root_classification_json_text(const GearTrain& train, bool literal);
 
-/// `sphtroch synth points --json` (precision_points_output.hpp): every train of each ratio through
-/// the three points (five with free_axis: `threads` searches at once), with its census. InvalidInput "points" for bad points.
-std::string precision_points_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                      const std::string& json_fields, const TeethSpec& teeth,
-                                      bool free_axis, std::size_t threads);
+/// `sphtroch synth points --json`, or with `text` what `sphtroch synth points` prints
+/// (precision_points_output.hpp): every train of each ratio through the three points (five with
+/// free_axis: `threads` searches at once), with its census. InvalidInput "points" for bad points.
+std::string precision_points_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                    const std::string& json_fields, const TeethSpec& teeth, bool free_axis,
+                                    std::size_t threads, bool text);
 
-/// `sphtroch synth fit --json` (path_fit_output.hpp): ranked candidates of the ratios for the
-/// path's points, each confirmed by classify. InvalidInput "points", "nodes", "cusps", "n".
-std::string fit_json_text(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                          const std::string& json_fields, const TeethSpec& teeth);
+/// `sphtroch synth fit --json`, or with `text` what `sphtroch synth fit` prints (path_fit_output.hpp):
+/// ranked candidates of the ratios for the path's points, each confirmed by classify. InvalidInput
+/// "points", "nodes", "cusps", "n".
+std::string fit_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
+                       const std::string& json_fields, const TeethSpec& teeth, bool text);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

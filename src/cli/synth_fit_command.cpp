@@ -49,33 +49,7 @@ FitOptions fit_options(const FitCommandOptions& o) {
   return f;
 }
 
-std::string wanted_text(const FitOptions& f) {
-  std::string s;
-  if (f.nodes) s += std::to_string(*f.nodes) + " node(s)";
-  if (f.cusps) s += (s.empty() ? "" : ", ") + std::to_string(*f.cusps) + " cusp(s)";
-  if (f.node_at)
-    s += (s.empty() ? "" : ", ") + std::string("a node within ") + number_text(f.node_tolerance) + " rad of " +
-         number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z());
-  return s.empty() ? "any counts" : s + " wanted";
-}
 
-void write_fit_text(std::ostream& out, const std::vector<RatioFit>& all, const FitOptions& f, const TeethSpec& teeth) {
-  const auto ranked = ranked_candidates(all, f);
-  out << "fit: " << ranked.size() << " candidate(s), " << wanted_text(f)
-      << "; distances and margins in radians, best first\n";
-  if (ranked.empty()) out << "no candidate: " << fit_reason(all) << "\n";
-  for (std::size_t k = 0; k < ranked.size(); ++k) {
-    const FitCandidate& c = ranked[k]->candidate;
-    const Classification& census = ranked[k]->census;
-    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << number_text(c.train.a2())
-        << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
-        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
-        << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
-        << (f.node_at ? "; node point " + number_text(c.node_distance) + " rad away" : "")
-        << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
-        << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
-  }
-}
 
 /// The options a fit computed with, as text (part of the run's fingerprint).
 std::string options_text(const FitOptions& f) {
@@ -112,7 +86,7 @@ void run_fit(const FitCommandOptions& o) {
   const std::string fields =
       request.json_members() + (o.shard.empty() ? "" : shard_fields(all, f, run_fingerprint(in.vertices, options_text(f))));
   write_output(o.output, [&](std::ostream& out) {
-    if (!o.json) write_fit_text(out, all, f, request.teeth);
+    if (!o.json) out << fit_text(all, f, request.teeth);
     else if (o.shard.empty()) out << fit_json(all, f, fields, request.teeth);
     else out << signed_part(fit_json(all, f, fields, request.teeth));
   });

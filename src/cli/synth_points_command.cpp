@@ -31,29 +31,6 @@ struct PointsOptions {
 
 using RatioSolutions = RatioPrecisionPoints;
 
-void write_points_text(std::ostream& out, const std::vector<RatioSolutions>& all, const TeethSpec& teeth) {
-  std::size_t index = 0;
-  for (const auto& rs : all) {
-    out << "n = " << rs.ratio.str() << teeth_text(teeth, rs.ratio) << ": " << rs.result.solutions.size() << " train(s)"
-        << (rs.result.certified ? ", all of them (certified)" : ", NOT certified complete") << "\n";
-    for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
-      const PrecisionSolution& s = rs.result.solutions[k];
-      const Classification& c = rs.census[k];
-      out << "  " << ++index << ". a2 = " << number_text(s.train.a2()) << ", a3 = " << number_text(s.train.a3())
-          << ", phase = " << number_text(s.train.phase_given());
-      if (rs.free_axis)
-        out << "; sun axis " << vector_json(s.frame.col(2)) << ", frame x " << vector_json(s.frame.col(0)) << ", y "
-            << vector_json(s.frame.col(1));
-      out << "; theta2 at the points:";
-      for (const double t : s.params) out << " " << number_text(t);
-      out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
-          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)")
-          << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
-          << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg"
-          << (rs.free_axis ? " (in the train's frame above)" : "") << "\n";
-    }
-  }
-}
 
 /// After the output is complete: exit 3 when the list is not certified complete or a census is not.
 void check_points_certified(const std::vector<RatioSolutions>& all) {
@@ -93,7 +70,7 @@ void run_points(const PointsOptions& o) {
       request.json_members() + (o.shard.empty() ? "" : "\"run\": \"" + run_fingerprint(in.vertices, o.free_axis ? "points free-axis" : "points") +
                                                          "\", " + digest_placeholder());
   write_output(o.output, [&](std::ostream& out) {
-    if (!o.json) write_points_text(out, all, request.teeth);
+    if (!o.json) out << precision_points_text(all, request.teeth);
     else if (o.shard.empty()) out << precision_points_json(all, fields, request.teeth);
     else out << signed_part(precision_points_json(all, fields, request.teeth));
   });

@@ -274,16 +274,4 @@ inline void add_ratio_set_options(CLI::App& cmd, std::string& input, std::string
   cmd.add_option("--shard,--slice", shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
 }
 
-/// " (teeth 39:15)" when the report echoes teeth for n, else "".
-inline std::string teeth_text(const TeethSpec& teeth, const Ratio& n) {
-  const auto t = teeth.of(n);
-  return t ? " (teeth " + t->str() + ")" : "";
-}
-
-/// The arguments that make `sphtroch trace` / `plot` draw this train.
-inline std::string train_arguments(const GearTrain& g) {
-  return "--n " + g.ratio().str() + " --a2 " + number_text(g.a2()) + " --a3 " + number_text(g.a3()) + " --phase " +
-         number_text(g.phase_given());
-}
-
 }  // namespace sphtroch::cli

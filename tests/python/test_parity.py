@@ -118,3 +118,22 @@ def test_atlas_svg_and_summary_are_the_tools(tmp_path):
     assert strip(a["summary"]) == strip(done.stdout)
     assert a["uncertified"] == ""
     assert "svg" not in sphtroch.atlas(2, grid=4)
+
+
+def test_synth_text_reports_are_the_text_the_tool_prints(tmp_path):
+    tr = sphtroch.GearTrain(1.0, 2.0, "1/2", phase=0.3)
+    _, P = tr.trace(samples=40)
+    three = P[[2, 11, 29]]
+    points = tmp_path / "pts.csv"
+    points.write_text("x,y,z\n" + "".join(",".join(repr(float(v)) for v in row) + "\n" for row in three))
+    text = sphtroch.synth_points_text(three, teeth="12:24")
+    assert text.startswith("n = 1/2 (teeth 12:24): ") and "plot it: sphtroch plot" in text
+    assert untimed(text) == untimed(run_cli("synth", "points", "--input", str(points), "--teeth", "12:24"))
+    tr = sphtroch.GearTrain(1.1, 0.9, 2, phase=0.4)
+    _, path = tr.trace(samples=300)
+    path_file = tmp_path / "path.csv"
+    path_file.write_text("x,y,z\n" + "".join(",".join(repr(float(v)) for v in row) + "\n" for row in path))
+    text = sphtroch.fit_text(path, n=2, nodes=2, candidates=3)
+    assert text.startswith("fit: ")
+    assert untimed(text) == untimed(run_cli("synth", "fit", "--input", str(path_file), "--n", "2", "--nodes", "2",
+                                            "--candidates", "3"))

@@ -1,11 +1,13 @@
 // sphtroch/exact/path_fit_output.hpp — fit over a set of ratios with every candidate confirmed by
-// classify(), and the JSON that `sphtroch synth fit --json` and Python's fit print.
+// classify(), and the reports: the JSON that `sphtroch synth fit --json` and Python's fit print, and
+// the text that `sphtroch synth fit` and Python's fit_text print.
 //
 //   const sphtroch::GearTrain hidden(1.1, 0.9, sphtroch::Ratio(2), 0.4);
 //   const auto points = sphtroch::sample_period(sphtroch::TracerCurve<double>(hidden), 200).points;
 //   sphtroch::FitOptions o;  o.nodes = 2;
 //   auto fits = sphtroch::fit_with_census(points, {sphtroch::Ratio(2)}, o);
 //   std::string json = sphtroch::fit_json(fits, o);   // {"candidates": [...], "reason": ""}
+//   std::string text = sphtroch::fit_text(fits, o);   // "fit: 1 candidate(s), 2 node(s) wanted; ..."
 //
 // The promise: with a wanted node (cusp) count, every candidate listed has exactly that count by
 // classify(), certified; a candidate whose census is not certified or differs (a shape the root
@@ -27,6 +29,7 @@
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
+#include "sphtroch/io/train_text.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <algorithm>
@@ -153,6 +156,40 @@ inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& 
   out += std::string(ranked.empty() ? "" : "\n") + "], \"reason\": \"" + escaped + "\", \"dropped\": " +
          std::to_string(dropped) + "}\n";
   return out;
+}
+
+/// The counts a fit was asked for, in words: "4 node(s), 2 cusp(s) wanted", "any counts".
+inline std::string wanted_text(const FitOptions& f) {
+  std::string s;
+  if (f.nodes) s += std::to_string(*f.nodes) + " node(s)";
+  if (f.cusps) s += (s.empty() ? "" : ", ") + std::to_string(*f.cusps) + " cusp(s)";
+  if (f.node_at)
+    s += (s.empty() ? "" : ", ") + std::string("a node within ") + number_text(f.node_tolerance) + " rad of " +
+         number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z());
+  return s.empty() ? "any counts" : s + " wanted";
+}
+
+/// The ranked candidates as text for people (what `sphtroch synth fit` prints): a header line, the
+/// reason when there is none, then each candidate with its distances, margin, census and the
+/// command that plots it.
+inline std::string fit_text(const std::vector<RatioFit>& all, const FitOptions& f, const TeethSpec& teeth = {}) {
+  std::ostringstream out;
+  const auto ranked = ranked_candidates(all, f);
+  out << "fit: " << ranked.size() << " candidate(s), " << wanted_text(f)
+      << "; distances and margins in radians, best first\n";
+  if (ranked.empty()) out << "no candidate: " << fit_reason(all) << "\n";
+  for (std::size_t k = 0; k < ranked.size(); ++k) {
+    const FitCandidate& c = ranked[k]->candidate;
+    const Classification& census = ranked[k]->census;
+    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << number_text(c.train.a2())
+        << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
+        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
+        << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
+        << (f.node_at ? "; node point " + number_text(c.node_distance) + " rad away" : "")
+        << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
+        << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
+  }
+  return out.str();
 }
 
 }  // namespace sphtroch

@@ -1,10 +1,12 @@
 // sphtroch/exact/precision_points_output.hpp — precision points over a set of ratios, each train
-// with its census, and the JSON that `sphtroch synth points --json` and Python's synth_points print.
+// with its census, and the reports: the JSON that `sphtroch synth points --json` and Python's
+// synth_points print, and the text that `sphtroch synth points` and Python's synth_points_text print.
 //
 //   const sphtroch::TracerCurve<double> curve(sphtroch::GearTrain(1.0, 2.0, sphtroch::Ratio(1, 2), 0.3));
 //   std::vector<sphtroch::Vector3d> pts = {curve.point(0.5), curve.point(2.0), curve.point(7.0)};
 //   auto all = sphtroch::precision_points_with_census(pts, {sphtroch::Ratio(1, 2)});
 //   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
+//   std::string text = sphtroch::precision_points_text(all);   // "n = 1/2: 4 train(s), all of them (certified)\n..."
 //
 // JSON: {"solutions": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
 // free axis only: "axis": [x, y, z] (the sun axis), "frame": [X, Y, Z], the train's axes in the
@@ -22,6 +24,7 @@
 #include "sphtroch/exact/analysis.hpp"  // classify()
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
+#include "sphtroch/io/train_text.hpp"
 #include "sphtroch/synthesis/interval/free_axis_points.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
 
@@ -98,6 +101,35 @@ inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>
   out += std::string(first ? "" : "\n") + "], \"complete\": " + (complete ? "true" : "false") +
          ", \"undecided_boxes\": " + std::to_string(undecided) + "}\n";
   return out;
+}
+
+/// The whole result as text for people (what `sphtroch synth points` prints): per ratio a line
+/// with its train count and whether the list is certified complete, then each train with its
+/// angles, theta2 at the points, residual, census and the command that plots it.
+inline std::string precision_points_text(const std::vector<RatioPrecisionPoints>& all, const TeethSpec& teeth = {}) {
+  std::ostringstream out;
+  std::size_t index = 0;
+  for (const auto& rs : all) {
+    out << "n = " << rs.ratio.str() << teeth_text(teeth, rs.ratio) << ": " << rs.result.solutions.size() << " train(s)"
+        << (rs.result.certified ? ", all of them (certified)" : ", NOT certified complete") << "\n";
+    for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
+      const PrecisionSolution& s = rs.result.solutions[k];
+      const Classification& c = rs.census[k];
+      out << "  " << ++index << ". a2 = " << number_text(s.train.a2()) << ", a3 = " << number_text(s.train.a3())
+          << ", phase = " << number_text(s.train.phase_given());
+      if (rs.free_axis)
+        out << "; sun axis " << vector_json(s.frame.col(2)) << ", frame x " << vector_json(s.frame.col(0)) << ", y "
+            << vector_json(s.frame.col(1));
+      out << "; theta2 at the points:";
+      for (const double t : s.params) out << " " << number_text(t);
+      out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
+          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)")
+          << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
+          << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg"
+          << (rs.free_axis ? " (in the train's frame above)" : "") << "\n";
+    }
+  }
+  return out.str();
 }
 
 }  // namespace sphtroch

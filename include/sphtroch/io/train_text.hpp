@@ -50,4 +50,16 @@ struct TrainText {
   }
 };
 
+/// " (teeth 39:15)" when a report echoes teeth for n (TeethSpec::of), else "".
+inline std::string teeth_text(const TeethSpec& teeth, const Ratio& n) {
+  const auto t = teeth.of(n);
+  return t ? " (teeth " + t->str() + ")" : "";
+}
+
+/// The arguments that make `sphtroch trace` / `plot` draw this train ("--n 2 --a2 1.1 ...").
+inline std::string train_arguments(const GearTrain& g) {
+  return "--n " + g.ratio().str() + " --a2 " + number_text(g.a2()) + " --a3 " + number_text(g.a3()) + " --phase " +
+         number_text(g.phase_given());
+}
+
 }  // namespace sphtroch
