@@ -39,7 +39,7 @@ namespace sphtroch {
 using Interval = CGAL::Interval_nt<false>;
 using RoundingGuard = CGAL::Protect_FPU_rounding<true>;
 
-namespace interval_trig_detail {
+namespace interval_detail {
 
 /// x lowered / raised by at least 2 ulps (the library's bound is 1): |x| 2^-50 is 4 to 8 ulps, and the absolute term
 /// covers subnormals; computed in round-to-nearest (half an ulp lost), clamped to [-1, 1].
@@ -87,7 +87,7 @@ inline std::pair<Interval, Interval> thin_sincos(double lo, double hi) {
           Interval(std::max(widen_down(c_c) - dc, -1.0), std::min(widen_up(c_c) + dc, 1.0))};
 }
 
-}  // namespace interval_trig_detail
+}  // namespace interval_detail
 
 /// Intervals narrower than this (radians) take thin_sincos: one library call instead of two, and
 /// as sharp to first order (the extra width is at most 2 r^2).
@@ -96,7 +96,7 @@ constexpr double kThinTrigWidth = 1.0 / 8;
 /// Encloses sin and cos over `x`: {sin, cos}. REQUIRES the rounding mode to nearest (the
 /// library's bound holds in that mode); interval_sincos and interval_sincos_all set it.
 inline std::pair<Interval, Interval> interval_sincos_in_nearest_mode(const Interval& x) {
-  namespace d = interval_trig_detail;
+  namespace d = interval_detail;
   const double lo = x.inf(), hi = x.sup();
   if (!(hi - lo < 6.283)) return {Interval(-1.0, 1.0), Interval(-1.0, 1.0)};  // also NaN ends
 #if !defined(__GLIBC__)
@@ -144,7 +144,7 @@ inline Interval interval_cos(const Interval& x) { return interval_sincos(x).seco
 /// The same names for doubles, so that one template evaluates a function in either type.
 inline std::pair<double, double> interval_sincos(double x) {
   std::pair<double, double> r;
-  interval_trig_detail::sin_cos(x, r.first, r.second);
+  interval_detail::sin_cos(x, r.first, r.second);
   return r;
 }
 template <std::size_t N>
