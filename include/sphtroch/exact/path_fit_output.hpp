@@ -32,6 +32,8 @@
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <limits>
 #include <set>
@@ -150,11 +152,8 @@ inline std::string fit_json(const std::vector<RatioFit>& all, const FitOptions& 
   for (std::size_t k = 0; k < ranked.size(); ++k) out += (k ? ",\n  " : "\n  ") + fit_candidate_json(*ranked[k], teeth, options.node_at.has_value());
   std::size_t dropped = 0;
   for (const RatioFit& rf : all) dropped += rf.dropped;
-  std::string reason = fit_reason(all);
-  std::string escaped;
-  for (char ch : reason) escaped += ch == '"' || ch == '\\' ? std::string("\\") + ch : std::string(1, ch);
-  out += std::string(ranked.empty() ? "" : "\n") + "], \"reason\": \"" + escaped + "\", \"dropped\": " +
-         std::to_string(dropped) + "}\n";
+  out += std::string(ranked.empty() ? "" : "\n") + "], \"reason\": " + nlohmann::json(fit_reason(all)).dump() +
+         ", \"dropped\": " + std::to_string(dropped) + "}\n";  // the reason escaped as JSON (control characters too)
   return out;
 }
 
