@@ -5,15 +5,19 @@
 // parsers (io/train_text.hpp), so a URL, a scene, the CLI and the page read a train alike. No
 // exception reaches JavaScript: a refused input returns {error: "<the CLI's one line>"} (the
 // field, the value, the valid range), and the page shows that line instead of any number.
-// Nothing here starts a thread.
+// Where the library writes a format (the trace CSV, the sphere picture SVG), the module returns
+// the library's text, so that the page's exports are the bytes of `sphtroch trace` and `sphtroch
+// plot` (the picture's grid lines up to a vertex: see plot_svg). Nothing here starts a thread.
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
+#include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/criteria.hpp"
@@ -29,6 +33,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -132,32 +137,63 @@ val criteria_list(const std::vector<sphtroch::Criterion>& criteria) {
   return out;
 }
 
-/// The class, counts and node points of one train by the root census (classify_roots), with the
-/// second count of the boundary set (node_count_off_events) as its check: `certified` is true
-/// when the two independent counts agree (a train on an event has no second count: false).
+/// The page's census of one train: the root census (classify_roots) of the train read onto its
+/// boundaries (`analysed`, as the CLI reads it), with the second count of the boundary set
+/// (node_count_off_events) as its check: `certified` is true when the two independent counts
+/// agree (a train on an event has no second count: false).
+struct PageCensus {
+  GearTrain analysed;
+  sphtroch::RootClassification roots;
+  std::int64_t second = 0;
+  bool certified = false;
+};
+
+PageCensus page_census(const GearTrain& t) {
+  PageCensus p{sphtroch::snap_to_boundaries(t, sphtroch::Reading{}.boundary()).train, sphtroch::classify_roots(t)};
+  const sphtroch::RootClassification& c = p.roots;
+  p.second = sphtroch::node_count_off_events(c.a2, c.a3, t.ratio());
+  p.certified = c.boundaries.empty() && c.tangencies == 0 && p.second == static_cast<std::int64_t>(c.nodes);
+  return p;
+}
+
+/// The cusps of the analysed train as `sphtroch plot` and `sphtroch nodes` list them (the cusp
+/// stage of exact/analysis.hpp): the pitch-cone criterion's parameters, the point and speed there.
+std::vector<sphtroch::Cusp> cusps_of(const GearTrain& analysed) {
+  const sphtroch::TracerCurve<double> curve(analysed);
+  std::vector<sphtroch::Cusp> out;
+  for (const sphtroch::AnalyticCusp& a : sphtroch::pitch_cone_cusps(analysed, sphtroch::kCuspResolution)) {
+    sphtroch::Cusp k;
+    k.param = a.param;
+    k.position = curve.point(a.param);
+    k.speed = curve.velocity(a.param).norm();
+    out.push_back(k);
+  }
+  return out;
+}
+
+/// The class, counts and node points of one train by the page's census (PageCensus).
 val classify(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
              const std::string& teeth) {
   return guarded([&] {
     const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
-    const sphtroch::RootClassification c = sphtroch::classify_roots(t);
-    // The cusps where classify_roots finds them: on the train read onto its boundaries.
-    const sphtroch::SnappedTrain snapped = sphtroch::snap_to_boundaries(t, sphtroch::Reading{}.boundary());
+    const PageCensus census = page_census(t);
+    const sphtroch::RootClassification& c = census.roots;
     const sphtroch::ZExtremes z = sphtroch::z_extremes(t);
     const sphtroch::AnalyticClassification a = sphtroch::classify_analytic(t);
-    const std::int64_t second = sphtroch::node_count_off_events(c.a2, c.a3, t.ratio());
     val out = train_object(t);
     out.set("class", std::string(sphtroch::to_string(c.curve_class)));
     out.set("nodes", static_cast<double>(c.nodes));
     out.set("crossings", static_cast<double>(c.crossings));
     out.set("tangencies", static_cast<double>(c.tangencies));
     out.set("cusps", static_cast<double>(c.cusps));
-    out.set("boundaryCount", static_cast<double>(second));
-    out.set("certified", c.boundaries.empty() && c.tangencies == 0 && second == static_cast<std::int64_t>(c.nodes));
+    out.set("boundaryCount", static_cast<double>(census.second));
+    out.set("certified", census.certified);
     out.set("readOn", string_list(c.boundaries));
     out.set("nodePoints", node_list(c.node_points));
     out.set("nodePositions", node_positions(c.node_points));
+    // The cusps where classify_roots finds them: on the train read onto its boundaries.
     std::vector<double> cusp_xyz;
-    for (const sphtroch::AnalyticCusp& cusp : sphtroch::pitch_cone_cusps(snapped.train, sphtroch::kCuspResolution))
+    for (const sphtroch::AnalyticCusp& cusp : sphtroch::pitch_cone_cusps(census.analysed, sphtroch::kCuspResolution))
       cusp_xyz.insert(cusp_xyz.end(), cusp.position.data(), cusp.position.data() + 3);
     out.set("cuspPositions", float64_array(cusp_xyz));
     out.set("zMax", z.z_max);
@@ -168,6 +204,14 @@ val classify(const std::string& a2, const std::string& a3, const std::string& n,
   });
 }
 
+/// A sample count the page may ask for: an integer 3 .. 1e6 (InvalidInput "samples" otherwise).
+std::size_t page_samples(double samples) {
+  if (!(samples >= 3 && samples <= 1e6 && samples == static_cast<double>(static_cast<std::int64_t>(samples))))
+    throw sphtroch::InvalidInput("samples", sphtroch::number_text(samples), "outside the valid range",
+                                 "integer 3 .. 1000000");
+  return static_cast<std::size_t>(samples);
+}
+
 /// `samples` points of one period (the CLI's trace --samples), as x0 y0 z0 x1 ... (unit vectors),
 /// and with `velocity` their velocities dP/dtheta2 = omega x P (Eq. 47a; the CLI's --velocity) as
 /// `velocities`, laid out the same.
@@ -175,16 +219,58 @@ val trace(const std::string& a2, const std::string& a3, const std::string& n, co
           const std::string& teeth, double samples, bool velocity) {
   return guarded([&] {
     const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
-    if (!(samples >= 3 && samples <= 1e6 && samples == static_cast<double>(static_cast<std::int64_t>(samples))))
-      throw sphtroch::InvalidInput("samples", sphtroch::number_text(samples), "outside the valid range",
-                                   "integer 3 .. 1000000");
     const sphtroch::TracerCurve<double> curve(t);
-    const auto sampled = sphtroch::sample_period(curve, static_cast<std::size_t>(samples), velocity);
+    const auto sampled = sphtroch::sample_period(curve, page_samples(samples), velocity);
     val out = val::object();
     out.set("points", float64_array(flat(sampled.points)));
     if (velocity) out.set("velocities", float64_array(flat(sampled.velocities)));
     out.set("params", float64_array(sampled.t));
     return out;
+  });
+}
+
+val text_object(const std::string& text) {
+  val out = val::object();
+  out.set("text", text);
+  return out;
+}
+
+/// The trace CSV of `samples` points of one period of the train as given: {text}, the bytes
+/// `sphtroch trace --samples N` prints for the same texts (io/trace_output.hpp's writer).
+val trace_csv(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+              const std::string& teeth, double samples) {
+  return guarded([&] {
+    const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
+    std::ostringstream out;
+    sphtroch::write_trajectory_csv(out, sphtroch::sample_period(sphtroch::TracerCurve<double>(t), page_samples(samples)));
+    return text_object(out.str());
+  });
+}
+
+/// The caption of `sphtroch plot` (draw/svg_plot.hpp's plot_caption_text, the tool's words); a
+/// count the page could not check (PageCensus::certified false) is said so.
+std::string plot_caption(const sphtroch::TrainText& text, const PageCensus& census, std::size_t cusps) {
+  const sphtroch::RootClassification& c = census.roots;
+  const std::string caption = sphtroch::plot_caption_text(text, census.analysed, c.crossings, c.tangencies, cusps);
+  return census.certified ? caption : caption + " — count not certified in the page: run sphtroch plot";
+}
+
+/// The sphere picture of `sphtroch plot` for the same texts (draw/svg_plot.hpp's renderer, the
+/// default view and size): {text}. The curve, the cusps and the caption's train are those of the
+/// train read onto its boundaries, as the CLI's; the node marks are the page's census (the root
+/// census, the CLI's count when certified; its marks agree with the CLI's at the picture's
+/// precision, labelled in the same order, by the first branch parameter).
+val plot_svg(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+             const std::string& teeth) {
+  return guarded([&] {
+    const sphtroch::TrainText text = train_text(a2, a3, n, phase, teeth);
+    const PageCensus census = page_census(text.train());
+    const std::vector<sphtroch::Cusp> cusps = cusps_of(census.analysed);
+    sphtroch::PlotOptions options;
+    options.caption = plot_caption(text, census, cusps.size());
+    const sphtroch::Trajectory<double> trajectory =
+        sphtroch::sample_period(sphtroch::TracerCurve<double>(census.analysed), sphtroch::plot_sample_count(census.analysed));
+    return text_object(sphtroch::render_sphere_svg(trajectory, census.roots.node_points, cusps, options));
   });
 }
 
@@ -374,6 +460,8 @@ std::string number_text(double v) { return sphtroch::number_text(v); }
 EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("classify", &classify);
   emscripten::function("trace", &trace);
+  emscripten::function("traceCsv", &trace_csv);
+  emscripten::function("plotSvg", &plot_svg);
   emscripten::function("events", &events);
   emscripten::function("mapCounts", &map_counts);
   emscripten::function("loci", &loci);

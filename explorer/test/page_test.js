@@ -5,7 +5,8 @@
 //    within 1e-9 of `sphtroch nodes`, the hash round-trips;
 //  - bad input: the CLI's one-line message and no number left from before;
 //  - a drag on the a2 slider and a click on the design map move the state as they should;
-//  - the exported scene JSON runs with `sphtroch scene` and gives the page's counts;
+//  - the exported scene JSON runs with `sphtroch scene` and gives the page's counts; the exported
+//    trace CSV and sphere SVG (written by the module) are the bytes of `sphtroch trace` and `plot`;
 //  - no console error; a screenshot where the sphere and the map are drawn (not blank); the pitch
 //    cones drawn (turning them off and on changes the sphere's pixels, in the cones' colours).
 // Exit status 0 when every check holds; each failure is printed.
@@ -184,6 +185,35 @@ async function checkSceneExport(page) {
     'scene export: the scene counts ' + JSON.stringify(c.counts) + ' differ from the page (' + got.nodes + ' nodes)');
   const listed = await page.textContent('[data-testid="node-list-count"]');
   check(Number(listed) === Number(got.nodes) + Number(got.cusps), 'node list: ' + listed + ' rows for ' + got.nodes + ' nodes');
+}
+
+// The trace CSV and the sphere SVG are the library's (the module's traceCsv and plotSvg): the
+// bytes `sphtroch trace --samples N` (N: the page's samples, the CSV's rows) and `sphtroch plot`
+// write for the same texts (the sines under the curve and the grid are core/portable_trig.hpp's,
+// the same bits in the module and natively).
+async function checkTraceAndPlotExports(page) {
+  const fs = require('fs');
+  const saved = async (button, name) => {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click(button)]);
+    const file = path.join(outDir, name);
+    await download.saveAs(file);
+    return fs.readFileSync(file, 'utf8');
+  };
+  for (const s of [{ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }, { a2: '60deg', a3: 'pi/2', n: '', teeth: '39:15', phase: '0.25' }]) {
+    await open(page, hashOf(s));
+    const where = JSON.stringify(s);
+    const csv = await saved('#export-csv', 'export_trace.csv');
+    const samples = csv.split('\n').length - 2;  // the header and the final newline
+    const traceFile = path.join(outDir, 'cli_trace.csv');
+    const trace = cli(['trace', ...trainArgs(s), '--samples', String(samples), '-o', traceFile]);
+    check(samples >= 2000 && trace.status === 0 && csv === fs.readFileSync(traceFile, 'utf8'),
+      where + ': the trace CSV export (' + samples + ' rows) differs from sphtroch trace: ' + trace.stderr);
+    const svg = await saved('#export-svg', 'export_sphere.svg');
+    const plotFile = path.join(outDir, 'cli_sphere.svg');
+    const plot = cli(['plot', ...trainArgs(s), '-o', plotFile]);
+    check(plot.status === 0 && svg === fs.readFileSync(plotFile, 'utf8'),
+      where + ': the sphere SVG export differs from sphtroch plot: ' + plot.stderr);
+  }
 }
 
 // Inverse design: the CSV of `sphtroch trace` pasted as the path gives back its train first (a2,
@@ -368,6 +398,7 @@ async function checkDrawn(page) {
     await checkBadInput(page);
     await checkSliderAndMap(page);
     await checkSceneExport(page);
+    await checkTraceAndPlotExports(page);
     await checkInverseDesign(page);
     await checkThroughPoints(page);
     await checkDrawn(page);
@@ -376,6 +407,6 @@ async function checkDrawn(page) {
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, inverse design, through 3 points, drawn, legend, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, drawn, legend, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

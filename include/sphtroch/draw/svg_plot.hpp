@@ -46,10 +46,13 @@
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <algorithm>
@@ -175,6 +178,20 @@ inline HemisphereSplit split_by_silhouette(const std::vector<Vector3d>& points, 
 /// The whole picture as a standalone SVG 1.1 document (see the header comment).
 inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
                               const std::vector<Cusp>& cusps, const PlotOptions& options);
+
+/// The caption of `sphtroch plot`: "a2 = A2, a3 = A3, n = p/q[ (teeth ZS:ZP)][, phase = PH] — N
+/// node(s)[ (C crossing, T tangency)], K cusp(s)", the angles as typed, the phase shown when the
+/// analysed phase is not 0, N = crossings + tangencies. One text for the tool, Python and the
+/// explorer; what a census says of its certificate is appended by the caller.
+inline std::string plot_caption_text(const TrainText& text, const GearTrain& analysed, std::size_t crossings,
+                                     std::size_t tangencies, std::size_t cusps) {
+  std::string caption = "a2 = " + text.a2 + ", a3 = " + text.a3 + ", n = " + analysed.ratio().str() + text.teeth_note();
+  if (analysed.phase() != 0.0) caption += ", phase = " + text.phase;
+  caption += " — " + std::to_string(crossings + tangencies) + " node(s)";
+  if (crossings + tangencies != 0)
+    caption += " (" + std::to_string(crossings) + " crossing, " + std::to_string(tangencies) + " tangency)";
+  return caption + ", " + std::to_string(cusps) + " cusp(s)";
+}
 
 // ---------------------------------------------------------------------------------------------
 // Implementation details follow.
@@ -438,7 +455,8 @@ inline std::vector<Vector3d> great_circle(const Vector3d& u, const Vector3d& v, 
   pts.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = Constants<double>::two_pi() * static_cast<double>(i) / static_cast<double>(n);
-    pts.push_back(std::cos(t) * u + std::sin(t) * v);
+    const SinCos<double> s = sin_cos(t);  // portable_trig.hpp: the same bits natively and in the explorer
+    pts.push_back(s.cos * u + s.sin * v);
   }
   return pts;
 }

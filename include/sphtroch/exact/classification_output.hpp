@@ -439,15 +439,10 @@ inline std::string plot_caption(const TrainText& text, const GearTrain& analysed
                                 const std::vector<Cusp>& cusps, const CensusCertificate* certificate) {
   std::size_t crossings = 0, tangencies = 0;
   for (const Node& n : nodes) (n.kind == NodeKind::crossing ? crossings : tangencies)++;
-  std::ostringstream caption;
-  caption << "a2 = " << text.a2 << ", a3 = " << text.a3 << ", n = " << analysed.ratio().str() << text.teeth_note();
-  if (analysed.phase() != 0.0) caption << ", phase = " << text.phase;
-  caption << " — " << nodes.size() << " node(s)";
-  if (!nodes.empty()) caption << " (" << crossings << " crossing, " << tangencies << " tangency)";
-  caption << ", " << cusps.size() << " cusp(s)";
+  std::string caption = plot_caption_text(text, analysed, crossings, tangencies, cusps.size());  // svg_plot.hpp
   if (certificate && !certificate->certified)
-    caption << " — UNCERTIFIED (root-count census: " << certificate->root_nodes << ")";
-  return caption.str();
+    caption += " — UNCERTIFIED (root-count census: " + std::to_string(certificate->root_nodes) + ")";
+  return caption;
 }
 
 inline std::string plot_svg(const TrainText& text, const GearTrain& analysed, const Trajectory<double>& trajectory,

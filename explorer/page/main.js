@@ -1,0 +1,41 @@
+// main.js — starts the explorer page: controls, readouts, the sphere view, the design map (in a
+// worker) and the a3 ruler, all computed by the library's WebAssembly module (sphtroch.js). The
+// page's scripts, loaded in this order by index.html, share window.Explorer (state.js):
+//   state.js           the state, the URL hash, the text fields; compute and update
+//   readouts.js        the readouts, the node list, the equivalent command
+//   ruler.js           the a3 ruler and the list of events
+//   sphere.js          the sphere view: projection, drawing, its input
+//   map.js             the design map: worker, cells, boundary curves, legend, its input
+//   inverse_design.js  the wanted path, fit, through 3 points, the candidates
+//   controls.js        text fields, sliders, hash changes
+//   exports.js         trace CSV, sphere SVG, scene JSON, the command copied
+//   main.js            this: the start
+// Test contract (docs/explorer.md): data-testid nodes, crossings, tangencies, cusps, class, error,
+// one data-testid="event" per a3 event (data-a3: shortest round-trip text, data-kind); the state
+// lives in the URL hash (#a2=pi/3&a3=pi/2&n=2&phase=0) and is applied on load; body[data-ready]
+// is "1" once the first state is drawn.
+'use strict';
+{
+  const X = window.Explorer;
+
+  function start(module) {
+    X.lib = module;
+    X.state = X.readHash();
+    X.fillFields();
+    X.setupControls();
+    X.setupExports();
+    X.setupSphereInput();
+    X.setupMapInput();
+    X.setupFit();
+    X.update(false);
+    // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
+    window.sphtrochExplorer = { state: () => Object.assign({}, X.state),
+      nodePositions: () => (X.result ? Array.from(X.result.nodePositions) : []),
+      cuspPositions: () => (X.result ? Array.from(X.result.cuspPositions) : []),
+      timing: () => Object.assign({}, X.timing), project: (p) => X.project(p), lib: module };
+    document.body.dataset.ready = '1';
+    window.requestAnimationFrame(X.animate);
+  }
+
+  createSphtroch().then(start);
+}

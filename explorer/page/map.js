@@ -1,0 +1,154 @@
+// map.js — the design map for the current n: node counts of the (a2, a3) cells from a worker
+// (worker_bundle.js: the module and map_worker.js, started from a Blob), coarse to fine, then the
+// boundary curves over them; the legend by area; the cross at the current design; a click or a
+// drag on the map moves the design.
+'use strict';
+{
+  const X = window.Explorer;
+  const { $, byTestId } = X;
+
+  let worker = null;
+  let map = null; // { size, counts, max, n }
+  let loci = null; // the boundary curves: [{kind, name, points: a2 a3 ...}]
+  // The cells and the boundary curves are drawn once per worker message into an offscreen
+  // canvas; a state change only copies it and draws the cross.
+  let mapImage = null;
+
+  function startMap() {
+    if (worker) worker.terminate();
+    map = null;
+    loci = null;
+    mapImage = null;
+    byTestId('map-status').textContent = 'computing';
+    const blob = new Blob([SPHTROCH_WORKER_SOURCE], { type: 'text/javascript' });
+    worker = new Worker(URL.createObjectURL(blob));
+    worker.onmessage = (ev) => {
+      const m = ev.data;
+      if (m.error) { byTestId('map-status').textContent = m.error; return; }
+      if (m.loci) {
+        loci = m.loci;
+        byTestId('map-status').textContent = map.size + '² cells and the boundary curves, ' + m.seconds.toFixed(1) + ' s';
+        mapImage = null;
+        drawMap();
+        return;
+      }
+      map = m;
+      mapImage = null;
+      byTestId('map-status').textContent = m.done ? m.size + '² cells, ' + m.seconds.toFixed(1) + ' s' : m.size + '² cells so far';
+      drawMap();
+    };
+    worker.postMessage({ n: X.state.n, teeth: X.state.teeth, sizes: [16, 32, 64, 128] });
+  }
+
+  function countColour(count, max) {
+    if (count < 0) return '#c9ccd1';
+    if (count === 0) return '#ffffff';
+    const t = Math.sqrt(count / Math.max(1, max));
+    const hue = 210 - 200 * t, light = 88 - 50 * t;
+    return 'hsl(' + hue + ',70%,' + light + '%)';
+  }
+
+  function renderMapImage() {
+    const canvas = $('map');
+    mapImage = document.createElement('canvas');
+    mapImage.width = canvas.width;
+    mapImage.height = canvas.height;
+    const ctx = mapImage.getContext('2d');
+    ctx.fillStyle = '#eef0f3';
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    if (map) {
+      const cell = canvas.width / map.size;
+      for (let j = 0; j < map.size; ++j)
+        for (let i = 0; i < map.size; ++i) {
+          ctx.fillStyle = countColour(map.counts[j * map.size + i], map.max);
+          ctx.fillRect(i * cell, canvas.height - (j + 1) * cell, Math.ceil(cell), Math.ceil(cell));
+        }
+      renderLegend();
+    }
+    if (loci) drawLoci(ctx, canvas);
+  }
+
+  function drawMap() {
+    const canvas = $('map');
+    const ctx = canvas.getContext('2d');
+    if (!mapImage) renderMapImage();
+    ctx.drawImage(mapImage, 0, 0);
+    const result = X.result;
+    if (result) {
+      const x = result.a2 / Math.PI * canvas.width, y = canvas.height - result.a3 / Math.PI * canvas.height;
+      ctx.strokeStyle = '#000';
+      ctx.lineWidth = 2;
+      ctx.beginPath();
+      ctx.moveTo(x - 8, y); ctx.lineTo(x + 8, y); ctx.moveTo(x, y - 8); ctx.lineTo(x, y + 8);
+      ctx.stroke();
+    }
+  }
+
+  // The boundary curves over the cells: a sample step apart in a2, a polyline runs on while its
+  // points are consecutive samples (a locus resolved to the step: no line across a gap).
+  function drawLoci(ctx, canvas) {
+    const step = Math.PI / 180 * 1.5;  // map_worker.js: LOCUS_STEPS samples across (0, pi)
+    ctx.lineWidth = 1;
+    for (const locus of loci) {
+      ctx.strokeStyle = locus.kind === 'tangency' ? 'rgba(0,0,0,0.55)' : 'rgba(29,111,216,0.8)';
+      ctx.beginPath();
+      const p = locus.points;
+      for (let i = 0; i < p.length; i += 2) {
+        const x = p[i] / Math.PI * canvas.width, y = canvas.height - p[i + 1] / Math.PI * canvas.height;
+        if (i === 0 || p[i] - p[i - 2] > step) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+      }
+      ctx.stroke();
+    }
+  }
+
+  // The legend by area: the (at most 8) node counts covering most of the map, each with its share
+  // of the cells; the rest summed. data-count / data-cells on each entry (tests read them).
+  function renderLegend() {
+    const legend = $('map-legend');
+    legend.textContent = '';
+    const cells = new Map();
+    for (const c of map.counts) cells.set(c, (cells.get(c) || 0) + 1);
+    const byArea = Array.from(cells.entries()).sort((a, b) => b[1] - a[1] || a[0] - b[0]);
+    const total = map.counts.length, share = (k) => (100 * k / total).toFixed(1) + '%';
+    for (const [count, k] of byArea.slice(0, 8).sort((a, b) => a[0] - b[0])) {
+      const item = document.createElement('span');
+      item.className = 'swatch';
+      item.dataset.testid = 'legend-entry';
+      item.dataset.count = count;
+      item.dataset.cells = k;
+      item.innerHTML = '<i style="background:' + countColour(count, map.max) + '"></i>' +
+        (count < 0 ? 'not certified' : count + ' nodes') + ' <small>(' + share(k) + ')</small>';
+      legend.appendChild(item);
+    }
+    if (byArea.length > 8) {
+      const rest = byArea.slice(8).reduce((sum, e) => sum + e[1], 0);
+      const note = document.createElement('span');
+      note.dataset.testid = 'legend-rest';
+      note.dataset.counts = byArea.length - 8;
+      note.dataset.cells = rest;
+      note.dataset.largest = byArea[8][1];
+      note.dataset.values = byArea.slice(8).map((e) => e[0]).join(' ');
+      note.textContent = ' and ' + (byArea.length - 8) + ' more counts on ' + share(rest) + ' (a shade per count)';
+      legend.appendChild(note);
+    }
+  }
+
+  function setupMapInput() {
+    const canvas = $('map');
+    let dragging = false;
+    const pick = (ev) => {
+      const rect = canvas.getBoundingClientRect();
+      const u = (ev.clientX - rect.left) / rect.width, v = (ev.clientY - rect.top) / rect.height;
+      const clamp = (a) => Math.min(Math.PI - 1e-3, Math.max(1e-3, a));
+      X.state.a2 = clamp(u * Math.PI).toFixed(4);
+      X.state.a3 = clamp((1 - v) * Math.PI).toFixed(4);
+      X.fillFields();
+      X.update(true);
+    };
+    canvas.addEventListener('pointerdown', (ev) => { dragging = true; canvas.setPointerCapture(ev.pointerId); pick(ev); });
+    canvas.addEventListener('pointermove', (ev) => { if (dragging) pick(ev); });
+    canvas.addEventListener('pointerup', () => { dragging = false; });
+  }
+
+  Object.assign(X, { startMap, drawMap, setupMapInput });
+}

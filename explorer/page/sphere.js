@@ -1,0 +1,198 @@
+// sphere.js — the sphere view: the projection (and its inverse for a click), the curve with its
+// nodes and cusps, the train at the animated carrier angle (pitch circles, pitch cones, the
+// tracer), and the view's input (drag to turn, wheel to zoom about the pointer).
+'use strict';
+{
+  const X = window.Explorer;
+  const { $ } = X;
+  const view = X.view;
+
+  function project(p) {
+    const cs = Math.cos(view.spin), ss = Math.sin(view.spin), ct = Math.cos(view.tilt), st = Math.sin(view.tilt);
+    const x1 = cs * p[0] - ss * p[1], y1 = ss * p[0] + cs * p[1], z1 = p[2];
+    const y2 = ct * y1 - st * z1, z2 = st * y1 + ct * z1; // tilt about the screen's x axis
+    const canvas = $('sphere');
+    const radius = 0.46 * canvas.width * view.zoom;
+    return [canvas.width / 2 + view.panX + radius * x1, canvas.height / 2 + view.panY - radius * z2, y2 < 0];
+  }
+
+  // The point of the front half of the sphere under a pointer event (project() inverted), or null
+  // off the sphere.
+  function unproject(canvas, ev) {
+    const rect = canvas.getBoundingClientRect();
+    const radius = 0.46 * canvas.width * view.zoom;
+    const x1 = ((ev.clientX - rect.left) * canvas.width / rect.width - canvas.width / 2 - view.panX) / radius;
+    const z2 = -((ev.clientY - rect.top) * canvas.height / rect.height - canvas.height / 2 - view.panY) / radius;
+    if (x1 * x1 + z2 * z2 >= 1) return null;
+    const y2 = -Math.sqrt(1 - x1 * x1 - z2 * z2);  // the front half (project(): y2 < 0)
+    const cs = Math.cos(view.spin), ss = Math.sin(view.spin), ct = Math.cos(view.tilt), st = Math.sin(view.tilt);
+    const y1 = ct * y2 + st * z2, z1 = -st * y2 + ct * z2;
+    return [cs * x1 + ss * y1, -ss * x1 + cs * y1, z1];
+  }
+
+  function strokeRuns(ctx, points, count, frontStyle, backStyle, closed) {
+    for (const front of [false, true]) {
+      ctx.beginPath();
+      let open = false;
+      for (let k = 0; k <= count - (closed ? 0 : 1); ++k) {
+        const i = k % count;
+        const s = project([points[3 * i], points[3 * i + 1], points[3 * i + 2]]);
+        if (s[2] === front) {
+          if (open) ctx.lineTo(s[0], s[1]); else ctx.moveTo(s[0], s[1]);
+          open = true;
+        } else {
+          open = false;
+        }
+      }
+      ctx.strokeStyle = front ? frontStyle : backStyle;
+      ctx.lineWidth = front ? 1.4 : 1;
+      ctx.stroke();
+    }
+  }
+
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const normalize = (a) => { const l = Math.hypot(a[0], a[1], a[2]); return [a[0] / l, a[1] / l, a[2] / l]; };
+
+  function circlePoints(axis, radius) {
+    const w = axis;
+    const u = Math.abs(w[2]) < 0.9 ? normalize(cross(w, [0, 0, 1])) : normalize(cross(w, [1, 0, 0]));
+    const v = cross(w, u);
+    const pts = new Float64Array(3 * 180);
+    for (let k = 0; k < 180; ++k) {
+      const phi = 2 * Math.PI * k / 180;
+      for (let d = 0; d < 3; ++d)
+        pts[3 * k + d] = Math.cos(radius) * w[d] + Math.sin(radius) * (Math.cos(phi) * u[d] + Math.sin(phi) * v[d]);
+    }
+    return pts;
+  }
+
+  function drawSphere() {
+    const canvas = $('sphere');
+    const ctx = canvas.getContext('2d');
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    const centre = project([0, 0, 0]);
+    ctx.beginPath();
+    ctx.arc(centre[0], centre[1], 0.46 * canvas.width * view.zoom, 0, 2 * Math.PI);
+    ctx.fillStyle = '#f4f6fa';
+    ctx.fill();
+    ctx.strokeStyle = '#9aa4b2';
+    ctx.lineWidth = 1;
+    ctx.stroke();
+    if (!X.result || !X.curve) return;
+    const pts = X.curve.points, count = pts.length / 3;
+    strokeRuns(ctx, pts, count, '#1c2733', 'rgba(28,39,51,0.18)', true);
+    drawMarks(ctx);
+    drawTrain(ctx);
+    X.drawPath(ctx);
+  }
+
+  // The node points (discs) and the cusps (triangles), faint on the back half.
+  function drawMarks(ctx) {
+    const np = X.result.nodePositions;
+    for (let i = 0; i < np.length / 3; ++i) {
+      const s = project([np[3 * i], np[3 * i + 1], np[3 * i + 2]]);
+      ctx.beginPath();
+      ctx.arc(s[0], s[1], 3.2, 0, 2 * Math.PI);
+      ctx.fillStyle = s[2] ? '#d62828' : 'rgba(214,40,40,0.3)';
+      ctx.fill();
+    }
+    const cp = X.result.cuspPositions;
+    for (let i = 0; i < cp.length / 3; ++i) {
+      const s = project([cp[3 * i], cp[3 * i + 1], cp[3 * i + 2]]);
+      ctx.beginPath();
+      ctx.moveTo(s[0], s[1] - 5); ctx.lineTo(s[0] - 4.5, s[1] + 3.5); ctx.lineTo(s[0] + 4.5, s[1] + 3.5); ctx.closePath();
+      ctx.fillStyle = s[2] ? '#f77f00' : 'rgba(247,127,0,0.35)';
+      ctx.fill();
+    }
+  }
+
+  // The train at carrier angle theta: the sun's pitch circle (angle a_s about Z), the planet's
+  // (angle a_p about its axis Rz(theta) Rx(a2) Z), touching where the cones roll, and the tracer.
+  function drawTrain(ctx) {
+    const r = X.result, curve = X.curve, theta = view.theta % r.period;
+    const ap = r.planetCone, as = r.a2 - ap;
+    const axis = [Math.sin(r.a2) * Math.sin(theta), -Math.sin(r.a2) * Math.cos(theta), Math.cos(r.a2)];
+    const sunDrawn = as > 1e-9 && as < Math.PI - 1e-9;
+    if ($('cones').checked) {
+      if (sunDrawn) drawCone(ctx, [0, 0, 1], as, '29,111,216');
+      drawCone(ctx, axis, ap, '42,157,75');
+    }
+    if (sunDrawn) strokeRuns(ctx, circlePoints([0, 0, 1], as), 180, '#1d6fd8', 'rgba(29,111,216,0.25)', true);
+    strokeRuns(ctx, circlePoints(axis, ap), 180, '#2a9d4b', 'rgba(42,157,75,0.25)', true);
+    const count = curve.points.length / 3;
+    const i = Math.round(theta / r.period * count) % count;
+    const tip = project([curve.points[3 * i], curve.points[3 * i + 1], curve.points[3 * i + 2]]);
+    const hub = project(axis);
+    ctx.beginPath();
+    ctx.moveTo(hub[0], hub[1]);
+    ctx.lineTo(tip[0], tip[1]);
+    ctx.strokeStyle = '#2a9d4b';
+    ctx.stroke();
+    ctx.beginPath();
+    ctx.arc(tip[0], tip[1], 4.5, 0, 2 * Math.PI);
+    ctx.fillStyle = '#7b2cbf';
+    ctx.fill();
+  }
+
+  // A pitch cone: apex at the centre, half-angle `angle` about `axis`, its base the pitch circle on
+  // the sphere: a light surface and a generator every 30 degrees (front solid, back faint).
+  function drawCone(ctx, axis, angle, rgb) {
+    const pts = circlePoints(axis, angle), count = pts.length / 3;
+    const apex = project([0, 0, 0]);
+    const at = (k) => project([pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]]);
+    ctx.beginPath();
+    for (let k = 0; k < count; ++k) {
+      const a = at(k), b = at((k + 1) % count);
+      ctx.moveTo(apex[0], apex[1]); ctx.lineTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.closePath();
+    }
+    ctx.fillStyle = 'rgba(' + rgb + ',0.08)';
+    ctx.fill('nonzero');
+    for (let k = 0; k < count; k += count / 12) {
+      const a = at(k);
+      ctx.beginPath();
+      ctx.moveTo(apex[0], apex[1]);
+      ctx.lineTo(a[0], a[1]);
+      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.45 : 0.12) + ')';  // project(): [2] is true in front
+      ctx.lineWidth = 0.8;
+      ctx.stroke();
+    }
+  }
+
+  function setupSphereInput() {
+    const canvas = $('sphere');
+    let drag = null;
+    canvas.addEventListener('pointerdown', (ev) => { drag = { x: ev.clientX, y: ev.clientY }; canvas.setPointerCapture(ev.pointerId); });
+    canvas.addEventListener('pointermove', (ev) => {
+      if (!drag) return;
+      view.spin += (ev.clientX - drag.x) * 0.01 / Math.sqrt(view.zoom);
+      view.tilt += (ev.clientY - drag.y) * 0.01 / Math.sqrt(view.zoom);
+      drag = { x: ev.clientX, y: ev.clientY };
+      drawSphere();
+    });
+    canvas.addEventListener('pointerup', () => { drag = null; });
+    $('cones').addEventListener('change', drawSphere);
+    canvas.addEventListener('wheel', (ev) => {
+      ev.preventDefault();
+      const rect = canvas.getBoundingClientRect();
+      const cx = (ev.clientX - rect.left) * canvas.width / rect.width - canvas.width / 2;
+      const cy = (ev.clientY - rect.top) * canvas.height / rect.height - canvas.height / 2;
+      const factor = Math.exp(-ev.deltaY * 0.0015);
+      const zoom = Math.min(1e5, Math.max(1, view.zoom * factor));
+      const f = zoom / view.zoom;
+      view.panX = zoom === 1 ? 0 : cx - (cx - view.panX) * f;
+      view.panY = zoom === 1 ? 0 : cy - (cy - view.panY) * f;
+      view.zoom = zoom;
+      drawSphere();
+    }, { passive: false });
+  }
+
+  function animate(time) {
+    if ($('animate').checked && X.result) {
+      view.theta = (time / 1000) * 0.6 * Math.max(1, X.result.q / 2);
+      drawSphere();
+    }
+    window.requestAnimationFrame(animate);
+  }
+
+  Object.assign(X, { project, unproject, drawSphere, setupSphereInput, animate });
+}

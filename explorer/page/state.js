@@ -1,0 +1,121 @@
+// state.js — the explorer's state: the texts of a2, a3, n (or teeth) and the phase, kept in the
+// URL hash and the text fields, and update(): the library's results for them (classify, trace,
+// the ruler's events), then every view redrawn. Loaded first: it creates window.Explorer, the
+// namespace the page's scripts share (classic scripts, not modules: a page opened from disk may
+// not load modules). Each script keeps its names in a block and puts on the namespace only what
+// the other scripts use; the shared state lives there too:
+//   X.lib     the WebAssembly module (sphtroch.js), set by main.js
+//   X.state   the texts {a2, a3, n, teeth, phase}
+//   X.result  classify() of the current state, or null after an error
+//   X.curve   trace() of the current state
+//   X.ruler   events() at the current a2 and n
+//   X.view    the sphere view {spin, tilt, zoom, panX, panY, theta}
+'use strict';
+window.Explorer = {};
+{
+  const X = window.Explorer;
+  const FIELDS = ['a2', 'a3', 'n', 'teeth', 'phase'];
+  const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0' };
+  const $ = (id) => document.getElementById(id);
+  const byTestId = (id) => document.querySelector('[data-testid="' + id + '"]');
+
+  Object.assign(X, { FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
+    ruler: null, view: { spin: 0.5, tilt: 1.1, zoom: 1, panX: 0, panY: 0, theta: 0 } });
+
+  // ---- the URL hash and the text fields -------------------------------------------------------
+  function readHash() {
+    const s = Object.assign({}, DEFAULT_STATE);
+    const hash = window.location.hash.replace(/^#/, '');
+    if (hash === '') return s;
+    // A malformed escape ("50%") is kept as typed: the parser then names it in the error line.
+    const decode = (t) => { try { return decodeURIComponent(t); } catch (e) { return t; } };
+    for (const part of hash.split('&')) {
+      const eq = part.indexOf('=');
+      if (eq < 0) continue;
+      const key = decode(part.slice(0, eq));
+      if (FIELDS.includes(key)) s[key] = decode(part.slice(eq + 1));
+    }
+    if (s.teeth !== '' && !/[#&]n=/.test('&' + hash)) s.n = ''; // teeth given instead of n
+    return s;
+  }
+
+  function hashOf(s) {
+    const enc = (v) => encodeURIComponent(v).replace(/%2F/g, '/').replace(/%3A/g, ':');
+    const parts = ['a2=' + enc(s.a2), 'a3=' + enc(s.a3)];
+    if (s.teeth !== '') parts.push('teeth=' + enc(s.teeth));
+    if (s.n !== '' || s.teeth === '') parts.push('n=' + enc(s.n));
+    parts.push('phase=' + enc(s.phase));
+    return '#' + parts.join('&');
+  }
+
+  function fillFields() {
+    for (const f of FIELDS) $(f + '-text').value = X.state[f];
+  }
+
+  function readFields() {
+    const s = {};
+    for (const f of FIELDS) s[f] = $(f + '-text').value.trim();
+    return s;
+  }
+
+  // ---- computing ------------------------------------------------------------------------------
+  // Samples of the drawn curve (and of the trace CSV export).
+  function samplesFor(r) {
+    return Math.min(200000, Math.max(2000, 600 * r.q * Math.min(40, Math.abs(r.p) + r.q)));
+  }
+
+  // The ruler's events depend on a2 and n only: kept while a3 or the phase moves.
+  let eventsCache = { key: null, value: null };
+
+  function eventsOf(s) {
+    const key = s.a2 + '|' + s.n + '|' + s.teeth;
+    if (eventsCache.key !== key) eventsCache = { key, value: X.lib.events(s.a2, s.n, s.teeth) };
+    return eventsCache.value;
+  }
+
+  function compute() {
+    const s = X.state, lib = X.lib;
+    const c = lib.classify(s.a2, s.a3, s.n, s.phase, s.teeth);
+    if (c.error) return { error: c.error };
+    const t = lib.trace(s.a2, s.a3, s.n, s.phase, s.teeth, samplesFor(c), false);
+    if (t.error) return { error: t.error };
+    const e = eventsOf(s);
+    if (e.error) return { error: e.error };
+    return { c, t, e };
+  }
+
+  // Timings of the last update (ms), for bench/explorer.js: compute (the library) and all of it.
+  const timing = { compute: 0, total: 0 };
+
+  function update(pushHash) {
+    const start = performance.now();
+    const out = compute();
+    timing.compute = performance.now() - start;
+    if (out.error) {
+      X.result = X.curve = X.ruler = null;
+      byTestId('error').textContent = out.error;
+    } else {
+      byTestId('error').textContent = '';
+      const mapKeyChanged = !X.result || X.result.n !== out.c.n;
+      X.result = out.c;
+      X.curve = out.t;
+      X.ruler = out.e;
+      if (mapKeyChanged) X.startMap();
+      syncSliders();
+    }
+    if (pushHash) history.replaceState(null, '', hashOf(X.state));
+    X.renderReadouts();
+    X.renderRuler();
+    X.drawSphere();
+    X.drawMap();
+    timing.total = performance.now() - start;
+  }
+
+  function syncSliders() {
+    $('a2-slider').value = X.result.a2;
+    $('a3-slider').value = X.result.a3;
+    $('phase-slider').value = X.result.phase;
+  }
+
+  Object.assign(X, { readHash, fillFields, readFields, samplesFor, update, timing });
+}
