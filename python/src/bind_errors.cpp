@@ -20,7 +20,7 @@ void translate_invalid_input(std::exception_ptr p) {
   try {
     if (p) std::rethrow_exception(p);
   } catch (const InvalidInput& e) {
-    py::object err = py::reinterpret_borrow<py::object>(g_invalid_input)(one_line_text(e.what()));  // one line
+    py::object err = py::reinterpret_borrow<py::object>(g_invalid_input)(one_line_text(e.message()));  // one line, NUL bytes escaped too
     err.attr("field") = e.field();
     err.attr("value") = e.value();
     err.attr("problem") = e.problem();

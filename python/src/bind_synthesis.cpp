@@ -75,6 +75,7 @@ RatioSet ratios_arg(py::handle n, py::handle ratios, py::handle teeth_text, doub
     request.n = ratio_arg(n).str();
   } else if (!teeth_text.is_none()) {
     request.teeth = text_arg(teeth_text, "teeth", "'ZS:ZP' (39:15) or 'MIN..MAX' (12..60)");
+    if (request.teeth.empty()) parse_teeth(request.teeth, "teeth");  // refused naming teeth, not taken as "not given"
   } else {
     const auto bounds = count_pair_arg(ratios, "ratios", 1, 1000);
     request.ratios = std::to_string(bounds.first) + "," + std::to_string(bounds.second);

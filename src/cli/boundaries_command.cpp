@@ -19,8 +19,20 @@ struct BoundariesOptions {
 
 const char* const kA2Forms = "one angle in (0, pi) (1.2, pi/2, 90deg) for the events, or LO:HI with 0 <= LO < HI <= pi for the curves";
 
+/// The work of run_boundaries; a refusal that names n names --teeth when the ratio was given as teeth.
+void boundaries_of(const BoundariesOptions& o, const Ratio& n);
+
 void run_boundaries(const BoundariesOptions& o) {
   const Ratio n = ratio_of(o.n, o.teeth);  // --n, or --teeth ZS:ZP
+  try {
+    boundaries_of(o, n);
+  } catch (const InvalidInput& e) {
+    if (o.teeth.empty() || e.field() != "n") throw;
+    throw InvalidInput("teeth", o.teeth, "n = " + e.value() + ": " + e.problem(), e.valid_range());
+  }
+}
+
+void boundaries_of(const BoundariesOptions& o, const Ratio& n) {
   const auto colon = o.a2.find(':');
   if (colon == std::string::npos) {  // one a2: the events
     if (!o.steps.empty())

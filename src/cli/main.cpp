@@ -210,7 +210,7 @@ int main(int argc, char** argv) {
   } catch (const sphtroch::OutputError& e) {
     return fail(e.what());
   } catch (const sphtroch::InvalidInput& e) {
-    return fail(std::string("--") + e.what());
+    return fail("--" + e.message());
   } catch (const UsageError& e) {
     return fail(e.message);
   } catch (const StdoutFailedAfterOutputs& e) {

@@ -111,6 +111,18 @@ TEST_CASE("boundaries: bad input is exit 2, one stderr line naming the option, n
   }
 }
 
+TEST_CASE("boundaries --teeth: a ratio over the census bound is refused naming --teeth, as given", "[cli][boundaries]") {
+  TempDir dir;
+  for (const std::string args : {"--teeth 1000:999 --a2 1", "--teeth -1000:1 --a2 1", "--teeth 1000:999 --a2 0:pi --steps 5"}) {
+    const Result r = run("boundaries " + args, dir, true);
+    INFO(args << ": " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.rfind("sphtroch: --teeth = ", 0) == 0);
+  }
+}
+
 TEST_CASE("classify at a self-tangency typed as a double: crossings + tangencies, censuses agree, boundary named",
           "[cli][boundaries][classify]") {
   TempDir dir;

@@ -141,3 +141,16 @@ def test_numpy_scalars_are_accepted_where_python_ones_are():
 def test_text_arguments_given_no_string_say_so(name, call, field):
     e = refused(call, field)
     assert e.problem == "not a string", str(e)
+
+
+def test_an_empty_teeth_text_is_refused_naming_teeth():
+    for call in (sphtroch.synth_points, sphtroch.synth_points_text):
+        refused(lambda: call(THREE, teeth=""), "teeth")
+    refused(lambda: sphtroch.fit(P, teeth=""), "teeth")
+
+
+@pytest.mark.parametrize("teeth", ["39:15\x00", "39:15\x00junk", "39\x0015"])
+def test_a_nul_byte_in_a_text_is_escaped_not_cut(teeth):
+    e = refused(lambda: sphtroch.synth_points(THREE, teeth=teeth), "teeth")
+    assert "\\x00" in str(e) and "; valid: " in str(e), str(e)
+

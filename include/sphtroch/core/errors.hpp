@@ -40,6 +40,9 @@ class InvalidInput : public std::invalid_argument {
   const std::string& value() const noexcept { return value_; }
   const std::string& problem() const noexcept { return problem_; }
   const std::string& valid_range() const noexcept { return valid_range_; }
+  /// what()'s text as a std::string: whole even when the value holds a NUL byte (what() is a C
+  /// string and stops there).
+  std::string message() const { return field_ + " = " + value_ + ": " + problem_ + "; valid: " + valid_range_; }
 
  private:
   std::string field_;
