@@ -144,7 +144,7 @@ inline void check_ratio_work(const RatioSet& set, const std::string& field, cons
     throw InvalidInput(field, given,
                        "estimated work " + number_text(work) + " over the bound" + (set.shard.empty() ? "" : " for this shard"),
                        "sum over the ratios of (|p| + q)^2 <= " + number_text(max_work) +
-                           " (--ratios 7,7 is 4832; --shard I/K splits a set)");
+                           " (--ratios 3,3 is 208, 7,7 is 4832; --shard I/K splits a set)");
 }
 
 }  // namespace sphtroch
