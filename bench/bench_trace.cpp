@@ -13,7 +13,7 @@
 #include "bench_common.hpp"
 
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/core/mpreal_support.hpp"
+#include "sphtroch/exact/mpreal_support.hpp"
 #include "sphtroch/core/sampling.hpp"
 
 #include <benchmark/benchmark.h>

@@ -42,6 +42,8 @@ TOP_LEVEL_MAX = 8
 HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
 # What synthesis/interval/ may include of CGAL: the interval number type (headers only, no GMP).
 INTERVAL_ONLY = re.compile(r'^\s*#\s*include\s+<(?!CGAL/Interval_nt\.h>)(CGAL|nlohmann)/', re.M)
+# GMP or MPFR, directly or through mpreal / Eigen's MPRealSupport: exact/ only.
+MULTIPRECISION = re.compile(r'^\s*#\s*include\s+<(gmp\.h|gmpxx\.h|mpfr\.h|mpreal\.h|unsupported/Eigen/MPRealSupport)>', re.M)
 OPENCASCADE = re.compile(r'^\s*#\s*include\s+<\w+\.hxx>', re.M)
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
@@ -77,6 +79,8 @@ for h in headers:
             problems.append(f"{h}: includes more of CGAL than <CGAL/Interval_nt.h>, or nlohmann-json")
     elif f != "exact" and f and HEAVY.search(text[h]):
         problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/ (and CGAL's intervals outside synthesis/interval/)")
+    if f != "exact" and MULTIPRECISION.search(text[h]):
+        problems.append(f"{h}: includes GMP or MPFR outside exact/")
     if f != "cad" and OPENCASCADE.search(text[h]):
         problems.append(f"{h}: includes OpenCASCADE outside cad/")
 

@@ -20,7 +20,7 @@ NO_EXAMPLE = {
     "core/types.hpp": "type aliases only",
     "sphtroch.hpp": "the umbrella header (its use is docs/library.md's consumer example)",
     "exact_implementation.hpp": "defines classify(); it may be included in one file of a program only",
-    "core/mpreal_support.hpp": "its example needs sphtroch::mpfr; compiled by test_scalar_types",
+    "exact/mpreal_support.hpp": "its example needs sphtroch::mpfr; compiled by test_scalar_types",
     "cad/step_export.hpp": "its example needs sphtroch::step (OpenCASCADE); run by test_cad",
 }
 

@@ -9,7 +9,7 @@
 //     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
 //     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
 //     inverse design (each train confirmed by classify()).
-//   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (core/mpreal_support.hpp).
+//   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (exact/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
 // classify()'s declaration and its result types (exact/classification.hpp), no synthesis/interval/, and parses no CGAL
@@ -17,7 +17,7 @@
 #pragma once
 
 #if defined(SPHTROCH_HAVE_MPFR)
-#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport must precede other Eigen use
+#include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport must precede other Eigen use
 #endif
 
 #include "sphtroch/version.hpp"
@@ -36,6 +36,7 @@
 #include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/reading.hpp"
+#include "sphtroch/core/shard.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"

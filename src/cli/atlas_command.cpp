@@ -72,21 +72,6 @@ void check_cell_centres(const AtlasSpec& spec, const AtlasOptions& o) {
   }
 }
 
-AtlasShard parse_shard(const std::string& text, std::size_t grid) {
-  const std::string range = "I/K with 1 <= I <= K <= grid (" + std::to_string(grid) + ")";
-  const auto slash = text.find('/');
-  const std::string i = slash == std::string::npos ? "" : text.substr(0, slash);
-  const std::string k = slash == std::string::npos ? "" : text.substr(slash + 1);
-  auto whole = [](const std::string& s) {
-    return !s.empty() && s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
-  };
-  if (!whole(i) || !whole(k)) throw InvalidInput("shard", text, "not I/K", range);
-  const AtlasShard s{static_cast<std::size_t>(std::stoul(i)), static_cast<std::size_t>(std::stoul(k))};
-  if (!(s.index >= 1 && s.index <= s.count && s.count <= grid))
-    throw InvalidInput("shard", text, "outside the valid range", range);
-  return s;
-}
-
 /// Fails early (before any computing) when `path`'s directory cannot take a new file.
 void check_writable(const std::string& path, const std::string& option) {
   if (path.empty() || path == "-") return;
@@ -164,7 +149,7 @@ void run_atlas(const AtlasOptions& o) {
       o.threads.empty() ? std::max<std::size_t>(1, std::min<std::size_t>(hw, kAtlasMaxThreads))
                         : parse_count(o.threads, "threads", 1, kAtlasMaxThreads);
   std::optional<AtlasShard> shard;
-  if (!o.shard.empty()) shard = parse_shard(o.shard, spec.grid);
+  if (!o.shard.empty()) shard = parse_shard(o.shard, spec.grid, "grid (" + std::to_string(spec.grid) + ")");
   if (shard && !o.svg.empty())
     throw UsageError{"--svg = " + o.svg + ": cannot be combined with --shard = " + o.shard +
                      "; valid: draw the whole atlas (sphtroch atlas-merge --svg FILE slices...)"};

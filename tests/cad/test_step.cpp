@@ -3,7 +3,7 @@
 // (the forward model of Eq. 4 in MPFR at 128 bits, times the radius) at 10,000 random parameters:
 // |C(t) - R P(t)| within the stated tolerance (the curve keeps theta2 as its parameter, so this
 // bounds the distance both ways). Seeded.
-#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "sphtroch/cad/step_export.hpp"

@@ -3,7 +3,7 @@
 // the cusps of the pitch-cone criterion (map/criteria.hpp, an independent code path), and a brute
 // force scan of the speed for the dwell points.
 #include "catch2/catch.hpp"
-#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/map/criteria.hpp"

@@ -15,7 +15,7 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
-#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/sampling.hpp"
 

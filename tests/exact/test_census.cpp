@@ -6,7 +6,7 @@
 // (a node is P(t1) = P(t2); a cusp has zero speed; the phase rotates the curve by -phase/n,
 // Eq. 8), or from the other census as an independent method — never from the output of the
 // code under test. Each hard case is named after what makes it hard.
-#include "sphtroch/core/mpreal_support.hpp"  // first: Eigen's MPRealSupport
+#include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 
 #include "catch2/catch.hpp"
 #include "test_support.hpp"

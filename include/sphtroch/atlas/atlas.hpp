@@ -46,6 +46,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
+#include "sphtroch/core/shard.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/census/root_census.hpp"
@@ -123,10 +124,8 @@ struct AtlasRows {
   std::size_t begin = 0, end = 0;
 };
 
-/// Job `index` of `count` (1-based).
-struct AtlasShard {
-  std::size_t index = 1, count = 1;
-};
+/// Job `index` of `count` (1-based): core/shard.hpp's Shard.
+using AtlasShard = Shard;
 
 /// Rows of one shard (decision 5). Throws InvalidInput("shard") unless 1 <= index <= count <= grid.
 inline AtlasRows shard_rows(std::size_t grid, const AtlasShard& shard);
@@ -191,11 +190,9 @@ inline void AtlasSpec::validate() const {
 
 inline AtlasRows shard_rows(std::size_t grid, const AtlasShard& shard) {
   if (!(shard.index >= 1 && shard.index <= shard.count && shard.count <= grid))
-    throw InvalidInput("shard", std::to_string(shard.index) + "/" + std::to_string(shard.count),
-                       "outside the valid range", "I/K with 1 <= I <= K <= grid (" + std::to_string(grid) + ")");
-  // 64-bit products: grid <= 4096 and count <= grid, far from overflow.
-  const auto g = static_cast<std::uint64_t>(grid), k = static_cast<std::uint64_t>(shard.count);
-  return AtlasRows{static_cast<std::size_t>((shard.index - 1) * g / k), static_cast<std::size_t>(shard.index * g / k)};
+    throw InvalidInput("shard", shard.str(), "outside the valid range", "I/K with 1 <= I <= K <= grid (" + std::to_string(grid) + ")");
+  const auto [begin, end] = shard_range(grid, shard);
+  return AtlasRows{begin, end};
 }
 
 inline AtlasCell atlas_cell(const AtlasSpec& spec, std::size_t i, std::size_t j) {

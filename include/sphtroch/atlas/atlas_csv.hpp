@@ -29,6 +29,8 @@
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/core/shard.hpp"
+#include "sphtroch/io/parse.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -234,12 +236,8 @@ inline AtlasCsvHead read_atlas_csv_head(std::string_view comment, std::string_vi
   }
   out.spec_comment = atlas_csv_comment(out.spec);
   if (const auto shard = field(words, "shard")) {
-    const auto ik = split(*shard, '/');
-    const auto i = ik.size() == 2 ? to_uint(ik[0]) : std::nullopt;
-    const auto k = ik.size() == 2 ? to_uint(ik[1]) : std::nullopt;
-    if (!i || !k) throw bad("shard=" + std::string(*shard) + " is not I/K");
-    out.shard = AtlasShard{static_cast<std::size_t>(*i), static_cast<std::size_t>(*k)};
     try {
+      out.shard = parse_shard(std::string(*shard), out.spec.grid, "grid (" + std::to_string(out.spec.grid) + ")");
       out.rows = shard_rows(out.spec.grid, *out.shard);
     } catch (const InvalidInput& e) {
       throw bad(std::string("comment line: ") + e.what());

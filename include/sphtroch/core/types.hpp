@@ -4,7 +4,7 @@
 //   double pi = sphtroch::Constants<double>::pi();
 //
 // Scalar may be float, double, long double or mpfr::mpreal (include
-// <sphtroch/core/mpreal_support.hpp> first for the last one).
+// <sphtroch/exact/mpreal_support.hpp> first for the last one).
 #pragma once
 
 #include <Eigen/Core>

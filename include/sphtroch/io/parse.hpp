@@ -8,6 +8,7 @@
 //   sphtroch::parse_unit_point("0.6,0,0.8", "node-at");  // Vector3d(0.6, 0, 0.8)
 //   sphtroch::parse_count("64", "grid", 1, 4096);        // 64: a whole number in [lo, hi]
 //   sphtroch::parse_count_pair("7,5", "ratios", 1, 1000, "P,Q");  // {7, 5}
+//   sphtroch::parse_shard("2/4", 64, "grid (64)");          // Shard{2, 4}
 //
 // Grammar (no spaces inside a value; surrounding spaces are ignored):
 //   angle  := number | number "deg" | [sign][coef]["*"]"pi"["/" number][("+"|"-") number]
@@ -15,6 +16,7 @@
 //   a3     := angle | ref [("+" | "-") angle]     ref := "ap" | "pi-ap" | "a2" | "pi-a2"
 //   teeth  := [sign] integer ":" integer          tooth range := integer ".." integer
 //   count  := digits (no sign, no spaces)         count pair := count "," count
+//   shard  := count "/" count
 // Every failure throws InvalidInput naming the field, the text and the accepted forms.
 // Range checks (a2 in (0, pi) ...) are the GearTrain's; parsing only rejects non-numbers,
 // NaN and infinities.
@@ -25,6 +27,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/core/shard.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 
@@ -325,6 +328,20 @@ inline std::pair<std::size_t, std::size_t> parse_count_pair(const std::string& t
     return {parse_count(text.substr(0, comma), field, lo, hi), parse_count(text.substr(comma + 1), field, lo, hi)};
   } catch (const InvalidInput& e) {  // name the whole P,Q, not the part
     throw InvalidInput(field, text, e.problem() + " (" + e.value() + ")", valid);
+  }
+}
+
+/// "I/K" (counts, 1 <= I <= K <= max_count) as a Shard; InvalidInput("shard") naming the whole
+/// text otherwise, with the valid range "I/K with 1 <= I <= K <= " + `max_name` (e.g. "grid (64)").
+inline Shard parse_shard(const std::string& text, std::size_t max_count, const std::string& max_name) {
+  const std::string valid = "I/K with 1 <= I <= K <= " + max_name;
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
+  try {
+    const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, max_count);
+    return Shard{parse_count(text.substr(0, slash), "shard", 1, k), k};
+  } catch (const InvalidInput& e) {  // name the whole I/K, not the part
+    throw InvalidInput("shard", text, e.problem() + " (" + e.value() + ")", valid);
   }
 }
 

@@ -50,18 +50,12 @@ struct RatioSet {
   }
 };
 
-/// Ratios floor((I - 1) size / K) .. floor(I size / K) - 1 of a set of `size` for "I/K".
+/// The largest K of a ratio set's --shard I/K.
+constexpr std::size_t kMaxRatioShards = 1000000;
+
+/// Ratios [begin, end) of a set of `size` for "I/K" (core/shard.hpp's split; K <= kMaxRatioShards).
 inline std::pair<std::size_t, std::size_t> shard_range(const std::string& text, std::size_t size) {
-  const std::string valid = "I/K with 1 <= I <= K <= 1000000";
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw InvalidInput("shard", text, "not I/K", valid);
-  try {
-    const std::size_t k = parse_count(text.substr(slash + 1), "shard", 1, 1000000);
-    const std::size_t i = parse_count(text.substr(0, slash), "shard", 1, k);
-    return {(i - 1) * size / k, i * size / k};
-  } catch (const InvalidInput& e) {  // name the whole I/K, not the part
-    throw InvalidInput("shard", text, e.problem() + " (" + e.value() + ")", valid);
-  }
+  return shard_range(size, parse_shard(text, kMaxRatioShards, std::to_string(kMaxRatioShards)));
 }
 
 /// The set "ratios" = "P,Q" or "teeth" = "MIN..MAX", refused (InvalidInput) unless `text` is

@@ -5,7 +5,7 @@
 #include "catch2/catch.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/core/mpreal_support.hpp"
+#include "sphtroch/exact/mpreal_support.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/io/parse.hpp"
 

@@ -1,6 +1,6 @@
-// sphtroch/core/mpreal_support.hpp — use mpfr::mpreal (Debian libmpfrc++-dev) as a sphtroch Scalar.
+// sphtroch/exact/mpreal_support.hpp — use mpfr::mpreal (Debian libmpfrc++-dev) as a sphtroch Scalar.
 //
-//   #include <sphtroch/core/mpreal_support.hpp>   // before or instead of other sphtroch headers
+//   #include <sphtroch/exact/mpreal_support.hpp>   // before or instead of other sphtroch headers
 //   sphtroch::MpfrPrecision bits(256);         // this thread, until `bits` goes out of scope
 //   sphtroch::TracerCurve<sphtroch::mpfr_real> curve(train);
 //
@@ -17,7 +17,7 @@
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_MPFR)
-#error "sphtroch/core/mpreal_support.hpp needs MPFR and GMP: link the CMake target sphtroch::mpfr (find_package(sphtroch CONFIG REQUIRED COMPONENTS mpfr)), or define SPHTROCH_HAVE_MPFR and link mpfr and gmp yourself"
+#error "sphtroch/exact/mpreal_support.hpp needs MPFR and GMP: link the CMake target sphtroch::mpfr (find_package(sphtroch CONFIG REQUIRED COMPONENTS mpfr)), or define SPHTROCH_HAVE_MPFR and link mpfr and gmp yourself"
 #endif
 
 #include <Eigen/Core>
