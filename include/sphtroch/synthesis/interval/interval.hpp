@@ -1,6 +1,7 @@
 // sphtroch/synthesis/interval/interval.hpp — the interval arithmetic of the certified solvers:
 // CGAL's Interval_nt (the field operations and sqrt, outward rounded), enclosures of sin and cos
-// over an interval of radians (which Interval_nt lacks), and the mean-value forms.
+// over an interval of radians and of atan and acos (which Interval_nt lacks), and the mean-value
+// forms.
 //
 //   sphtroch::RoundingGuard upward;   // interval arithmetic REQUIRES the upward rounding mode
 //   sphtroch::Interval s = sphtroch::interval_sin(sphtroch::Interval(0.1, 2.0));  // [0.0998.., 1]
@@ -152,6 +153,28 @@ std::array<std::pair<double, double>, N> interval_sincos_all(const std::array<do
   std::array<std::pair<double, double>, N> out;
   for (std::size_t k = 0; k < N; ++k) out[k] = interval_sincos(x[k]);
   return out;
+}
+
+namespace interval_detail {
+/// An angle lowered / raised by at least 2 ulps (the library's bound is 1); no clamping.
+inline double angle_down(double x) { return x - (std::fabs(x) * 0x1p-50 + 1e-300); }
+inline double angle_up(double x) { return x + (std::fabs(x) * 0x1p-50 + 1e-300); }
+}  // namespace interval_detail
+
+/// Contains atan(x) for every x in `x` (an unbounded end gives -+pi/2 widened).
+inline Interval interval_atan(const Interval& x) {
+  namespace d = interval_detail;
+  const RoundingGuard nearest(CGAL_FE_TONEAREST);
+  return Interval(d::angle_down(std::atan(x.inf())), d::angle_up(std::atan(x.sup())));
+}
+
+/// Contains acos(c) for every c in `c` intersected with [-1, 1] (REQUIRES that they meet), in [0, pi]
+/// widened: acos decreases, so its ends are those of c swapped.
+inline Interval interval_acos(const Interval& c) {
+  namespace d = interval_detail;
+  const RoundingGuard nearest(CGAL_FE_TONEAREST);
+  const double lo = std::max(c.inf(), -1.0), hi = std::min(c.sup(), 1.0);
+  return Interval(std::max(d::angle_down(std::acos(hi)), 0.0), d::angle_up(std::acos(lo)));
 }
 
 // The mean-value forms: enclosures of a function over a box from its value at the centre and its
