@@ -1,0 +1,280 @@
+// sphtroch/synthesis/interval/node_tolerance.hpp — how far the nodes and cusps of a train move
+// when its twists and phase move within a tolerance box: a certified enclosure of each node over
+// the box and the first-order sensitivities of its position.
+//
+//   const sphtroch::NodeTolerance t = sphtroch::node_tolerance(train, node, {1e-3, 1e-3, 0.0});
+//   t.max_displacement;              // radians on the sphere, proved (nothing if not proved)
+//   t.d_da2, t.d_da3, t.d_dphase;    // dX/da2, dX/da3, dX/dphase at the nominal train
+//
+// Model (Eq. 4): P(s) = Rz(s) Rx(a2) Rz(n s + phase) Rx(a3) z. A crossing node X = P(s) = P(t)
+// (s != t: two of its branches, params[0] and params[1]) persists while the census holds; with
+// J = [P'(s), -P'(t)] (3 x 2, rank 2 at a crossing) the implicit-function theorem gives
+// (ds, dt) = -(J^T J)^-1 J^T (P_a(s) - P_a(t)) and dX/da = P_a(s) + P'(s) ds for a = a2, a3, phase
+// (P_a the partial derivative at fixed s). A phase change turns the curve about Z:
+// P(s; phase + d) = Rz(-d/n) P(s + d/n; phase), so dX/dphase = -(Z x X)/n for every node and cusp.
+// Enclosure: the equations E^T (P(s) - P(t)) = 0, E an orthonormal basis of the tangent plane at
+// X, over the box of (a2, a3, phase) in intervals, in the rest (u, v) = (s, t) - (s0, t0) - sigma da
+// left by the sensitivities sigma (second order in the box): a Krawczyk test on a square rest box
+// (radius 4 (da2 + da3 + dphase)^2, grown fourfold up to 12 times) proves one solution for every
+// train of the box and encloses it; the position follows in mean-value form, X0 + (dX/da) da +
+// P' u, with dX/da enclosed over the box (first-order sharp); max_displacement is the largest angle
+// from X to P over that enclosure. A cusp (on a pitch cone only) has d_da2, d_da3 undefined: off
+// the cone it is no cusp; its enclosure is given for a box that fixes a2 and a3 (a rotation about Z).
+// REQUIRES: the train's twists and the box inside (0, pi); throws nothing.
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/synthesis/interval/node_tolerance.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
+#endif
+
+#include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/node.hpp"
+#include "sphtroch/core/types.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <optional>
+
+namespace sphtroch {
+
+/// Half-widths of a tolerance box, radians (0 fixes that parameter).
+struct ToleranceBox {
+  double da2 = 0, da3 = 0, dphase = 0;
+};
+
+struct NodeTolerance {
+  Vector3d position = Vector3d::Zero();
+  std::optional<double> max_displacement;           // radians, proved; nothing if not proved
+  std::optional<Vector3d> d_da2, d_da3;             // nothing for a cusp or a tangency node
+  Vector3d d_dphase = Vector3d::Zero();
+};
+
+/// The tolerance of one crossing node (see header).
+inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, const ToleranceBox& box);
+/// The tolerance of one cusp (see header).
+inline NodeTolerance cusp_tolerance(const GearTrain& train, const Cusp& cusp, const ToleranceBox& box);
+
+// ------------------------------------------------------------------------------------------------
+
+namespace node_tolerance_detail {
+
+/// P at s and its derivatives: by s (total: theta3 = n s + phase), by a2, a3 and phase.
+template <typename T>
+struct TracerJet {
+  std::array<T, 3> p, ds, da2, da3, dphase;
+};
+
+template <typename T>
+std::array<T, 3> rz(const T& s, const T& c, const std::array<T, 3>& w) {
+  return {c * w[0] - s * w[1], s * w[0] + c * w[1], w[2]};
+}
+template <typename T>
+std::array<T, 3> rx(const T& s, const T& c, const std::array<T, 3>& v) {
+  return {v[0], c * v[1] - s * v[2], s * v[1] + c * v[2]};
+}
+
+/// The jet at parameter s; n as T (a double or its interval enclosure).
+template <typename T>
+TracerJet<T> tracer_jet(const T& s, const T& a2, const T& a3, const T& phase, const T& n) {
+  const auto [ss, cs] = interval_sincos(s);
+  const auto [s2, c2] = interval_sincos(a2);
+  const auto [s3a, c3a] = interval_sincos(a3);
+  const auto [s3, c3] = interval_sincos(n * s + phase);
+  const T zero(0);
+  const std::array<T, 3> v{s3 * s3a, -c3 * s3a, c3a};            // Rz(theta3) Rx(a3) z
+  const std::array<T, 3> v_t{c3 * s3a, s3 * s3a, zero};          // d v / d theta3
+  const std::array<T, 3> v_a3{s3 * c3a, -c3 * c3a, -s3a};        // d v / d a3
+  const std::array<T, 3> w = rx(s2, c2, v);
+  const std::array<T, 3> w_a2{zero, -s2 * v[1] - c2 * v[2], c2 * v[1] - s2 * v[2]};
+  TracerJet<T> j;
+  j.p = rz(ss, cs, w);
+  const std::array<T, 3> turn{-ss * w[0] - cs * w[1], cs * w[0] - ss * w[1], zero};  // d Rz / ds applied to w
+  j.dphase = rz(ss, cs, rx(s2, c2, v_t));
+  for (int k = 0; k < 3; ++k) j.ds[k] = turn[k] + n * j.dphase[k];
+  j.da2 = rz(ss, cs, w_a2);
+  j.da3 = rz(ss, cs, rx(s2, c2, v_a3));
+  return j;
+}
+
+inline Vector3d vec(const std::array<double, 3>& a) { return Vector3d(a[0], a[1], a[2]); }
+
+/// -(Z x X)/n: the velocity of a point of the curve under a phase change.
+inline Vector3d phase_rotation(const Vector3d& x, const Ratio& n) { return -Vector3d::UnitZ().cross(x) / n.value(); }
+
+/// The largest angle between the unit vector x and a point of the box b (componentwise), upper bound.
+inline double angle_to_box(const Vector3d& x, const std::array<Interval, 3>& b) {
+  Interval chord2(0.0);
+  for (int k = 0; k < 3; ++k) chord2 += square(b[k] - x[k]);
+  const double chord = std::sqrt(chord2.sup()) * (1 + 1e-15);
+  return chord >= 2 ? Constants<double>::pi() : 2 * std::asin(std::min(1.0, chord / 2)) * (1 + 1e-15) + 1e-300;
+}
+
+/// The node's branch parameters over the box: s = s0 + sigma_s . da + u, t = t0 + sigma_t . da + v
+/// (sigma: the implicit-function sensitivities, da = a - a0 over the box of (a2, a3, phase)), with
+/// (u, v) the second-order rest that the Krawczyk test encloses.
+struct NodeParameters {
+  double s0 = 0, t0 = 0;
+  Eigen::Matrix<double, 2, 3> sigma = Eigen::Matrix<double, 2, 3>::Zero();
+};
+
+struct BoxIntervals {
+  std::array<Interval, 3> a, da;  // the box of (a2, a3, phase) and a - a0 over it
+  Interval n;
+};
+
+inline BoxIntervals box_intervals(const GearTrain& train, const ToleranceBox& box) {
+  const std::array<double, 3> a0{train.a2(), train.a3(), train.phase()}, half{box.da2, box.da3, box.dphase};
+  BoxIntervals b;
+  for (int k = 0; k < 3; ++k) {
+    b.a[k] = Interval(a0[k] - half[k], a0[k] + half[k]);
+    b.da[k] = b.a[k] - a0[k];
+  }
+  b.n = Interval(static_cast<double>(train.ratio().p())) / static_cast<double>(train.ratio().q());
+  return b;
+}
+
+/// Over the box and the rest box UV: {s range, t range}.
+inline std::array<Interval, 2> parameter_ranges(const NodeParameters& np, const BoxIntervals& b, const std::array<Interval, 2>& uv) {
+  std::array<Interval, 2> r{Interval(np.s0) + uv[0], Interval(np.t0) + uv[1]};
+  for (int i = 0; i < 2; ++i)
+    for (int k = 0; k < 3; ++k) r[i] += np.sigma(i, k) * b.da[k];
+  return r;
+}
+
+/// dX/da along the node (P_s sigma + P_a) from a jet over the ranges, for one branch.
+inline std::array<Interval, 3> along(const TracerJet<Interval>& j, const Eigen::Matrix<double, 2, 3>& sigma, int branch, int k) {
+  std::array<Interval, 3> d;
+  const std::array<Interval, 3>* pa[3] = {&j.da2, &j.da3, &j.dphase};
+  for (int c = 0; c < 3; ++c) d[c] = j.ds[c] * sigma(branch, k) + (*pa[k])[c];
+  return d;
+}
+
+/// The Krawczyk image of the rest box UV (centred at 0); the test passes when it lies inside UV
+/// (then UV holds exactly one rest for each train, and the image holds it).
+inline std::optional<std::array<Interval, 2>> krawczyk(const NodeParameters& np, const BoxIntervals& b, const std::array<Interval, 2>& UV,
+                                                       const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y, const Vector3d& gap0) {
+  const auto st = parameter_ranges(np, b, UV);
+  const auto js = tracer_jet<Interval>(st[0], b.a[0], b.a[1], b.a[2], b.n), jt = tracer_jet<Interval>(st[1], b.a[0], b.a[1], b.a[2], b.n);
+  // G at u = v = 0 over the box, in mean-value form in a: G(a0) + sum_k dG/da_k da_k (O(da^2)).
+  std::array<Interval, 2> g{Interval(E.col(0).dot(gap0)), Interval(E.col(1).dot(gap0))};
+  for (int k = 0; k < 3; ++k) {
+    const auto ds = along(js, np.sigma, 0, k), dt = along(jt, np.sigma, 1, k);
+    for (int i = 0; i < 2; ++i) {
+      Interval c(0.0);
+      for (int q = 0; q < 3; ++q) c += E(q, i) * (ds[q] - dt[q]);
+      g[i] += c * b.da[k];
+    }
+  }
+  std::array<std::array<Interval, 2>, 2> J;
+  for (int i = 0; i < 2; ++i) {
+    J[i][0] = J[i][1] = Interval(0.0);
+    for (int q = 0; q < 3; ++q) {
+      J[i][0] += E(q, i) * js.ds[q];
+      J[i][1] -= E(q, i) * jt.ds[q];
+    }
+  }
+  std::array<Interval, 2> K;
+  for (int i = 0; i < 2; ++i) {
+    K[i] = -(Y(i, 0) * g[0] + Y(i, 1) * g[1]);
+    for (int j = 0; j < 2; ++j) K[i] += ((i == j ? 1.0 : 0.0) - (Y(i, 0) * J[0][j] + Y(i, 1) * J[1][j])) * UV[j];
+    if (!(K[i].inf() > UV[i].inf() && K[i].sup() < UV[i].sup())) return std::nullopt;
+  }
+  return K;
+}
+
+/// The enclosure of X over the box, from the rest box [-r, r]^2: a Krawczyk test, then three more
+/// steps on the image (each image still holds the rest); nothing if the test fails.
+inline std::optional<std::array<Interval, 3>> enclose(const GearTrain& train, const NodeParameters& np, double r, const ToleranceBox& box,
+                                                      const Vector3d& x, const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y,
+                                                      const Vector3d& gap0) {
+  const BoxIntervals b = box_intervals(train, box);
+  std::optional<std::array<Interval, 2>> K = krawczyk(np, b, {Interval(-r, r), Interval(-r, r)}, E, Y, gap0);
+  if (!K) return std::nullopt;
+  for (int step = 0; step < 3; ++step) {
+    const auto next = krawczyk(np, b, {Interval(std::min(K->at(0).inf(), 0.0), std::max(K->at(0).sup(), 0.0)),
+                                       Interval(std::min(K->at(1).inf(), 0.0), std::max(K->at(1).sup(), 0.0))}, E, Y, gap0);
+    if (!next) break;
+    K = next;
+  }
+  const auto st = parameter_ranges(np, b, *K);
+  const auto js = tracer_jet<Interval>(st[0], b.a[0], b.a[1], b.a[2], b.n), jt = tracer_jet<Interval>(st[1], b.a[0], b.a[1], b.a[2], b.n);
+  // G = 0 makes P(s) - P(t) parallel to x; both unit and on x's side, it is then 0 (a node).
+  Interval side_s(0.0), side_t(0.0);
+  for (int q = 0; q < 3; ++q) {
+    side_s += x[q] * js.p[q];
+    side_t += x[q] * jt.p[q];
+  }
+  if (!(side_s.inf() > 0 && side_t.inf() > 0)) return std::nullopt;
+  // X = P(s(a); a) over the box, in mean-value form about the nominal train.
+  const auto j0 = tracer_jet<Interval>(Interval(np.s0), Interval(train.a2()), Interval(train.a3()), Interval(train.phase()), b.n);
+  std::array<Interval, 3> x_box;
+  for (int q = 0; q < 3; ++q) x_box[q] = j0.p[q] + js.ds[q] * (*K)[0];
+  for (int k = 0; k < 3; ++k) {
+    const auto d = along(js, np.sigma, 0, k);
+    for (int q = 0; q < 3; ++q) x_box[q] += d[q] * b.da[k];
+  }
+  return x_box;
+}
+
+}  // namespace node_tolerance_detail
+
+inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, const ToleranceBox& box) {
+  namespace d = node_tolerance_detail;
+  NodeTolerance r;
+  r.position = node.position;
+  r.d_dphase = d::phase_rotation(node.position, train.ratio());
+  if (node.params.size() < 2 || node.kind != NodeKind::crossing) return r;
+  d::NodeParameters np;
+  np.s0 = node.params[0];
+  np.t0 = node.params[1];
+  const auto js = d::tracer_jet<double>(np.s0, train.a2(), train.a3(), train.phase(), train.ratio().value());
+  const auto jt = d::tracer_jet<double>(np.t0, train.a2(), train.a3(), train.phase(), train.ratio().value());
+  Eigen::Matrix<double, 3, 2> J;
+  J.col(0) = d::vec(js.ds);
+  J.col(1) = -d::vec(jt.ds);
+  const Eigen::Matrix2d normal = J.transpose() * J;
+  if (!(std::fabs(normal.determinant()) > 1e-24)) return r;
+  const Eigen::Matrix2d inverse = normal.inverse();
+  const std::array<double, 3>* ps[3] = {&js.da2, &js.da3, &js.dphase};
+  const std::array<double, 3>* pt[3] = {&jt.da2, &jt.da3, &jt.dphase};
+  for (int k = 0; k < 3; ++k) np.sigma.col(k) = -inverse * J.transpose() * (d::vec(*ps[k]) - d::vec(*pt[k]));
+  r.d_da2 = Vector3d(d::vec(js.da2) + d::vec(js.ds) * np.sigma(0, 0));
+  r.d_da3 = Vector3d(d::vec(js.da3) + d::vec(js.ds) * np.sigma(0, 1));
+  // Tangent basis at X; Y: the inverse of the tangent-plane Jacobian at the nominal train.
+  const Vector3d x = node.position.normalized();
+  const Vector3d e1 = (std::fabs(x.z()) < 0.9 ? Vector3d::UnitZ() : Vector3d::UnitX()).cross(x).normalized();
+  Eigen::Matrix<double, 3, 2> E;
+  E.col(0) = e1;
+  E.col(1) = x.cross(e1);
+  const Eigen::Matrix2d Jt = E.transpose() * J;
+  if (!(std::fabs(Jt.determinant()) > 1e-12)) return r;
+  const Vector3d gap0 = d::vec(js.p) - d::vec(jt.p);  // ~0: the census's node
+  const RoundingGuard upward;
+  const double spread = box.da2 + box.da3 + box.dphase;
+  double radius = 4 * spread * spread + 1e-13;
+  for (int attempt = 0; attempt < 12 && radius < 0.5; ++attempt, radius *= 4)
+    if (const auto enclosure = d::enclose(train, np, radius, box, x, E, Jt.inverse(), gap0)) {
+      r.max_displacement = d::angle_to_box(x, *enclosure);
+      break;
+    }
+  return r;
+}
+
+inline NodeTolerance cusp_tolerance(const GearTrain& train, const Cusp& cusp, const ToleranceBox& box) {
+  namespace d = node_tolerance_detail;
+  NodeTolerance r;
+  r.position = cusp.position;
+  r.d_dphase = d::phase_rotation(cusp.position, train.ratio());
+  if (box.da2 == 0 && box.da3 == 0) {
+    // A rotation about Z by at most dphase/|n|: the angle moved is at most that times sin(colatitude) <= that.
+    const RoundingGuard upward;
+    const Interval turn = Interval(box.dphase) / std::fabs(train.ratio().value());
+    r.max_displacement = turn.sup();
+  }
+  return r;
+}
+
+}  // namespace sphtroch
