@@ -1,4 +1,4 @@
-// sphtroch classify | nodes | plot | crossings — the node census and its reports. One of the two
+// sphtroch classify | nodes | plot | crossings | tolerance — the node census and its reports. One of the two
 // CLI translation units that include CGAL (through analysis.hpp; the other is scene_command.cpp).
 // Every format is the library's (sphtroch/exact/classification_output.hpp, node_csv.hpp), shared with `sphtroch scene`.
 #include "cli_common.hpp"
@@ -8,6 +8,7 @@
 #include "sphtroch/io/node_csv.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/exact/classification_output.hpp"
+#include "sphtroch/exact/tolerance_output.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -144,6 +145,64 @@ void run_crossings(const CrossingsOptions& o) {
   outputs.commit();
 }
 
+struct ToleranceOptions {
+  TrainOptions train;
+  std::string tol_a2, tol_a3, tol_phase = "0", samples, seed = "1", output;
+  bool degrees = false, json = false;
+};
+
+/// A half-width as typed: an angle (io/parse.hpp: 1e-3, pi/1800, 0.1deg); with --degrees a plain
+/// number is degrees. The sign and range are check_tolerance_box's.
+double parse_tolerance(const std::string& text, const std::string& field, bool degrees) {
+  const double v = parse_angle(text, field);
+  const bool plain = text.find("deg") == std::string::npos && text.find("pi") == std::string::npos;
+  return degrees && plain ? v * (Constants<double>::pi() / 180) : v;
+}
+
+void run_tolerance(const ToleranceOptions& o) {
+  const GearTrain train = o.train.train();
+  const ToleranceBox box{parse_tolerance(o.tol_a2, "tol-a2", o.degrees), parse_tolerance(o.tol_a3, "tol-a3", o.degrees),
+                         parse_tolerance(o.tol_phase, "tol-phase", o.degrees)};
+  try {
+    check_tolerance_box(train, box, {"tol-a2", "tol-a3", "tol-phase"});
+  } catch (const InvalidInput& e) {  // name the value as typed
+    const std::string& typed = e.field() == "tol-a2" ? o.tol_a2 : (e.field() == "tol-a3" ? o.tol_a3 : o.tol_phase);
+    throw InvalidInput(e.field(), typed, e.problem(), e.valid_range());
+  }
+  const std::size_t samples = o.samples.empty() ? 0 : parse_count(o.samples, "samples", 1, kMaxToleranceSamples);
+  const std::uint64_t seed = parse_count(o.seed, "seed", 0, std::size_t(1) << 62);
+  ToleranceReport r = tolerance_report(train, box);
+  if (samples > 0) run_monte_carlo(r, samples, seed);
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << tolerance_json(o.train, r).dump(2) << "\n";
+    else out << tolerance_text(o.train, r);
+  });
+  if (!tolerance_certified(r))
+    throw UncertifiedResult{"tolerance: " + std::string(r.census_certified ? "" : "the nominal census is not certified; ") +
+                            (r.topology.verdict == BoxTopology::Verdict::undecided ? "the topology is undecided: " + r.topology.why
+                                                                                 : "a node's move over the box is not proved") +
+                            " (exit status 3; see docs/cli.md: tolerance)"};
+}
+
+void register_tolerance(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<ToleranceOptions>();
+  CLI::App* cmd = app.add_subcommand("tolerance", "will a train made within tolerances draw the same nodes and cusps? (certified)");
+  o->train.add_to(*cmd);
+  cmd->add_option("--tol-a2", o->tol_a2, "half-width of the a2 tolerance, radians (degrees with --degrees); 0 fixes a2")->required();
+  cmd->add_option("--tol-a3", o->tol_a3, "half-width of the a3 tolerance, radians (degrees with --degrees); 0 fixes a3")->required();
+  cmd->add_option("--tol-phase", o->tol_phase, "half-width of the phase tolerance (0 .. 2 pi)")->capture_default_str();
+  cmd->add_flag("--degrees", o->degrees, "read the tolerances as degrees (the train's angles take a deg suffix: 90deg)");
+  cmd->add_option("--samples", o->samples, "also classify N random trains of the box (1 .. 100000): the spread sampling sees");
+  cmd->add_option("--seed", o->seed, "the samples' random seed (0 .. 2^62)")->capture_default_str();
+  cmd->add_flag("--json", o->json, "one JSON object: topology, event, margin, nodes, cusps, ... (docs/cli.md: tolerance)");
+  add_output_option(*cmd, o->output, "the report");
+  cmd->footer("topology: holds (certified: every train of the box draws the nominal census), changes (certified:\n"
+              "a boundary of the design map lies in the box, named) or undecided (exit 3). margin: the certified\n"
+              "distance [lower, upper] to the nearest boundary (half-width of the largest free square about a2, a3).\n"
+              "Example: sphtroch tolerance --a2 1 --a3 2 --n 5/2 --tol-a2 0.1 --tol-a3 0.1 --degrees");
+  actions.emplace_back(cmd, [o] { run_tolerance(*o); });
+}
+
 }  // namespace
 
 void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
@@ -198,6 +257,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
         "trace arrays. Reading and searching are timed separately (seconds_read, seconds_search).\n"
         "Example: sphtroch trace --a2 1 --a3 2 --n 7/3 | sphtroch crossings --input - --json");
     actions.emplace_back(cmd, [o] { run_crossings(*o); });
+    register_tolerance(app, actions);
   }
 }
 

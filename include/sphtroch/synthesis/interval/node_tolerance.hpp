@@ -102,7 +102,9 @@ TracerJet<T> tracer_jet(const T& s, const T& a2, const T& a3, const T& phase, co
 inline Vector3d vec(const std::array<double, 3>& a) { return Vector3d(a[0], a[1], a[2]); }
 
 /// -(Z x X)/n: the velocity of a point of the curve under a phase change.
-inline Vector3d phase_rotation(const Vector3d& x, const Ratio& n) { return -Vector3d::UnitZ().cross(x) / n.value(); }
+inline Vector3d phase_rotation(const Vector3d& x, const Ratio& n) {
+  return Vector3d(-Vector3d::UnitZ().cross(x) / n.value()) + Vector3d::Zero();  // + 0: no -0 in reports
+}
 
 /// The largest angle between the unit vector x and a point of the box b (componentwise), upper bound.
 inline double angle_to_box(const Vector3d& x, const std::array<Interval, 3>& b) {

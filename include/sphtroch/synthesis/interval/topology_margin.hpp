@@ -104,13 +104,18 @@ inline double distance_above(const TwistBox& b, double a2, double a3) {
   return m;
 }
 
-/// Two halves across the longer side (a point side is never split).
+/// Where a box is cut, as a share of its longer side: off the middle by an irrational amount, so
+/// that a boundary placed at a round share of the box (a tolerance of twice the distance to an
+/// event) does not stay on the cuts, where no sign change can prove it.
+constexpr double kCutShare = 0.4801;
+
+/// Two parts across the longer side (a point side is never cut).
 inline std::pair<TwistBox, TwistBox> halves(const TwistBox& b) {
   TwistBox l = b, r = b;
   if (b.a2_hi - b.a2_lo >= b.a3_hi - b.a3_lo) {
-    l.a2_hi = r.a2_lo = b.a2_mid();
+    l.a2_hi = r.a2_lo = b.a2_lo + kCutShare * (b.a2_hi - b.a2_lo);
   } else {
-    l.a3_hi = r.a3_lo = b.a3_mid();
+    l.a3_hi = r.a3_lo = b.a3_lo + kCutShare * (b.a3_hi - b.a3_lo);
   }
   return {l, r};
 }

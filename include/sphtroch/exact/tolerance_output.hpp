@@ -1,0 +1,262 @@
+// sphtroch/exact/tolerance_output.hpp — `sphtroch tolerance`: will a train made within tolerances
+// draw the census of its drawing? The report (the nominal census, the box's topology, the certified
+// margin, each node's enclosure and sensitivities, and optionally a Monte Carlo run beside the
+// proof), its JSON and its text. One home for the CLI and Python.
+//
+//   const sphtroch::ToleranceReport r = sphtroch::tolerance_report(train, {1e-3, 1e-3, 0.0});
+//   r.topology.verdict;  r.margin.lower;  r.nodes[0].max_displacement;
+//   sphtroch::run_monte_carlo(r, 1000, 7);              // r.monte_carlo: the spread seen by sampling
+//   std::cout << sphtroch::tolerance_json(text, r).dump(2);   // tolerance --json
+//
+// JSON (radians; vectors [x, y, z] in the base frame):
+//   {"inputs": {...}, "box": {"a2", "a3", "phase"} (half-widths), "census": {"nodes", "cusps",
+//    "certified"}, "topology": "holds" | "changes" | "undecided", "why": text | null,
+//    "event": {"kind", "name", "a2", "a3"} | null, "margin": {"lower", "upper", "converged",
+//    "nearest": {"kind", "name", "a2", "a3"} | null}, "nodes": [{"id", "position",
+//    "max_displacement" (null: not proved), "d_da2", "d_da3" (null for a cusp), "d_dphase"}],
+//    "cusps": [same], "monte_carlo": {"samples", "seed", "same_census", "max_node_shift"} | null}
+// Certified: the census (classify's certificate), the topology (holds / changes), the margin's
+// bracket, each max_displacement. The sensitivities are first-order values at the nominal train;
+// the Monte Carlo figures are what sampling saw, not bounds. The train analysed is classify's
+// (within 1e-10 of a boundary it is snapped onto it, docs/cli.md: classify).
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_EXACT)
+#error "sphtroch/exact/tolerance_output.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+#endif
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/exact/classification.hpp"
+#include "sphtroch/io/train_text.hpp"
+#include "sphtroch/synthesis/interval/node_tolerance.hpp"
+#include "sphtroch/synthesis/interval/topology_margin.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphtroch {
+
+/// What sampling trains uniformly in the box saw (not a bound).
+struct MonteCarloSpread {
+  std::size_t samples = 0;
+  std::uint64_t seed = 0;
+  std::size_t same_census = 0;  // samples whose node and cusp counts equal the nominal ones
+  double max_node_shift = 0;    // largest angle from a nominal node to the nearest node of a sample, radians
+};
+
+struct ToleranceReport {
+  GearTrain train;  // as analysed (classify's, snapped within 1e-10 of a boundary)
+  ToleranceBox box;
+  std::size_t node_count = 0, cusp_count = 0;
+  bool census_certified = false;
+  BoxTopology topology;
+  TopologyMargin margin;
+  std::vector<NodeTolerance> nodes, cusps;
+  std::optional<MonteCarloSpread> monte_carlo;
+};
+
+/// The largest phase half-width (a whole turn).
+constexpr double kMaxPhaseTolerance = 6.283185307179586;
+/// The most Monte Carlo samples (each one a classify, ~1-10 ms).
+constexpr std::size_t kMaxToleranceSamples = 100000;
+
+/// Throws InvalidInput naming fields[k] unless each half-width is finite and >= 0, the box's a2 and
+/// a3 stay in [kMinCarrierTwist, pi - kMinCarrierTwist] and dphase <= kMaxPhaseTolerance.
+inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box,
+                                const std::array<std::string, 3>& fields = {"da2", "da3", "dphase"});
+
+/// The report for the train and box (runs classify, the margin, the box topology, each node).
+inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
+
+/// Classifies `samples` trains drawn uniformly from the box (std::mt19937_64 seeded with `seed`)
+/// and sets r.monte_carlo. Throws InvalidInput("samples") above kMaxToleranceSamples.
+inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed);
+
+/// Whether everything the report states is certified: the census, a decided topology and, when
+/// it holds, every node's enclosure (the CLI's exit status 3 otherwise).
+inline bool tolerance_certified(const ToleranceReport& r);
+
+/// `sphtroch tolerance --json`.
+inline nlohmann::json tolerance_json(const TrainText& text, const ToleranceReport& r);
+/// `sphtroch tolerance`: the same for people.
+inline std::string tolerance_text(const TrainText& text, const ToleranceReport& r);
+
+// ------------------------------------------------------------------------------------------------
+
+inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box, const std::array<std::string, 3>& fields) {
+  const double lo = kMinCarrierTwist, hi = Constants<double>::pi() - kMinCarrierTwist;
+  const std::string twist = "a half-width >= 0 radians that keeps the angle in [1e-6, pi - 1e-6]";
+  auto check = [&](double d, double centre, const std::string& field) {
+    if (!(std::isfinite(d) && d >= 0)) throw InvalidInput(field, number_text(d), "not a finite half-width >= 0", twist);
+    if (!(centre - d >= lo && centre + d <= hi))
+      throw InvalidInput(field, number_text(d), "the box leaves the trains' range (" + number_text(centre - d) + " .. " +
+                                                    number_text(centre + d) + ")", twist);
+  };
+  check(box.da2, train.a2(), fields[0]);
+  check(box.da3, train.a3(), fields[1]);
+  if (!(std::isfinite(box.dphase) && box.dphase >= 0 && box.dphase <= kMaxPhaseTolerance))
+    throw InvalidInput(fields[2], number_text(box.dphase), "outside the valid range", "a half-width in [0, 2 pi] radians");
+}
+
+inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box) {
+  check_tolerance_box(train, box);
+  const Classification c = classify(train);
+  ToleranceReport r;
+  r.train = c.snapped.train;
+  r.box = box;
+  check_tolerance_box(r.train, box);
+  r.node_count = c.nodes.size();
+  r.cusp_count = c.cusps.size();
+  r.census_certified = c.certificate.certified;
+  r.margin = topology_margin(r.train);
+  r.topology = (box.da2 == 0 && box.da3 == 0) ? BoxTopology{BoxTopology::Verdict::holds, std::nullopt, "", 0}
+                                              : box_topology(r.train, box.da2, box.da3);
+  for (const Node& n : c.nodes) r.nodes.push_back(node_tolerance(r.train, n, box));
+  for (const Cusp& k : c.cusps) r.cusps.push_back(cusp_tolerance(r.train, k, box));
+  return r;
+}
+
+inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed) {
+  if (samples > kMaxToleranceSamples)
+    throw InvalidInput("samples", std::to_string(samples), "outside the valid range",
+                       "0 .. " + std::to_string(kMaxToleranceSamples));
+  MonteCarloSpread m;
+  m.samples = samples;
+  m.seed = seed;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const GearTrain& t = r.train;
+  for (std::size_t k = 0; k < samples; ++k) {
+    const double a2 = t.a2() + r.box.da2 * unit(rng), a3 = t.a3() + r.box.da3 * unit(rng);
+    const double phase = t.phase() + r.box.dphase * unit(rng);
+    const Classification c = classify(GearTrain(a2, a3, t.ratio(), phase), ClassifySettings{});
+    if (c.nodes.size() == r.node_count && c.cusps.size() == r.cusp_count) ++m.same_census;
+    for (const NodeTolerance& n : r.nodes) {
+      double nearest = Constants<double>::pi();
+      for (const Node& s : c.nodes) nearest = std::min(nearest, std::acos(std::clamp(n.position.dot(s.position), -1.0, 1.0)));
+      if (!c.nodes.empty()) m.max_node_shift = std::max(m.max_node_shift, nearest);
+    }
+  }
+  r.monte_carlo = m;
+}
+
+inline bool tolerance_certified(const ToleranceReport& r) {
+  if (!r.census_certified || r.topology.verdict == BoxTopology::Verdict::undecided) return false;
+  if (r.topology.verdict == BoxTopology::Verdict::changes) return true;
+  for (const NodeTolerance& n : r.nodes)
+    if (!n.max_displacement) return false;
+  for (const NodeTolerance& n : r.cusps)
+    if (!n.max_displacement) return false;
+  return true;
+}
+
+namespace tolerance_output_detail {
+
+inline nlohmann::json vector_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+inline nlohmann::json witness_json(const std::optional<BoundaryWitness>& w) {
+  if (!w) return nullptr;
+  return {{"kind", to_string(event_kind(w->boundary))}, {"name", boundary_text(w->boundary)}, {"a2", w->a2()}, {"a3", w->a3()}};
+}
+
+inline nlohmann::json points_json(const std::vector<NodeTolerance>& points) {
+  nlohmann::json a = nlohmann::json::array();
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const NodeTolerance& p = points[k];
+    a.push_back({{"id", k + 1},
+                 {"position", vector_json(p.position)},
+                 {"max_displacement", p.max_displacement ? nlohmann::json(*p.max_displacement) : nlohmann::json(nullptr)},
+                 {"d_da2", p.d_da2 ? vector_json(*p.d_da2) : nlohmann::json(nullptr)},
+                 {"d_da3", p.d_da3 ? vector_json(*p.d_da3) : nlohmann::json(nullptr)},
+                 {"d_dphase", vector_json(p.d_dphase)}});
+  }
+  return a;
+}
+
+inline std::string vector_text(const std::optional<Vector3d>& v) {
+  if (!v) return "-";
+  return "(" + number_text(v->x()) + ", " + number_text(v->y()) + ", " + number_text(v->z()) + ")";
+}
+
+inline std::string witness_text(const BoundaryWitness& w) {
+  return boundary_text(w.boundary) + " at a2 = " + number_text(w.a2()) + ", a3 = " + number_text(w.a3());
+}
+
+inline std::string topology_line(const ToleranceReport& r) {
+  const std::string census = std::to_string(r.node_count) + " node(s), " + std::to_string(r.cusp_count) + " cusp(s)";
+  switch (r.topology.verdict) {
+    case BoxTopology::Verdict::holds:
+      return "holds (certified: no boundary of the design map meets the box; every train in it draws " + census + ")";
+    case BoxTopology::Verdict::changes:
+      return "changes (certified: " + witness_text(*r.topology.event) + " lies in the box; the nominal train draws " + census + ")";
+    case BoxTopology::Verdict::undecided: break;
+  }
+  return "undecided (" + r.topology.why + ")";
+}
+
+inline void points_text(std::ostream& out, const std::string& what, const std::vector<NodeTolerance>& points) {
+  out << what << " (" << points.size() << "): position; largest move over the box (rad, certified); d/da2; d/da3; d/dphase\n";
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const NodeTolerance& p = points[k];
+    out << "  " << k + 1 << "  " << vector_text(p.position) << "  "
+        << (p.max_displacement ? number_text(*p.max_displacement) : std::string("not proved")) << "  " << vector_text(p.d_da2)
+        << "  " << vector_text(p.d_da3) << "  " << vector_text(p.d_dphase) << "\n";
+  }
+}
+
+}  // namespace tolerance_output_detail
+
+inline nlohmann::json tolerance_json(const TrainText& text, const ToleranceReport& r) {
+  namespace d = tolerance_output_detail;
+  nlohmann::json j;
+  j["inputs"] = {{"a2", text.a2}, {"a3", text.a3}, {"n", r.train.ratio().str()}, {"phase", text.phase}};
+  if (!text.teeth.empty()) j["inputs"]["teeth"] = text.teeth;
+  j["box"] = {{"a2", r.box.da2}, {"a3", r.box.da3}, {"phase", r.box.dphase}};
+  j["census"] = {{"nodes", r.node_count}, {"cusps", r.cusp_count}, {"certified", r.census_certified}};
+  j["topology"] = to_string(r.topology.verdict);
+  j["why"] = r.topology.why.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.topology.why);
+  j["event"] = d::witness_json(r.topology.event);
+  j["margin"] = {{"lower", r.margin.lower}, {"upper", r.margin.upper}, {"converged", r.margin.converged},
+                 {"nearest", d::witness_json(r.margin.nearest)}};
+  j["nodes"] = d::points_json(r.nodes);
+  j["cusps"] = d::points_json(r.cusps);
+  j["monte_carlo"] = nullptr;
+  if (r.monte_carlo)
+    j["monte_carlo"] = {{"samples", r.monte_carlo->samples}, {"seed", r.monte_carlo->seed},
+                        {"same_census", r.monte_carlo->same_census}, {"max_node_shift", r.monte_carlo->max_node_shift}};
+  return j;
+}
+
+inline std::string tolerance_text(const TrainText& text, const ToleranceReport& r) {
+  namespace d = tolerance_output_detail;
+  std::ostringstream out;
+  out << "tolerance: n = " << r.train.ratio().str() << text.teeth_note() << ", a2 = " << text.a2 << ", a3 = " << text.a3
+      << ", phase = " << text.phase << "\n";
+  out << "box: a2 +- " << number_text(r.box.da2) << ", a3 +- " << number_text(r.box.da3) << ", phase +- "
+      << number_text(r.box.dphase) << " (radians)\n";
+  out << "topology: " << d::topology_line(r) << "\n";
+  out << "margin: " << number_text(r.margin.lower) << " .. " << number_text(r.margin.upper)
+      << " rad (certified bracket" << (r.margin.converged ? "" : ", wider than 1e-6 relative: the proof stopped at its box bound")
+      << ")" << (r.margin.nearest ? "; nearest boundary " + d::witness_text(*r.margin.nearest) : std::string()) << "\n";
+  if (!r.census_certified) out << "census: NOT certified (classify's two censuses disagree)\n";
+  d::points_text(out, "nodes", r.nodes);
+  d::points_text(out, "cusps", r.cusps);
+  if (r.monte_carlo)
+    out << "monte carlo (" << r.monte_carlo->samples << " trains, seed " << r.monte_carlo->seed << "; seen, not proved): "
+        << r.monte_carlo->same_census << " with the nominal census, largest node shift " << number_text(r.monte_carlo->max_node_shift)
+        << " rad\n";
+  return out.str();
+}
+
+}  // namespace sphtroch
