@@ -15,9 +15,10 @@
 // Enclosure: the equations E^T (P(s) - P(t)) = 0, E an orthonormal basis of the tangent plane at
 // X, over the box of (a2, a3, phase) in intervals, in the rest (u, v) = (s, t) - (s0, t0) - sigma da
 // left by the sensitivities sigma (second order in the box): a Krawczyk test on a square rest box
-// (radius 4 (da2 + da3 + dphase)^2, grown fourfold up to 12 times) proves one solution for every
-// train of the box and encloses it; the position follows in mean-value form, X0 + (dX/da) da +
-// P' u, with dX/da enclosed over the box (first-order sharp); max_displacement is the largest angle
+// (radius (the box's summed widths)^2, grown fourfold to 0.5) proves one solution for every train
+// of the box and encloses it; the position follows in mean-value form about the box's centre,
+// X(ac) + (dX/da)(a - ac) + P' u, with dX/da enclosed over the box (first-order sharp). Where the
+// test fails (a crossing at a small angle, a wide box) the box is halved, up to kNodeBoxCuts times; max_displacement is the largest angle
 // from X to P over that enclosure. A cusp (on a pitch cone only) has d_da2, d_da3 undefined: off
 // the cone it is no cusp; its enclosure is given for a box that fixes a2 and a3 (a rotation about Z).
 // REQUIRES: the train's twists and the box inside (0, pi); throws nothing.
@@ -44,6 +45,9 @@ namespace sphtroch {
 struct ToleranceBox {
   double da2 = 0, da3 = 0, dphase = 0;
 };
+
+/// How many times node_tolerance may halve the tolerance box where its test fails (<= 2^6 parts).
+constexpr int kNodeBoxCuts = 6;
 
 struct NodeTolerance {
   Vector3d position = Vector3d::Zero();
@@ -122,20 +126,34 @@ struct NodeParameters {
   Eigen::Matrix<double, 2, 3> sigma = Eigen::Matrix<double, 2, 3>::Zero();
 };
 
+/// A part of the tolerance box: its intervals, their offsets from the nominal a0 and from the
+/// part's centre ac (the expansion point of the mean-value forms, inside the part).
 struct BoxIntervals {
-  std::array<Interval, 3> a, da;  // the box of (a2, a3, phase) and a - a0 over it
+  std::array<Interval, 3> a, da, dc;
+  std::array<double, 3> ac{};
   Interval n;
 };
 
-inline BoxIntervals box_intervals(const GearTrain& train, const ToleranceBox& box) {
-  const std::array<double, 3> a0{train.a2(), train.a3(), train.phase()}, half{box.da2, box.da3, box.dphase};
+/// The part [lo, hi] (per parameter a2, a3, phase) of the box about the nominal train.
+inline BoxIntervals box_intervals(const GearTrain& train, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+  const std::array<double, 3> a0{train.a2(), train.a3(), train.phase()};
   BoxIntervals b;
   for (int k = 0; k < 3; ++k) {
-    b.a[k] = Interval(a0[k] - half[k], a0[k] + half[k]);
+    b.a[k] = Interval(lo[k], hi[k]);
     b.da[k] = b.a[k] - a0[k];
+    b.ac[k] = lo[k] + 0.5 * (hi[k] - lo[k]);
+    b.dc[k] = b.a[k] - b.ac[k];
   }
   b.n = Interval(static_cast<double>(train.ratio().p())) / static_cast<double>(train.ratio().q());
   return b;
+}
+
+/// The predicted branch parameter at the part's centre: s0 + sigma . (ac - a0), as an interval.
+inline Interval centre_parameter(double base, const Eigen::Matrix<double, 2, 3>& sigma, int branch, const BoxIntervals& b,
+                                 const std::array<double, 3>& a0) {
+  Interval r(base);
+  for (int k = 0; k < 3; ++k) r += sigma(branch, k) * (Interval(b.ac[k]) - a0[k]);
+  return r;
 }
 
 /// Over the box and the rest box UV: {s range, t range}.
@@ -157,17 +175,25 @@ inline std::array<Interval, 3> along(const TracerJet<Interval>& j, const Eigen::
 /// The Krawczyk image of the rest box UV (centred at 0); the test passes when it lies inside UV
 /// (then UV holds exactly one rest for each train, and the image holds it).
 inline std::optional<std::array<Interval, 2>> krawczyk(const NodeParameters& np, const BoxIntervals& b, const std::array<Interval, 2>& UV,
-                                                       const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y, const Vector3d& gap0) {
+                                                       const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y,
+                                                       const std::array<double, 3>& a0) {
   const auto st = parameter_ranges(np, b, UV);
   const auto js = tracer_jet<Interval>(st[0], b.a[0], b.a[1], b.a[2], b.n), jt = tracer_jet<Interval>(st[1], b.a[0], b.a[1], b.a[2], b.n);
-  // G at u = v = 0 over the box, in mean-value form in a: G(a0) + sum_k dG/da_k da_k (O(da^2)).
-  std::array<Interval, 2> g{Interval(E.col(0).dot(gap0)), Interval(E.col(1).dot(gap0))};
+  // G at u = v = 0 over the part, in mean-value form about its centre: G(ac) + sum_k dG/da_k (a_k - ac_k).
+  const std::array<Interval, 3> ac{Interval(b.ac[0]), Interval(b.ac[1]), Interval(b.ac[2])};
+  const auto cs = tracer_jet<Interval>(centre_parameter(np.s0, np.sigma, 0, b, a0), ac[0], ac[1], ac[2], b.n);
+  const auto ct = tracer_jet<Interval>(centre_parameter(np.t0, np.sigma, 1, b, a0), ac[0], ac[1], ac[2], b.n);
+  std::array<Interval, 2> g;
+  for (int i = 0; i < 2; ++i) {
+    g[i] = Interval(0.0);
+    for (int q = 0; q < 3; ++q) g[i] += E(q, i) * (cs.p[q] - ct.p[q]);
+  }
   for (int k = 0; k < 3; ++k) {
     const auto ds = along(js, np.sigma, 0, k), dt = along(jt, np.sigma, 1, k);
     for (int i = 0; i < 2; ++i) {
       Interval c(0.0);
       for (int q = 0; q < 3; ++q) c += E(q, i) * (ds[q] - dt[q]);
-      g[i] += c * b.da[k];
+      g[i] += c * b.dc[k];
     }
   }
   std::array<std::array<Interval, 2>, 2> J;
@@ -187,17 +213,16 @@ inline std::optional<std::array<Interval, 2>> krawczyk(const NodeParameters& np,
   return K;
 }
 
-/// The enclosure of X over the box, from the rest box [-r, r]^2: a Krawczyk test, then three more
-/// steps on the image (each image still holds the rest); nothing if the test fails.
-inline std::optional<std::array<Interval, 3>> enclose(const GearTrain& train, const NodeParameters& np, double r, const ToleranceBox& box,
-                                                      const Vector3d& x, const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y,
-                                                      const Vector3d& gap0) {
-  const BoxIntervals b = box_intervals(train, box);
-  std::optional<std::array<Interval, 2>> K = krawczyk(np, b, {Interval(-r, r), Interval(-r, r)}, E, Y, gap0);
+/// The enclosure of X over a part of the box, from the rest box [-r, r]^2: a Krawczyk test, then
+/// three more steps on the image (each image still holds the rest); nothing if the test fails.
+inline std::optional<std::array<Interval, 3>> enclose(const GearTrain& train, const NodeParameters& np, double r, const BoxIntervals& b,
+                                                      const Vector3d& x, const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y) {
+  const std::array<double, 3> a0{train.a2(), train.a3(), train.phase()};
+  std::optional<std::array<Interval, 2>> K = krawczyk(np, b, {Interval(-r, r), Interval(-r, r)}, E, Y, a0);
   if (!K) return std::nullopt;
   for (int step = 0; step < 3; ++step) {
     const auto next = krawczyk(np, b, {Interval(std::min(K->at(0).inf(), 0.0), std::max(K->at(0).sup(), 0.0)),
-                                       Interval(std::min(K->at(1).inf(), 0.0), std::max(K->at(1).sup(), 0.0))}, E, Y, gap0);
+                                       Interval(std::min(K->at(1).inf(), 0.0), std::max(K->at(1).sup(), 0.0))}, E, Y, a0);
     if (!next) break;
     K = next;
   }
@@ -210,15 +235,38 @@ inline std::optional<std::array<Interval, 3>> enclose(const GearTrain& train, co
     side_t += x[q] * jt.p[q];
   }
   if (!(side_s.inf() > 0 && side_t.inf() > 0)) return std::nullopt;
-  // X = P(s(a); a) over the box, in mean-value form about the nominal train.
-  const auto j0 = tracer_jet<Interval>(Interval(np.s0), Interval(train.a2()), Interval(train.a3()), Interval(train.phase()), b.n);
+  // X = P(s(a); a) over the part, in mean-value form about its centre (s there: the prediction + u).
+  const std::array<Interval, 3> ac{Interval(b.ac[0]), Interval(b.ac[1]), Interval(b.ac[2])};
+  const auto j0 = tracer_jet<Interval>(centre_parameter(np.s0, np.sigma, 0, b, a0), ac[0], ac[1], ac[2], b.n);
   std::array<Interval, 3> x_box;
   for (int q = 0; q < 3; ++q) x_box[q] = j0.p[q] + js.ds[q] * (*K)[0];
   for (int k = 0; k < 3; ++k) {
     const auto d = along(js, np.sigma, 0, k);
-    for (int q = 0; q < 3; ++q) x_box[q] += d[q] * b.da[k];
+    for (int q = 0; q < 3; ++q) x_box[q] += d[q] * b.dc[k];
   }
   return x_box;
+}
+
+/// The largest angle from x over the part [lo, hi], cutting it (the widest parameter in halves)
+/// where the test fails, down to `depth` more cuts; nothing if a part stays unproved.
+inline std::optional<double> largest_move(const GearTrain& train, const NodeParameters& np, const std::array<double, 3>& lo,
+                                          const std::array<double, 3>& hi, const Vector3d& x, const Eigen::Matrix<double, 3, 2>& E,
+                                          const Eigen::Matrix2d& Y, int depth) {
+  const BoxIntervals b = box_intervals(train, lo, hi);
+  const double spread = (hi[0] - lo[0]) + (hi[1] - lo[1]) + (hi[2] - lo[2]);
+  for (double radius = spread * spread + 1e-13; radius < 0.5; radius *= 4)
+    if (const auto enclosure = enclose(train, np, radius, b, x, E, Y)) return angle_to_box(x, *enclosure);
+  if (depth == 0) return std::nullopt;
+  int widest = 0;
+  for (int k = 1; k < 3; ++k)
+    if (hi[k] - lo[k] > hi[widest] - lo[widest]) widest = k;
+  std::array<double, 3> mid_hi = hi, mid_lo = lo;
+  mid_hi[widest] = mid_lo[widest] = lo[widest] + 0.5 * (hi[widest] - lo[widest]);
+  const auto left = largest_move(train, np, lo, mid_hi, x, E, Y, depth - 1);
+  if (!left) return std::nullopt;
+  const auto right = largest_move(train, np, mid_lo, hi, x, E, Y, depth - 1);
+  if (!right) return std::nullopt;
+  return std::max(*left, *right);
 }
 
 }  // namespace node_tolerance_detail
@@ -253,15 +301,10 @@ inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, co
   E.col(1) = x.cross(e1);
   const Eigen::Matrix2d Jt = E.transpose() * J;
   if (!(std::fabs(Jt.determinant()) > 1e-12)) return r;
-  const Vector3d gap0 = d::vec(js.p) - d::vec(jt.p);  // ~0: the census's node
   const RoundingGuard upward;
-  const double spread = box.da2 + box.da3 + box.dphase;
-  double radius = 4 * spread * spread + 1e-13;
-  for (int attempt = 0; attempt < 12 && radius < 0.5; ++attempt, radius *= 4)
-    if (const auto enclosure = d::enclose(train, np, radius, box, x, E, Jt.inverse(), gap0)) {
-      r.max_displacement = d::angle_to_box(x, *enclosure);
-      break;
-    }
+  const std::array<double, 3> lo{train.a2() - box.da2, train.a3() - box.da3, train.phase() - box.dphase};
+  const std::array<double, 3> hi{train.a2() + box.da2, train.a3() + box.da3, train.phase() + box.dphase};
+  r.max_displacement = d::largest_move(train, np, lo, hi, x, E, Jt.inverse(), kNodeBoxCuts);
   return r;
 }
 
