@@ -19,6 +19,7 @@ OUT = os.path.join(ROOT, "docs", "performance.md")
 SECTIONS = [  # (anchor, title): the order of the table; every row of performance.csv names one
     ("trace", "Trace, files and CAD"), ("startup", "Start-up"), ("plot", "Pictures"),
     ("crossings", "Crossings and classify"), ("atlas", "Atlas"), ("boundaries", "Boundaries"),
+    ("tolerance", "Tolerance"),
     ("identify", "Identify"), ("synth-points", "Precision points"), ("free-axis", "Precision points, free axis"),
     ("fit", "Fit"), ("explorer", "Explorer"), ("python", "Python"), ("compile", "Compile time"),
     ("ci", "Continuous integration"),

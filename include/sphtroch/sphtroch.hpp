@@ -4,7 +4,8 @@
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit).
 //   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds synthesis/interval/:
-//     interval arithmetic, certified root isolation, precision points (fixed frame, free axis).
+//     interval arithmetic, certified root isolation, precision points (fixed frame, free axis),
+//     the certified topology margin, box topology and node enclosures of a tolerance box.
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
 //     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
 //     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
@@ -85,10 +86,13 @@
 #include "sphtroch/atlas/atlas_slices.hpp"
 
 #if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
+#include "sphtroch/synthesis/interval/boundary_enclosure.hpp"
 #include "sphtroch/synthesis/interval/free_axis_points.hpp"
 #include "sphtroch/synthesis/interval/interval.hpp"
+#include "sphtroch/synthesis/interval/node_tolerance.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/synthesis/interval/root_isolation.hpp"
+#include "sphtroch/synthesis/interval/topology_margin.hpp"
 #endif
 
 #if defined(SPHTROCH_HAVE_EXACT)
@@ -102,6 +106,7 @@
 #include "sphtroch/exact/polyline_census.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/exact/tolerance_output.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 #endif

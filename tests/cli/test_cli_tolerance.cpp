@@ -19,7 +19,7 @@ const char* kTrain = "--a2 1 --a3 2 --n 5/2";
 
 }  // namespace
 
-TEST_CASE("tolerance --json: the interface's members; holds inside the margin, changes across the pole line", "[cli][tolerance]") {
+TEST_CASE("tolerance --json: the interface's members, holds inside the margin, changes across the pole line", "[cli][tolerance]") {
   TempDir dir;
   const Result r = run(std::string("tolerance ") + kTrain + " --tol-a2 1e-3 --tol-a3 1e-3 --tol-phase 1e-3 --json", dir);
   REQUIRE(r.status == 0);
@@ -67,7 +67,7 @@ TEST_CASE("tolerance: a3 on a segment of fixed a2 against `sphtroch boundaries`"
   }
 }
 
-TEST_CASE("tolerance --degrees reads the half-widths as degrees; text names the verdict", "[cli][tolerance]") {
+TEST_CASE("tolerance --degrees reads the half-widths as degrees, and the text names the verdict", "[cli][tolerance]") {
   TempDir dir;
   const Result d = run(std::string("tolerance ") + kTrain + " --tol-a2 0.1 --tol-a3 0.05 --degrees --json", dir);
   const Result s = run(std::string("tolerance ") + kTrain + " --tol-a2 0.1deg --tol-a3 pi/3600 --json", dir);

@@ -3,10 +3,11 @@
 // margin, each node's enclosure and sensitivities, and optionally a Monte Carlo run beside the
 // proof), its JSON and its text. One home for the CLI and Python.
 //
-//   const sphtroch::ToleranceReport r = sphtroch::tolerance_report(train, {1e-3, 1e-3, 0.0});
+//   sphtroch::ToleranceReport r = sphtroch::tolerance_report(train, {1e-3, 1e-3, 0.0});
 //   r.topology.verdict;  r.margin.lower;  r.nodes[0].max_displacement;
-//   sphtroch::run_monte_carlo(r, 1000, 7);              // r.monte_carlo: the spread seen by sampling
-//   std::cout << sphtroch::tolerance_json(text, r).dump(2);   // tolerance --json
+//   sphtroch::run_monte_carlo(r, 20, 7);                // r.monte_carlo: the spread seen by sampling
+//   const sphtroch::TrainText typed{"pi/3", "pi/2", "5/2"};
+//   std::cout << sphtroch::tolerance_json(typed, r).dump(2) << sphtroch::tolerance_text(typed, r);
 //
 // JSON (radians; vectors [x, y, z] in the base frame):
 //   {"inputs": {...}, "box": {"a2", "a3", "phase"} (half-widths), "census": {"nodes", "cusps",

@@ -111,7 +111,7 @@ TEST_CASE("box_topology on a segment of fixed a2: changes exactly when the bound
   CHECK(by_kind[2] > 0);  // tangencies
 }
 
-TEST_CASE("box_topology on squares: never holds with a scanned event inside; holds within the margin", "[interval][margin]") {
+TEST_CASE("box_topology on squares: never holds with a scanned event inside, holds within the margin", "[interval][margin]") {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> angle(0.1, kPi - 0.1);
   for (int k = 0; k < kPlacedTrains; ++k) {

@@ -2,6 +2,7 @@
 // when its twists and phase move within a tolerance box: a certified enclosure of each node over
 // the box and the first-order sensitivities of its position.
 //
+//   const sphtroch::Node node = sphtroch::classify(train).nodes.front();   // a node of the train
 //   const sphtroch::NodeTolerance t = sphtroch::node_tolerance(train, node, {1e-3, 1e-3, 0.0});
 //   t.max_displacement;              // radians on the sphere, proved (nothing if not proved)
 //   t.d_da2, t.d_da3, t.d_dphase;    // dX/da2, dX/da3, dX/dphase at the nominal train
