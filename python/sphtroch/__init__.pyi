@@ -170,6 +170,20 @@ class GearTrain:
         analytic_nodes (the report's count for n = 1, 2, else None), analytic_cusps,
         agrees_with_report, node_points (the same node dicts as classify()["nodes"]: position,
         longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs)."""
+    def margin(self) -> Dict[str, Any]:
+        """The certified distance to a change of the node or cusp census (`sphtroch tolerance`'s
+        "margin"): {"lower", "upper", "converged", "nearest": {"kind", "name", "a2", "a3"} or None}.
+        The largest d such that no boundary of the design map (pitch cones, pole lines,
+        self-tangency loci) meets the square [a2 - d, a2 + d] x [a3 - d, a3 + d] lies in
+        [lower, upper], radians; upper - lower <= max(1e-9, 1e-6 upper) when converged."""
+    def tolerance(self, *, da2: Angle, da3: Angle, dphase: Angle = 0.0, samples: Optional[Count] = None,
+                  seed: Count = 1) -> Dict[str, Any]:
+        """`sphtroch tolerance --json` as a dict: will every train with a2, a3, phase within the
+        half-widths (radians, or angle texts such as "0.1deg") draw this census? Keys topology
+        ("holds", "changes", "undecided"), why, event, margin, census, box, nodes and cusps (each
+        with position, max_displacement (proved, or None), d_da2, d_da3, d_dphase) and monte_carlo
+        (with samples: that many random trains of the box classified, seeded; None without).
+        Raises InvalidInput for a negative or NaN half-width or a box leaving [1e-6, pi - 1e-6]."""
     def __eq__(self, other: object) -> bool:
         """Equal trains have the same doubles a2, a3, reduced phase (in [-pi, pi], -pi taken as pi),
         the same n = p/q, and a3 given the same way (a cone reference such as "ap" and its offset):
@@ -318,7 +332,8 @@ def synth_points_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
 def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
         ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
         cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
-        node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> Dict[str, Any]:
+        node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None,
+        min_margin: Real = 0.0) -> Dict[str, Any]:
     """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`; or teeth="ZS:ZP"
     or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),
@@ -335,7 +350,8 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
 def fit_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
              ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
              cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
-             node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None) -> str:
+             node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None,
+             min_margin: Real = 0.0) -> str:
     """What fit computes, as the text `sphtroch synth fit` prints (the same arguments, the same
     refusals): the wanted counts, the reason when there is no candidate, then each candidate best
     first with its distances, margin, census and the command that plots it."""

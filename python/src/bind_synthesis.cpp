@@ -145,7 +145,7 @@ struct FitCall {
 /// The arguments of fit / fit_text, checked as the CLI checks them.
 FitCall fit_call(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
                  py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at,
-                 py::handle node_tolerance) {
+                 py::handle node_tolerance, py::handle min_margin) {
   FitCall c{points_arg(points, "an (N, 3) array of unit vectors x, y, z, N >= 4"), ratios_arg(n, ratios, teeth_text, kMaxFitWork), {}};
   FitOptions& o = c.options;
   const auto count = [](const std::optional<std::size_t>& k) {
@@ -165,6 +165,7 @@ FitCall fit_call(py::handle points, py::handle n, py::handle ratios, py::handle 
     if (!o.node_at) throw InvalidInput("node-tolerance", repr_of(node_tolerance), "without node_at", "None, or an angle with node_at");
     o.node_tolerance = real_arg(node_tolerance, "node-tolerance", "radians in (0, pi]");
   }
+  o.min_margin = real_arg(min_margin, "min-margin", "radians in [0, 0.785]");  // range: check_fit_inputs
   return c;
 }
 
@@ -177,17 +178,19 @@ std::string fit_call_report(const FitCall& c, bool text) {
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
-               py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance) {
-  const FitCall c = fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance);
+               py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance,
+               py::handle min_margin) {
+  const FitCall c =
+      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin);
   return py::module_::import("json").attr("loads")(fit_call_report(c, false));
 }
 
 /// sphtroch.fit_text(P, n=...): the same, as the text `sphtroch synth fit` prints.
 py::str fit_text_report(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
                         py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at,
-                        py::handle node_tolerance) {
+                        py::handle node_tolerance, py::handle min_margin) {
   return py::str(fit_call_report(
-      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance), true));
+      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin), true));
 }
 
 }  // namespace
@@ -203,12 +206,12 @@ void bind_synthesis(py::module_& m) {
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = py::none(), doc("fit"));
+        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, doc("fit"));
   m.def("fit_text", &fit_text_report, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("nodes") = py::none(),
         py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = py::none(), doc("fit_text"));
+        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, doc("fit_text"));
 }
 
 }  // namespace sphtroch::python

@@ -9,6 +9,7 @@
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
+#include "sphtroch/exact/tolerance_output.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -32,6 +33,15 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
   return classification_json(text, a.classification()).dump();
 }
+
+std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,
+                                std::size_t samples, std::uint64_t seed) {
+  ToleranceReport r = tolerance_report(train, ToleranceBox{da2, da3, dphase});
+  if (samples > 0) run_monte_carlo(r, samples, seed);
+  return tolerance_json(text, r).dump();
+}
+
+std::string topology_margin_json_text(const GearTrain& train) { return topology_margin_json(topology_margin(train)).dump(); }
 
 std::string classification_report_text(const TrainText& text, const GearTrain& train, bool literal,
                                        std::size_t census_samples) {

@@ -24,7 +24,7 @@ namespace sphtroch::cli {
 namespace {
 
 struct FitCommandOptions {
-  std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation, node_at, node_tolerance;
+  std::string input, output, n, ratios, teeth, shard, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin;
   bool json = false;
 };
 
@@ -46,6 +46,12 @@ FitOptions fit_options(const FitCommandOptions& o) {
       throw InvalidInput("node-tolerance", o.node_tolerance, "not an angle in (0, pi]", "an angle in (0, pi] (radians, or e.g. 0.01deg)");
     f.node_tolerance = v;
   }
+  if (!o.min_margin.empty()) {
+    const double v = parse_angle(o.min_margin, "min-margin");
+    if (!(v >= 0 && v <= kMaxFitMinMargin))
+      throw InvalidInput("min-margin", o.min_margin, "outside the valid range", "an angle in [0, 0.785] (radians, or e.g. 0.1deg)");
+    f.min_margin = v;
+  }
   return f;
 }
 
@@ -58,7 +64,8 @@ std::string options_text(const FitOptions& f) {
     node = number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z()) + " within " +
            number_text(f.node_tolerance);
   return "nodes " + (f.nodes ? std::to_string(*f.nodes) : "any") + " cusps " + (f.cusps ? std::to_string(*f.cusps) : "any") +
-         " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates) + " node " + node;
+         " max_deviation " + number_text(f.max_deviation) + " candidates " + std::to_string(f.max_candidates) + " node " + node +
+         (f.min_margin > 0 ? " min_margin " + number_text(f.min_margin) : "");
 }
 
 /// Shard members the merge needs besides the unsharded output: the run's fingerprint, the part's
@@ -117,7 +124,7 @@ std::pair<Ratio, double> checked_candidate(const nlohmann::json& c, const std::o
   if (!c.is_object() || !c.contains("n")) throw InvalidInput("shard", where + brief_json(c), "not a candidate", "{\"n\", \"a2\", ...}");
   const Ratio n = ratio_member(c, where);
   where = "candidate " + std::to_string(k + 1) + " (n = " + n.str() + "): ";
-  std::vector<std::string> names{"n", "a2", "a3", "phase", "rms", "max_deviation", "margin", "counts", "census_certified"};
+  std::vector<std::string> names{"n", "a2", "a3", "phase", "rms", "max_deviation", "margin", "certified_margin", "counts", "census_certified"};
   if (c.contains("teeth")) names.push_back("teeth");
   if (c.contains("node_distance")) names.push_back("node_distance");
   check_members(c, where + "candidate", names);
@@ -129,6 +136,10 @@ std::pair<Ratio, double> checked_candidate(const nlohmann::json& c, const std::o
   const double rms = number_member(c, where, "rms", 0, pi);
   number_member(c, where, "max_deviation", rms * (1 - 4 * std::numeric_limits<double>::epsilon()), pi);  // rms <= max, to rounding
   number_member(c, where, "margin", 0, pi);
+  const nlohmann::json& cm = c.at("certified_margin");
+  check_members(cm, where + "\"certified_margin\"", {"lower", "upper"});
+  const double lower = number_member(cm, where + "\"certified_margin\" ", "lower", 0, pi);
+  number_member(cm, where + "\"certified_margin\" ", "upper", lower, pi);
   if (c.contains("node_distance")) number_member(c, where, "node_distance", 0, pi);
   const nlohmann::json& k4 = c.at("counts");
   check_members(k4, where + "\"counts\"", {"nodes", "crossings", "tangencies", "cusps"});
@@ -277,6 +288,7 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
   cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point");
   cmd->add_option("--node-at", o->node_at, "X,Y,Z: a node (self-crossing) wanted at this point of the sphere");
   cmd->add_option("--node-tolerance", o->node_tolerance, "how near --node-at the certified node must be (default 1e-6 rad)");
+  cmd->add_option("--min-margin", o->min_margin, "keep candidates at least D (certified) from a change of their census (radians, or 0.1deg)");
   cmd->add_flag("--json", o->json, "{\"candidates\": [{\"n\", \"a2\", \"a3\", \"phase\", \"rms\", \"max_deviation\", "
                                    "\"margin\", \"counts\", ...}], \"reason\", \"dropped\"} (docs/cli.md: synth fit)");
   add_output_option(*cmd, o->output, "the candidates");

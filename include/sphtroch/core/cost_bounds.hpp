@@ -89,4 +89,7 @@ constexpr double kMaxFreeAxisWork = 500;
 /// The largest node or cusp count a fit may be asked for (--nodes, --cusps).
 constexpr std::size_t kMaxWantedCount = 100000000;
 
+/// The most Monte Carlo trains `tolerance --samples` classifies (each one a classify, ~1-10 ms).
+constexpr std::size_t kMaxToleranceSamples = 100000;
+
 }  // namespace sphtroch

@@ -16,10 +16,14 @@
 // or not ("census_certified"). With a node point (options.node_at), every candidate's certified
 // census has a node within options.node_tolerance of it ("node_distance": to the nearest node).
 // JSON: {"candidates": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
-// "rms", "max_deviation", "margin", "node_distance" (only with node_at) (radians),
+// "rms", "max_deviation", "margin" (first order), "certified_margin": {"lower", "upper"}
+// (topology_margin.hpp: the distance to the nearest change of the census lies in [lower, upper]),
+// "node_distance" (only with node_at) (radians),
 // "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], best (smallest rms)
 // first over all ratios, at most options.max_candidates; "reason": why there is none, or "";
-// "dropped": candidates removed because the census did not confirm the wanted counts}.
+// "dropped": candidates removed because the census did not confirm the wanted counts, or because
+// their certified margin is below options.min_margin}. The text says when the best candidate
+// lies within kFitHugMargin of a change of its census.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -30,6 +34,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/train_text.hpp"
+#include "sphtroch/synthesis/interval/topology_margin.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <nlohmann/json.hpp>
@@ -50,14 +55,20 @@ constexpr std::size_t kFitSpareCandidates = 3;
 struct ConfirmedCandidate {
   FitCandidate candidate;
   Classification census;
+  TopologyMargin certified_margin;  // topology_margin of the candidate's train
 };
+
+/// A best candidate whose certified margin is below this (radians, ~0.06 deg) is reported as
+/// hugging a boundary: a train built to that tolerance may draw other counts.
+constexpr double kFitHugMargin = 1e-3;
 
 /// The fit of one ratio, its candidates confirmed (see header).
 struct RatioFit {
   Ratio ratio;
   std::vector<ConfirmedCandidate> candidates;  // best first
   std::string reason;                          // why there is none, or ""
-  std::size_t dropped = 0;                     // not confirmed by classify
+  std::size_t dropped = 0;                     // not confirmed by classify, or nearer than min_margin
+  std::size_t too_near = 0;                    // of those: certified margin below options.min_margin
 };
 
 /// Spherical distance (radians) from `at` to the nearest node of the census, or infinity.
@@ -90,12 +101,25 @@ inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points
       Classification census = classify(c.train);
       if (options.node_at) c.node_distance = census_node_distance(census, *options.node_at);
       const bool node_held = !options.node_at || (census.certified() && c.node_distance <= options.node_tolerance);
-      if (census_confirms(census, options) && node_held) rf.candidates.push_back({std::move(c), std::move(census)});
-      else ++rf.dropped;
+      if (!(census_confirms(census, options) && node_held)) {
+        ++rf.dropped;
+        continue;
+      }
+      TopologyMargin margin = topology_margin(census.snapped.train);
+      if (options.min_margin > 0 && !(margin.lower >= options.min_margin)) {
+        ++rf.dropped;
+        ++rf.too_near;
+        continue;
+      }
+      rf.candidates.push_back({std::move(c), std::move(census), std::move(margin)});
     }
     if (rf.candidates.empty() && rf.reason.empty() && rf.dropped > 0)
-      rf.reason = "n = " + n.str() + ": the census (classify) did not confirm the wanted counts (or node point) of any of " +
-                  std::to_string(rf.dropped) + " candidate(s)";
+      rf.reason = "n = " + n.str() + ": " +
+                  (rf.too_near == rf.dropped ? "every candidate lies nearer than --min-margin " + number_text(options.min_margin) +
+                                                   " rad to a change of its census (" + std::to_string(rf.dropped) + " candidate(s))"
+                                             : "the census (classify) did not confirm the wanted counts (or node point) of any of " +
+                                                   std::to_string(rf.dropped) + " candidate(s)" +
+                                                   (rf.too_near ? " (" + std::to_string(rf.too_near) + " nearer than --min-margin)" : ""));
     all.push_back(std::move(rf));
   }
   return all;
@@ -135,7 +159,8 @@ inline std::string fit_candidate_json(const ConfirmedCandidate& cc, const TeethS
   out << "\"a2\": " << number_text(f.train.a2())
       << ", \"a3\": " << number_text(f.train.a3()) << ", \"phase\": " << number_text(f.train.phase_given())
       << ", \"rms\": " << number_text(f.rms) << ", \"max_deviation\": " << number_text(f.max_deviation)
-      << ", \"margin\": " << number_text(f.margin);
+      << ", \"margin\": " << number_text(f.margin) << ", \"certified_margin\": {\"lower\": " << number_text(cc.certified_margin.lower)
+      << ", \"upper\": " << number_text(cc.certified_margin.upper) << "}";
   if (node_at) out << ", \"node_distance\": " << number_text(f.node_distance);
   out << ", \"counts\": {\"nodes\": " << c.nodes.size()
       << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
@@ -182,11 +207,18 @@ inline std::string fit_text(const std::vector<RatioFit>& all, const FitOptions& 
     const Classification& census = ranked[k]->census;
     out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << number_text(c.train.a2())
         << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
-        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin) << "; "
+        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin)
+        << " (certified " << number_text(ranked[k]->certified_margin.lower) << " .. " << number_text(ranked[k]->certified_margin.upper) << "); "
         << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
         << (f.node_at ? "; node point " + number_text(c.node_distance) + " rad away" : "")
         << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
         << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
+  }
+  if (!ranked.empty() && ranked[0]->certified_margin.upper < kFitHugMargin) {
+    const TopologyMargin& m = ranked[0]->certified_margin;
+    out << "note: candidate 1 lies within " << number_text(m.upper) << " rad of a change of its census"
+        << (m.nearest ? " (" + boundary_text(m.nearest->boundary) + ")" : std::string())
+        << ": a train built to that tolerance may draw other counts; --min-margin D keeps candidates at least D away\n";
   }
   return out.str();
 }

@@ -26,6 +26,7 @@
 #error "sphtroch/exact/tolerance_output.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
 #endif
 
+#include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/exact/classification.hpp"
@@ -69,8 +70,6 @@ struct ToleranceReport {
 
 /// The largest phase half-width (a whole turn).
 constexpr double kMaxPhaseTolerance = 6.283185307179586;
-/// The most Monte Carlo samples (each one a classify, ~1-10 ms).
-constexpr std::size_t kMaxToleranceSamples = 100000;
 
 /// Throws InvalidInput naming fields[k] unless each half-width is finite and >= 0, the box's a2 and
 /// a3 stay in [kMinCarrierTwist, pi - kMinCarrierTwist] and dphase <= kMaxPhaseTolerance.
@@ -81,7 +80,8 @@ inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box,
 inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
 
 /// Classifies `samples` trains drawn uniformly from the box (std::mt19937_64 seeded with `seed`)
-/// and sets r.monte_carlo. Throws InvalidInput("samples") above kMaxToleranceSamples.
+/// and sets r.monte_carlo. Throws InvalidInput("samples") above kMaxToleranceSamples
+/// (core/cost_bounds.hpp).
 inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed);
 
 /// Whether everything the report states is certified: the census, a decided topology and, when
@@ -90,6 +90,8 @@ inline bool tolerance_certified(const ToleranceReport& r);
 
 /// `sphtroch tolerance --json`.
 inline nlohmann::json tolerance_json(const TrainText& text, const ToleranceReport& r);
+/// Its "margin" member: {"lower", "upper", "converged", "nearest": {"kind", "name", "a2", "a3"} | null}.
+inline nlohmann::json topology_margin_json(const TopologyMargin& m);
 /// `sphtroch tolerance`: the same for people.
 inline std::string tolerance_text(const TrainText& text, const ToleranceReport& r);
 
@@ -218,6 +220,11 @@ inline void points_text(std::ostream& out, const std::string& what, const std::v
 
 }  // namespace tolerance_output_detail
 
+inline nlohmann::json topology_margin_json(const TopologyMargin& m) {
+  return {{"lower", m.lower}, {"upper", m.upper}, {"converged", m.converged},
+          {"nearest", tolerance_output_detail::witness_json(m.nearest)}};
+}
+
 inline nlohmann::json tolerance_json(const TrainText& text, const ToleranceReport& r) {
   namespace d = tolerance_output_detail;
   nlohmann::json j;
@@ -228,8 +235,7 @@ inline nlohmann::json tolerance_json(const TrainText& text, const ToleranceRepor
   j["topology"] = to_string(r.topology.verdict);
   j["why"] = r.topology.why.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.topology.why);
   j["event"] = d::witness_json(r.topology.event);
-  j["margin"] = {{"lower", r.margin.lower}, {"upper", r.margin.upper}, {"converged", r.margin.converged},
-                 {"nearest", d::witness_json(r.margin.nearest)}};
+  j["margin"] = topology_margin_json(r.margin);
   j["nodes"] = d::points_json(r.nodes);
   j["cusps"] = d::points_json(r.cusps);
   j["monte_carlo"] = nullptr;

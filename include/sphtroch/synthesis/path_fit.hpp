@@ -103,7 +103,14 @@ struct FitOptions {
   double max_deviation = std::numeric_limits<double>::infinity();  // radians: drop farther candidates
   std::optional<Vector3d> node_at;    // a node wanted at this point (unit vector), or anywhere
   double node_tolerance = 1e-6;       // radians: how near node_at the curve's node must be
+  /// Radians: constrained candidates are placed at least this far (in a3) from the boundary that
+  /// bounds them, and the exact layer keeps only candidates whose certified margin
+  /// (topology_margin.hpp) is at least this (0: no requirement).
+  double min_margin = 0.0;
 };
+
+/// The largest FitOptions::min_margin (a quarter of the map's side).
+constexpr double kMaxFitMinMargin = 0.785;
 
 struct FitCandidate {
   GearTrain train;               // n, a2, a3, phase in [0, 2 pi / q)
@@ -226,6 +233,7 @@ struct Constraint {
   std::optional<std::int64_t> nodes;
   bool avoid_cones = false;  // cusps = 0 wanted
   std::optional<Vector3d> node_at;
+  double clearance = kFitBoundaryClearance;  // radians in a3 from the boundary bounding a candidate
   bool admissible(double a2, double a3) const {
     if (!(a2 >= kFitMinTwist && a2 <= kPi - kFitMinTwist && a3 >= kFitMinTwist && a3 <= kPi - kFitMinTwist))
       return false;
@@ -541,6 +549,8 @@ inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n
                        "not on the unit sphere", "x,y,z with |P| within 1e-6 of 1");
   if (!(o.node_tolerance > 0 && o.node_tolerance <= kPi))
     throw InvalidInput("node-tolerance", number_text(o.node_tolerance), "not an angle in (0, pi]", "radians in (0, pi]");
+  if (!(o.min_margin >= 0 && o.min_margin <= kMaxFitMinMargin))
+    throw InvalidInput("min-margin", number_text(o.min_margin), "outside the valid range", "radians in [0, 0.785]");
   check_census_cost(n);
 }
 
@@ -577,7 +587,7 @@ inline std::vector<Seed> seeds(const Constraint& con, const std::vector<Vector3d
       for (int i = 0; i < kFitGrid; ++i)
         for (const MapCell& c : cached_column(i, con.n)) {
           seen.insert(c.nodes);
-          if (c.nodes == *con.nodes && c.hi - c.lo > 4 * kFitBoundaryClearance)
+          if (c.nodes == *con.nodes && c.hi - c.lo > 4 * con.clearance)
             shapes.push_back({grid_angle(i), (c.lo + c.hi) / 2});
         }
   } else if (par.family == Family::both_cones) {
@@ -658,16 +668,16 @@ inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>
   return c;
 }
 
-/// A node-constrained free candidate closer than kFitBoundaryClearance (a3) to an event of its
-/// column is moved to that clearance, inside its cell; x unchanged if it cannot be.
+/// A node-constrained free candidate closer than con.clearance (a3) to an event of its column is
+/// moved to that clearance, inside its cell; x unchanged if it cannot be.
 inline Eigen::VectorXd clear_of_boundaries(const Constraint& con, Eigen::VectorXd x) {
   if (!con.nodes || con.par.family != Family::free) return x;
   const BoundarySet b = boundary_set(x(0), con.n);
   for (const BoundaryEvent& e : b.events) {
     const double gap = x(1) - e.a3;
-    if (std::abs(gap) >= kFitBoundaryClearance) continue;
+    if (std::abs(gap) >= con.clearance) continue;
     Eigen::VectorXd moved = x;
-    moved(1) = e.a3 + (gap >= 0 ? kFitBoundaryClearance : -kFitBoundaryClearance);
+    moved(1) = e.a3 + (gap >= 0 ? con.clearance : -con.clearance);
     if (con.admissible(moved(0), moved(1))) x = moved;
   }
   return x;
@@ -698,7 +708,8 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
   std::vector<std::pair<Constraint, Refined>> refined;
   for (Family f : fams) {
     const Constraint con{n, Parametrisation{f, n.value()}, options.nodes, options.cusps && *options.cusps == 0,
-                         options.node_at ? std::optional<Vector3d>(options.node_at->normalized()) : std::nullopt};
+                         options.node_at ? std::optional<Vector3d>(options.node_at->normalized()) : std::nullopt,
+                         std::max(kFitBoundaryClearance, options.min_margin)};
     for (const Seed& s : seeds(con, screen_pts, seen))
       refined.push_back({con, refine(con, refine_pts, con.par.make(s.a2, s.a3, s.phase), 60)});
   }

@@ -182,6 +182,7 @@ inline TopologyMargin topology_margin(const GearTrain& train) {
       if (dist < r.upper) queue.push({dist, h});
     }
   }
+  if (!std::isfinite(r.upper)) r.upper = Constants<double>::pi();  // a pitch cone crosses every column: <= pi
   if (queue.empty()) r.lower = r.upper;  // every box nearer than upper was proved free
   r.converged = r.upper - r.lower <= d::tolerance_of(r.upper);
   return r;
