@@ -217,7 +217,7 @@ TEST_CASE("fit: exact points give back the hidden train first", "[exact][synthes
 /// kNoisyTargets / 4 targets of the seed (four test cases, so that ctest -j2 runs them side by side).
 static void fit_noisy_targets(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  int others = 0;
+  int others = 0, with_margin = 0, asked_margin = 0;
   for (int k = 0; k < kNoisyTargets / 4; ++k) {
     const Target t = random_target(rng, kSigma);
     const Classification hidden = classify(t.hidden);
@@ -257,6 +257,24 @@ static void fit_noisy_targets(std::uint64_t seed) {
       CHECK(g[0].candidates.empty());
       CHECK_FALSE(g[0].reason.empty());
     }
+    if (k % 4 == 2) {  // --min-margin: every candidate's census holds at the corners of its D-square
+      FitOptions w = o;
+      w.min_margin = 0.01;
+      const auto f = fit_with_census(t.points, {n}, w);
+      check_counts(f, w);
+      with_margin += f[0].candidates.empty() ? 0 : 1;
+      ++asked_margin;
+      for (const ConfirmedCandidate& c : f[0].candidates) {
+        CHECK(c.certified_margin.lower >= w.min_margin);
+        const GearTrain& g = c.census.snapped.train;
+        for (const double da2 : {-0.99 * w.min_margin, 0.99 * w.min_margin})
+          for (const double da3 : {-0.99 * w.min_margin, 0.99 * w.min_margin}) {
+            const Classification corner = classify(GearTrain(g.a2() + da2, g.a3() + da3, n, g.phase()));
+            CHECK(corner.nodes.size() == c.census.nodes.size());
+            CHECK(corner.cusps.size() == c.census.cusps.size());
+          }
+      }
+    }
     if (k % 10 == 5) {  // cusps: on a pitch cone, exactly |p| of them
       FitOptions w;
       w.cusps = n.abs_p();
@@ -266,6 +284,7 @@ static void fit_noisy_targets(std::uint64_t seed) {
     }
   }
   CHECK(others > 0);
+  CHECK(with_margin * 2 >= asked_margin);  // most wanted counts have a cell wider than 2 D
 }
 
 TEST_CASE("fit with a node count on noisy targets (1 of 4): never a wrong count, the hidden train's RMS", "[exact][synthesis]") {
