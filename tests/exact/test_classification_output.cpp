@@ -56,13 +56,19 @@ TEST_CASE("classification json: the documented keys, inputs as typed, values of 
   std::set<std::string> keys;
   for (const auto& [k, v] : j.items()) keys.insert(k);
   CHECK(keys == std::set<std::string>{"inputs", "cone_angles", "period", "class", "counts", "nodes", "cusps",
-                                      "cusp_within_resolution", "boundaries", "z_extremes", "nearest_event", "dwell_points", "symmetry",
-                                      "analytic", "censuses", "agreement", "certified", "certificate", "tolerances", "work"});
+                                      "cusp_within_resolution", "boundaries", "z_extremes", "nearest_event", "margin", "dwell_points",
+                                      "symmetry", "analytic", "censuses", "agreement", "certified", "certificate", "tolerances", "work"});
   // Fig. 5(f), a3 = pi/2: the nearest events are the pole passages a3 = a2 = pi/3 and a3 = pi - a2
   // (Table 1's boundaries), pi/6 away on either side; the count is 4 between them.
   CHECK(j["nearest_event"]["kind"] == "pole");
   CHECK(std::fabs(std::fabs(j["nearest_event"]["margin"].get<double>()) - kPi / 6) < 1e-15);
   CHECK((j["nearest_event"]["nodes_above"] == 4 || j["nearest_event"]["nodes_below"] == 4));
+  // In both twists: both pole lines are pi/12 away in L-infinity ((a3 - a2)/2, (pi - a2 - a3)/2);
+  // the pitch cones stay below a_p <= asin(1/2) = pi/6 for n = 2, and n = 2 has no tangency locus.
+  CHECK(j["margin"]["lower"].get<double>() <= kPi / 12);
+  CHECK(j["margin"]["upper"].get<double>() >= kPi / 12);
+  CHECK(j["margin"]["upper"].get<double>() - j["margin"]["lower"].get<double>() <= 1e-6 * kPi / 12);
+  CHECK(j["margin"]["nearest"]["kind"] == "pole");
   CHECK(j["certified"] == true);  // both censuses find Table 1 row (f)'s 4 nodes
   CHECK(j["certificate"]["root_count_nodes"] == 4);
   CHECK(j["certificate"]["polyline_runs"].size() >= 1);

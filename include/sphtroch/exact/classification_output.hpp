@@ -14,7 +14,8 @@
 //     (number_text.hpp) in text, as JSON numbers (also round-trip) in JSON; measured times in
 //     text reports have 3 significant digits (seconds_text), in JSON every digit.
 //  2. classification_json: one object with the keys inputs, cone_angles, period, class, counts,
-//     nodes, cusps, cusp_within_resolution, boundaries, z_extremes, symmetry, analytic, censuses,
+//     nodes, cusps, cusp_within_resolution, boundaries, z_extremes, nearest_event, margin (the
+//     certified margin: topology_margin.hpp, as tolerance_output.hpp's topology_margin_json), symmetry, analytic, censuses,
 //     agreement, tolerances, work (docs/cli.md: classify --json documents each field). nlohmann::json
 //     sorts keys when dumped. Node longitude/latitude are radians, atan2(y, x) and asin(z).
 //  3. The text report states the same facts in words, with degrees beside radians for the inputs
@@ -32,6 +33,7 @@
 #endif
 
 #include "sphtroch/exact/classification.hpp"
+#include "sphtroch/exact/tolerance_output.hpp"  // the certified margin and its JSON
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/node.hpp"
@@ -302,6 +304,16 @@ inline void text_nearest_event(std::ostream& out, const Classification& c) {
       << " -> " << e.nodes_above << " across it\n";
 }
 
+/// "certified margin (sphtroch tolerance): L .. U rad in (a2, a3) to <boundary> at a2 = .., a3 = .."
+inline void text_certified_margin(std::ostream& out, const Classification& c) {
+  const TopologyMargin m = topology_margin(c.snapped.train);
+  out << "certified margin (sphtroch tolerance): " << number_text(m.lower) << " .. " << number_text(m.upper)
+      << " rad in (a2, a3)" << (m.nearest ? " to " + boundary_text(m.nearest->boundary) + " at a2 = " + number_text(m.nearest->a2()) +
+                                                 ", a3 = " + number_text(m.nearest->a3())
+                                           : std::string())
+      << (m.converged ? "" : " (the proof stopped at its box bound)") << "\n";
+}
+
 /// "dwell points (speed minima): k" and one line each.
 inline void text_dwell_points(std::ostream& out, const Classification& c) {
   out << "\ndwell points (speed minima of |dP/dtheta2|, per unit carrier rate): " << c.dwell_points.size() << "\n";
@@ -409,6 +421,7 @@ inline nlohmann::json classification_json(const TrainText& text, const Classific
     j["nearest_event"] = {{"a3", e.a3}, {"kind", to_string(e.kind)}, {"name", e.name}, {"margin", e.a3 - c.snapped.train.a3()},
                           {"nodes_below", e.nodes_below}, {"nodes_above", e.nodes_above}};
   }
+  j["margin"] = topology_margin_json(topology_margin(c.snapped.train));
   j["dwell_points"] = nlohmann::json::array();
   for (const DwellPoint& p : c.dwell_points)
     j["dwell_points"].push_back({{"param", p.param}, {"position", d::vec_json(p.position)}, {"speed", p.speed}});
@@ -428,6 +441,7 @@ inline void write_classification_text(std::ostream& out, const TrainText& text, 
   d::text_boundaries(out, c);
   d::text_nodes_and_cusps(out, c);
   d::text_nearest_event(out, c);
+  d::text_certified_margin(out, c);
   d::text_dwell_points(out, c);
   d::text_extremes_and_symmetry(out, c);
   d::text_criteria(out, c.analytic);
