@@ -142,3 +142,20 @@ TEST_CASE("tolerance_report refuses bad half-widths", "[tolerance]") {
   ToleranceReport r = tolerance_report(train, {1e-3, 1e-3, 0});
   CHECK(test::expect_invalid([&] { run_monte_carlo(r, kMaxToleranceSamples + 1, 1); }).field() == "samples");
 }
+
+TEST_CASE("tolerance_report: a phase-only box moves every node and cusp by the turn about Z, exactly bounded", "[tolerance]") {
+  const GearTrain train(1.0, 2.0, Ratio(5, 2));
+  for (const double dphase : {0.1, 1.0, 3.0, 6.0}) {
+    const ToleranceReport r = tolerance_report(train, {0.0, 0.0, dphase});
+    REQUIRE(tolerance_certified(r));
+    for (const NodeTolerance& t : r.nodes) {
+      // The largest angle between x and Rz(d) x over |d| <= dphase/|n|: at d = min(dphase/|n|, pi).
+      const double d = std::min(dphase / 2.5, kPi);
+      const Vector3d x = t.position;
+      const Vector3d turned(std::cos(d) * x.x() - std::sin(d) * x.y(), std::sin(d) * x.x() + std::cos(d) * x.y(), x.z());
+      const double exact = std::acos(std::clamp(x.dot(turned), -1.0, 1.0));
+      CHECK(*t.max_displacement >= exact - 1e-12);
+      CHECK(*t.max_displacement <= exact + 1e-9);
+    }
+  }
+}

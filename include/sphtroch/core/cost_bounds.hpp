@@ -91,5 +91,8 @@ constexpr std::size_t kMaxWantedCount = 100000000;
 
 /// The most Monte Carlo trains `tolerance --samples` classifies (each one a classify, ~1-10 ms).
 constexpr std::size_t kMaxToleranceSamples = 100000;
+/// The bound on samples x (|p| + q)^3 (a classify costs about (|p| + q)^3 x 0.007 ms: 1e7 is about
+/// a minute on one core; 1,700 samples for n = 13/5, none for n = 301/100).
+constexpr double kMaxToleranceSampleWork = 1e7;
 
 }  // namespace sphtroch

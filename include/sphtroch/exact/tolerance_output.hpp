@@ -80,9 +80,12 @@ inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box,
 inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
 
 /// Classifies `samples` trains drawn uniformly from the box (std::mt19937_64 seeded with `seed`)
-/// and sets r.monte_carlo. Throws InvalidInput("samples") above kMaxToleranceSamples
-/// (core/cost_bounds.hpp).
+/// and sets r.monte_carlo. Throws InvalidInput("samples") as check_monte_carlo_cost.
 inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed);
+
+/// Throws InvalidInput("samples") unless 1 <= samples <= kMaxToleranceSamples and
+/// samples x (|p| + q)^3 <= kMaxToleranceSampleWork (core/cost_bounds.hpp): refused up front.
+inline void check_monte_carlo_cost(const Ratio& n, std::size_t samples);
 
 /// Whether everything the report states is certified: the census, a decided topology and, when
 /// it holds, every node's enclosure (the CLI's exit status 3 otherwise).
@@ -130,10 +133,18 @@ inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceB
   return r;
 }
 
-inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed) {
-  if (samples > kMaxToleranceSamples)
+inline void check_monte_carlo_cost(const Ratio& n, std::size_t samples) {
+  if (!(samples >= 1 && samples <= kMaxToleranceSamples))
     throw InvalidInput("samples", std::to_string(samples), "outside the valid range",
-                       "0 .. " + std::to_string(kMaxToleranceSamples));
+                       "integer 1 .. " + std::to_string(kMaxToleranceSamples));
+  const double size = static_cast<double>(n.abs_p() + n.q()), work = static_cast<double>(samples) * size * size * size;
+  if (work > kMaxToleranceSampleWork)
+    throw InvalidInput("samples", std::to_string(samples), "estimated work " + number_text(work) + " for n = " + n.str() + " over the bound",
+                       "samples x (|p| + q)^3 <= 1e7 (about a minute)");
+}
+
+inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed) {
+  check_monte_carlo_cost(r.train.ratio(), samples);
   MonteCarloSpread m;
   m.samples = samples;
   m.seed = seed;
@@ -200,6 +211,8 @@ inline std::string topology_line(const ToleranceReport& r) {
   const std::string census = std::to_string(r.node_count) + " node(s), " + std::to_string(r.cusp_count) + " cusp(s)";
   switch (r.topology.verdict) {
     case BoxTopology::Verdict::holds:
+      if (r.box.da2 == 0 && r.box.da3 == 0)
+        return "holds (the box fixes a2 and a3: every train in it is the nominal one turned about the sun axis, " + census + ")";
       return "holds (certified: no boundary of the design map meets the box; every train in it draws " + census + ")";
     case BoxTopology::Verdict::changes:
       return "changes (certified: " + witness_text(*r.topology.event) + " lies in the box; the nominal train draws " + census + ")";

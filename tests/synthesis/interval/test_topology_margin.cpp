@@ -135,3 +135,18 @@ TEST_CASE("box_topology refuses a negative, NaN or range-leaving half-width", "[
   CHECK_THROWS_AS(box_topology(train, 0.0, 1.5), InvalidInput);
   CHECK_THROWS_AS(box_topology(train, 1.0, 0.0), InvalidInput);
 }
+
+TEST_CASE("topology_margin next to the range's edge: a2 within 3e-6 of 0 or pi, where a pitch cone may leave the range", "[interval][margin]") {
+  for (const double a2 : {1e-6, 2e-6, 3e-6, kPi - 3e-6, kPi - 1e-6})
+    for (const Ratio n : {Ratio(1), Ratio(2), Ratio(-2), Ratio(5, 2), Ratio(3), Ratio(-3, 2), Ratio(1, 2)})
+      for (const double a3 : {0.5, 2.0}) {
+        const TopologyMargin m = topology_margin(GearTrain(a2, a3, n));
+        INFO("n = " << n.str() << ", a2 = " << a2 << ", a3 = " << a3 << ": [" << m.lower << ", " << m.upper << "]");
+        CHECK(m.lower <= m.upper);
+        // No square about the train wider than its distance to the range's far edge fits in it.
+        CHECK(m.lower <= std::max(kPi - a2, a2));
+        // Every scanned boundary point of the range is at least `lower` away.
+        CHECK(scanned_distance(a2, a3, n, std::min(1.2 * m.upper, 3.0), 24) >= m.lower);
+        if (m.nearest) CHECK(std::max(std::fabs(m.nearest->a2() - a2), std::fabs(m.nearest->a3() - a3)) <= m.upper * (1 + 1e-12));
+      }
+}

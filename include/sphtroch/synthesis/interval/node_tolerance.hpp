@@ -111,6 +111,15 @@ inline Vector3d phase_rotation(const Vector3d& x, const Ratio& n) {
   return Vector3d(-Vector3d::UnitZ().cross(x) / n.value()) + Vector3d::Zero();  // + 0: no -0 in reports
 }
 
+/// The largest angle a turn about Z by at most d moves the unit vector x: 2 asin(sin(colatitude)
+/// sin(d/2)) for d <= pi, rounded up (1e-14 relative covers the library's few ulps).
+inline double rotation_move(const Vector3d& x, double d) {
+  const double pi = Constants<double>::pi();
+  const double sine = std::min(1.0, std::sqrt(x.x() * x.x() + x.y() * x.y()));
+  const double half = std::min(d, pi) / 2;
+  return std::min(pi, 2 * std::asin(std::min(1.0, sine * std::sin(half))) * (1 + 1e-14) + 1e-300);
+}
+
 /// The largest angle between the unit vector x and a point of the box b (componentwise), upper bound.
 inline double angle_to_box(const Vector3d& x, const std::array<Interval, 3>& b) {
   Interval chord2(0.0);
@@ -277,6 +286,10 @@ inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, co
   NodeTolerance r;
   r.position = node.position;
   r.d_dphase = d::phase_rotation(node.position, train.ratio());
+  // The phase turns the whole curve about Z by at most dphase/|n|: its move adds to that of the
+  // (a2, a3) box at the nominal phase (triangle inequality), exactly bounded.
+  const double turn = d::rotation_move(node.position, box.dphase / std::fabs(train.n()));
+  if (box.da2 == 0 && box.da3 == 0) r.max_displacement = turn;
   if (node.params.size() < 2 || node.kind != NodeKind::crossing) return r;
   d::NodeParameters np;
   np.s0 = node.params[0];
@@ -302,10 +315,12 @@ inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, co
   E.col(1) = x.cross(e1);
   const Eigen::Matrix2d Jt = E.transpose() * J;
   if (!(std::fabs(Jt.determinant()) > 1e-12)) return r;
+  if (box.da2 == 0 && box.da3 == 0) return r;
   const RoundingGuard upward;
-  const std::array<double, 3> lo{train.a2() - box.da2, train.a3() - box.da3, train.phase() - box.dphase};
-  const std::array<double, 3> hi{train.a2() + box.da2, train.a3() + box.da3, train.phase() + box.dphase};
-  r.max_displacement = d::largest_move(train, np, lo, hi, x, E, Jt.inverse(), kNodeBoxCuts);
+  const std::array<double, 3> lo{train.a2() - box.da2, train.a3() - box.da3, train.phase()};
+  const std::array<double, 3> hi{train.a2() + box.da2, train.a3() + box.da3, train.phase()};
+  const std::optional<double> move = d::largest_move(train, np, lo, hi, x, E, Jt.inverse(), kNodeBoxCuts);
+  if (move) r.max_displacement = (Interval(*move) + turn).sup();
   return r;
 }
 
@@ -314,12 +329,7 @@ inline NodeTolerance cusp_tolerance(const GearTrain& train, const Cusp& cusp, co
   NodeTolerance r;
   r.position = cusp.position;
   r.d_dphase = d::phase_rotation(cusp.position, train.ratio());
-  if (box.da2 == 0 && box.da3 == 0) {
-    // A rotation about Z by at most dphase/|n|: the angle moved is at most that times sin(colatitude) <= that.
-    const RoundingGuard upward;
-    const Interval turn = Interval(box.dphase) / std::fabs(train.ratio().value());
-    r.max_displacement = turn.sup();
-  }
+  if (box.da2 == 0 && box.da3 == 0) r.max_displacement = d::rotation_move(cusp.position, box.dphase / std::fabs(train.n()));
   return r;
 }
 

@@ -161,12 +161,19 @@ inline TopologyMargin topology_margin(const GearTrain& train) {
   std::priority_queue<d::Queued> queue;
   const TwistBox square{std::max(lo, a2 - reach), std::min(hi, a2 + reach), std::max(lo, a3 - reach), std::min(hi, a3 + reach)};
   queue.push({0.0, square});
+  bool stopped = false;  // by convergence or the box bound (else: every box nearer than upper was proved free)
   while (!queue.empty()) {
     const d::Queued top = queue.top();
     queue.pop();
     r.lower = std::min(top.distance, r.upper);
-    if (r.upper - r.lower <= d::tolerance_of(r.upper)) break;
-    if (++r.boxes > kMaxMarginBoxes) return r;
+    if (std::isfinite(r.upper) && r.upper - r.lower <= d::tolerance_of(r.upper)) {
+      stopped = true;
+      break;
+    }
+    if (++r.boxes > kMaxMarginBoxes) {
+      stopped = true;
+      break;
+    }
     const std::vector<MapBoundary> may_meet = boundaries_possibly_in(top.box, n);
     if (may_meet.empty()) continue;
     if (auto w = d::witness_in(top.box, may_meet, n)) {
@@ -182,9 +189,11 @@ inline TopologyMargin topology_margin(const GearTrain& train) {
       if (dist < r.upper) queue.push({dist, h});
     }
   }
-  if (!std::isfinite(r.upper)) r.upper = Constants<double>::pi();  // a pitch cone crosses every column: <= pi
-  if (queue.empty()) r.lower = r.upper;  // every box nearer than upper was proved free
-  r.converged = r.upper - r.lower <= d::tolerance_of(r.upper);
+  if (!stopped) r.lower = std::isfinite(r.upper) ? r.upper : reach;  // nothing nearer than upper (or in the square)
+  // No boundary proved anywhere in the trains' range: none there (a pitch cone crosses every column
+  // a2, but may lie outside [1e-6, pi - 1e-6] in a3); the bracket then says only "at least lower".
+  if (!std::isfinite(r.upper)) r.upper = std::max(r.lower, Constants<double>::pi());
+  r.converged = r.nearest && r.upper - r.lower <= d::tolerance_of(r.upper);
   return r;
 }
 
