@@ -42,6 +42,7 @@
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/synthesis/interval/interval.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -115,6 +116,25 @@ inline Interval closed_form(MapBoundary::Kind kind, const BoxTrig& t, const Rati
   return Interval(-1.0, 1.0);
 }
 
+/// A pitch-cone function over the box, sharp where its terms cancel: the natural form intersected
+/// with the mean-value form about the box's centre (partial derivatives enclosed over the box).
+/// With |p| = q the function vanishes identically along a2 = 0 or a2 = pi (q sin(a3 - a2) - q sin a3
+/// = -2 q cos(a3 - a2/2) sin(a2/2)), where the natural form alone cannot prove a sign next to it.
+inline Interval cone_function(MapBoundary::Kind kind, const BoxTrig& t, const Ratio& n) {
+  const Interval natural = closed_form(kind, t, n);
+  if (kind != MapBoundary::Kind::pitch_cone && kind != MapBoundary::Kind::mirror_pitch_cone) return natural;
+  const double p = static_cast<double>(n.p()), q = static_cast<double>(n.q());
+  const Interval c2 = centre_of(t.a2), c3 = centre_of(t.a3);
+  const BoxTrig centre = box_trig(TwistBox{c2.inf(), c2.inf(), c3.inf(), c3.inf()});
+  const bool mirror = kind == MapBoundary::Kind::mirror_pitch_cone;
+  const Interval cos_pair = interval_cos(mirror ? t.a2 + t.a3 : t.a3 - t.a2);  // over the box
+  const Interval df[2] = {mirror ? q * cos_pair : -q * cos_pair, q * cos_pair + p * t.ca3};
+  const Interval dx[2] = {t.a2 - c2, t.a3 - c3};
+  const Interval mv = mean_value<2>(closed_form(kind, centre, n), df, dx);
+  const double lo = std::max(natural.inf(), mv.inf()), hi = std::min(natural.sup(), mv.sup());
+  return lo <= hi ? Interval(lo, hi) : natural;  // both enclose it: they meet
+}
+
 /// G_l over the box, or nothing when it cannot be enclosed; `exists`: b*_l is real and in (0, pi)
 /// over the whole box (D > 0, c_l in (-1, 1)); `none`: b*_l exists nowhere in the box.
 struct StationaryValue {
@@ -129,10 +149,17 @@ struct StationaryValue {
 
 /// c_l over the box, narrowed by interval Newton steps on Q(c) = A c^2 + B c + C (Q'(c_l) =
 /// -+sqrt D is away from 0 where the roots are apart); nothing when a step proves no root.
+/// The quadratic is divided by sa2 > 0 (same roots; the discriminant's sign is kept): A = -q sa2
+/// sa3^2, B = sa3 ca3 (2 q ca2 + p), C = q sa2 + sa3^2 ca2 K with K = (q ca2 + p)/sa2, K taken in
+/// half angles ((p + q) - 2 q sin^2(a2/2) below pi/2, (p - q) + 2 q cos^2(a2/2) above) so that it
+/// does not cancel where p = -+q and a2 -> 0 or pi: there A, B and C all vanish with sa2 and the
+/// undivided quadratic leaves c unbounded over any box.
 inline std::optional<Interval> stationary_cos(const BoxTrig& t, double p, double q, int label, Interval& disc) {
-  const Interval A = -q * square(t.sa2) * square(t.sa3);
-  const Interval B = t.sa2 * t.sa3 * t.ca3 * (2 * q * t.ca2 + p);
-  const Interval C = q * (square(t.sa2) + square(t.ca2) * square(t.sa3)) + p * square(t.sa3) * t.ca2;
+  const auto [s_half, c_half] = interval_sincos(t.a2 / 2);
+  const Interval K = (t.a2.sup() <= 1.5707963267948966 ? (p + q) - 2 * q * square(s_half) : (p - q) + 2 * q * square(c_half)) / t.sa2;
+  const Interval A = -q * t.sa2 * square(t.sa3);
+  const Interval B = t.sa3 * t.ca3 * (2 * q * t.ca2 + p);
+  const Interval C = q * t.sa2 + square(t.sa3) * t.ca2 * K;
   disc = square(B) - 4 * A * C;
   const Interval root = sqrt(Interval(std::max(disc.inf(), 0.0), std::max(disc.sup(), 0.0)));
   // Both forms of the root, (-B -+ sqrt D)/(2A) = 2C/(-B +- sqrt D), intersected: the second is
@@ -191,6 +218,38 @@ inline std::optional<Interval> dg_db_over(const Interval& b, const BoxTrig& t, d
   return (p * (square(t.sa3) * t.ca2 + t.sa3 * t.ca3 * t.sa2 * cb) / r2 + q) / pi_interval();
 }
 
+inline StationaryValue stationary_value(const BoxTrig& t, const Ratio& n, int label);
+
+/// The partial derivatives of g in a2 and a3 at planet angles `b` over the box's twists (with
+/// x' = 0, y' = sa3 sa2 cb - ca3 ca2 in a2; x' = ca3 sb, y' = sa3 sa2 - ca3 ca2 cb in a3; g_a =
+/// p (x y' - y x') / (pi (x^2 + y^2))); nothing if x^2 + y^2 may vanish.
+inline std::optional<std::array<Interval, 2>> dg_dtwists_over(const Interval& b, const BoxTrig& t, double p) {
+  const auto [sb, cb] = interval_sincos(b);
+  const Interval x = t.sa3 * sb, y = -(t.sa3 * t.ca2 * cb + t.ca3 * t.sa2);
+  const Interval r2 = square(x) + square(y);
+  if (!(r2.inf() > 0)) return std::nullopt;
+  const Interval scale = p / (pi_interval() * r2);
+  return std::array<Interval, 2>{scale * x * (t.sa3 * t.sa2 * cb - t.ca3 * t.ca2),
+                                 scale * (x * (t.sa3 * t.sa2 - t.ca3 * t.ca2 * cb) - y * t.ca3 * sb)};
+}
+
+/// Narrows G_l over a box where b*_l exists throughout (so G_l is C^1 there) by its mean-value
+/// form in the twists: G_l(centre) + dG/da2 (a2 - c2) + dG/da3 (a3 - c3), where by the envelope
+/// theorem (g_b = 0 at b*) dG/da = g_a(b*, a), enclosed with b* in `b`. Sharp where G_l - m is
+/// small over a box much wider than its distance to the boundary (a tangency locus running into
+/// a2 = 0 or pi, where the box's own enclosure loses the factor a2_lo / a2_hi).
+inline void narrow_by_envelope(StationaryValue& s, const BoxTrig& t, const Interval& b, const Ratio& n, int label) {
+  if (t.a2.inf() == t.a2.sup() && t.a3.inf() == t.a3.sup()) return;
+  const Interval c2 = centre_of(t.a2), c3 = centre_of(t.a3);
+  const StationaryValue at_centre = stationary_value(box_trig(TwistBox{c2.inf(), c2.inf(), c3.inf(), c3.inf()}), n, label);
+  const auto partials = dg_dtwists_over(b, t, static_cast<double>(n.p()));
+  if (!at_centre.value || !partials) return;
+  const Interval dx[2] = {t.a2 - c2, t.a3 - c3};
+  const Interval mv = mean_value<2>(*at_centre.value, partials->data(), dx);
+  const double lo = std::max(s.value->inf(), mv.inf()), hi = std::min(s.value->sup(), mv.sup());
+  if (lo <= hi) s.value = Interval(lo, hi);
+}
+
 inline StationaryValue stationary_value(const BoxTrig& t, const Ratio& n, int label) {
   const double p = static_cast<double>(n.p()), q = static_cast<double>(n.q());
   StationaryValue s;
@@ -210,6 +269,7 @@ inline StationaryValue stationary_value(const BoxTrig& t, const Ratio& n, int la
   const auto g_mid = g_over(b_mid, t, p, q);
   const auto slope = dg_db_over(b, t, p, q);
   if (g_mid && slope) s.value = *g_mid + *slope * (b - b_mid);
+  if (s.exists && s.value) narrow_by_envelope(s, t, b, n, label);
   return s;
 }
 
@@ -277,7 +337,7 @@ inline std::vector<MapBoundary> boundaries_possibly_in(const TwistBox& box, cons
   const d::BoxTrig t = d::box_trig(box);
   std::vector<MapBoundary> out;
   for (const MapBoundary& b : d::closed_forms(n))
-    if (may_vanish(d::closed_form(b.kind, t, n))) out.push_back(b);
+    if (may_vanish(d::cone_function(b.kind, t, n))) out.push_back(b);
   for (int label = 0; label < 2; ++label) {
     const d::StationaryValue s = d::stationary_value(t, n, label);
     if (s.none) continue;

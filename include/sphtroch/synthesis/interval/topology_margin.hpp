@@ -60,8 +60,8 @@ struct TopologyMargin {
   std::size_t boxes = 0;                   // boxes examined
 };
 
-/// The most boxes topology_margin examines (~2 us each).
-constexpr std::size_t kMaxMarginBoxes = 50000;
+/// The most boxes topology_margin examines (~2-4 us each).
+constexpr std::size_t kMaxMarginBoxes = 200000;
 /// The narrowest part of a tolerance box that box_topology still splits, radians.
 constexpr double kMinTopologyBox = 1e-12;
 /// The most boxes box_topology examines.
