@@ -312,8 +312,10 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     as `--teeth`, each solution then echoing its "teeth")
     whose tracer passes through the three points (a (3, 3) array of
     unit vectors; fixed frame, sun axis Z), as `sphtroch synth points --json`: {"solutions": [{"n",
-    "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual", "counts":
-    {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], "complete" (the list is
+    "a2", "a3", "phase" (in [0, 2 pi / q)), "params" (theta2 at each point), "residual",
+    "certified_margin": {"lower", "upper"} (radians in (a2, a3) to a change of the census, as
+    GearTrain.margin()), "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified",
+    "isolated"}], "complete" (the list is
     certified to hold every train), "undecided_boxes"}. With free_axis=True (`--free-axis`): five
     points (a (5, 3) array), the sun axis anywhere; each solution also has "axis" (the sun axis) and
     "frame" (the train's x, y, z axes in the points' coordinates), and the work bound is that of
@@ -326,7 +328,8 @@ def synth_points_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
                       free_axis: Flag = False, threads: Optional[Count] = None) -> str:
     """What synth_points computes, as the text `sphtroch synth points` prints (the same arguments,
     the same refusals): per ratio its train count and whether the list is certified complete, then
-    each train with its angles, theta2 at the points, residual, census and the command that plots it."""
+    each train with its angles, theta2 at the points, residual, census, certified margin and the
+    command that plots it."""
 
 
 def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,

@@ -117,7 +117,7 @@ Ratio check_solution(const nlohmann::json& s, const ShardHeader& h, std::size_t 
     throw InvalidInput("shard", where + (axis ? "\"axis\"" : "no \"axis\""), "fixed-frame and free-axis trains mixed",
                        "every train with \"axis\" and \"frame\" (--free-axis) or none");
   free_axis = axis;
-  std::vector<std::string> names{"n", "a2", "a3", "phase", "params", "residual", "counts", "census_certified", "isolated"};
+  std::vector<std::string> names{"n", "a2", "a3", "phase", "params", "residual", "certified_margin", "counts", "census_certified", "isolated"};
   if (s.contains("teeth")) names.push_back("teeth");
   if (axis) names.insert(names.end(), {"axis", "frame"});
   check_members(s, where + "train", names);
@@ -142,6 +142,10 @@ Ratio check_solution(const nlohmann::json& s, const ShardHeader& h, std::size_t 
                        std::to_string(points) + " numbers (one per point)");
   for (std::size_t i = 0; i < points; ++i) number_member(params, where + "\"params\"", i, 0, 2 * pi * double(n.q()));
   number_member(s, where, "residual", 0, std::numeric_limits<double>::max());
+  const nlohmann::json& cm = s.at("certified_margin");
+  check_members(cm, where + "\"certified_margin\"", {"lower", "upper"});
+  const double lower = number_member(cm, where + "\"certified_margin\" ", "lower", 0, pi);
+  number_member(cm, where + "\"certified_margin\" ", "upper", lower, pi);
   const nlohmann::json& c = s.at("counts");
   check_members(c, where + "\"counts\"", {"nodes", "crossings", "tangencies", "cusps"});
   if (count_member(c, where, "nodes") != count_member(c, where, "crossings") + count_member(c, where, "tangencies"))

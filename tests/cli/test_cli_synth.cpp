@@ -3,6 +3,7 @@
 // nothing on stdout. Expected values: the trace's own arguments (the hidden train).
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
+#include "sphtroch/core/number_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -155,6 +156,20 @@ TEST_CASE("cli synth points: three points of a trace give back its train among a
     CHECK(s["params"].size() == 3);
     CHECK(s["census_certified"] == true);
     CHECK(s["counts"]["nodes"].get<int>() == s["counts"]["crossings"].get<int>() + s["counts"]["tangencies"].get<int>());
+    // The certified margin: a bracket; classify at the corners of the 0.99 lower square draws the
+    // solution's census (the proof's claim, checked by the census).
+    const double lower = s["certified_margin"]["lower"].get<double>(), upper = s["certified_margin"]["upper"].get<double>();
+    CHECK(lower > 0);
+    CHECK(lower <= upper);
+    for (const double da2 : {-0.99 * lower, 0.99 * lower})
+      for (const double da3 : {-0.99 * lower, 0.99 * lower}) {
+        const double a2 = s["a2"].get<double>() + da2, a3 = s["a3"].get<double>() + da3;
+        const Result c = run("classify --n 1/2 --a2 " + sphtroch::number_text(a2) + " --a3 " + sphtroch::number_text(a3) + " --json", dir, true);
+        REQUIRE(c.status == 0);
+        const nlohmann::json cj = nlohmann::json::parse(c.out);
+        CHECK(cj["nodes"].size() == s["counts"]["nodes"].get<std::size_t>());
+        CHECK(cj["cusps"].size() == s["counts"]["cusps"].get<std::size_t>());
+      }
     hidden = hidden || (std::abs(s["a2"].get<double>() - 1) < 1e-9 && std::abs(s["a3"].get<double>() - 2) < 1e-9 &&
                         std::abs(std::remainder(s["phase"].get<double>() - 0.3, M_PI)) < 1e-9);
   }
@@ -163,6 +178,7 @@ TEST_CASE("cli synth points: three points of a trace give back its train among a
   REQUIRE(text.status == 0);
   CHECK(contains(text.out, "all of them (certified)"));
   CHECK(contains(text.out, "plot it: sphtroch plot --n 1/2 --a2 1 --a3 2 --phase "));
+  CHECK(contains(text.out, "; certified margin "));
 }
 
 TEST_CASE("cli synth points: bad input is one stderr line, exit 2, no stdout", "[cli][synth][errors]") {

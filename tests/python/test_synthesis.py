@@ -42,6 +42,13 @@ def test_synth_points_finds_the_hidden_train_among_all():
     for s in r["solutions"]:
         assert s["residual"] <= 1e-12 and len(s["params"]) == 3
         assert s["counts"]["nodes"] == s["counts"]["crossings"] + s["counts"]["tangencies"]
+        # the certified margin is the train's own (GearTrain.margin), and the census holds inside it
+        m = s["certified_margin"]
+        assert 0 < m["lower"] <= m["upper"]
+        train = sphtroch.GearTrain(a2=s["a2"], a3=s["a3"], n="1/2")
+        assert train.margin()["lower"] == m["lower"]
+        corner = sphtroch.GearTrain(a2=s["a2"] + 0.99 * m["lower"], a3=s["a3"] - 0.99 * m["lower"], n="1/2")
+        assert len(corner.classify()["nodes"]) == s["counts"]["nodes"]
 
 
 def test_synth_points_refuses_bad_points():

@@ -7,12 +7,15 @@
 //   auto all = sphtroch::precision_points_with_census(pts, {sphtroch::Ratio(1, 2)});
 //   std::string json = sphtroch::precision_points_json(all);   // {"solutions": [...], "complete": true, ...}
 //   std::string text = sphtroch::precision_points_text(all);   // "n = 1/2: 4 train(s), all of them (certified)\n..."
+//   all[0].margins[0].lower;                                   // the first train's certified margin, radians
 //
 // JSON: {"solutions": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
 // free axis only: "axis": [x, y, z] (the sun axis), "frame": [X, Y, Z], the train's axes in the
 // points' coordinates (point = X P_x(theta2) + Y P_y + Z P_z, P the train's curve; Z = axis),
 // "params": [theta2 per point, input order],
-// "residual", "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified", "isolated"
+// "residual", "certified_margin": {"lower", "upper"} (topology_margin.hpp: how far the train is from a
+// change of its census, radians in (a2, a3)), "counts": {"nodes", "crossings", "tangencies", "cusps"},
+// "census_certified", "isolated"
 // (false: a near-singular root the certificate could not isolate, see PrecisionSolution)}],
 // "complete": every ratio's list certified complete, "undecided_boxes": their sum}. Radians.
 #pragma once
@@ -27,6 +30,7 @@
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/synthesis/interval/free_axis_points.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
+#include "sphtroch/synthesis/interval/topology_margin.hpp"
 
 #include <sstream>
 #include <string>
@@ -39,20 +43,24 @@ struct RatioPrecisionPoints {
   Ratio ratio;
   PrecisionPoints result;
   std::vector<Classification> census;  // one per solution, same order
+  std::vector<TopologyMargin> margins; // topology_margin of each solution's train, same order
   bool free_axis = false;              // five points, the sun axis free (free_axis_points)
 };
 
-/// precision_points (or, with free_axis, free_axis_points) for each ratio, then classify() of
-/// every train found.
+/// precision_points (or, with free_axis, free_axis_points) for each ratio, then classify() and
+/// topology_margin() of every train found.
 inline std::vector<RatioPrecisionPoints> precision_points_with_census(const std::vector<Vector3d>& points,
                                                                       const std::vector<Ratio>& ratios,
                                                                       const PrecisionPointsOptions& options = {},
                                                                       bool free_axis = false) {
   std::vector<RatioPrecisionPoints> all;
   for (const Ratio& n : ratios) {
-    RatioPrecisionPoints rs{n, free_axis ? free_axis_points(points, n, options) : precision_points(points, n, options), {},
+    RatioPrecisionPoints rs{n, free_axis ? free_axis_points(points, n, options) : precision_points(points, n, options), {}, {},
                             free_axis};
-    for (const auto& s : rs.result.solutions) rs.census.push_back(classify(s.train));
+    for (const auto& s : rs.result.solutions) {
+      rs.census.push_back(classify(s.train));
+      rs.margins.push_back(topology_margin(s.train));
+    }
     all.push_back(std::move(rs));
   }
   return all;
@@ -64,7 +72,7 @@ inline std::string vector_json(const Vector3d& v) {
 }
 
 /// One solution as a JSON object (see header); with free_axis also "axis" and "frame".
-inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c,
+inline std::string precision_solution_json(const PrecisionSolution& s, const Classification& c, const TopologyMargin& margin,
                                            const TeethSpec& teeth = {}, bool free_axis = false) {
   std::ostringstream out;
   out << "{\"n\": \"" << s.train.ratio().str() << "\", ";
@@ -76,7 +84,8 @@ inline std::string precision_solution_json(const PrecisionSolution& s, const Cla
         << vector_json(s.frame.col(1)) << ", " << vector_json(s.frame.col(2)) << "]";
   out << ", \"params\": [";
   for (std::size_t i = 0; i < s.params.size(); ++i) out << (i ? ", " : "") << number_text(s.params[i]);
-  out << "], \"residual\": " << number_text(s.residual) << ", \"counts\": {\"nodes\": " << c.nodes.size()
+  out << "], \"residual\": " << number_text(s.residual) << ", \"certified_margin\": {\"lower\": " << number_text(margin.lower)
+      << ", \"upper\": " << number_text(margin.upper) << "}, \"counts\": {\"nodes\": " << c.nodes.size()
       << ", \"crossings\": " << c.crossings << ", \"tangencies\": " << c.tangencies << ", \"cusps\": " << c.cusps.size()
       << "}, \"census_certified\": " << (c.certified() ? "true" : "false")
       << ", \"isolated\": " << (s.isolated ? "true" : "false") << "}";
@@ -94,7 +103,7 @@ inline std::string precision_points_json(const std::vector<RatioPrecisionPoints>
     complete = complete && rs.result.certified;
     undecided += rs.result.undecided;
     for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
-      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k], teeth, rs.free_axis);
+      out += (first ? "\n  " : ",\n  ") + precision_solution_json(rs.result.solutions[k], rs.census[k], rs.margins[k], teeth, rs.free_axis);
       first = false;
     }
   }
@@ -123,7 +132,8 @@ inline std::string precision_points_text(const std::vector<RatioPrecisionPoints>
       out << "; theta2 at the points:";
       for (const double t : s.params) out << " " << number_text(t);
       out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
-          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)")
+          << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)") << "; certified margin "
+          << number_text(rs.margins[k].lower) << " .. " << number_text(rs.margins[k].upper) << " rad"
           << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
           << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg"
           << (rs.free_axis ? " (in the train's frame above)" : "") << "\n";
