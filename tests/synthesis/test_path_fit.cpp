@@ -367,6 +367,14 @@ TEST_CASE("fit: bad input is refused naming the field", "[exact][synthesis][erro
   neg.nodes.reset();
   neg.cusps = -2;
   CHECK(field_of(ok, neg) == "cusps");
+  FitOptions cusps_and_margin;  // cusps lie on a pitch cone: margin 0
+  cusps_and_margin.cusps = 1;
+  cusps_and_margin.min_margin = 0.01;
+  CHECK(field_of(ok, cusps_and_margin) == "min-margin");
+  cusps_and_margin.cusps = 0;
+  CHECK(field_of(ok, cusps_and_margin) == "none");
+  cusps_and_margin.min_margin = 0.786;
+  CHECK(field_of(ok, cusps_and_margin) == "min-margin");
   CHECK(field_of(ok, {}, Ratio(1001)) == "n");
   std::vector<Vector3d> many(1000000, ok[0]);
   std::copy(ok.begin(), ok.end(), many.begin());

@@ -40,6 +40,14 @@
 //     its two nearest branches (two_branch_feet) join the sum, weighted kFitNodeWeights[k] times
 //     the point count in turn, so a self-crossing is pulled onto N; a candidate whose two branches
 //     pass farther than node_tolerance from N is dropped (the census confirms it, exact layer).
+//  6. A minimum margin D (FitOptions::min_margin, free family): a step is taken only to shapes
+//     whose D-square (a2 +- D, a3 +- D, clipped to the trains' range) keeps, at its 8 edge points
+//     (corners and edge midpoints), the centre's root count and the centre's sides of the pitch
+//     cones and (|p| >= 2) the pole lines — the pole lines exactly, as straight lines at 45 deg are
+//     first met at a corner; so the fit stays inside its cell shrunk by D, up to a tangency locus
+//     that bulges into the square between those points. The exact layer keeps only candidates
+//     whose certified margin (topology_margin.hpp) is at least D. Cusps (on a pitch cone, margin
+//     0) and D > 0 are refused together.
 // Margin: the distance in the (a2, a3) plane (radians) to the nearest boundary of the map, to first
 // order (map/map_cells.hpp's map_margin). The cone a cusp candidate lies on is not counted.
 // Cost: about kFitGrid^2 screenings on <= 120 points, kFitSeeds refinements on
@@ -58,6 +66,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -234,7 +243,33 @@ struct Constraint {
   bool avoid_cones = false;  // cusps = 0 wanted
   std::optional<Vector3d> node_at;
   double clearance = kFitBoundaryClearance;  // radians in a3 from the boundary bounding a candidate
+  double min_margin = 0;                     // radians: the D-square that must stay in the cell (free family)
   bool admissible(double a2, double a3) const {
+    if (!admissible_point(a2, a3)) return false;
+    return !(min_margin > 0 && par.family == Family::free) || square_in_cell(a2, a3);
+  }
+  /// Whether the 8 edge points of the min_margin square inside the range see the census of (a2, a3)
+  /// (see header, 6).
+  bool square_in_cell(double a2, double a3) const {
+    const std::int64_t centre = nodes ? *nodes : root_nodes(a2, a3, n, par.family);
+    const auto sides = [this](double x, double y) {
+      const double ap = par.cone(x);
+      return std::array<bool, 4>{y > ap, y > kPi - ap, n.abs_p() >= 2 && y > x, n.abs_p() >= 2 && x + y > kPi};
+    };
+    const std::array<bool, 4> own = sides(a2, a3);
+    // A hair wider than D: beyond the certified bracket's width (max(1e-9, 1e-6 upper)), so that
+    // a fit that ends on the wall still passes the exact layer's test lower >= D.
+    const double d = min_margin * (1 + 4e-6) + 4e-9;
+    for (int i = -1; i <= 1; ++i)
+      for (int k = -1; k <= 1; ++k) {
+        const double x = a2 + i * d, y = a3 + k * d;
+        if ((i == 0 && k == 0) || !(x >= kFitMinTwist && x <= kPi - kFitMinTwist && y >= kFitMinTwist && y <= kPi - kFitMinTwist))
+          continue;
+        if (sides(x, y) != own || root_nodes(x, y, n, par.family) != centre) return false;
+      }
+    return true;
+  }
+  bool admissible_point(double a2, double a3) const {
     if (!(a2 >= kFitMinTwist && a2 <= kPi - kFitMinTwist && a3 >= kFitMinTwist && a3 <= kPi - kFitMinTwist))
       return false;
     const double ap = par.cone(a2);
@@ -398,6 +433,20 @@ inline void add_foot_terms(const FitShape& s, const Eigen::MatrixXd& chain, doub
   g += w * J.transpose() * (j.point - target);
 }
 
+/// The points a step of refine_with tries, in order: x + step, and with a minimum margin (free
+/// family) also the step with a2 or a3 held, so that the fit slides along the wall of its shrunk
+/// cell instead of stalling against it.
+inline std::vector<Eigen::VectorXd> trials(const Constraint& con, const Eigen::VectorXd& x, const Eigen::VectorXd& step) {
+  std::vector<Eigen::VectorXd> out{x + step};
+  if (con.min_margin > 0 && con.par.family == Family::free)
+    for (int held = 0; held < 2; ++held) {
+      Eigen::VectorXd slide = step;
+      slide(held) = 0;
+      out.push_back(x + slide);
+    }
+  return out;
+}
+
 /// Levenberg–Marquardt with the feet eliminated (see header, step 2), inside the constraint;
 /// with node_at, its two branch distances weighted by `node_weight`.
 inline Refined refine_with(const Constraint& con, const std::vector<Vector3d>& pts, Eigen::VectorXd x, int max_iterations,
@@ -425,10 +474,10 @@ inline Refined refine_with(const Constraint& con, const std::vector<Vector3d>& p
       Eigen::VectorXd step = A.ldlt().solve(-g);
       if (!step.allFinite()) break;
       bool moved = false;
-      for (int halving = 0; halving < 40; ++halving, step /= 2) {
-        const Eigen::VectorXd trial = r.x + step;
-        const auto [a2, a3] = par.shape(trial);
-        if (con.admissible(a2, a3)) {
+      for (int halving = 0; halving < 40 && !moved; ++halving, step /= 2) {
+        for (const Eigen::VectorXd& trial : trials(con, r.x, step)) {
+          const auto [a2, a3] = par.shape(trial);
+          if (!con.admissible(a2, a3)) continue;
           moved = true;
           const FitShape ts = par.fit_shape(trial);
           std::vector<double> t = r.t;
@@ -551,6 +600,9 @@ inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n
     throw InvalidInput("node-tolerance", number_text(o.node_tolerance), "not an angle in (0, pi]", "radians in (0, pi]");
   if (!(o.min_margin >= 0 && o.min_margin <= kMaxFitMinMargin))
     throw InvalidInput("min-margin", number_text(o.min_margin), "outside the valid range", "radians in [0, 0.785]");
+  if (o.min_margin > 0 && o.cusps && *o.cusps > 0)
+    throw InvalidInput("min-margin", number_text(o.min_margin) + " with " + std::to_string(*o.cusps) + " cusps",
+                       "a train with cusps lies on a pitch cone, a boundary of the map (margin 0)", "0 when cusps > 0 are wanted");
   check_census_cost(n);
 }
 
@@ -668,17 +720,24 @@ inline FitCandidate candidate(const Constraint& con, const std::vector<Vector3d>
   return c;
 }
 
-/// A node-constrained free candidate closer than con.clearance (a3) to an event of its column is
-/// moved to that clearance, inside its cell; x unchanged if it cannot be.
+/// A free candidate closer than con.clearance (a3) to an event of its column (node-constrained, or
+/// with a minimum margin) is moved away from it in a3 by the clearance, or with a minimum margin
+/// by the first of 1, 1.5, 2, 3 times it that is admissible (a boundary at 45 deg, a pole line,
+/// needs 2 for the square of min_margin to clear it); x unchanged if none is.
 inline Eigen::VectorXd clear_of_boundaries(const Constraint& con, Eigen::VectorXd x) {
-  if (!con.nodes || con.par.family != Family::free) return x;
+  if (!(con.nodes || con.min_margin > 0) || con.par.family != Family::free) return x;
   const BoundarySet b = boundary_set(x(0), con.n);
   for (const BoundaryEvent& e : b.events) {
     const double gap = x(1) - e.a3;
     if (std::abs(gap) >= con.clearance) continue;
-    Eigen::VectorXd moved = x;
-    moved(1) = e.a3 + (gap >= 0 ? con.clearance : -con.clearance);
-    if (con.admissible(moved(0), moved(1))) x = moved;
+    for (const double times : {1.0, 1.5, 2.0, 3.0}) {
+      if (times > 1 && !(con.min_margin > 0)) break;
+      Eigen::VectorXd moved = x;
+      moved(1) = e.a3 + (gap >= 0 ? times : -times) * con.clearance;
+      if (!con.admissible(moved(0), moved(1))) continue;
+      x = moved;
+      break;
+    }
   }
   return x;
 }
@@ -709,7 +768,7 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
   for (Family f : fams) {
     const Constraint con{n, Parametrisation{f, n.value()}, options.nodes, options.cusps && *options.cusps == 0,
                          options.node_at ? std::optional<Vector3d>(options.node_at->normalized()) : std::nullopt,
-                         std::max(kFitBoundaryClearance, options.min_margin)};
+                         std::max(kFitBoundaryClearance, options.min_margin), options.min_margin};
     for (const Seed& s : seeds(con, screen_pts, seen))
       refined.push_back({con, refine(con, refine_pts, con.par.make(s.a2, s.a3, s.phase), 60)});
   }
@@ -717,7 +776,12 @@ inline PathFit fit_path(const std::vector<Vector3d>& input, const Ratio& n, cons
   for (const auto& [con, r] : refined) {
     if (out.candidates.size() == options.max_candidates) break;
     Refined full = refine(con, polish_pts, r.x, 30);
-    full.x = with_reduced_phase(con, clear_of_boundaries(con, full.x));
+    Eigen::VectorXd x = clear_of_boundaries(con, full.x);
+    if (con.min_margin > 0 && x != full.x) {  // set back from the wall: polish along the shrunk cell's wall
+      full = refine(con, polish_pts, x, 30);
+      x = full.x;
+    }
+    full.x = with_reduced_phase(con, x);
     const auto [a2, a3] = con.par.shape(full.x);
     if (!con.admissible(a2, a3)) continue;
     // The same design as a kept one, or farther than allowed from a polish point (a subset of
