@@ -23,6 +23,7 @@
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
+#include "sphtroch/synthesis/interval/tolerance_box.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <emscripten/bind.h>
@@ -33,6 +34,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -452,6 +454,63 @@ val points(const std::string& text, const std::string& n, const std::string& tee
   });
 }
 
+val witness_object(const std::optional<sphtroch::BoundaryWitness>& w) {
+  if (!w) return val::null();
+  val out = val::object();
+  out.set("kind", std::string(sphtroch::to_string(sphtroch::event_kind(w->boundary))));
+  out.set("name", sphtroch::boundary_text(w->boundary));
+  out.set("a2", w->a2());
+  out.set("a3", w->a3());
+  return out;
+}
+
+/// The largest proved move of each node (or cusp) over the box, radians; NaN where not proved.
+val displacements(const std::vector<sphtroch::NodeTolerance>& points) {
+  std::vector<double> d;
+  for (const sphtroch::NodeTolerance& p : points) d.push_back(p.max_displacement ? *p.max_displacement : std::nan(""));
+  return float64_array(d);
+}
+
+/// What `sphtroch tolerance` proves for the box [a2 -+ tolA2] x [a3 -+ tolA3] x [phase -+ tolPhase]
+/// (half-widths as angle texts: "1e-3", "0.1deg", "pi/1800"), for the train read onto its boundaries
+/// with the page's census (PageCensus; `certified` its check): {margin: {lower, upper, converged,
+/// nearest: {kind, name, a2, a3} | null}, topology: "holds" | "changes" | "undecided", why, event |
+/// null, nodes, cusps: Float64Array of max displacements (NaN: not proved), certified, box: {a2, a3,
+/// phase} (the half-widths, radians), a2, a3 (the train analysed)}.
+val tolerance(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+              const std::string& teeth, const std::string& tol_a2, const std::string& tol_a3, const std::string& tol_phase) {
+  return guarded([&] {
+    const GearTrain t = train_text(a2, a3, n, phase, teeth).train();
+    const sphtroch::ToleranceBox box{sphtroch::parse_angle(tol_a2, "tol-a2"), sphtroch::parse_angle(tol_a3, "tol-a3"),
+                                     sphtroch::parse_angle(tol_phase, "tol-phase")};
+    const PageCensus census = page_census(t);
+    sphtroch::check_tolerance_box(census.analysed, box, {"tol-a2", "tol-a3", "tol-phase"});
+    const sphtroch::BoxTolerance r =
+        sphtroch::box_tolerance(census.analysed, census.roots.node_points, cusps_of(census.analysed), box);
+    val margin = val::object();
+    margin.set("lower", r.margin.lower);
+    margin.set("upper", r.margin.upper);
+    margin.set("converged", r.margin.converged);
+    margin.set("nearest", witness_object(r.margin.nearest));
+    val out = val::object();
+    out.set("margin", margin);
+    out.set("topology", std::string(sphtroch::to_string(r.topology.verdict)));
+    out.set("why", r.topology.why);
+    out.set("event", witness_object(r.topology.event));
+    out.set("nodes", displacements(r.nodes));
+    out.set("cusps", displacements(r.cusps));
+    out.set("certified", census.certified);
+    val half_widths = val::object();
+    half_widths.set("a2", box.da2);
+    half_widths.set("a3", box.da3);
+    half_widths.set("phase", box.dphase);
+    out.set("box", half_widths);
+    out.set("a2", census.analysed.a2());
+    out.set("a3", census.analysed.a3());
+    return out;
+  });
+}
+
 /// A shortest round-trip text of a double (what the CLI prints for it).
 std::string number_text(double v) { return sphtroch::number_text(v); }
 
@@ -468,4 +527,5 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("numberText", &number_text);
   emscripten::function("fit", &fit);
   emscripten::function("points", &points);
+  emscripten::function("tolerance", &tolerance);
 }

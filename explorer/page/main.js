@@ -7,6 +7,7 @@
 //   sphere.js          the sphere view: projection, drawing, its input
 //   map.js             the design map: worker, cells, boundary curves, legend, its input
 //   inverse_design.js  the wanted path, fit, through 3 points, the candidates
+//   tolerance.js       the certified margin and the tolerance box (readouts; map.js draws them)
 //   controls.js        text fields, sliders, hash changes
 //   exports.js         trace CSV, sphere SVG, scene JSON, the command copied
 //   main.js            this: the start
@@ -27,6 +28,7 @@
     X.setupSphereInput();
     X.setupMapInput();
     X.setupFit();
+    X.setupTolerance();
     X.update(false);
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, X.state),

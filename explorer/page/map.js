@@ -1,7 +1,8 @@
 // map.js — the design map for the current n: node counts of the (a2, a3) cells from a worker
 // (worker_bundle.js: the module and map_worker.js, started from a Blob), coarse to fine, then the
 // boundary curves over them; the legend by area; the cross at the current design; a click or a
-// drag on the map moves the design.
+// drag on the map moves the design; the certified margin's square and the tolerance box about the
+// cross (X.tolerance, tolerance.js).
 'use strict';
 {
   const X = window.Explorer;
@@ -81,8 +82,35 @@
       ctx.beginPath();
       ctx.moveTo(x - 8, y); ctx.lineTo(x + 8, y); ctx.moveTo(x, y - 8); ctx.lineTo(x, y + 8);
       ctx.stroke();
+      if (X.tolerance) drawToleranceSquares(ctx, canvas, x, y);
     }
   }
+
+  // About the cross (x, y): the certified margin's square (magenta dashes; half-width `lower`, at least 3
+  // pixels so that it shows) and the tolerance box (its colour the verdict).
+  const VERDICT_COLOURS = { holds: '#1b7f3b', changes: '#b00020', undecided: '#8a6d00' };
+  const MARGIN_COLOUR = '#e000e0';  // no cell colour is magenta (countColour's hues run 210 .. 10)
+  function drawToleranceSquares(ctx, canvas, x, y) {
+    const t = X.tolerance, scale = canvas.width / Math.PI;
+    const half = Math.max(3, t.margin.lower * scale);
+    ctx.save();
+    ctx.strokeStyle = VERDICT_COLOURS[t.topology];
+    ctx.lineWidth = 1.5;
+    const w = Math.max(1, t.box.a2 * scale), h = Math.max(1, t.box.a3 * scale);
+    ctx.strokeRect(x - w, y - h, 2 * w, 2 * h);
+    // The margin's square over the box, magenta dashes with white between them (it stands out on
+    // every cell colour).
+    ctx.lineWidth = 2;
+    ctx.strokeStyle = MARGIN_COLOUR;
+    ctx.setLineDash([5, 3]);
+    ctx.strokeRect(x - half, y - half, 2 * half, 2 * half);
+    ctx.strokeStyle = '#ffffff';
+    ctx.setLineDash([3, 5]);
+    ctx.lineDashOffset = -5;
+    ctx.strokeRect(x - half, y - half, 2 * half, 2 * half);
+    ctx.restore();
+  }
+
 
   // The boundary curves over the cells: a sample step apart in a2, a polyline runs on while its
   // points are consecutive samples (a locus resolved to the step: no line across a gap).

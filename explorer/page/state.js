@@ -10,6 +10,7 @@
 //   X.curve   trace() of the current state
 //   X.ruler   events() at the current a2 and n
 //   X.view    the sphere view {spin, tilt, zoom, panX, panY, theta}
+//   X.tolerance  tolerance() of the current state and half-widths (tolerance.js), or null
 'use strict';
 window.Explorer = {};
 {
@@ -108,6 +109,7 @@ window.Explorer = {};
     X.renderRuler();
     X.drawSphere();
     X.drawMap();
+    X.scheduleTolerance();
     timing.total = performance.now() - start;
   }
 

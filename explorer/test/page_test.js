@@ -7,6 +7,8 @@
 //  - a drag on the a2 slider and a click on the design map move the state as they should;
 //  - the exported scene JSON runs with `sphtroch scene` and gives the page's counts; the exported
 //    trace CSV and sphere SVG (written by the module) are the bytes of `sphtroch trace` and `plot`;
+//  - the certified margin and the tolerance box: the verdict of `sphtroch tolerance`, overlapping
+//    margin brackets, a box beyond the margin never holds, one inside it holds, the square drawn;
 //  - no console error; a screenshot where the sphere and the map are drawn (not blank); the pitch
 //    cones drawn (turning them off and on changes the sphere's pixels, in the cones' colours).
 // Exit status 0 when every check holds; each failure is printed.
@@ -331,6 +333,55 @@ async function checkThroughPoints(page) {
   await setPath('');
 }
 
+// The certified margin and the tolerance box against `sphtroch tolerance --json` (the native
+// build; the module rounds to nearest with outward steps, so the brackets may differ in the last
+// digits but must overlap), and a box wider than the margin's upper bound never holds (the margin
+// is the largest half-width free of boundaries); the margin's square is drawn about the cross.
+async function checkTolerance(page) {
+  const states = [{ a2: '1', a3: '2', n: '5/2', phase: '0' }, { a2: '1.1', a3: '0.9', n: '2', phase: '0.4' },
+    { a2: '0.3', a3: '1.2', n: '-1', phase: '0' }, { a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }];
+  const readTolerance = () => page.evaluate(() => {
+    const m = document.querySelector('[data-testid="margin"]'), t = document.querySelector('[data-testid="tolerance"]');
+    return { lower: m.dataset.lower, upper: m.dataset.upper, verdict: t.dataset.verdict, text: t.textContent };
+  });
+  const setBox = async (a2, a3) => {
+    await page.evaluate(() => { document.querySelector('[data-testid="tolerance"]').dataset.verdict = ''; });
+    await page.fill('[data-testid="tol-a2"]', a2);
+    await page.fill('[data-testid="tol-a3"]', a3);
+    await page.waitForFunction(() => document.querySelector('[data-testid="tolerance"]').dataset.verdict, null, { timeout: 30000 });
+    return readTolerance();
+  };
+  for (const s of states) {
+    const where = 'tolerance ' + JSON.stringify(s);
+    await open(page, hashOf(s));
+    const got = await setBox('0.1deg', '0.1deg');
+    const want = JSON.parse(cli(['tolerance', ...trainArgs(s), '--tol-a2', '0.1deg', '--tol-a3', '0.1deg', '--json']).stdout);
+    check(got.verdict === want.topology, where + ': page ' + got.verdict + ' != CLI ' + want.topology + ' (' + got.text + ')');
+    const lower = Number(got.lower), upper = Number(got.upper);
+    check(lower > 0 && Math.max(lower, want.margin.lower) <= Math.min(upper, want.margin.upper) * (1 + 1e-12),
+      where + ': page margin [' + got.lower + ', ' + got.upper + '] and CLI [' + want.margin.lower + ', ' + want.margin.upper + '] do not overlap');
+    const wide = String(1.01 * upper);
+    if (Number(s.a2) - 1.01 * upper > 1e-6 && Number(s.a2) + 1.01 * upper < Math.PI - 1e-6 &&
+        Number(s.a3) - 1.01 * upper > 1e-6 && Number(s.a3) + 1.01 * upper < Math.PI - 1e-6) {
+      const beyond = await setBox(wide, wide);
+      check(beyond.verdict === 'changes' || beyond.verdict === 'undecided', where + ': a box of half-width 1.01 x upper ' + beyond.verdict);
+    }
+    const inside = await setBox(String(0.99 * lower), String(0.99 * lower));
+    check(inside.verdict === 'holds', where + ': a box of half-width 0.99 x lower ' + inside.verdict + ' (' + inside.text + ')');
+    const magenta = await page.evaluate(() => {
+      const c = document.querySelector('[data-testid="map"]'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let k = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] > 180 && d[i + 1] < 90 && d[i + 2] > 180) ++k;  // magenta
+      return k;
+    });
+    check(magenta >= 8, where + ': the margin square is not drawn on the map (' + magenta + ' magenta pixels)');
+  }
+  await open(page, hashOf(states[0]));
+  const bad = await setBox('-1', '0.1deg');
+  const want = cli(['tolerance', ...trainArgs(states[0]), '--tol-a2', '-1', '--tol-a3', '0.1deg']);
+  check(bad.verdict === 'error' && want.status === 2 && bad.text === want.stderr, 'tolerance -1: page "' + bad.text + '" != CLI "' + want.stderr + '"');
+}
+
 async function checkDrawn(page) {
   await open(page, hashOf({ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }));
   await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 60000 });
@@ -401,12 +452,13 @@ async function checkDrawn(page) {
     await checkTraceAndPlotExports(page);
     await checkInverseDesign(page);
     await checkThroughPoints(page);
+    await checkTolerance(page);
     await checkDrawn(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, drawn, legend, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

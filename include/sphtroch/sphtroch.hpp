@@ -92,6 +92,7 @@
 #include "sphtroch/synthesis/interval/node_tolerance.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/synthesis/interval/root_isolation.hpp"
+#include "sphtroch/synthesis/interval/tolerance_box.hpp"
 #include "sphtroch/synthesis/interval/topology_margin.hpp"
 #endif
 

@@ -31,8 +31,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/synthesis/interval/node_tolerance.hpp"
-#include "sphtroch/synthesis/interval/topology_margin.hpp"
+#include "sphtroch/synthesis/interval/tolerance_box.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -68,14 +67,6 @@ struct ToleranceReport {
   std::optional<MonteCarloSpread> monte_carlo;
 };
 
-/// The largest phase half-width (a whole turn).
-constexpr double kMaxPhaseTolerance = 6.283185307179586;
-
-/// Throws InvalidInput naming fields[k] unless each half-width is finite and >= 0, the box's a2 and
-/// a3 stay in [kMinCarrierTwist, pi - kMinCarrierTwist] and dphase <= kMaxPhaseTolerance.
-inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box,
-                                const std::array<std::string, 3>& fields = {"da2", "da3", "dphase"});
-
 /// The report for the train and box (runs classify, the margin, the box topology, each node).
 inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
 
@@ -100,21 +91,6 @@ inline std::string tolerance_text(const TrainText& text, const ToleranceReport& 
 
 // ------------------------------------------------------------------------------------------------
 
-inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box, const std::array<std::string, 3>& fields) {
-  const double lo = kMinCarrierTwist, hi = Constants<double>::pi() - kMinCarrierTwist;
-  const std::string twist = "a half-width >= 0 radians that keeps the angle in [1e-6, pi - 1e-6]";
-  auto check = [&](double d, double centre, const std::string& field) {
-    if (!(std::isfinite(d) && d >= 0)) throw InvalidInput(field, number_text(d), "not a finite half-width >= 0", twist);
-    if (!(centre - d >= lo && centre + d <= hi))
-      throw InvalidInput(field, number_text(d), "the box leaves the trains' range (" + number_text(centre - d) + " .. " +
-                                                    number_text(centre + d) + ")", twist);
-  };
-  check(box.da2, train.a2(), fields[0]);
-  check(box.da3, train.a3(), fields[1]);
-  if (!(std::isfinite(box.dphase) && box.dphase >= 0 && box.dphase <= kMaxPhaseTolerance))
-    throw InvalidInput(fields[2], number_text(box.dphase), "outside the valid range", "a half-width in [0, 2 pi] radians");
-}
-
 inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box) {
   check_tolerance_box(train, box);
   const Classification c = classify(train);
@@ -125,11 +101,11 @@ inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceB
   r.node_count = c.nodes.size();
   r.cusp_count = c.cusps.size();
   r.census_certified = c.certificate.certified;
-  r.margin = topology_margin(r.train);
-  r.topology = (box.da2 == 0 && box.da3 == 0) ? BoxTopology{BoxTopology::Verdict::holds, std::nullopt, "", 0}
-                                              : box_topology(r.train, box.da2, box.da3);
-  for (const Node& n : c.nodes) r.nodes.push_back(node_tolerance(r.train, n, box));
-  for (const Cusp& k : c.cusps) r.cusps.push_back(cusp_tolerance(r.train, k, box));
+  BoxTolerance proved = box_tolerance(r.train, c.nodes, c.cusps, box);
+  r.margin = std::move(proved.margin);
+  r.topology = std::move(proved.topology);
+  r.nodes = std::move(proved.nodes);
+  r.cusps = std::move(proved.cusps);
   return r;
 }
 
