@@ -9,9 +9,12 @@
 #include "sphtroch/cad/step_export.hpp"
 #include "sphtroch/core/curve.hpp"
 
+#include <APIHeaderSection_MakeHeader.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
 #include <STEPControl_Reader.hxx>
+#include <StepData_StepModel.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -179,6 +182,27 @@ TEST_CASE("STEP: D0 radius 1e-100 and 1e100: the file is written whole, every re
     CHECK(reals > 3 * path.points);   // every pole's three coordinates at least
     CHECK(scaled > 2 * path.points);  // most of them of the radius' size
   }
+}
+
+TEST_CASE("STEP: the header names sphtroch as the originating system, the product, no placeholder author, and millimetres", "[step]") {
+  TempDir dir;
+  StepOptions o;
+  o.radius = 25;
+  const StepPath path = step_path(GearTrain(0.7, 2.5, Ratio(13, 5)), o);
+  const std::string file = (dir.path / "h.step").string();
+  std::ofstream(file, std::ios::binary) << step_text(path);
+  STEPControl_Reader reader;  // OpenCASCADE's reader: the header as a STEP reader sees it
+  REQUIRE(reader.ReadFile(file.c_str()) == IFSelect_RetDone);
+  APIHeaderSection_MakeHeader header(reader.StepModel());
+  REQUIRE(header.IsDone());
+  CHECK(std::string(header.OriginatingSystem()->ToCString()) == std::string("sphtroch ") + SPHTROCH_VERSION_STRING);
+  CHECK(std::string(header.Name()->ToCString()) == path.product);
+  CHECK(std::string(header.AuthorValue(1)->ToCString()).empty());
+  CHECK(std::string(header.OrganizationValue(1)->ToCString()).empty());
+  TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
+  reader.FileUnits(lengths, angles, solid_angles);
+  REQUIRE(lengths.Length() >= 1);
+  for (int k = 1; k <= lengths.Length(); ++k) CHECK(std::string(lengths.Value(k).ToCString()) == "millimetre");
 }
 
 TEST_CASE("STEP: the header's example runs (cad/step_export.hpp)", "[step]") {

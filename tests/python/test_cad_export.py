@@ -26,6 +26,8 @@ def test_dxf_is_a_3d_polyline_through_the_trace(a2, a3, n, extra, closed):
         path = os.path.join(d, "path.DXF")  # the suffix in any case
         assert run_cli("trace", "--a2", a2, "--a3", a3, "--n", n, *extra, "--radius", "25", "-o", path) == ""
         doc = ezdxf.readfile(path)
+    assert doc.units == ezdxf.units.MM  # $INSUNITS: millimetres, as the STEP file states
+    assert doc.header["$MEASUREMENT"] == 1  # metric
     entities = list(doc.modelspace())
     assert [e.dxftype() for e in entities] == ["POLYLINE"]
     poly = entities[0]

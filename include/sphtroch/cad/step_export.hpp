@@ -40,7 +40,9 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/version.hpp"
 
+#include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -57,6 +59,7 @@
 #include <XSControl_WorkSession.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Shape.hxx>
 
@@ -228,6 +231,24 @@ inline StepPath step_path(const GearTrain& train, const StepOptions& options) {
   }
 }
 
+namespace step_detail {
+
+/// The header's FILE_DESCRIPTION and FILE_NAME: the product's name, sphtroch and its version as the
+/// originating system, no author or organisation (OpenCASCADE's own placeholders otherwise). The
+/// MakeHeader made from the model edits the model's own header entities.
+inline void name_the_file(const Handle(StepData_StepModel)& model, const std::string& product) {
+  APIHeaderSection_MakeHeader header(model);
+  auto text = [](const std::string& s) { return Handle(TCollection_HAsciiString)(new TCollection_HAsciiString(s.c_str())); };
+  header.SetName(text(product));
+  header.SetAuthorValue(1, text(""));
+  header.SetOrganizationValue(1, text(""));
+  header.SetOriginatingSystem(text(std::string("sphtroch ") + SPHTROCH_VERSION_STRING));
+  header.SetAuthorisation(text(""));
+  header.SetDescriptionValue(1, text("a spherical trochoid: the path of a point of a spherical planetary gear train"));
+}
+
+}  // namespace step_detail
+
 inline std::string step_text(const StepPath& path) {
   step_detail::silence_opencascade();
   try {
@@ -239,6 +260,7 @@ inline std::string step_text(const StepPath& path) {
     Interface_Static::SetRVal("write.precision.val", path.tolerance);
     const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(path.curve).Edge();
     if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone) throw std::runtime_error("STEP: OpenCASCADE could not translate the path");
+    step_detail::name_the_file(writer.Model(), path.product);
     const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
     StepData_StepWriter text_writer(writer.Model());
     text_writer.FloatWriter().SetFormat(kStepRealFormat);  // 16 digits, within OpenCASCADE's buffer

@@ -13,7 +13,8 @@
 // form (number_text.hpp); with degrees the first column is t in degrees ("t_deg"). npy: float64,
 // C order, shape (N, 4), (N, 7), (N, 7) or (N, 10), the same columns. t = theta2 (radians), P (Eq. 4) and dP/dtheta2 = omega x P (Eq. 47a) in the base frame,
 // the kinematics of core/kinematics.hpp. The bytes do not depend on the thread count.
-// For CAD (positions only, no t): DXF — an ASCII DXF R12 file whose ENTITIES section holds one 3-D
+// For CAD (positions only, no t): DXF — an ASCII DXF R12 file, its HEADER stating millimetres (as
+// the STEP export does: a radius is a length in mm for CAD), whose ENTITIES section holds one 3-D
 // POLYLINE (group 70 flag 8, plus 1 when closed: the last sample joins the first) with a VERTEX
 // (flag 32) per sample, layer "0"; OBJ — a "v x y z" line per sample and "l" lines joining them
 // in order (at most kObjLineVertices indices a line, consecutive lines sharing their end vertex;
@@ -101,9 +102,15 @@ inline void write_trajectory_csv(std::ostream& out, const Trajectory<double>& tr
 /// `out` throws (OutputError, BrokenPipe). Does not commit `out`.
 namespace trace_output_detail {
 
+/// DXF's HEADER section: R12 ($ACADVER AC1009), drawing units millimetres ($INSUNITS 4, metric
+/// $MEASUREMENT 1), the unit the STEP export states: without it readers assume metres (ezdxf) or
+/// none, and an import comes in 1000 times off.
+constexpr const char* kDxfHeader =
+    "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n9\n$INSUNITS\n70\n4\n9\n$MEASUREMENT\n70\n1\n0\nENDSEC\n";
+
 /// DXF: the file up to the first VERTEX, and from SEQEND to the end (see header).
 inline std::string dxf_head(bool closed) {
-  return std::string("0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n") +
+  return std::string(kDxfHeader) + "0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n8\n0\n66\n1\n10\n0\n20\n0\n30\n0\n70\n" +
          (closed ? "9" : "8") + "\n";
 }
 constexpr const char* kDxfTail = "0\nSEQEND\n8\n0\n0\nENDSEC\n0\nEOF\n";
