@@ -6,6 +6,7 @@
 #include "step_request.hpp"
 
 #include "sphtroch/cad/step_export.hpp"
+#include "sphtroch/version.hpp"
 
 #include <string>
 
@@ -22,7 +23,7 @@ std::string run_step_request(const std::string& text) {
     check_step_options(request.train, o);
     return {};
   }
-  return step_text(step_path(request.train, o));
+  return step_text(step_path(request.train, o), std::string("sphtroch ") + SPHTROCH_VERSION_STRING);
 }
 
 }  // namespace

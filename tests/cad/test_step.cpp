@@ -8,6 +8,7 @@
 #include "cli_support.hpp"
 #include "sphtroch/cad/step_export.hpp"
 #include "sphtroch/core/curve.hpp"
+#include "sphtroch/version.hpp"
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRep_Tool.hxx>
@@ -190,7 +191,7 @@ TEST_CASE("STEP: the header names sphtroch as the originating system, the produc
   o.radius = 25;
   const StepPath path = step_path(GearTrain(0.7, 2.5, Ratio(13, 5)), o);
   const std::string file = (dir.path / "h.step").string();
-  std::ofstream(file, std::ios::binary) << step_text(path);
+  std::ofstream(file, std::ios::binary) << step_text(path, std::string("sphtroch ") + SPHTROCH_VERSION_STRING);
   STEPControl_Reader reader;  // OpenCASCADE's reader: the header as a STEP reader sees it
   REQUIRE(reader.ReadFile(file.c_str()) == IFSelect_RetDone);
   APIHeaderSection_MakeHeader header(reader.StepModel());
@@ -270,6 +271,8 @@ TEST_CASE("cli trace -o FILE.step: scaled by --radius and read back within --tol
   CHECK(text.rfind("ISO-10303-21;", 0) == 0);
   CHECK(contains(text, "AUTOMOTIVE_DESIGN"));  // AP214
   CHECK(contains(text, "sphtroch a2=0.7 a3=2.5 n=13/5"));
+  CHECK(contains(text, std::string("'sphtroch ") + SPHTROCH_VERSION_STRING + "'"));  // the originating system
+  CHECK(!contains(text, "'Author'"));
   const GearTrain train(0.7, 2.5, Ratio(13, 5));
   CHECK(deviation(read_step((dir.path / "p.step").string()), train, train.period(), 25.0) <= 1e-4);
 

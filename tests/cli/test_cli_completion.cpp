@@ -85,7 +85,7 @@ TEST_CASE("cli completion bash: every command and option of the registry, as --h
   CHECK(completions(dir, {"tolerance", "--tol-"}) == std::set<std::string>{"--tol-a2", "--tol-a3", "--tol-phase"});
 }
 
-TEST_CASE("cli completion zsh: the same script behind bashcompinit; another shell is refused", "[cli][completion][errors]") {
+TEST_CASE("cli completion zsh: the same script behind bashcompinit, another shell is refused", "[cli][completion][errors]") {
   TempDir dir;
   const Result zsh = run("completion zsh", dir), bash = run("completion bash", dir);
   REQUIRE(zsh.status == 0);

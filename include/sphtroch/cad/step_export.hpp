@@ -40,7 +40,6 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/types.hpp"
-#include "sphtroch/version.hpp"
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -113,9 +112,10 @@ inline void check_step_options(const GearTrain& train, const StepOptions& option
 /// path too long); std::runtime_error if OpenCASCADE cannot interpolate.
 inline StepPath step_path(const GearTrain& train, const StepOptions& options);
 
-/// The STEP AP214 file (ISO-10303-21 text, reals with 17 digits) holding the path as one edge.
-/// Throws std::runtime_error if OpenCASCADE cannot translate it.
-inline std::string step_text(const StepPath& path);
+/// The STEP AP214 file (ISO-10303-21 text, reals with 17 digits, millimetres) holding the path as
+/// one edge; its header names the product and `originating_system` (the tool writes "sphtroch
+/// VERSION"), no author or organisation. Throws std::runtime_error if OpenCASCADE cannot translate it.
+inline std::string step_text(const StepPath& path, const std::string& originating_system = "sphtroch");
 
 // Implementation details follow.
 namespace step_detail {
@@ -233,23 +233,23 @@ inline StepPath step_path(const GearTrain& train, const StepOptions& options) {
 
 namespace step_detail {
 
-/// The header's FILE_DESCRIPTION and FILE_NAME: the product's name, sphtroch and its version as the
-/// originating system, no author or organisation (OpenCASCADE's own placeholders otherwise). The
+/// The header's FILE_DESCRIPTION and FILE_NAME: the product's name, `system` as the originating
+/// system, no author or organisation (OpenCASCADE's own placeholders otherwise). The
 /// MakeHeader made from the model edits the model's own header entities.
-inline void name_the_file(const Handle(StepData_StepModel)& model, const std::string& product) {
+inline void name_the_file(const Handle(StepData_StepModel)& model, const std::string& product, const std::string& system) {
   APIHeaderSection_MakeHeader header(model);
   auto text = [](const std::string& s) { return Handle(TCollection_HAsciiString)(new TCollection_HAsciiString(s.c_str())); };
   header.SetName(text(product));
   header.SetAuthorValue(1, text(""));
   header.SetOrganizationValue(1, text(""));
-  header.SetOriginatingSystem(text(std::string("sphtroch ") + SPHTROCH_VERSION_STRING));
+  header.SetOriginatingSystem(text(system));
   header.SetAuthorisation(text(""));
   header.SetDescriptionValue(1, text("a spherical trochoid: the path of a point of a spherical planetary gear train"));
 }
 
 }  // namespace step_detail
 
-inline std::string step_text(const StepPath& path) {
+inline std::string step_text(const StepPath& path, const std::string& originating_system) {
   step_detail::silence_opencascade();
   try {
     STEPControl_Writer writer;
@@ -260,7 +260,7 @@ inline std::string step_text(const StepPath& path) {
     Interface_Static::SetRVal("write.precision.val", path.tolerance);
     const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(path.curve).Edge();
     if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone) throw std::runtime_error("STEP: OpenCASCADE could not translate the path");
-    step_detail::name_the_file(writer.Model(), path.product);
+    step_detail::name_the_file(writer.Model(), path.product, originating_system);
     const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
     StepData_StepWriter text_writer(writer.Model());
     text_writer.FloatWriter().SetFormat(kStepRealFormat);  // 16 digits, within OpenCASCADE's buffer
