@@ -171,7 +171,7 @@ void run_tolerance(const ToleranceOptions& o) {
   }
   const std::size_t samples = o.samples.empty() ? 0 : parse_count(o.samples, "samples", 1, kMaxToleranceSamples);
   const std::uint64_t seed = parse_count(o.seed, "seed", 0, std::size_t(1) << 62);
-  if (samples > 0) check_monte_carlo_cost(train.ratio(), samples);  // refused up front
+  if (samples > 0) check_monte_carlo_cost(train, box, samples);  // refused up front
   ToleranceReport r = tolerance_report(train, box);
   if (samples > 0) run_monte_carlo(r, samples, seed);
   write_output(o.output, [&](std::ostream& out) {

@@ -157,7 +157,7 @@ FitShard read_fit_shard(const std::string& path, const std::string& text) {
   s.path = path;
   s.text = text;
   try {
-    const nlohmann::json j = nlohmann::json::parse(text);
+    const nlohmann::json j = parse_part_json(text);
     s.header = read_shard_header(j);
     check_members(j, "the part",
                   {s.header.set_name, "shard", "run", "digest", "max_candidates", "reasons", "candidates", "reason", "dropped"});

@@ -163,7 +163,7 @@ PointsShard read_points_shard(const std::string& path, const std::string& text) 
   s.path = path;
   s.text = text;
   try {
-    const nlohmann::json j = nlohmann::json::parse(text);
+    const nlohmann::json j = parse_part_json(text);
     s.header = read_shard_header(j);
     check_members(j, "the part", {s.header.set_name, "shard", "run", "digest", "solutions", "complete", "undecided_boxes"});
     s.run = j.at("run").get<std::string>();

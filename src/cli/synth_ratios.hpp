@@ -135,6 +135,35 @@ inline ShardHeader read_shard_header(const nlohmann::json& j) {
   return h;
 }
 
+/// A part's text parsed as JSON, refusing (InvalidInput "shard") what the run never writes and a
+/// reader would take in more than one way: a member given twice in one object (nlohmann keeps the
+/// last, another reader the first), and text that is not JSON (named by its byte offset and the
+/// bytes there: NaN, Infinity, 0x1p-3 ...).
+inline nlohmann::json parse_part_json(const std::string& text) {
+  std::vector<std::vector<std::string>> keys;  // the member names seen in each open object
+  const auto check = [&keys](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (event == E::object_start) keys.emplace_back();
+    if (event == E::object_end && !keys.empty()) keys.pop_back();
+    if (event == E::key && !keys.empty()) {
+      const std::string name = parsed.get<std::string>();
+      if (std::find(keys.back().begin(), keys.back().end(), name) != keys.back().end())
+        throw InvalidInput("shard", "member \"" + name + "\" given twice in one object", "a repeated member", "each member once, as the run writes it");
+      keys.back().push_back(name);
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text, check);
+  } catch (const nlohmann::json::parse_error& e) {
+    const std::size_t at = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+    std::string near = text.substr(at >= 12 ? at - 12 : 0, 24);
+    std::replace(near.begin(), near.end(), '\n', ' ');
+    throw InvalidInput("shard", "byte " + std::to_string(e.byte) + " (near \"" + near + "\")", "not JSON",
+                       "JSON as the run writes it: numbers finite and decimal, no NaN or Infinity");
+  }
+}
+
 /// Refuses (InvalidInput "shard") a JSON object whose members are not exactly `names`.
 inline void check_members(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& names) {
   std::string list;

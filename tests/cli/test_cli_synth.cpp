@@ -530,7 +530,12 @@ TEST_CASE("cli synth merge: a points part edited and re-signed is still refused 
       {"a2.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "a2", "7"); })), "1", {"a2", "7"}},
       {"counts.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "tangencies", "1"); })), "1",
        {"counts"}},
-      {"n.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "n", "\"-6/2\""); })), "1", {"-6/2"}}};
+      {"n.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "n", "\"-6/2\""); })), "1", {"-6/2"}},
+      // A member twice (a reader keeping the first would see lower 0.3 > upper), a number JSON has not.
+      {"twice.json", resigned(with_line(p1, 1, [](std::string l) { return l.insert(l.find("\"lower\": "), "\"lower\": 0.3, "); })), "1",
+       {"\"lower\"", "twice"}},
+      {"nan.json", resigned(with_line(p1, 1, [](const std::string& l) { return with_member(l, "residual", "NaN"); })), "1",
+       {"not JSON", "NaN"}}};
   for (const Edit& e : edits) {
     write_text(dir, e.name, e.text);
     std::string args;

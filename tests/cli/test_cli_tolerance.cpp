@@ -107,6 +107,25 @@ TEST_CASE("tolerance --samples: Monte Carlo beside a holding proof sees only the
   CHECK(j["monte_carlo"]["max_node_shift"].get<double>() <= largest);
 }
 
+TEST_CASE("tolerance --samples: refused up front beyond the work bound, 25 times lower next to a pitch cone", "[cli][tolerance][errors]") {
+  TempDir dir;
+  // n = 5/2: (|p| + q)^3 = 343, so 1e7 allows 29,154 samples off the cones and 1,166 within 1e-3
+  // rad of one (a classify there takes ~20 times as long: the near-cusp loops).
+  const std::string off = "tolerance --a2 1 --a3 2 --n 5/2 --tol-a2 0 --tol-a3 0 ";
+  const std::string on = "tolerance --a2 1 --a3 ap+5e-4 --n 5/2 --tol-a2 0 --tol-a3 0 ";
+  for (const std::string& args : {off + "--samples 29155", on + "--samples 1167", on + "--samples 29000"}) {
+    INFO(args);
+    const Result r = run(args + " -o out.json", dir, true);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "--samples"));
+    CHECK(dir.entries().empty());
+  }
+  CHECK(contains(run(on + "--samples 1167", dir).err, "next to a pitch cone"));
+  CHECK(run(on + "--samples 2 --json", dir).status == 0);  // within the bound: runs
+}
+
 TEST_CASE("tolerance: bad half-widths: one line, exit 2, nothing on stdout, no file", "[cli][tolerance]") {
   TempDir dir;
   for (const std::string bad : {"--tol-a2 -1e-3 --tol-a3 0", "--tol-a2 nan --tol-a3 0", "--tol-a2 0 --tol-a3 1.5",

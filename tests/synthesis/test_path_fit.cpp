@@ -298,6 +298,9 @@ static void fit_min_margin_targets(std::uint64_t seed) {
     for (std::size_t i = 0; i < f[0].candidates.size(); ++i) {
       const ConfirmedCandidate& c = f[0].candidates[i];
       CHECK(c.certified_margin.lower >= o.min_margin);
+      const GearTrain& t = c.census.snapped.train;  // the D-square in the range: buildable to +-D
+      CHECK((t.a2() - o.min_margin >= 1e-6 && t.a2() + o.min_margin <= kPi - 1e-6 && t.a3() - o.min_margin >= 1e-6 &&
+             t.a3() + o.min_margin <= kPi - 1e-6));
       if ((k + i) % 3 != 0) continue;
       const GearTrain& g = c.census.snapped.train;
       for (const double da2 : {-0.99 * o.min_margin, 0.99 * o.min_margin})

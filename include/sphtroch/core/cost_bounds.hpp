@@ -94,5 +94,10 @@ constexpr std::size_t kMaxToleranceSamples = 100000;
 /// The bound on samples x (|p| + q)^3 (a classify costs about (|p| + q)^3 x 0.007 ms: 1e7 is about
 /// a minute on one core; 1,700 samples for n = 13/5, none for n = 301/100).
 constexpr double kMaxToleranceSampleWork = 1e7;
+/// How many times a classify costs within kNearConeSampleReach of a pitch cone (the near-cusp
+/// loops: measured 42 ms against 2.2 ms per train for n = 5/2 on and off the cone).
+constexpr double kNearConeSampleFactor = 25;
+/// A tolerance box whose a3 range comes this close to a pitch cone (radians) samples near it.
+constexpr double kNearConeSampleReach = 1e-3;
 
 }  // namespace sphtroch

@@ -106,7 +106,7 @@ inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points
         continue;
       }
       TopologyMargin margin = topology_margin(census.snapped.train);
-      if (options.min_margin > 0 && !(margin.lower >= options.min_margin)) {
+      if (options.min_margin > 0 && !(margin.lower >= options.min_margin && square_in_range(census.snapped.train, options.min_margin))) {
         ++rf.dropped;
         ++rf.too_near;
         continue;
@@ -116,7 +116,8 @@ inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points
     if (rf.candidates.empty() && rf.reason.empty() && rf.dropped > 0)
       rf.reason = "n = " + n.str() + ": " +
                   (rf.too_near == rf.dropped ? "every candidate lies nearer than --min-margin " + number_text(options.min_margin) +
-                                                   " rad to a change of its census (" + std::to_string(rf.dropped) + " candidate(s))"
+                                                   " rad to a change of its census or to the end of the range (0, pi) (" +
+                                                   std::to_string(rf.dropped) + " candidate(s))"
                                              : "the census (classify) did not confirm the wanted counts (or node point) of any of " +
                                                    std::to_string(rf.dropped) + " candidate(s)" +
                                                    (rf.too_near ? " (" + std::to_string(rf.too_near) + " nearer than --min-margin)" : ""));

@@ -29,6 +29,7 @@
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/synthesis/interval/tolerance_box.hpp"
@@ -75,8 +76,10 @@ inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceB
 inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed);
 
 /// Throws InvalidInput("samples") unless 1 <= samples <= kMaxToleranceSamples and
-/// samples x (|p| + q)^3 <= kMaxToleranceSampleWork (core/cost_bounds.hpp): refused up front.
-inline void check_monte_carlo_cost(const Ratio& n, std::size_t samples);
+/// samples x (|p| + q)^3 (x kNearConeSampleFactor when the box's a3 range, widened by 2 da2 for the
+/// cone's move with a2, comes within kNearConeSampleReach of a pitch cone) <= kMaxToleranceSampleWork
+/// (core/cost_bounds.hpp): refused up front.
+inline void check_monte_carlo_cost(const GearTrain& train, const ToleranceBox& box, std::size_t samples);
 
 /// Whether everything the report states is certified: the census, a decided topology and, when
 /// it holds, every node's enclosure (the CLI's exit status 3 otherwise).
@@ -109,18 +112,23 @@ inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceB
   return r;
 }
 
-inline void check_monte_carlo_cost(const Ratio& n, std::size_t samples) {
+inline void check_monte_carlo_cost(const GearTrain& train, const ToleranceBox& box, std::size_t samples) {
   if (!(samples >= 1 && samples <= kMaxToleranceSamples))
     throw InvalidInput("samples", std::to_string(samples), "outside the valid range",
                        "integer 1 .. " + std::to_string(kMaxToleranceSamples));
-  const double size = static_cast<double>(n.abs_p() + n.q()), work = static_cast<double>(samples) * size * size * size;
+  const Ratio& n = train.ratio();
+  const ConeMargins cone = cone_margins(train);
+  const bool near_cone = std::min(std::abs(cone.pitch), std::abs(cone.mirror)) <= box.da3 + 2 * box.da2 + kNearConeSampleReach;
+  const double size = static_cast<double>(n.abs_p() + n.q());
+  const double work = static_cast<double>(samples) * size * size * size * (near_cone ? kNearConeSampleFactor : 1.0);
   if (work > kMaxToleranceSampleWork)
-    throw InvalidInput("samples", std::to_string(samples), "estimated work " + number_text(work) + " for n = " + n.str() + " over the bound",
-                       "samples x (|p| + q)^3 <= 1e7 (about a minute)");
+    throw InvalidInput("samples", std::to_string(samples),
+                       "estimated work " + number_text(work) + " for n = " + n.str() + (near_cone ? " next to a pitch cone" : "") + " over the bound",
+                       "samples x (|p| + q)^3 (x 25 within 1e-3 rad of a pitch cone) <= 1e7 (about a minute)");
 }
 
 inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed) {
-  check_monte_carlo_cost(r.train.ratio(), samples);
+  check_monte_carlo_cost(r.train, r.box, samples);
   MonteCarloSpread m;
   m.samples = samples;
   m.seed = seed;

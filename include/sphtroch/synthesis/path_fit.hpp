@@ -41,12 +41,13 @@
 //     the point count in turn, so a self-crossing is pulled onto N; a candidate whose two branches
 //     pass farther than node_tolerance from N is dropped (the census confirms it, exact layer).
 //  6. A minimum margin D (FitOptions::min_margin, free family): a step is taken only to shapes
-//     whose D-square (a2 +- D, a3 +- D, clipped to the trains' range) keeps, at its 8 edge points
+//     whose D-square (a2 +- D, a3 +- D, inside the trains' range) keeps, at its 8 edge points
 //     (corners and edge midpoints), the centre's root count and the centre's sides of the pitch
 //     cones and (|p| >= 2) the pole lines — the pole lines exactly, as straight lines at 45 deg are
 //     first met at a corner; so the fit stays inside its cell shrunk by D, up to a tangency locus
 //     that bulges into the square between those points. The exact layer keeps only candidates
-//     whose certified margin (topology_margin.hpp) is at least D. Cusps (on a pitch cone, margin
+//     whose certified margin (topology_margin.hpp) is at least D and whose D-square lies in the
+//     range (a design built to +-D, a box `sphtroch tolerance` checks). Cusps (on a pitch cone, margin
 //     0) and D > 0 are refused together.
 // Margin: the distance in the (a2, a3) plane (radians) to the nearest boundary of the map, to first
 // order (map/map_cells.hpp's map_margin). The cone a cusp candidate lies on is not counted.
@@ -120,6 +121,13 @@ struct FitOptions {
 
 /// The largest FitOptions::min_margin (a quarter of the map's side).
 constexpr double kMaxFitMinMargin = 0.785;
+
+/// Whether the square [a2 -+ d] x [a3 -+ d] lies in the trains' range [kFitMinTwist, pi -
+/// kFitMinTwist]^2: a design built to +-d (and a tolerance box `sphtroch tolerance` can check).
+inline bool square_in_range(const GearTrain& train, double d) {
+  const double lo = kFitMinTwist, hi = Constants<double>::pi() - kFitMinTwist;
+  return train.a2() - d >= lo && train.a2() + d <= hi && train.a3() - d >= lo && train.a3() + d <= hi;
+}
 
 struct FitCandidate {
   GearTrain train;               // n, a2, a3, phase in [0, 2 pi / q)
@@ -248,8 +256,8 @@ struct Constraint {
     if (!admissible_point(a2, a3)) return false;
     return !(min_margin > 0 && par.family == Family::free) || square_in_cell(a2, a3);
   }
-  /// Whether the 8 edge points of the min_margin square inside the range see the census of (a2, a3)
-  /// (see header, 6).
+  /// Whether the min_margin square lies in the trains' range and its 8 edge points see the census
+  /// of (a2, a3) (see header, 6).
   bool square_in_cell(double a2, double a3) const {
     const std::int64_t centre = nodes ? *nodes : root_nodes(a2, a3, n, par.family);
     const auto sides = [this](double x, double y) {
@@ -263,8 +271,8 @@ struct Constraint {
     for (int i = -1; i <= 1; ++i)
       for (int k = -1; k <= 1; ++k) {
         const double x = a2 + i * d, y = a3 + k * d;
-        if ((i == 0 && k == 0) || !(x >= kFitMinTwist && x <= kPi - kFitMinTwist && y >= kFitMinTwist && y <= kPi - kFitMinTwist))
-          continue;
+        if (i == 0 && k == 0) continue;
+        if (!(x >= kFitMinTwist && x <= kPi - kFitMinTwist && y >= kFitMinTwist && y <= kPi - kFitMinTwist)) return false;
         if (sides(x, y) != own || root_nodes(x, y, n, par.family) != centre) return false;
       }
     return true;
