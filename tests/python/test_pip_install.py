@@ -43,3 +43,40 @@ def test_pip_install_into_a_fresh_venv_and_import_from_outside(tmp_path):
     out = run([python, "-c", check], elsewhere, env)
     cmake_version = (SOURCE / "CMakeLists.txt").read_text().split("project(sphtroch VERSION ")[1].split()[0]
     assert out.strip() == cmake_version
+
+
+def test_an_interpreter_without_wheel_or_numpy_stops_at_once_with_one_line(tmp_path):
+    """A venv without Debian's packages (as one made from a pyenv or conda python3 is): the build
+    stops before any compiling, with one line naming the interpreter to use."""
+    tree = tmp_path / "src"
+    shutil.copytree(SOURCE, tree, ignore=SKIP)
+    venv = tmp_path / "bare"
+    run([sys.executable, "-m", "venv", str(venv)], tmp_path)  # no --system-site-packages: no wheel, no NumPy
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    r = subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "--no-build-isolation", "--no-index",
+                        "--no-cache-dir", str(tree)], cwd=tmp_path, capture_output=True, text=True, env=env)
+    assert r.returncode != 0
+    lines = [l.strip() for l in (r.stdout + r.stderr).splitlines() if "sphtroch: this Python" in l]
+    assert len(lines) == 1, r.stdout + r.stderr
+    assert str(venv / "bin" / "python") in lines[0] and "/usr/bin/python3 -m venv --system-site-packages" in lines[0]
+    assert not any(tree.rglob("CMakeCache.txt")), "the build was configured before the refusal"
+
+
+def test_an_existing_build_for_this_interpreter_is_reused(tmp_path):
+    """SPHTROCH_BUILD_DIR (default: the tree's build/) configured with this interpreter and the
+    module on: pip brings that build's module up to date and copies it; no build of its own."""
+    build = os.environ.get("SPHTROCH_BUILD_DIR_UNDER_TEST")
+    assert build, "ctest passes the project's build directory"
+    tree = tmp_path / "src"
+    shutil.copytree(SOURCE, tree, ignore=SKIP)
+    venv = tmp_path / "venv"
+    run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)], tmp_path)
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    env["SPHTROCH_BUILD_DIR"] = build
+    run([str(venv / "bin" / "python"), "-m", "pip", "install", "--no-build-isolation", "--no-index", "--no-cache-dir",
+         str(tree)], tmp_path, env)
+    assert not any(tree.rglob("CMakeCache.txt")), "a build of its own was configured"
+    out = run([str(venv / "bin" / "python"), "-c",
+               "import sphtroch; print(sphtroch.GearTrain('pi/2', 'pi/2', 1).classify()['counts']['nodes'])"],
+              tmp_path, env)
+    assert out.strip() == "1"  # Eq. 24: one node on a2 = a3 = pi/2, n = 1
