@@ -81,6 +81,7 @@
 #include "sphtroch/atlas/atlas_svg.hpp"
 
 #include "sphtroch/synthesis/identify.hpp"
+#include "sphtroch/synthesis/fit_grid.hpp"
 #include "sphtroch/synthesis/path_distance.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 #include "sphtroch/atlas/atlas_slices.hpp"

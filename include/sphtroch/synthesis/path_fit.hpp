@@ -62,6 +62,7 @@
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/map_cells.hpp"
+#include "sphtroch/synthesis/fit_grid.hpp"
 #include "sphtroch/synthesis/path_distance.hpp"
 
 #include <Eigen/Dense>
@@ -72,11 +73,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
-#include <mutex>
 #include <optional>
 #include <set>
-#include <tuple>
 #include <string>
 #include <vector>
 
@@ -88,8 +86,6 @@ constexpr std::size_t kMinFitPoints = 4;
 constexpr std::size_t kMaxFitPoints = 1000000;
 /// Points must be unit vectors to this.
 constexpr double kFitUnitTolerance = 1e-6;
-/// Screening grid: kFitGrid x kFitGrid shapes (a2, a3), kFitGrid a2 columns for node counts.
-constexpr int kFitGrid = 40;
 /// Shapes refined per ratio (three times as many for paths of few points, where refining is
 /// cheap and the screening less sure), and the subsets of points screening and refinement use.
 constexpr std::size_t kFitSeeds = 8, kFitFewPoints = 50, kFitScreenPoints = 120, kFitRefinePoints = 100;
@@ -543,43 +539,6 @@ inline std::string count_list(const std::set<std::int64_t>& counts, std::int64_t
   return s;
 }
 
-inline double grid_angle(int k) { return (static_cast<double>(k) + 0.5) * kPi / kFitGrid; }
-
-/// Columns kept at most (100 ratios' grids); beyond, a column lives until the next overflow.
-constexpr std::size_t kFitColumnCache = 100 * kFitGrid;
-
-/// Storage for a column computed when the cache is full: the last kFitGrid of them stay valid
-/// (the reference is used within one seeds() call, which asks for kFitGrid columns).
-inline const std::vector<MapCell>* new_column_overflow(std::vector<MapCell>&& cells) {
-  static std::vector<std::vector<MapCell>> ring(kFitGrid);
-  static std::size_t next = 0;
-  std::vector<MapCell>& slot = ring[next++ % kFitGrid];
-  slot = std::move(cells);
-  return &slot;
-}
-
-/// map_cells at grid column i, computed once per process (the grid columns are the same for every fit; a
-/// design session fits one ratio many times). Thread-safe.
-inline const std::vector<MapCell>& cached_column(int i, const Ratio& n) {
-  static std::mutex mutex;
-  static std::map<std::tuple<std::int64_t, std::int64_t, int>, std::vector<MapCell>> cache;
-  const auto key = std::make_tuple(n.p(), n.q(), i);
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  }
-  std::vector<MapCell> cells = map_cells(grid_angle(i), n);  // outside the lock: another thread may do the same
-  const std::lock_guard<std::mutex> lock(mutex);
-  if (const auto it = cache.find(key); it != cache.end()) return it->second;
-  if (cache.size() >= kFitColumnCache) return *new_column_overflow(std::move(cells));
-  return cache.emplace(key, std::move(cells)).first->second;  // std::map: references stay valid
-}
-
-}  // namespace path_fit_detail
-
-
-namespace path_fit_detail {
-
 inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n, const FitOptions& o) {
   if (points.size() < kMinFitPoints || points.size() > kMaxFitPoints)
     throw InvalidInput("points", std::to_string(points.size()) + " points", "too few or too many",
@@ -634,7 +593,7 @@ inline std::vector<Seed> seeds(const Constraint& con, const std::vector<Vector3d
   const Parametrisation& par = con.par;
   if (par.family == Family::free) {
     for (int i = 0; i < kFitGrid; ++i)
-      for (int k = 0; k < kFitGrid; ++k) shapes.push_back({grid_angle(i), grid_angle(k)});
+      for (int k = 0; k < kFitGrid; ++k) shapes.push_back({fit_grid_angle(i), fit_grid_angle(k)});
     double zmax = -1, zmin = 1;
     for (const Vector3d& p : pts) {
       zmax = std::max(zmax, p.z());
@@ -645,10 +604,10 @@ inline std::vector<Seed> seeds(const Constraint& con, const std::vector<Vector3d
       for (double diff : {d, -d}) shapes.push_back({(sum + diff) / 2, (sum - diff) / 2});
     if (con.nodes)
       for (int i = 0; i < kFitGrid; ++i)
-        for (const MapCell& c : cached_column(i, con.n)) {
+        for (const MapCell& c : fit_grid_column(i, con.n)) {
           seen.insert(c.nodes);
           if (c.nodes == *con.nodes && c.hi - c.lo > 4 * con.clearance)
-            shapes.push_back({grid_angle(i), (c.lo + c.hi) / 2});
+            shapes.push_back({fit_grid_angle(i), (c.lo + c.hi) / 2});
         }
   } else if (par.family == Family::both_cones) {
     shapes.push_back(par.shape(par.make(0, 0, 0)));
