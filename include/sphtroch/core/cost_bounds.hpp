@@ -95,7 +95,7 @@ constexpr std::size_t kMaxToleranceSamples = 100000;
 /// a minute on one core; 1,700 samples for n = 13/5, none for n = 301/100).
 constexpr double kMaxToleranceSampleWork = 1e7;
 /// How many times a classify costs within kNearConeSampleReach of a pitch cone (the near-cusp
-/// loops: measured 42 ms against 2.2 ms per train for n = 5/2 on and off the cone).
+/// loops: about 20 times a classify away from the cones, for n = 5/2).
 constexpr double kNearConeSampleFactor = 25;
 /// A tolerance box whose a3 range comes this close to a pitch cone (radians) samples near it.
 constexpr double kNearConeSampleReach = 1e-3;
