@@ -138,7 +138,7 @@ inline ShardHeader read_shard_header(const nlohmann::json& j) {
 /// A part's text parsed as JSON, refusing (InvalidInput "shard") what the run never writes and a
 /// reader would take in more than one way: a member given twice in one object (nlohmann keeps the
 /// last, another reader the first), and text that is not JSON (named by its byte offset and the
-/// bytes there: NaN, Infinity, 0x1p-3 ...).
+/// bytes there, control and non-ASCII bytes as '?': NaN, Infinity, 0x1p-3 ...).
 inline nlohmann::json parse_part_json(const std::string& text) {
   std::vector<std::vector<std::string>> keys;  // the member names seen in each open object
   const auto check = [&keys](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
@@ -158,7 +158,8 @@ inline nlohmann::json parse_part_json(const std::string& text) {
   } catch (const nlohmann::json::parse_error& e) {
     const std::size_t at = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
     std::string near = text.substr(at >= 12 ? at - 12 : 0, 24);
-    std::replace(near.begin(), near.end(), '\n', ' ');
+    for (char& c : near)  // printable ASCII only: the message stays one line whatever the bytes
+      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
     throw InvalidInput("shard", "byte " + std::to_string(e.byte) + " (near \"" + near + "\")", "not JSON",
                        "JSON as the run writes it: numbers finite and decimal, no NaN or Infinity");
   }
