@@ -8,13 +8,18 @@
 // Where the library writes a format (the trace CSV, the sphere picture SVG), the module returns
 // the library's text, so that the page's exports are the bytes of `sphtroch trace` and `sphtroch
 // plot` (the picture's grid lines up to a vertex: see plot_svg). Nothing here starts a thread.
+// A count is certified by the library's rule, the CLI's (exact/certified_census.hpp: the polyline
+// census with CGAL's exact predicates against the root census), compiled header-only without GMP
+// (SPHTROCH_EXACT_WITHOUT_GMP, CGAL_NO_GMP: see explorer/CMakeLists.txt).
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
+#include "sphtroch/exact/certified_census.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/io/trace_output.hpp"
@@ -140,22 +145,29 @@ val criteria_list(const std::vector<sphtroch::Criterion>& criteria) {
 }
 
 /// The page's census of one train: the root census (classify_roots) of the train read onto its
-/// boundaries (`analysed`, as the CLI reads it), with the second count of the boundary set
-/// (node_count_off_events) as its check: `certified` is true when the two independent counts
-/// agree (a train on an event has no second count: false).
+/// boundaries (`analysed`, as the CLI reads it). Its count is not certified by itself: see
+/// page_certificate.
 struct PageCensus {
   GearTrain analysed;
   sphtroch::RootClassification roots;
-  std::int64_t second = 0;
-  bool certified = false;
 };
 
 PageCensus page_census(const GearTrain& t) {
-  PageCensus p{sphtroch::snap_to_boundaries(t, sphtroch::Reading{}.boundary()).train, sphtroch::classify_roots(t)};
-  const sphtroch::RootClassification& c = p.roots;
-  p.second = sphtroch::node_count_off_events(c.a2, c.a3, t.ratio());
-  p.certified = c.boundaries.empty() && c.tangencies == 0 && p.second == static_cast<std::int64_t>(c.nodes);
-  return p;
+  return {sphtroch::snap_to_boundaries(t, sphtroch::Reading{}.boundary()).train, sphtroch::classify_roots(t)};
+}
+
+/// The certificate of `sphtroch classify` for the analysed train: certified_census (the polyline
+/// census against root_census, escalated while they disagree) at the CLI's default settings (the
+/// default reading's tangency tolerance, the default samples), as exact/analysis.hpp runs it.
+/// When certified, the root census's nodes (PageCensus::roots) are the certified ones: the
+/// censuses agree node for node, kind and branches included (census/node_sets.hpp).
+sphtroch::CensusCertificate page_certificate(const PageCensus& census) {
+  const sphtroch::Reading reading;
+  sphtroch::RootCensusSettings rs;
+  rs.tangency_tolerance = reading.tangency();
+  sphtroch::PolylineCensusSettings ps;
+  ps.tangency_tolerance = reading.tangency();
+  return sphtroch::certified_census(census.analysed, ps, sphtroch::root_census(census.analysed, rs)).certificate;
 }
 
 /// The cusps of the analysed train as `sphtroch plot` and `sphtroch nodes` list them (the cusp
@@ -173,7 +185,8 @@ std::vector<sphtroch::Cusp> cusps_of(const GearTrain& analysed) {
   return out;
 }
 
-/// The class, counts and node points of one train by the page's census (PageCensus).
+/// The class, counts and node points of one train by the root census (PageCensus): fast enough
+/// for every slider step, not certified (certify() is).
 val classify(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
              const std::string& teeth) {
   return guarded([&] {
@@ -188,8 +201,6 @@ val classify(const std::string& a2, const std::string& a3, const std::string& n,
     out.set("crossings", static_cast<double>(c.crossings));
     out.set("tangencies", static_cast<double>(c.tangencies));
     out.set("cusps", static_cast<double>(c.cusps));
-    out.set("boundaryCount", static_cast<double>(census.second));
-    out.set("certified", census.certified);
     out.set("readOn", string_list(c.boundaries));
     out.set("nodePoints", node_list(c.node_points));
     out.set("nodePositions", node_positions(c.node_points));
@@ -202,6 +213,45 @@ val classify(const std::string& a2, const std::string& a3, const std::string& n,
     out.set("zMin", z.z_min);
     out.set("criteria", criteria_list(a.criteria));
     out.set("reportClass", a.curve_class);
+    return out;
+  });
+}
+
+/// The certificate of classify()'s count (page_certificate: the CLI's rule): {certified, rootNodes,
+/// runs: [{samples, nodes}] (each polyline census run: uniform samples, node count), stopped (why
+/// escalation stopped, "" when certified), disagreement (the last run's first difference)}.
+val certify(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
+            const std::string& teeth) {
+  return guarded([&] {
+    const sphtroch::CensusCertificate cert = page_certificate(page_census(train_text(a2, a3, n, phase, teeth).train()));
+    val runs = val::array();
+    for (std::size_t i = 0; i < cert.runs(); ++i) {
+      val run = val::object();
+      run.set("samples", static_cast<double>(cert.samples[i]));
+      run.set("nodes", static_cast<double>(cert.polyline_nodes[i]));
+      runs.call<void>("push", run);
+    }
+    val out = val::object();
+    out.set("certified", cert.certified);
+    out.set("rootNodes", static_cast<double>(cert.root_nodes));
+    out.set("runs", runs);
+    out.set("stopped", cert.stopped);
+    out.set("disagreement", cert.disagreement);
+    return out;
+  });
+}
+
+/// Which node and cusp markers a picture of `nodes` nodes and `cusps` cusps draws in `mode` ("auto",
+/// "all", "none"; the library's rule, draw/mark_density.hpp, as `sphtroch plot --markers`):
+/// {draw, note, dense} (dense: the automatic rule hides them), or {error} naming "markers".
+val marks(const std::string& mode, double nodes, double cusps) {
+  return guarded([&] {
+    const sphtroch::MarkChoice m =
+        sphtroch::choose_marks(sphtroch::parse_mark_mode(mode), static_cast<std::size_t>(nodes), static_cast<std::size_t>(cusps));
+    val out = val::object();
+    out.set("draw", m.draw);
+    out.set("note", m.note);
+    out.set("dense", sphtroch::dense_curve(static_cast<std::size_t>(nodes), static_cast<std::size_t>(cusps)));
     return out;
   });
 }
@@ -250,25 +300,28 @@ val trace_csv(const std::string& a2, const std::string& a3, const std::string& n
 }
 
 /// The caption of `sphtroch plot` (draw/svg_plot.hpp's plot_caption_text, the tool's words); a
-/// count the page could not check (PageCensus::certified false) is said so.
+/// count page_certificate does not certify is said so.
 std::string plot_caption(const sphtroch::TrainText& text, const PageCensus& census, std::size_t cusps) {
   const sphtroch::RootClassification& c = census.roots;
   const std::string caption = sphtroch::plot_caption_text(text, census.analysed, c.crossings, c.tangencies, cusps);
-  return census.certified ? caption : caption + " — count not certified in the page: run sphtroch plot";
+  return page_certificate(census).certified ? caption : caption + " — count not certified in the page: run sphtroch plot";
 }
 
 /// The sphere picture of `sphtroch plot` for the same texts (draw/svg_plot.hpp's renderer, the
 /// default view and size): {text}. The curve, the cusps and the caption's train are those of the
 /// train read onto its boundaries, as the CLI's; the node marks are the page's census (the root
 /// census, the CLI's count when certified; its marks agree with the CLI's at the picture's
-/// precision, labelled in the same order, by the first branch parameter).
+/// precision, labelled in the same order, by the first branch parameter), drawn as `markers`
+/// says ("auto", "all", "none": `sphtroch plot --markers`). Runs the certified census (the
+/// caption says when it does not certify).
 val plot_svg(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
-             const std::string& teeth) {
+             const std::string& teeth, const std::string& markers) {
   return guarded([&] {
     const sphtroch::TrainText text = train_text(a2, a3, n, phase, teeth);
     const PageCensus census = page_census(text.train());
     const std::vector<sphtroch::Cusp> cusps = cusps_of(census.analysed);
     sphtroch::PlotOptions options;
+    options.markers = sphtroch::parse_mark_mode(markers);
     options.caption = plot_caption(text, census, cusps.size());
     const sphtroch::Trajectory<double> trajectory =
         sphtroch::sample_period(sphtroch::TracerCurve<double>(census.analysed), sphtroch::plot_sample_count(census.analysed));
@@ -473,9 +526,9 @@ val displacements(const std::vector<sphtroch::NodeTolerance>& points) {
 
 /// What `sphtroch tolerance` proves for the box [a2 -+ tolA2] x [a3 -+ tolA3] x [phase -+ tolPhase]
 /// (half-widths as angle texts: "1e-3", "0.1deg", "pi/1800"), for the train read onto its boundaries
-/// with the page's census (PageCensus; `certified` its check): {margin: {lower, upper, converged,
+/// with the page's census (PageCensus: the root census; certify() certifies it): {margin: {lower, upper, converged,
 /// nearest: {kind, name, a2, a3} | null}, topology: "holds" | "changes" | "undecided", why, event |
-/// null, nodes, cusps: Float64Array of max displacements (NaN: not proved), certified, box: {a2, a3,
+/// null, nodes, cusps: Float64Array of max displacements (NaN: not proved), box: {a2, a3,
 /// phase} (the half-widths, radians), a2, a3 (the train analysed)}.
 val tolerance(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
               const std::string& teeth, const std::string& tol_a2, const std::string& tol_a3, const std::string& tol_phase) {
@@ -499,7 +552,6 @@ val tolerance(const std::string& a2, const std::string& a3, const std::string& n
     out.set("event", witness_object(r.topology.event));
     out.set("nodes", displacements(r.nodes));
     out.set("cusps", displacements(r.cusps));
-    out.set("certified", census.certified);
     val half_widths = val::object();
     half_widths.set("a2", box.da2);
     half_widths.set("a3", box.da3);
@@ -518,6 +570,8 @@ std::string number_text(double v) { return sphtroch::number_text(v); }
 
 EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("classify", &classify);
+  emscripten::function("certify", &certify);
+  emscripten::function("marks", &marks);
   emscripten::function("trace", &trace);
   emscripten::function("traceCsv", &trace_csv);
   emscripten::function("plotSvg", &plot_svg);

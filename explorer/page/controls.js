@@ -1,5 +1,6 @@
 // controls.js — the controls: the text fields (n and teeth exclude each other), the sliders of
-// a2, a3 and the phase, and the URL hash (a hash typed or followed loads that state).
+// a2, a3 and the phase, the markers' mode, and the URL hash (a hash typed or followed loads that
+// state).
 'use strict';
 {
   const X = window.Explorer;
@@ -22,6 +23,10 @@
         X.update(true);
       });
     }
+    $('markers').addEventListener('change', () => {
+      X.state.markers = $('markers').value;
+      X.update(true);
+    });
     window.addEventListener('hashchange', () => { X.state = X.readHash(); X.fillFields(); X.update(false); });
   }
 

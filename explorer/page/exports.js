@@ -1,6 +1,6 @@
 // exports.js — the exports of the current train: the trace CSV and the sphere SVG are written by
 // the library (the module's traceCsv and plotSvg: the bytes of `sphtroch trace --samples N` and
-// of `sphtroch plot` for the same texts), the scene JSON for
+// of `sphtroch plot --markers MODE` for the same texts and the page's marker mode), the scene JSON for
 // `sphtroch scene`, and the command line copied.
 'use strict';
 {
@@ -39,7 +39,7 @@
     $('export-csv').addEventListener('click', () => downloadFromModule('trace.csv', 'text/csv',
       (lib, s) => lib.traceCsv(s.a2, s.a3, s.n, s.phase, s.teeth, X.samplesFor(X.result))));
     $('export-svg').addEventListener('click', () => downloadFromModule('sphere.svg', 'image/svg+xml',
-      (lib, s) => lib.plotSvg(s.a2, s.a3, s.n, s.phase, s.teeth)));
+      (lib, s) => lib.plotSvg(s.a2, s.a3, s.n, s.phase, s.teeth, s.markers)));
     $('export-scene').addEventListener('click', () => download('explorer_scene.json', sceneJson(), 'application/json'));
     $('copy-command').addEventListener('click', () => navigator.clipboard && navigator.clipboard.writeText(X.commandLine()));
   }

@@ -1,7 +1,8 @@
 // inverse_design.js — inverse design: the wanted path (the textarea's points, drawn on the sphere;
 // a shift-click on the sphere adds one), fit (the trains of the current n nearest the path,
 // `sphtroch synth fit`), through 3 points (every train through them, `sphtroch synth points`),
-// and the candidates' rows with the page's own census of each and a "use" button.
+// and the candidates' rows with the page's own census of each (the root census, certified by
+// the module's certify(): the CLI's rule, run here for each row) and a "use" button.
 'use strict';
 {
   const X = window.Explorer;
@@ -89,18 +90,20 @@
     const lib = X.lib, fmt = X.fmt;
     const texts = { a2: lib.numberText(c.a2), a3: lib.numberText(c.a3), phase: lib.numberText(c.phase) };
     const census = lib.classify(texts.a2, texts.a3, c.n, texts.phase, '');
+    if (!census.error) census.certified = lib.certify(texts.a2, texts.a3, c.n, texts.phase, '').certified === true;
     const row = document.createElement('tr');
     row.dataset.testid = 'candidate';
     Object.assign(row.dataset, { n: c.n, a2: texts.a2, a3: texts.a3, phase: texts.phase, isolated: c.isolated === false ? '0' : '1' });
     if (!census.error) Object.assign(row.dataset, { nodes: census.nodes, cusps: census.cusps, certified: census.certified ? '1' : '0' });
     const cells = [k + 1, c.n, fmt(c.a2), fmt(c.a3), fmt(c.phase), c.rms.toExponential(2), c.maxDeviation.toExponential(2),
       Number.isFinite(c.margin) ? fmt(c.margin) : '', census.error ? '' : census.nodes, census.error ? '' : census.cusps,
-      (census.error ? census.error : census.certified ? 'two censuses agree' : 'not certified here') + (c.note ? '; ' + c.note : '')];
+      (census.error ? census.error : census.certified ? 'certified: two censuses agree' : 'not certified: run sphtroch classify') +
+      (c.note ? '; ' + c.note : '')];
     for (const v of cells) row.appendChild(Object.assign(document.createElement('td'), { textContent: String(v) }));
     const use = Object.assign(document.createElement('button'), { type: 'button', textContent: 'use' });
     use.dataset.testid = 'use-candidate';
     use.addEventListener('click', () => {
-      X.state = { a2: texts.a2, a3: texts.a3, n: c.n, teeth: '', phase: texts.phase };
+      X.state = Object.assign({}, X.state, { a2: texts.a2, a3: texts.a3, n: c.n, teeth: '', phase: texts.phase });
       X.fillFields();
       X.update(true);
     });

@@ -3,9 +3,12 @@
 // page's scripts, loaded in this order by index.html, share window.Explorer (state.js):
 //   state.js           the state, the URL hash, the text fields; compute and update
 //   readouts.js        the readouts, the node list, the equivalent command
+//   certificate.js     the readouts' certificate: certify() (the CLI's rule) in a worker
 //   ruler.js           the a3 ruler and the list of events
 //   sphere.js          the sphere view: projection, drawing, its input
+//   palette.js         the count scale's colours (d3-scale-chromatic's viridis)
 //   map.js             the design map: worker, cells, boundary curves, legend, its input
+//   map_axes.js        the design map's axes in degrees and the hover readout
 //   inverse_design.js  the wanted path, fit, through 3 points, the candidates
 //   tolerance.js       the certified margin and the tolerance box (readouts; map.js draws them)
 //   controls.js        text fields, sliders, hash changes
@@ -27,6 +30,7 @@
     X.setupExports();
     X.setupSphereInput();
     X.setupMapInput();
+    X.setupMapAxes();
     X.setupFit();
     X.setupTolerance();
     X.update(false);

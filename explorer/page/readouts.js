@@ -1,6 +1,7 @@
-// readouts.js — the readouts of the current train: class and counts, the count check, ratio,
-// period, z range, pitch cone, the nearest event of the ruler, the report's criteria, the
-// equivalent `sphtroch classify` command and the list of node points and cusps.
+// readouts.js — the readouts of the current train: class and counts (the root census; their
+// certificate is certificate.js's), ratio, period, z range, pitch cone, the nearest event of the
+// ruler, the report's criteria, the equivalent `sphtroch classify` command and the list of node
+// points and cusps.
 'use strict';
 {
   const X = window.Explorer;
@@ -11,7 +12,7 @@
   function renderReadouts() {
     const r = X.result;
     const set = (id, text) => { byTestId(id).textContent = text; };
-    for (const id of ['class', 'nodes', 'crossings', 'tangencies', 'cusps', 'certified', 'ratio', 'period',
+    for (const id of ['class', 'nodes', 'crossings', 'tangencies', 'cusps', 'ratio', 'period',
       'z-range', 'pitch-cone', 'nearest-event', 'command']) set(id, '');
     $('criteria').textContent = '';
     $('node-list').querySelector('tbody').textContent = '';
@@ -22,8 +23,6 @@
     set('crossings', String(r.crossings));
     set('tangencies', String(r.tangencies));
     set('cusps', String(r.cusps));
-    set('certified', r.certified ? 'two censuses agree (' + r.boundaryCount + ')'
-      : 'not certified here (on a boundary or a tangency: run sphtroch classify)');
     set('ratio', r.n + (X.state.teeth ? ' (teeth ' + X.state.teeth + ')' : ''));
     set('period', '2π·' + r.q + ' = ' + fmt(r.period) + ' rad of carrier');
     set('z-range', fmt(r.zMin) + ' … ' + fmt(r.zMax));

@@ -1,6 +1,9 @@
 // sphere.js — the sphere view: the projection (and its inverse for a click), the curve with its
-// nodes and cusps, the train at the animated carrier angle (pitch circles, pitch cones, the
-// tracer), and the view's input (drag to turn, wheel to zoom about the pointer).
+// nodes and cusps (the markers as X.marks says: draw/mark_density.hpp's rule, with its note when
+// they are hidden), the train at the animated carrier angle (pitch circles, pitch cones, the
+// tracer), and the view's input (drag to turn, wheel to zoom about the pointer). The cones are
+// off by default on a dense curve (X.marks.dense: the rule hides its markers); the cones box
+// still turns them on.
 'use strict';
 {
   const X = window.Explorer;
@@ -81,7 +84,7 @@
     if (!X.result || !X.curve) return;
     const pts = X.curve.points, count = pts.length / 3;
     strokeRuns(ctx, pts, count, '#1c2733', 'rgba(28,39,51,0.18)', true);
-    drawMarks(ctx);
+    if (X.marks.draw) drawMarks(ctx);
     drawTrain(ctx);
     X.drawPath(ctx);
   }
@@ -135,7 +138,8 @@
   }
 
   // A pitch cone: apex at the centre, half-angle `angle` about `axis`, its base the pitch circle on
-  // the sphere: a light surface and a generator every 30 degrees (front solid, back faint).
+  // the sphere: a light surface and a generator every 30 degrees (front solid, back faint), light
+  // enough that the curve reads through them.
   function drawCone(ctx, axis, angle, rgb) {
     const pts = circlePoints(axis, angle), count = pts.length / 3;
     const apex = project([0, 0, 0]);
@@ -145,17 +149,29 @@
       const a = at(k), b = at((k + 1) % count);
       ctx.moveTo(apex[0], apex[1]); ctx.lineTo(a[0], a[1]); ctx.lineTo(b[0], b[1]); ctx.closePath();
     }
-    ctx.fillStyle = 'rgba(' + rgb + ',0.08)';
+    ctx.fillStyle = 'rgba(' + rgb + ',0.04)';
     ctx.fill('nonzero');
     for (let k = 0; k < count; k += count / 12) {
       const a = at(k);
       ctx.beginPath();
       ctx.moveTo(apex[0], apex[1]);
       ctx.lineTo(a[0], a[1]);
-      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.45 : 0.12) + ')';  // project(): [2] is true in front
+      ctx.strokeStyle = 'rgba(' + rgb + ',' + (a[2] ? 0.25 : 0.08) + ')';  // project(): [2] is true in front
       ctx.lineWidth = 0.8;
       ctx.stroke();
     }
+  }
+
+  // The markers' note (empty when every marker is drawn), and the cones' default: off on a dense
+  // curve, on otherwise, set when the current state's density differs from the last state's (a
+  // user's choice holds while it does not).
+  let lastDense = null;
+  function followDensity() {
+    const note = X.byTestId('marks-note');
+    note.textContent = X.marks ? X.marks.note : '';
+    if (!X.marks || X.marks.dense === lastDense) return;
+    lastDense = X.marks.dense;
+    $('cones').checked = !lastDense;
   }
 
   function setupSphereInput() {
@@ -194,5 +210,5 @@
     window.requestAnimationFrame(animate);
   }
 
-  Object.assign(X, { project, unproject, drawSphere, setupSphereInput, animate });
+  Object.assign(X, { project, unproject, drawSphere, followDensity, setupSphereInput, animate });
 }

@@ -1,12 +1,13 @@
-// state.js — the explorer's state: the texts of a2, a3, n (or teeth) and the phase, kept in the
-// URL hash and the text fields, and update(): the library's results for them (classify, trace,
-// the ruler's events), then every view redrawn. Loaded first: it creates window.Explorer, the
+// state.js — the explorer's state: the texts of a2, a3, n (or teeth) and the phase and the marker
+// mode, kept in the URL hash and the controls, and update(): the library's results for them
+// (classify, trace, the ruler's events, which markers to draw), then every view redrawn. Loaded first: it creates window.Explorer, the
 // namespace the page's scripts share (classic scripts, not modules: a page opened from disk may
 // not load modules). Each script keeps its names in a block and puts on the namespace only what
 // the other scripts use; the shared state lives there too:
 //   X.lib     the WebAssembly module (sphtroch.js), set by main.js
-//   X.state   the texts {a2, a3, n, teeth, phase}
-//   X.result  classify() of the current state, or null after an error
+//   X.state   the texts {a2, a3, n, teeth, phase} and markers (auto | all | none)
+//   X.result  classify() of the current state (the root census), or null after an error
+//   X.marks   marks() of the current state: {draw, note, dense} (draw/mark_density.hpp's rule)
 //   X.curve   trace() of the current state
 //   X.ruler   events() at the current a2 and n
 //   X.view    the sphere view {spin, tilt, zoom, panX, panY, theta}
@@ -15,13 +16,13 @@
 window.Explorer = {};
 {
   const X = window.Explorer;
-  const FIELDS = ['a2', 'a3', 'n', 'teeth', 'phase'];
-  const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0' };
+  const FIELDS = ['a2', 'a3', 'n', 'teeth', 'phase'];  // the text fields (id FIELD-text)
+  const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0', markers: 'auto' };
   const $ = (id) => document.getElementById(id);
   const byTestId = (id) => document.querySelector('[data-testid="' + id + '"]');
 
   Object.assign(X, { FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
-    ruler: null, view: { spin: 0.5, tilt: 1.1, zoom: 1, panX: 0, panY: 0, theta: 0 } });
+    ruler: null, marks: null, view: { spin: 0.5, tilt: 1.1, zoom: 1, panX: 0, panY: 0, theta: 0 } });
 
   // ---- the URL hash and the text fields -------------------------------------------------------
   function readHash() {
@@ -34,7 +35,7 @@ window.Explorer = {};
       const eq = part.indexOf('=');
       if (eq < 0) continue;
       const key = decode(part.slice(0, eq));
-      if (FIELDS.includes(key)) s[key] = decode(part.slice(eq + 1));
+      if (key in DEFAULT_STATE) s[key] = decode(part.slice(eq + 1));
     }
     if (s.teeth !== '' && !/[#&]n=/.test('&' + hash)) s.n = ''; // teeth given instead of n
     return s;
@@ -46,20 +47,29 @@ window.Explorer = {};
     if (s.teeth !== '') parts.push('teeth=' + enc(s.teeth));
     if (s.n !== '' || s.teeth === '') parts.push('n=' + enc(s.n));
     parts.push('phase=' + enc(s.phase));
+    if (s.markers !== DEFAULT_STATE.markers) parts.push('markers=' + enc(s.markers));  // links stay short
     return '#' + parts.join('&');
   }
 
   function fillFields() {
     for (const f of FIELDS) $(f + '-text').value = X.state[f];
+    $('markers').value = X.state.markers;
   }
 
   function readFields() {
     const s = {};
     for (const f of FIELDS) s[f] = $(f + '-text').value.trim();
+    s.markers = $('markers').value;
     return s;
   }
 
   // ---- computing ------------------------------------------------------------------------------
+  // A worker running the module and the page's worker jobs (worker_bundle.js: map_worker.js,
+  // census_worker.js), started from a Blob: a page opened from disk may not start one from a file.
+  function newWorker() {
+    return new Worker(URL.createObjectURL(new Blob([SPHTROCH_WORKER_SOURCE], { type: 'text/javascript' })));
+  }
+
   // Samples of the drawn curve (and of the trace CSV export).
   function samplesFor(r) {
     return Math.min(200000, Math.max(2000, 600 * r.q * Math.min(40, Math.abs(r.p) + r.q)));
@@ -82,7 +92,9 @@ window.Explorer = {};
     if (t.error) return { error: t.error };
     const e = eventsOf(s);
     if (e.error) return { error: e.error };
-    return { c, t, e };
+    const m = lib.marks(s.markers, c.nodes, c.cusps);
+    if (m.error) return { error: m.error };
+    return { c, t, e, m };
   }
 
   // Timings of the last update (ms), for bench/explorer.js: compute (the library) and all of it.
@@ -93,7 +105,7 @@ window.Explorer = {};
     const out = compute();
     timing.compute = performance.now() - start;
     if (out.error) {
-      X.result = X.curve = X.ruler = null;
+      X.result = X.curve = X.ruler = X.marks = null;
       byTestId('error').textContent = out.error;
     } else {
       byTestId('error').textContent = '';
@@ -101,12 +113,15 @@ window.Explorer = {};
       X.result = out.c;
       X.curve = out.t;
       X.ruler = out.e;
+      X.marks = out.m;
       if (mapKeyChanged) X.startMap();
       syncSliders();
     }
     if (pushHash) history.replaceState(null, '', hashOf(X.state));
     X.renderReadouts();
+    X.scheduleCertificate();
     X.renderRuler();
+    X.followDensity();
     X.drawSphere();
     X.drawMap();
     X.scheduleTolerance();
@@ -119,5 +134,5 @@ window.Explorer = {};
     $('phase-slider').value = X.result.phase;
   }
 
-  Object.assign(X, { readHash, fillFields, readFields, samplesFor, update, timing });
+  Object.assign(X, { readHash, fillFields, readFields, newWorker, samplesFor, update, timing });
 }

@@ -2,9 +2,10 @@
 // keeps: the module's tolerance() (what `sphtroch tolerance` proves), run a moment after the view
 // is drawn (the proof takes milliseconds, up to about a second on the hardest trains) and again
 // when a half-width is edited. Sets X.tolerance, which map.js draws: the margin square and the
-// tolerance box about the cross. Test contract: data-testid="margin" (data-lower, data-upper:
-// shortest round-trip texts), data-testid="tolerance" (data-verdict: holds | changes | undecided |
-// error).
+// tolerance box about the cross. The census it states is the readouts' (X.result), with its
+// certificate (X.certificate, certificate.js): "not certified" until that certifies it. Test
+// contract: data-testid="margin" (data-lower, data-upper: shortest round-trip texts),
+// data-testid="tolerance" (data-verdict: holds | changes | undecided | error).
 'use strict';
 {
   const X = window.Explorer;
@@ -41,7 +42,8 @@
 
   function toleranceText(r) {
     const census = X.result.nodes + ' node(s), ' + X.result.cusps + ' cusp(s)';
-    const unchecked = r.certified ? '' : ' (the count check failed here: run sphtroch tolerance)';
+    const c = X.certificate;
+    const unchecked = c && c.certified ? '' : c ? ' (count not certified: run sphtroch tolerance)' : ' (count not certified yet)';
     if (r.topology === 'changes')
       return 'changes: ' + r.event.name + ' at a2 = ' + X.fmt(r.event.a2) + ', a3 = ' + X.fmt(r.event.a3) + ' lies in the box';
     if (r.topology === 'undecided') return 'undecided: ' + r.why;
@@ -61,15 +63,22 @@
       show({ text: '' }, r.error, 'error');
     } else {
       X.tolerance = r;
-      show({ text: marginText(r.margin), lower: X.lib.numberText(r.margin.lower), upper: X.lib.numberText(r.margin.upper) },
-        toleranceText(r), r.topology);
+      refreshToleranceText();
     }
     X.drawMap();
+  }
+
+  // Shows X.tolerance (again when the certificate arrives: the text states it).
+  function refreshToleranceText() {
+    const r = X.tolerance;
+    if (!r) return;
+    show({ text: marginText(r.margin), lower: X.lib.numberText(r.margin.lower), upper: X.lib.numberText(r.margin.upper) },
+      toleranceText(r), r.topology);
   }
 
   function setupTolerance() {
     for (const k of ['a2', 'a3', 'phase']) $('tol-' + k + '-text').addEventListener('input', scheduleTolerance);
   }
 
-  Object.assign(X, { scheduleTolerance, setupTolerance });
+  Object.assign(X, { scheduleTolerance, setupTolerance, refreshToleranceText });
 }

@@ -10,12 +10,21 @@
 //  - the certified margin and the tolerance box: the verdict of `sphtroch tolerance`, overlapping
 //    margin brackets, a box beyond the margin never holds, one inside it holds, the square drawn;
 //  - no console error; a screenshot where the sphere and the map are drawn (not blank); the pitch
-//    cones drawn (turning them off and on changes the sphere's pixels, in the cones' colours).
+//    cones drawn (turning them off and on changes the sphere's pixels, in the cones' colours);
+//  - the count check: certified exactly when `sphtroch classify` is (every state above), report
+//    Fig. 3 (on the a3 = a2 pole boundary) certified with 1 node;
+//  - the legend's colours: CIEDE2000 (ciede2000.js, checked on pairs of Sharma et al. 2005)
+//    >= 10 between counts next to each other in the legend, n = 13/5 and 19/7;
+//  - the design map's axes in degrees, and its hover readout: a cell's a2, a3 and count (the
+//    count: `sphtroch classify` at the cell's centre), the design not moved;
+//  - markers: n = 133/200 (26,602 nodes) opens with them hidden and said so, cones off, the path
+//    drawn; "all" draws them (and goes into the hash); Fig. 3 draws its node.
 // Exit status 0 when every check holds; each failure is printed.
 'use strict';
 const path = require('path');
 const { execFileSync, spawnSync } = require('child_process');
 const { chromium } = require('playwright-core');
+const { deltaE00, labOfRgb, SELF_CHECK } = require('./ciede2000.js');
 
 const [webDir, exe, outDir] = process.argv.slice(2);
 const pageUrl = 'file://' + path.resolve(webDir, 'index.html');
@@ -54,7 +63,7 @@ function hashOf(s) {
 }
 
 function cli(args) {
-  const r = spawnSync(exe, args, { encoding: 'utf8' });
+  const r = spawnSync(exe, args, { encoding: 'utf8', maxBuffer: 1 << 28 });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr.trim() };
 }
 
@@ -68,6 +77,7 @@ async function readPage(page) {
       a3: e.getAttribute('data-a3'), kind: e.getAttribute('data-kind') }));
     const out = { error: text('error'), events, hash: window.location.hash };
     for (const id of ['nodes', 'crossings', 'tangencies', 'cusps', 'class']) out[id] = text(id);
+    out.certificate = document.querySelector('[data-testid="certified"]').dataset.state;
     out.nodePoints = window.sphtrochExplorer.nodePositions();
     out.cuspPoints = window.sphtrochExplorer.cuspPositions();
     return out;
@@ -79,9 +89,15 @@ async function open(page, hash) {
   await page.waitForSelector('body[data-ready="1"]');
 }
 
+// Waits until the count check is decided (certify() runs in a worker after the state is drawn).
+const certificateDecided = (page) => page.waitForFunction(
+  () => !['pending', ''].includes(document.querySelector('[data-testid="certified"]').dataset.state), null, { timeout: 60000 });
+
 async function checkState(page, s) {
   const hash = hashOf(s);
   await open(page, hash);
+  const refused = await page.evaluate(() => document.querySelector('[data-testid="error"]').textContent !== '');
+  if (!refused) await certificateDecided(page);
   const got = await readPage(page);
   const where = JSON.stringify(s);
   check(decodeURIComponent(got.hash) === decodeURIComponent(hash), where + ': hash ' + got.hash + ' != ' + hash);
@@ -93,6 +109,8 @@ async function checkState(page, s) {
   }
   const c = JSON.parse(classify.stdout);
   check(got.error === '', where + ': unexpected error ' + got.error);
+  check(got.certificate === (c.certified ? 'certified' : 'not-certified'),
+    where + ': the count check is ' + got.certificate + ', the CLI certified: ' + c.certified);
   if (c.certified) {
     for (const k of ['nodes', 'crossings', 'tangencies', 'cusps'])
       check(Number(got[k]) === c.counts[k], where + ': ' + k + ' ' + got[k] + ' != CLI ' + c.counts[k]);
@@ -438,6 +456,130 @@ async function checkDrawn(page) {
   check(changed > 2000 && tinted > 0.9 * changed, 'the pitch cones are not drawn: ' + changed + ' pixels changed, ' + tinted + ' tinted');
 }
 
+// Report Fig. 3 (n = 1, a2 = a3 = pi/2: on the a3 = a2 pole boundary) is certified in the page as
+// by `sphtroch classify`, with its one node; the map's count is labelled as not certified.
+async function checkFigure3(page) {
+  const fig3 = { a2: 'pi/2', a3: 'pi/2', n: '1', phase: '0' };
+  const want = JSON.parse(cli(['classify', ...trainArgs(fig3), '--json']).stdout);
+  await open(page, hashOf(fig3));
+  await certificateDecided(page);
+  const got = await readPage(page);
+  const text = await page.textContent('[data-testid="certified"]');
+  check(want.certified && want.counts.nodes === 1 && got.certificate === 'certified' && got.nodes === '1' &&
+    /^certified: two independent censuses agree/.test(text), 'Fig. 3: the page says "' + text + '" with ' + got.nodes +
+    ' node(s); the CLI: certified ' + want.certified + ', ' + want.counts.nodes + ' node(s)');
+  check(/not certified/.test(await page.textContent('[data-testid="map-caption"]')), 'the map\'s counts are not labelled as not certified');
+}
+
+// Waits for the map's finest grid (128^2 cells).
+const mapDone = (page) => page.waitForFunction(() => /^128² cells/.test(document.querySelector('[data-testid="map-status"]').textContent),
+  null, { timeout: 60000 });
+
+// The legend's swatches, as rendered: CIEDE2000 of counts next to each other (sorted by count) at
+// least 10, for a ratio with 10 counts on the map (13/5) and one with 18 (19/7).
+async function checkPalette(page) {
+  for (const [lab1, lab2, want] of SELF_CHECK)
+    check(Math.abs(deltaE00(lab1, lab2) - want) < 5e-5, 'ciede2000.js: ' + deltaE00(lab1, lab2) + ' != ' + want + ' (Sharma et al.)');
+  for (const n of ['13/5', '19/7']) {
+    await open(page, hashOf({ a2: '0.7', a3: '2.5', n, phase: '0' }));
+    await mapDone(page);
+    const entries = await page.$$eval('[data-testid="legend-entry"]', (els) => els.map((e) => {
+      const rgb = getComputedStyle(e.querySelector('i')).backgroundColor.match(/\d+/g).map(Number);
+      return { count: Number(e.dataset.count), rgb };
+    }));
+    const steps = await page.$$eval('[data-testid="count-scale"] .bar i', (els) => els.map((e) => Number(e.dataset.count)));
+    const rest = await page.$eval('[data-testid="legend-rest"]', (e) => Number(e.dataset.counts)).catch(() => 0);
+    check(entries.length >= 8 && steps.length === entries.length + rest && steps.every((c, k) => k === 0 || c > steps[k - 1]),
+      'n = ' + n + ': the count scale ' + JSON.stringify(steps) + ' is not every count present, ascending (' + entries.length + ' + ' + rest + ')');
+    entries.sort((a, b) => a.count - b.count);
+    for (let k = 1; k < entries.length; ++k) {
+      const d = deltaE00(labOfRgb(entries[k - 1].rgb), labOfRgb(entries[k].rgb));
+      check(d >= 10, 'n = ' + n + ': CIEDE2000 ' + d.toFixed(2) + ' between the legend\'s ' + entries[k - 1].count + ' and ' +
+        entries[k].count + ' nodes (' + entries[k - 1].rgb + ' / ' + entries[k].rgb + ')');
+    }
+  }
+}
+
+// The map's axes: ticks 0°..180° every 30°, 90° at the middle of the cells; the hover readout of
+// a cell: its centre's a2 and a3 (degrees, radians) and its count, which `sphtroch classify` gives
+// at that centre; the design does not move.
+async function checkMapHover(page) {
+  const s = { a2: 'pi/3', a3: 'pi/2', n: '5/2', phase: '0' };
+  await open(page, hashOf(s));
+  await mapDone(page);
+  const box = await page.evaluate(() => {
+    const c = document.querySelector('[data-testid="map"]'), r = c.getBoundingClientRect();
+    return { x: r.left + c.clientLeft, y: r.top + c.clientTop, w: c.clientWidth, h: c.clientHeight };
+  });
+  for (const axis of ['a2', 'a3']) {
+    const ticks = await page.$$eval('[data-testid="map-axis-' + axis + '"] span', (els) => els.map((e) => {
+      const r = e.getBoundingClientRect();
+      return { text: e.textContent, x: r.left + r.width / 2, y: r.top + r.height / 2 };
+    }));
+    const middle = ticks.find((t) => t.text === '90°');
+    const off = middle ? (axis === 'a2' ? middle.x - (box.x + box.w / 2) : middle.y - (box.y + box.h / 2)) : NaN;
+    check(ticks.map((t) => t.text).join(' ') === '0° 30° 60° 90° 120° 150° 180°' && Math.abs(off) <= 2,
+      'map axis ' + axis + ': ticks ' + JSON.stringify(ticks) + ', 90° is ' + off + ' px off the middle');
+  }
+  const [i, j] = [38, 100];  // the cell 38 across, 100 up of 128
+  const centre = { a2: (i + 0.5) * Math.PI / 128, a3: (j + 0.5) * Math.PI / 128 };
+  await page.mouse.move(box.x + (i + 0.5) / 128 * box.w, box.y + (1 - (j + 0.5) / 128) * box.h);
+  const text = await page.textContent('[data-testid="map-hover"]');
+  const m = text.match(/a2 = ([\d.]+)° \(([\d.]+) rad\), a3 = ([\d.]+)° \(([\d.]+) rad\): (\d+) nodes/);
+  const want = JSON.parse(cli(['classify', '--a2', String(centre.a2), '--a3', String(centre.a3), '--n', s.n, '--json']).stdout);
+  const deg = (v) => v * 180 / Math.PI;
+  check(m && Math.abs(Number(m[1]) - deg(centre.a2)) <= 0.006 && Math.abs(Number(m[2]) - centre.a2) <= 6e-5 &&
+    Math.abs(Number(m[3]) - deg(centre.a3)) <= 0.006 && Math.abs(Number(m[4]) - centre.a3) <= 6e-5 &&
+    want.certified && Number(m[5]) === want.counts.nodes,
+    'map hover: "' + text + '"; the cell centre (' + centre.a2 + ', ' + centre.a3 + '), the CLI there: ' + want.counts.nodes + ' nodes');
+  const state = await page.evaluate(() => window.sphtrochExplorer.state());
+  check(state.a2 === s.a2 && state.a3 === s.a3, 'map hover moved the design: ' + JSON.stringify(state));
+}
+
+// Pixels of the sphere in the markers' red or orange (front, or faded on the back half: 30% red
+// over the sphere's grey-white is still 45 levels redder than green and blue); no other colour of
+// the view (curve, pitch circles, cones, tracer) is.
+const redPixels = (page) => page.evaluate(() => {
+  const c = document.querySelector('[data-testid="sphere"]'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let k = 0;
+  for (let i = 0; i < d.length; i += 4) if (d[i] > d[i + 1] + 30 && d[i] > d[i + 2] + 30) ++k;
+  return k;
+});
+
+// Markers by the library's rule (mark_density.hpp): n = 133/200, a2 = a3 = pi/2 (26,602 nodes by
+// `sphtroch classify`, over the automatic limit of 200) opens with no marker, the note saying how
+// many are hidden, the cones off and the path drawn; "all" draws them and goes into the hash;
+// Fig. 3's one node is drawn, its cones on.
+async function checkMarkers(page) {
+  const dense = { a2: 'pi/2', a3: 'pi/2', n: '133/200', phase: '0' };
+  const want = JSON.parse(cli(['classify', ...trainArgs(dense), '--json']).stdout);
+  const marks = want.counts.nodes + want.counts.cusps;
+  await open(page, hashOf(dense));
+  await page.uncheck('#animate');
+  const state = () => page.evaluate(() => ({
+    note: document.querySelector('[data-testid="marks-note"]').textContent,
+    cones: document.querySelector('[data-testid="cones"]').checked,
+    dark: (() => {
+      const c = document.querySelector('[data-testid="sphere"]'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let k = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] < 300 && d[i + 3] > 0) ++k;
+      return k;
+    })() }));
+  const hidden = await state();
+  check(marks > 200 && hidden.note === marks + ' node and cusp markers hidden (more than 200)' && !hidden.cones &&
+    hidden.dark > 20000 && (await redPixels(page)) === 0,
+    'dense curve: ' + JSON.stringify(hidden) + ', ' + (await redPixels(page)) + ' red pixels; the CLI: ' + marks + ' marks');
+  await page.selectOption('[data-testid="markers"]', 'all');
+  const all = await state();
+  const hash = await page.evaluate(() => window.location.hash);
+  check(all.note === '' && (await redPixels(page)) > 1000 && /markers=all/.test(hash),
+    'markers all: ' + JSON.stringify(all) + ', hash ' + hash);
+  await open(page, hashOf({ a2: 'pi/2', a3: 'pi/2', n: '1', phase: '0' }));
+  await page.uncheck('#animate');
+  const fig3 = await state();
+  check(fig3.note === '' && fig3.cones && (await redPixels(page)) > 10, 'Fig. 3: its node is not drawn: ' + JSON.stringify(fig3));
+}
+
 (async () => {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
   const page = await browser.newPage({ viewport: { width: 1400, height: 1100 } });
@@ -454,11 +596,15 @@ async function checkDrawn(page) {
     await checkThroughPoints(page);
     await checkTolerance(page);
     await checkDrawn(page);
+    await checkFigure3(page);
+    await checkPalette(page);
+    await checkMapHover(page);
+    await checkMarkers(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones, Fig. 3 certified, palette, map hover, markers' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

@@ -54,6 +54,8 @@
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/train_text.hpp"
 
+#include "sphtroch/draw/curve_view.hpp"
+#include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
 

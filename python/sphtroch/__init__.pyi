@@ -131,12 +131,16 @@ class GearTrain:
     def cusps(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
         """The "cusps" list of classify() (id "C1", ..., position, param, speed)."""
     def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[Count] = None,
-            labels: str = "auto", literal: Flag = False, samples: Optional[Count] = None) -> str:
+            labels: str = "auto", markers: str = "auto", literal: Flag = False,
+            samples: Optional[Count] = None) -> str:
         """The curve on the sphere as SVG text, as `sphtroch plot` draws it (the certified census;
-        an uncertified count says so in the caption). view: "top" (along the sun axis), "front",
-        "side", "AZ,EL" or (az, el) angles (default: from (1, 0.6, 0.5)); size: 64 .. 8192 px
-        (default 520); labels: "auto" (no two labels overlap; the picture says how many it
-        shows), "numbers" (every N<i>, C<j>: the rows of nodes() then cusps()) or "none"."""
+        an uncertified count says so in the caption). view: "auto" (the default: from the curve's
+        mean direction, or a principal axis when that shows clearly more of it in front; the
+        picture states the view), "top" (along the sun axis), "front", "side", "AZ,EL" or (az, el)
+        angles; size: 64 .. 8192 px (default 520); labels: "auto" (no two labels overlap; the
+        picture says how many it shows), "numbers" (every N<i>, C<j>: the rows of nodes() then
+        cusps()) or "none"; markers: "auto" (every node and cusp marker up to 200 of them, none
+        above; the picture says how many it hides), "all" or "none"."""
     def _repr_svg_(self) -> str:
         """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
         stays readable)."""

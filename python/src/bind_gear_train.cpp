@@ -96,11 +96,11 @@ py::object margin(const Train& self) {
   return from_json(text);
 }
 
-/// svg(): `sphtroch plot` as SVG text. view: "top", "front", "side", "AZ,EL" or (az, el) angles.
-std::string svg(const Train& self, py::handle view, py::handle size, py::handle labels, py::handle literal_flag,
-                py::handle samples) {
+/// svg(): `sphtroch plot` as SVG text. view: "auto", "top", "front", "side", "AZ,EL" or (az, el) angles.
+std::string svg(const Train& self, py::handle view, py::handle size, py::handle labels, py::handle markers,
+                py::handle literal_flag, py::handle samples) {
   PlotOptions options;
-  const char* const views = "top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
+  const char* const views = "auto, top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
   if (py::isinstance<py::tuple>(view) || py::isinstance<py::list>(view)) {
     const py::sequence pair = py::reinterpret_borrow<py::sequence>(view);
     if (pair.size() != 2) throw InvalidInput("view", repr_of(view), "not a view", views);
@@ -112,6 +112,7 @@ std::string svg(const Train& self, py::handle view, py::handle size, py::handle 
   }
   if (!size.is_none()) options.size_px = static_cast<double>(count_arg(size, "size", 64, 8192));
   options.labels = parse_plot_labels(text_arg(labels, "labels", "auto, numbers, none"));
+  options.markers = parse_mark_mode(text_arg(markers, "markers", "auto, all, none"));
   const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
   py::gil_scoped_release release;
@@ -250,9 +251,9 @@ void bind_gear_train(py::module_& m) {
       .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.cusps"))
       .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(),
-           py::arg("labels") = "auto", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
+           py::arg("labels") = "auto", py::arg("markers") = "auto", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
       .def("_repr_svg_", [](const Train& t) {
-        return svg(t, py::none(), py::none(), py::str("auto"), py::bool_(false), py::none());
+        return svg(t, py::none(), py::none(), py::str("auto"), py::str("auto"), py::bool_(false), py::none());
       }, doc("GearTrain._repr_svg_"))
       .def("kinematics", &kinematics, py::arg("t"), doc("GearTrain.kinematics"))
       .def("report", &report, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))

@@ -24,17 +24,19 @@ struct AnalysisOptions {
   std::string samples, output;
   bool literal = false;
   bool json = false;
-  std::string view, size, labels;  // plot only
+  std::string view, size, labels, markers;  // plot only
   std::string radius;               // nodes only
   bool degrees = false;             // nodes only
 };
 
-/// plot's --view, --size, --labels (svg_plot.hpp: set_plot_view, parse_plot_labels; contract 4).
+/// plot's --view, --size, --labels, --markers (svg_plot.hpp: set_plot_view, parse_plot_labels;
+/// mark_density.hpp: parse_mark_mode).
 PlotOptions plot_options(const AnalysisOptions& o) {
   PlotOptions p;
   if (!o.view.empty()) set_plot_view(p, o.view);
   if (!o.size.empty()) p.size_px = static_cast<double>(parse_count(o.size, "size", 64, 8192));
   if (!o.labels.empty()) p.labels = parse_plot_labels(o.labels);
+  if (!o.markers.empty()) p.markers = parse_mark_mode(o.markers);
   return p;
 }
 
@@ -229,9 +231,13 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("plot", "the curve on the sphere as SVG, nodes and cusps marked");
     add_analysis_options(*cmd, *o);
-    cmd->add_option("--view", o->view, "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
+    cmd->add_option("--view", o->view,
+                    "auto (default: from the curve's mean direction or a principal axis, stated in the picture), "
+                    "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
     cmd->add_option("--size", o->size, "width and height of the picture in px (64 .. 8192; default 520)");
     cmd->add_option("--labels", o->labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
+    cmd->add_option("--markers", o->markers,
+                    "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none");
     cmd->footer("Labels N<i>, C<j> are the rows of `sphtroch nodes` (nodes, then cusps).\n"
                 "Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
     actions.emplace_back(cmd, [o] { run_plot(*o); });

@@ -7,6 +7,8 @@
 #include "test_support.hpp"
 #include "sphtroch/core/kinematics.hpp"
 
+#include <Eigen/Geometry>
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -615,6 +617,62 @@ TEST_CASE("cli: plot -o FILE.svg draws Fig. 5(f) with 4 node markers", "[cli][pl
   CHECK(circles == 4);
   CHECK(contains(svg, "4 node(s)"));
   CHECK(dir.entries() == std::vector<std::string>{"fig5f.svg"});
+}
+
+TEST_CASE("cli: plot's default view shows at least 80% of the README's n = 13/5 curve in front, and says so",
+          "[cli][plot][svg]") {
+  TempDir dir;
+  const Result r = run("plot --a2 0.7 --a3 2.5 --n 13/5 -o v.svg", dir, true);
+  REQUIRE(r.status == 0);
+  const std::string svg = slurp(dir.path / "v.svg");
+  const std::string key = ">view from az ";
+  const auto at = svg.find(key);
+  REQUIRE(at != std::string::npos);
+  double az = 0, el = 0;
+  REQUIRE(std::sscanf(svg.c_str() + at + key.size(), "%lf deg, el %lf deg", &az, &el) == 2);
+  CHECK(contains(svg.substr(at, 80), "(mean direction of the curve)"));
+  const Eigen::Vector3d view(std::cos(el * kPi / 180) * std::cos(az * kPi / 180),
+                             std::cos(el * kPi / 180) * std::sin(az * kPi / 180), std::sin(el * kPi / 180));
+  // Eq. 4 written out, P = Rz(t) Rx(a2) Rz(13 t / 5) Rx(a3) z, 10^5 samples over 2 pi q.
+  double front = 0, total = 0;
+  Eigen::Vector3d prev;
+  const int samples = 100000;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = 10 * kPi * i / samples;
+    const Eigen::Vector3d p = (Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX()) *
+                               Eigen::AngleAxisd(13 * t / 5, Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(2.5, Eigen::Vector3d::UnitX())) * Eigen::Vector3d::UnitZ();
+    if (i > 0) {
+      const double len = (p - prev).norm();
+      total += len;
+      if ((p + prev).dot(view) >= 0) front += len;
+    }
+    prev = p;
+  }
+  CHECK(front / total >= 0.8);
+}
+
+TEST_CASE("cli: plot --markers: auto hides the marks of a dense curve and says so, none hides any, all draws them",
+          "[cli][plot][svg]") {
+  TempDir dir;
+  // n = 17/6 at a2 = 0.7, a3 = 2.5 has 272 nodes (sphtroch classify), above the automatic limit 200.
+  REQUIRE(run("plot --a2 0.7 --a3 2.5 --n 17/6 -o dense.svg", dir, true).status == 0);
+  const std::string dense = slurp(dir.path / "dense.svg");
+  CHECK_FALSE(contains(dense, "id=\"nodes\""));
+  CHECK(contains(dense, ">272 node and cusp markers hidden (more than 200) (--markers all draws them)</text>"));
+  REQUIRE(run("plot --a2 0.7 --a3 2.5 --n 17/6 --markers all -o all.svg", dir, true).status == 0);
+  const std::string all = slurp(dir.path / "all.svg");
+  std::size_t circles = 0;
+  for (auto at = all.find("<circle"); at != std::string::npos; at = all.find("<circle", at + 1)) ++circles;
+  CHECK(circles >= 272);
+  REQUIRE(run("plot --a2 pi/3 --a3 pi/2 --n 2 --markers none -o none.svg", dir, true).status == 0);
+  const std::string none = slurp(dir.path / "none.svg");
+  CHECK_FALSE(contains(none, "id=\"nodes\""));
+  CHECK(contains(none, ">4 node and cusp markers hidden (--markers all draws them)</text>"));
+  const Result bad = run("plot --a2 1 --a3 2 --n 2 --markers some -o bad.svg", dir, true);
+  CHECK(bad.status == 2);
+  CHECK(contains(bad.err, "--markers"));
+  CHECK_FALSE(fs::exists(dir.path / "bad.svg"));
 }
 
 TEST_CASE("cli: bad input to classify, nodes and plot exits 2 with one stderr line and leaves no file",

@@ -276,7 +276,8 @@ TEST_CASE("the XML checker itself rejects broken documents", "[svg]") {
 // svg_plot.hpp: projection
 // --------------------------------------------------------------------------------------------
 
-TEST_CASE("default view looks from (1, 0.6, 0.5) with Z up", "[svg_plot][projection]") {
+TEST_CASE("the fixed view (azimuth, elevation as PlotOptions sets them) looks from (1, 0.6, 0.5) with Z up",
+          "[svg_plot][projection]") {
   const PlotOptions opt;
   const PlotLayout L = plot_layout(opt);
   const SphereView& cam = L.sphere;
@@ -450,6 +451,7 @@ TEST_CASE("fig3 curve: the split runs alternate and every crossing is on the out
 
 TEST_CASE("render: node and cusp markers with labels at their projected coordinates", "[svg_plot][render]") {
   PlotOptions opt;
+  opt.view_from_curve = false;  // the fixed view from (1, 0.6, 0.5): one node on the back half
   opt.caption = "a2 = pi/2, a3 = pi/2, n = 1";
   const PlotLayout L = plot_layout(opt);
   const auto num = [&](double v) { return svg_number(v, opt.decimals); };
@@ -526,6 +528,7 @@ TEST_CASE("render: no markers, no legend entries for absent kinds, no axes when 
 TEST_CASE("render: the curve is two <path> elements whatever the sample count, numbers have 2 decimals",
           "[svg_plot][render]") {
   PlotOptions opt;
+  opt.view_from_curve = false;  // from (1, 0.6, 0.5) the curve has a front and a back half
   opt.draw_legend = false;
   opt.draw_axes = false;
   opt.draw_grid = false;

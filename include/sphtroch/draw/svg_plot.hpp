@@ -15,9 +15,12 @@
 //
 // The view: the viewer looks at the origin from the direction
 //   view = (cos el cos az, cos el sin az, sin el)
-// (default: from (1, 0.6, 0.5) normalised), with the screen's up the projection of +Z. A point P
-// of the sphere is drawn at centre + radius * (P.right, -P.up) (SVG's y grows downwards); it is
-// on the front half when P.view >= -kSilhouetteTolerance.
+// (default: chosen from the curve, curve_view.hpp: its mean direction unless a principal axis shows
+// clearly more of it in front), with the screen's up the projection of +Z. A point P of the sphere
+// is drawn at centre + radius * (P.right, -P.up) (SVG's y grows downwards); it is on the front half
+// when P.view >= -kSilhouetteTolerance. The picture states its view (azimuth, elevation in degrees
+// and, when chosen from the curve, why) in a note above the caption; a view chosen from the curve
+// is rounded to whole degrees, so the note states exactly the view drawn.
 //
 // Contracts:
 //  1. project(view) is the picture centre; every point with P.view = 0 lands on the outline
@@ -41,6 +44,9 @@
 //     lays sans-serif bold out in), so a dense curve stays readable; the legend then says how many
 //     labels it shows.
 //  5. The caption is escaped (svg.hpp), so any text is safe; the document is valid SVG 1.1.
+//  6. Markers (PlotOptions::markers, mark_density.hpp): automatic draws the node and cusp markers
+//     of a curve with at most kAutoMarkLimit of them and none above, all and none as named; a
+//     note above the caption says how many were hidden. Hidden markers leave the legend too.
 //  REQUIRES: trajectory points, node and cusp positions finite (assertion); options valid
 //  (InvalidInput naming the field otherwise).
 #pragma once
@@ -50,6 +56,8 @@
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/curve_view.hpp"
+#include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/train_text.hpp"
@@ -88,10 +96,14 @@ enum class PlotLabels { automatic, numbers, none };
 
 struct PlotOptions {
   /// Direction of the viewer, radians: azimuth about +Z from +X towards +Y, elevation above
-  /// the XY plane. Default: looking from (1, 0.6, 0.5) normalised. Must be finite; elevation
-  /// in [-pi/2, pi/2].
+  /// the XY plane; used when view_from_curve is false. Must be finite; elevation in [-pi/2, pi/2].
   double azimuth = std::atan2(0.6, 1.0);
   double elevation = std::atan2(0.5, std::sqrt(1.36));
+  /// Choose the view from the curve (curve_view.hpp), ignoring azimuth and elevation (the default;
+  /// set_plot_view turns it off).
+  bool view_from_curve = true;
+  /// Which node and cusp markers are drawn (contract 6).
+  MarkMode markers = MarkMode::automatic;
   /// Width and height of the picture in px, caption included. Valid: [64, 8192].
   double size_px = 520;
   /// One line under the picture (empty: none). Any text; it is XML-escaped.
@@ -110,9 +122,10 @@ struct PlotOptions {
   double simplify_px = 0.15;
 };
 
-/// A view as the CLI writes it: "top" (along the sun axis Z: +X right, +Y up), "front" (from -Y:
-/// +X right, +Z up), "side" (from +X: +Y right, +Z up) or "AZ,EL" (angles in parse.hpp's syntax,
-/// EL in [-pi/2, pi/2]); sets options.azimuth and .elevation. Throws InvalidInput(field).
+/// A view as the CLI writes it: "auto" (chosen from the curve, the default), "top" (along the sun
+/// axis Z: +X right, +Y up), "front" (from -Y: +X right, +Z up), "side" (from +X: +Y right, +Z up)
+/// or "AZ,EL" (angles in parse.hpp's syntax, EL in [-pi/2, pi/2]); sets options.view_from_curve,
+/// .azimuth and .elevation. Throws InvalidInput(field).
 inline void set_plot_view(PlotOptions& options, std::string_view text, const std::string& field = "view");
 
 /// "auto" (automatic), "numbers" or "none". Throws InvalidInput(field).
@@ -199,7 +212,10 @@ inline std::string plot_caption_text(const TrainText& text, const GearTrain& ana
 
 inline void set_plot_view(PlotOptions& options, std::string_view text, const std::string& field) {
   const double pi = Constants<double>::pi();
-  const char* const forms = "top, front, side, or AZ,EL: azimuth (any angle) and elevation in [-pi/2, pi/2] (30deg,45deg)";
+  const char* const forms =
+      "auto, top, front, side, or AZ,EL: azimuth (any angle) and elevation in [-pi/2, pi/2] (30deg,45deg)";
+  options.view_from_curve = text == "auto";
+  if (options.view_from_curve) return;
   if (text == "top" || text == "front" || text == "side") {
     options.azimuth = text == "side" ? 0.0 : -pi / 2;
     options.elevation = text == "top" ? pi / 2 : 0.0;
@@ -570,14 +586,22 @@ class SphereCanvas {
     svg_.end_group();
   }
 
+  /// The notes above the caption, right-aligned, one line each from the bottom up: the view, then
+  /// what the labels and markers leave out (contracts 4, 6).
+  void notes(const std::string& view, const MarkChoice& marks) {
+    std::vector<std::string> lines{view};
+    if (label_boxes_.size() < labels_wanted_ && opt_.labels == PlotLabels::automatic)
+      lines.push_back(std::to_string(label_boxes_.size()) + " of " + std::to_string(labels_wanted_) +
+                      " labels (no overlaps; all: --labels numbers, the list: sphtroch nodes)");
+    if (!marks.note.empty()) lines.push_back(marks.note + " (--markers all draws them)");
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      label(L_.width - 0.4 * L_.font_px, L_.caption_y - (1.3 + 1.05 * static_cast<double>(i)) * L_.font_px, lines[i],
+            "font-family:sans-serif;font-size:" + num(0.8 * L_.font_px) + "px;fill:#555555", "end");
+  }
+
   /// Legend: one line along the top, only for what is drawn.
   void legend(bool with_cusps) {
     if (!opt_.draw_legend) return;
-    if (label_boxes_.size() < labels_wanted_ && opt_.labels == PlotLabels::automatic)
-      svg_.text(L_.width - 0.4 * L_.font_px, L_.caption_y - 1.3 * L_.font_px,
-                std::to_string(label_boxes_.size()) + " of " + std::to_string(labels_wanted_) +
-                    " labels (no overlaps; all: --labels numbers, the list: sphtroch nodes)",
-                "font-family:sans-serif;font-size:" + num(0.8 * L_.font_px) + "px;fill:#555555", "end");
     LegendPen pen{0.6 * L_.font_px, 1.1 * L_.font_px};
     const double r = 0.8 * L_.marker_radius;
     legend_line(pen, std::string("stroke:") + kCurveColour + ";stroke-width:" + num(1.7 * lw_), "front");
@@ -717,21 +741,48 @@ class SphereCanvas {
 
 }  // namespace detail
 
-/// The picture (see header): the layers back to front.
+namespace detail {
+
+/// "view from az A deg, el E deg[ (REASON)]", whole degrees.
+inline std::string view_note(const PlotOptions& o, const std::string& reason) {
+  const double deg = 180.0 / Constants<double>::pi();
+  auto whole = [](double v) { return std::to_string(static_cast<long>(std::lround(v))); };
+  return "view from az " + whole(o.azimuth * deg) + " deg, el " + whole(o.elevation * deg) + " deg" +
+         (reason.empty() ? "" : " (" + reason + ")");
+}
+
+}  // namespace detail
+
+/// The picture (see header): the view, then the layers back to front.
 inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const std::vector<Node>& nodes,
                                      const std::vector<Cusp>& cusps, const PlotOptions& options) {
-  detail::SphereCanvas canvas(options);
+  const std::vector<Vector3d> points(trajectory.points.begin(), trajectory.points.end());
+  PlotOptions o = options;
+  std::string reason;
+  if (o.view_from_curve) {
+    // Rounded to whole degrees: the view drawn is the one the note states (`--view AZ,EL` draws
+    // it again), and last-bit differences of the sums (native or WebAssembly) do not move it.
+    const CurveView view = view_of_curve(points, trajectory.closed);
+    const double deg = Constants<double>::pi() / 180.0;
+    o.azimuth = std::round(view.azimuth() / deg) * deg;
+    o.elevation = std::round(view.elevation() / deg) * deg;
+    reason = view.reason;
+  }
+  const MarkChoice marks = choose_marks(o.markers, nodes.size(), cusps.size());
+  detail::SphereCanvas canvas(o);
   canvas.disc();
   canvas.grid_back();
-  const std::vector<Vector3d> points(trajectory.points.begin(), trajectory.points.end());
   const HemisphereSplit curve = canvas.split(points, trajectory.closed);
   canvas.curve_back(curve);
   canvas.outline_and_grid_front();
   canvas.axes();
   canvas.curve_front(curve);
-  canvas.node_markers(nodes);
-  canvas.cusp_markers(cusps);
-  canvas.legend(!cusps.empty());
+  if (marks.draw) {
+    canvas.node_markers(nodes);
+    canvas.cusp_markers(cusps);
+  }
+  canvas.legend(marks.draw && !cusps.empty());
+  canvas.notes(detail::view_note(o, reason), marks);
   canvas.caption();
   return canvas.finish();
 }

@@ -91,8 +91,16 @@
 // Implementation details follow.
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/arc_predicates.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+// Which exact number type: CGAL's choice. Built with SPHTROCH_HAVE_EXACT (the sphtroch::exact
+// target), CGAL finds <gmp.h> and uses GMP's rationals, so GMP and MPFR are linked. Header-only,
+// without GMP and MPFR (what the explorer's WebAssembly module compiles, explorer/CMakeLists.txt):
+// define SPHTROCH_EXACT_WITHOUT_GMP and CGAL_NO_GMP=1; CGAL's configuration
+// (CGAL/Installation/internal/enable_third_party_libraries.h) then leaves GMP out and its exact
+// fallback is header-only (Exact_type_selector.h: Boost.Multiprecision's cpp_int quotients, or
+// CGAL's MP_Float): the same exact signs, slower where the filter cannot decide.
+#if !defined(SPHTROCH_HAVE_EXACT) && \
+    !(defined(SPHTROCH_EXACT_WITHOUT_GMP) && defined(CGAL_NO_GMP) && CGAL_NO_GMP)
+#error "sphtroch/exact/arc_predicates.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself, or (header-only, no GMP or MPFR) define SPHTROCH_EXACT_WITHOUT_GMP and CGAL_NO_GMP=1"
 #endif
 
 #include "sphtroch/core/errors.hpp"

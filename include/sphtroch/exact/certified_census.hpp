@@ -20,8 +20,10 @@
 //  3. The returned census is the last one run (the agreeing one when certified).
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/certified_census.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+// Header-only without GMP and MPFR: SPHTROCH_EXACT_WITHOUT_GMP with CGAL_NO_GMP=1 (arc_predicates.hpp).
+#if !defined(SPHTROCH_HAVE_EXACT) && \
+    !(defined(SPHTROCH_EXACT_WITHOUT_GMP) && defined(CGAL_NO_GMP) && CGAL_NO_GMP)
+#error "sphtroch/exact/certified_census.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself, or (header-only, no GMP or MPFR) define SPHTROCH_EXACT_WITHOUT_GMP and CGAL_NO_GMP=1"
 #endif
 
 #include "sphtroch/core/gear_train.hpp"

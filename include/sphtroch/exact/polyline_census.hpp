@@ -30,8 +30,10 @@
 // polyline_census() runs them in order.
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_EXACT)
-#error "sphtroch/exact/polyline_census.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself"
+// Header-only without GMP and MPFR: SPHTROCH_EXACT_WITHOUT_GMP with CGAL_NO_GMP=1 (arc_predicates.hpp).
+#if !defined(SPHTROCH_HAVE_EXACT) && \
+    !(defined(SPHTROCH_EXACT_WITHOUT_GMP) && defined(CGAL_NO_GMP) && CGAL_NO_GMP)
+#error "sphtroch/exact/polyline_census.hpp needs CGAL, GMP and MPFR: link the CMake target sphtroch::exact (find_package(sphtroch CONFIG REQUIRED COMPONENTS exact)), or define SPHTROCH_HAVE_EXACT and link CGAL, GMP and MPFR yourself, or (header-only, no GMP or MPFR) define SPHTROCH_EXACT_WITHOUT_GMP and CGAL_NO_GMP=1"
 #endif
 
 #include "sphtroch/core/cost_bounds.hpp"
