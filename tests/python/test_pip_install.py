@@ -1,6 +1,7 @@
 """`pip install --no-build-isolation .` into a fresh venv (--system-site-packages: NumPy from Debian),
 offline, from a copy of the source tree (so the test writes nothing into the tree); then, from
-outside the tree, the installed package imports, computes, and shows its documentation."""
+outside the tree, the installed package imports, computes, and shows its documentation; the
+notebook example runs from the venv as a user runs it (its kernel registered from the venv)."""
 import os
 import pathlib
 import shutil
@@ -80,3 +81,26 @@ def test_an_existing_build_for_this_interpreter_is_reused(tmp_path):
                "import sphtroch; print(sphtroch.GearTrain('pi/2', 'pi/2', 1).classify()['counts']['nodes'])"],
               tmp_path, env)
     assert out.strip() == "1"  # Eq. 24: one node on a2 = a3 = pi/2, n = 1
+    run_the_notebook_from_the_venv(venv, tmp_path, env)
+
+
+def run_the_notebook_from_the_venv(venv, tmp_path, env):
+    """As docs/python.md says: the venv's interpreter registered as the notebook kernel
+    (ipykernel install --sys-prefix), then examples/design_study.ipynb run by that kernel with no
+    PYTHONPATH, so `import sphtroch` there can only come from the venv."""
+    python = str(venv / "bin" / "python")
+    run([python, "-m", "ipykernel", "install", "--sys-prefix"], tmp_path, env)
+    notebook = SOURCE / "examples" / "design_study.ipynb"
+    script = (
+        "import sys, nbformat, jupyter_client.kernelspec as ks\n"
+        "from nbclient import NotebookClient\n"
+        "spec = ks.KernelSpecManager().get_kernel_spec('python3')\n"
+        "assert spec.argv[0].startswith(sys.prefix), spec.argv\n"
+        "nb = nbformat.read(r'%s', as_version=4)\n"
+        "NotebookClient(nb, timeout=300, kernel_name='python3', resources={'metadata': {'path': r'%s'}}).execute()\n"
+        "errors = [o for c in nb.cells for o in c.get('outputs', []) if o.get('output_type') == 'error']\n"
+        "assert not errors, errors\n"
+        "print(sum(1 for c in nb.cells if c.cell_type == 'code'))\n" % (notebook, tmp_path)
+    )
+    out = run([python, "-c", script], tmp_path, env)
+    assert int(out.strip()) > 0
