@@ -55,6 +55,7 @@
 #include "sphtroch/io/train_text.hpp"
 
 #include "sphtroch/draw/curve_view.hpp"
+#include "sphtroch/draw/dwell_raster.hpp"
 #include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/draw/svg_plot.hpp"

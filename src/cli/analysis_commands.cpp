@@ -24,19 +24,20 @@ struct AnalysisOptions {
   std::string samples, output;
   bool literal = false;
   bool json = false;
-  std::string view, size, labels, markers;  // plot only
+  std::string view, size, labels, markers, style;  // plot only
   std::string radius;               // nodes only
   bool degrees = false;             // nodes only
 };
 
-/// plot's --view, --size, --labels, --markers (svg_plot.hpp: set_plot_view, parse_plot_labels;
-/// mark_density.hpp: parse_mark_mode).
+/// plot's --view, --size, --labels, --markers, --style (svg_plot.hpp: set_plot_view,
+/// parse_plot_labels, parse_plot_style; mark_density.hpp: parse_mark_mode).
 PlotOptions plot_options(const AnalysisOptions& o) {
   PlotOptions p;
   if (!o.view.empty()) set_plot_view(p, o.view);
   if (!o.size.empty()) p.size_px = static_cast<double>(parse_count(o.size, "size", 64, 8192));
   if (!o.labels.empty()) p.labels = parse_plot_labels(o.labels);
   if (!o.markers.empty()) p.markers = parse_mark_mode(o.markers);
+  if (!o.style.empty()) p.style = parse_plot_style(o.style);
   return p;
 }
 
@@ -238,6 +239,9 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     cmd->add_option("--labels", o->labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
     cmd->add_option("--markers", o->markers,
                     "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none");
+    cmd->add_option("--style", o->style,
+                    "curve (default: the lines, back half dashed) or density (time spent per steradian on the front half, "
+                    "for dense curves)");
     cmd->footer("Labels N<i>, C<j> are the rows of `sphtroch nodes` (nodes, then cusps).\n"
                 "Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
     actions.emplace_back(cmd, [o] { run_plot(*o); });

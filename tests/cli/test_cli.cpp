@@ -635,7 +635,7 @@ TEST_CASE("cli: plot's default view shows at least 80% of the README's n = 13/5 
                              std::cos(el * kPi / 180) * std::sin(az * kPi / 180), std::sin(el * kPi / 180));
   // Eq. 4 written out, P = Rz(t) Rx(a2) Rz(13 t / 5) Rx(a3) z, 10^5 samples over 2 pi q.
   double front = 0, total = 0;
-  Eigen::Vector3d prev;
+  Eigen::Vector3d prev = Eigen::Vector3d::Zero();
   const int samples = 100000;
   for (int i = 0; i <= samples; ++i) {
     const double t = 10 * kPi * i / samples;
@@ -652,7 +652,7 @@ TEST_CASE("cli: plot's default view shows at least 80% of the README's n = 13/5 
   CHECK(front / total >= 0.8);
 }
 
-TEST_CASE("cli: plot --markers: auto hides the marks of a dense curve and says so, none hides any, all draws them",
+TEST_CASE("cli: plot --markers and --style: auto hides the marks of a dense curve and says so, density draws its dwell",
           "[cli][plot][svg]") {
   TempDir dir;
   // n = 17/6 at a2 = 0.7, a3 = 2.5 has 272 nodes (sphtroch classify), above the automatic limit 200.
@@ -669,6 +669,13 @@ TEST_CASE("cli: plot --markers: auto hides the marks of a dense curve and says s
   const std::string none = slurp(dir.path / "none.svg");
   CHECK_FALSE(contains(none, "id=\"nodes\""));
   CHECK(contains(none, ">4 node and cusp markers hidden (--markers all draws them)</text>"));
+  REQUIRE(run("plot --a2 0.7 --a3 2.5 --n 17/6 --style density -o density.svg", dir, true).status == 0);
+  const std::string density = slurp(dir.path / "density.svg");
+  CHECK(contains(density, "id=\"dwell\""));
+  CHECK(contains(density, "the back half not shown"));
+  const Result bad_style = run("plot --a2 1 --a3 2 --n 2 --style heat -o bad.svg", dir, true);
+  CHECK(bad_style.status == 2);
+  CHECK(contains(bad_style.err, "--style"));
   const Result bad = run("plot --a2 1 --a3 2 --n 2 --markers some -o bad.svg", dir, true);
   CHECK(bad.status == 2);
   CHECK(contains(bad.err, "--markers"));

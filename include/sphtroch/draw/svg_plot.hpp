@@ -47,6 +47,13 @@
 //  6. Markers (PlotOptions::markers, mark_density.hpp): automatic draws the node and cusp markers
 //     of a curve with at most kAutoMarkLimit of them and none above, all and none as named; a
 //     note above the caption says how many were hidden. Hidden markers leave the legend too.
+//  7. PlotStyle::density draws, instead of the curve's lines, the front half's dwell raster
+//     (dwell_raster.hpp, kDwellCells per side; the trajectory must be a period uniform in the
+//     carrier angle, as sample_period gives): each cell the tracer visits is filled by its share
+//     of the period per steradian on a viridis ramp (low light yellow, high dark violet) from 0 to
+//     the 98th percentile of the visited cells' densities (denser cells darkest), clipped to the
+//     disc; the legend shows the ramp and its top ("0.0912+"), a note says the back half is not
+//     shown.
 //  REQUIRES: trajectory points, node and cusp positions finite (assertion); options valid
 //  (InvalidInput naming the field otherwise).
 #pragma once
@@ -57,6 +64,7 @@
 #include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/draw/curve_view.hpp"
+#include "sphtroch/draw/dwell_raster.hpp"
 #include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/io/parse.hpp"
@@ -66,6 +74,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -94,6 +103,12 @@ inline std::size_t plot_sample_count(const GearTrain& train) {
 /// Which marks get their N<i>/C<j> label (contract 4).
 enum class PlotLabels { automatic, numbers, none };
 
+/// The curve as lines (front solid, back dashed), or its dwell on the front half (contract 7).
+enum class PlotStyle { curve, density };
+
+/// Cells per side of the density view's raster (dwell_raster.hpp): ~8 px at the default size.
+constexpr std::size_t kDwellCells = 64;
+
 struct PlotOptions {
   /// Direction of the viewer, radians: azimuth about +Z from +X towards +Y, elevation above
   /// the XY plane; used when view_from_curve is false. Must be finite; elevation in [-pi/2, pi/2].
@@ -104,6 +119,8 @@ struct PlotOptions {
   bool view_from_curve = true;
   /// Which node and cusp markers are drawn (contract 6).
   MarkMode markers = MarkMode::automatic;
+  /// Lines, or the density view (contract 7).
+  PlotStyle style = PlotStyle::curve;
   /// Width and height of the picture in px, caption included. Valid: [64, 8192].
   double size_px = 520;
   /// One line under the picture (empty: none). Any text; it is XML-escaped.
@@ -130,6 +147,14 @@ inline void set_plot_view(PlotOptions& options, std::string_view text, const std
 
 /// "auto" (automatic), "numbers" or "none". Throws InvalidInput(field).
 inline PlotLabels parse_plot_labels(std::string_view text, const std::string& field = "labels");
+
+/// "curve" or "density". Throws InvalidInput(field).
+inline PlotStyle parse_plot_style(std::string_view text, const std::string& field = "style") {
+  if (text == "curve") return PlotStyle::curve;
+  if (text == "density") return PlotStyle::density;
+  throw InvalidInput(field, std::string(text), "not a plot style",
+                     "curve (lines, back half dashed), density (time spent per steradian, front half)");
+}
 
 /// A projected point: picture coordinates in px and the depth P.view (>= 0: front half).
 struct ScreenPoint {
@@ -487,6 +512,23 @@ inline std::string triangle_path(double x, double y, double r, int decimals) {
   return d.str();
 }
 
+/// The colour at f in [0, 1] of viridis reversed (0 light yellow, 1 dark violet): linear in sRGB
+/// between five of viridis's published stops (f clamped).
+inline std::string viridis_colour(double f) {
+  static const int stops[5][3] = {{253, 231, 37}, {94, 201, 98}, {33, 145, 140}, {59, 82, 139}, {68, 1, 84}};
+  const double x = std::clamp(f, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(x));
+  const double w = x - i;
+  static const char* const hex = "0123456789abcdef";
+  std::string out = "#";
+  for (int c = 0; c < 3; ++c) {
+    const int v = static_cast<int>(std::lround((1 - w) * stops[i][c] + w * stops[i + 1][c]));
+    out += hex[v / 16];
+    out += hex[v % 16];
+  }
+  return out;
+}
+
 constexpr const char* kCurveColour = "#1f5fa8";
 constexpr const char* kCrossingColour = "#d62728";
 constexpr const char* kTangencyColour = "#8e44ad";
@@ -542,6 +584,25 @@ class SphereCanvas {
     svg_.path(heads, std::string("fill:") + kAxisColour + ";stroke:none");
   }
 
+  /// The density view (contract 7): a rect per visited cell, coloured by its density, clipped to
+  /// the disc.
+  void dwell(const DwellRaster& raster) {
+    peak_density_ = ramp_top(raster);
+    if (!(peak_density_ > 0)) return;
+    const double side = 2.0 * cam_.radius / static_cast<double>(raster.cells);
+    svg_.raw("<defs><clipPath id=\"disc\"><circle cx=\"" + num(cam_.cx) + "\" cy=\"" + num(cam_.cy) + "\" r=\"" +
+             num(cam_.radius) + "\"/></clipPath></defs>\n");
+    svg_.begin_group("shape-rendering:crispEdges", "id=\"dwell\" clip-path=\"url(#disc)\"");
+    for (std::size_t row = 0; row < raster.cells; ++row)
+      for (std::size_t col = 0; col < raster.cells; ++col) {
+        if (raster.time[raster.index(col, row)] == 0.0) continue;
+        svg_.rect(cam_.cx + cam_.radius * raster.centre_x(col) - 0.5 * side,
+                  cam_.cy - cam_.radius * raster.centre_y(row) - 0.5 * side, side, side,
+                  std::string("stroke:none;fill:") + viridis_colour(raster.density(col, row) / peak_density_));
+      }
+    svg_.end_group();
+  }
+
   /// The curve's front half.
   void curve_front(const HemisphereSplit& curve) {
     svg_.path(runs_path(curve.front, {}), stroke(kCurveColour, 1.7) + ";stroke-linejoin:round;stroke-linecap:round");
@@ -594,6 +655,9 @@ class SphereCanvas {
       lines.push_back(std::to_string(label_boxes_.size()) + " of " + std::to_string(labels_wanted_) +
                       " labels (no overlaps; all: --labels numbers, the list: sphtroch nodes)");
     if (!marks.note.empty()) lines.push_back(marks.note + " (--markers all draws them)");
+    if (opt_.style == PlotStyle::density)
+      lines.push_back("density view: the front half's dwell in " + std::to_string(kDwellCells) + " x " +
+                      std::to_string(kDwellCells) + " cells, the back half not shown");
     for (std::size_t i = 0; i < lines.size(); ++i)
       label(L_.width - 0.4 * L_.font_px, L_.caption_y - (1.3 + 1.05 * static_cast<double>(i)) * L_.font_px, lines[i],
             "font-family:sans-serif;font-size:" + num(0.8 * L_.font_px) + "px;fill:#555555", "end");
@@ -604,8 +668,12 @@ class SphereCanvas {
     if (!opt_.draw_legend) return;
     LegendPen pen{0.6 * L_.font_px, 1.1 * L_.font_px};
     const double r = 0.8 * L_.marker_radius;
-    legend_line(pen, std::string("stroke:") + kCurveColour + ";stroke-width:" + num(1.7 * lw_), "front");
-    legend_line(pen, "stroke:" + curve_back_style().substr(std::string("fill:none;stroke:").size()), "back");
+    if (opt_.style == PlotStyle::density) {
+      legend_ramp(pen);
+    } else {
+      legend_line(pen, std::string("stroke:") + kCurveColour + ";stroke-width:" + num(1.7 * lw_), "front");
+      legend_line(pen, "stroke:" + curve_back_style().substr(std::string("fill:none;stroke:").size()), "back");
+    }
     if (have_crossing_) {
       svg_.circle(pen.x + r, pen.mid(L_), r, stroke(kCrossingColour, 1.4));
       legend_mark(pen, r, "node (crossing)");
@@ -632,6 +700,7 @@ class SphereCanvas {
     return split_by_silhouette(points, closed, cam_.view, opt_.max_arc_step);
   }
   std::string finish() { return svg_.finish(); }
+  const SphereView& camera() const { return cam_; }
 
  private:
   /// A label's box in picture px (x, y: top left).
@@ -715,6 +784,35 @@ class SphereCanvas {
           "middle");
   }
 
+  /// The density the ramp's darkest colour stands for: the 98th percentile of the visited cells'
+  /// densities, so that a few cells at a pole, where a dense curve passes most often, do not
+  /// wash the rest out (denser cells take the darkest colour).
+  static double ramp_top(const DwellRaster& raster) {
+    std::vector<double> visited;
+    for (std::size_t row = 0; row < raster.cells; ++row)
+      for (std::size_t col = 0; col < raster.cells; ++col)
+        if (raster.time[raster.index(col, row)] > 0) visited.push_back(raster.density(col, row));
+    if (visited.empty()) return 0.0;
+    const std::size_t at = static_cast<std::size_t>(0.98 * static_cast<double>(visited.size() - 1));
+    std::nth_element(visited.begin(), visited.begin() + static_cast<std::ptrdiff_t>(at), visited.end());
+    return visited[at];
+  }
+
+  /// The density view's ramp: "0", ten steps of the colours, the largest density, the unit.
+  void legend_ramp(LegendPen& pen) {
+    legend_text(pen, "time per sr: 0");
+    pen.x -= 0.8 * L_.font_px;
+    const double step = 0.5 * L_.font_px, h = 0.8 * L_.font_px;
+    for (int k = 0; k < 10; ++k) {
+      svg_.rect(pen.x, pen.mid(L_) - 0.5 * h, step, h, std::string("stroke:none;fill:") + viridis_colour((k + 0.5) / 10.0));
+      pen.x += step;
+    }
+    pen.x += 0.4 * L_.font_px;
+    char peak[32];
+    std::snprintf(peak, sizeof peak, "%.3g", peak_density_);
+    legend_text(pen, std::string(peak) + "+ of the period");
+  }
+
   void legend_text(LegendPen& pen, const std::string& t) {
     svg_.text(pen.x, pen.y, t, "font-family:sans-serif;font-size:" + num(0.9 * L_.font_px) + "px;fill:#333333");
     pen.x += 0.5 * L_.font_px * static_cast<double>(t.size()) + 1.2 * L_.font_px;  // rough text width
@@ -737,6 +835,7 @@ class SphereCanvas {
   const double lw_;  // base line width
   HemisphereSplit grid_eq_, grid_mer_;
   bool have_crossing_ = false, have_tangency_ = false;
+  double peak_density_ = 0.0;  // the density view's largest cell density
 };
 
 }  // namespace detail
@@ -771,8 +870,11 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   const MarkChoice marks = choose_marks(o.markers, nodes.size(), cusps.size());
   detail::SphereCanvas canvas(o);
   canvas.disc();
+  const bool density = o.style == PlotStyle::density;
+  const SphereView& cam = canvas.camera();
+  if (density) canvas.dwell(dwell_raster(points, cam.view, cam.right, cam.up, kDwellCells));
   canvas.grid_back();
-  const HemisphereSplit curve = canvas.split(points, trajectory.closed);
+  const HemisphereSplit curve = density ? HemisphereSplit{} : canvas.split(points, trajectory.closed);
   canvas.curve_back(curve);
   canvas.outline_and_grid_front();
   canvas.axes();
