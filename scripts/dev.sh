@@ -32,6 +32,7 @@ jobs=${JOBS:-$(nproc)}
 # python3-mypy (mypy --strict on a typed example against the stub; ctest python:typing), and
 # python3-venv, python3-pip, python3-setuptools (pip install of the package into a venv; python:pip_install),
 # python3-nbclient, python3-nbformat, python3-ipykernel (the example notebook runs headless; python:notebook),
+# python3-tqdm (python:progress drives a tqdm bar),
 # help2man (the man page, written at build time) and man-db (`man sphtroch` after an install; cli:man_page).
 # OpenCASCADE (trace -o FILE.step; optional for the library, asked for by `test`): Debian's CMake
 # config of its DataExchange part needs the ocaf and visualization packages and libtbb-dev too.
@@ -44,7 +45,7 @@ png_packages=(librsvg2-dev pkg-config)
 if [[ $mode == test ]]; then
   packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
              emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools
-             python3-nbclient python3-nbformat python3-ipykernel help2man man-db "${step_packages[@]}" "${png_packages[@]}")
+             python3-nbclient python3-nbformat python3-ipykernel python3-tqdm help2man man-db "${step_packages[@]}" "${png_packages[@]}")
 fi
 
 install_missing_packages() {

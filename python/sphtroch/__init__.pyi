@@ -8,7 +8,8 @@ velocity) accept only True or False (also numpy.bool_). Every computation runs w
 GIL released; GearTrain objects are immutable and may be shared between threads.
 """
 from fractions import Fraction
-from typing import Any, Callable, Dict, Iterator, List, Literal, Optional, Tuple, Union, overload
+from typing import (Any, Callable, Dict, Iterator, List, Literal, NotRequired, Optional, Protocol, Tuple, TypedDict, Union,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -22,6 +23,174 @@ Flag = Union[bool, np.bool_]
 Angle = Union[Real, str]
 RatioLike = Union[int, str, float, Fraction, np.integer[Any], np.floating[Any]]
 AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" text ("0:pi/2")
+
+class ProgressBar(Protocol):
+    """What progress= takes besides a function: a bar such as tqdm.tqdm(), told the work units as
+    .total and the units done by .update(n) (typing only: not defined at runtime)."""
+
+    total: Any
+    def update(self, n: int) -> Any: ...
+
+# progress=: a function progress(done, total) or a bar; called on the calling thread at most ten
+# times a second and at the end (done == total); an exception it raises stops the call.
+Progress = Union[Callable[[int, int], object], ProgressBar]
+
+# The dicts the module returns, as the JSON the CLI writes (docs/cli.md): typing only (they are
+# plain dicts at runtime; import them under `if typing.TYPE_CHECKING:` or in string annotations).
+class Counts(TypedDict):
+    nodes: int
+    crossings: int
+    tangencies: int
+    cusps: int
+
+class Inputs(TypedDict):
+    a2: float
+    a2_text: str
+    a3: float
+    a3_text: str
+    literal: bool
+    n: str
+    n_value: float
+    phase: float
+    phase_reduced: float
+    teeth: NotRequired[str]
+
+class ConeAngles(TypedDict):
+    a_p: float
+    a_s: float
+
+class Node(TypedDict):
+    id: str
+    position: List[float]
+    longitude: float
+    latitude: float
+    params: List[float]
+    branches: int
+    kind: str
+    angle: float
+    crossing_pairs: int
+    tangency_pairs: int
+
+class Cusp(TypedDict):
+    id: str
+    position: List[float]
+    param: float
+    speed: float
+
+class Nearest(TypedDict):
+    kind: str
+    name: str
+    a2: float
+    a3: float
+
+class Margin(TypedDict):
+    lower: float
+    upper: float
+    converged: bool
+    nearest: Optional[Nearest]
+
+# classify(): `sphtroch classify --json` (the functional form: one key, "class", is a Python keyword).
+Classification = TypedDict("Classification", {
+    "inputs": Inputs, "cone_angles": ConeAngles, "period": float, "class": str, "counts": Counts,
+    "nodes": List[Node], "cusps": List[Cusp], "cusp_within_resolution": bool, "boundaries": Dict[str, Any],
+    "analytic": Dict[str, Any], "censuses": Dict[str, Any], "certificate": Dict[str, Any],
+    "agreement": Dict[str, Any], "certified": bool, "z_extremes": Dict[str, Any],
+    "nearest_event": Optional[Dict[str, Any]], "margin": Margin, "dwell_points": List[Dict[str, Any]],
+    "symmetry": Dict[str, Any], "tolerances": Dict[str, float], "work": Dict[str, Any]})
+
+class ToleranceCensus(TypedDict):
+    certified: bool
+    nodes: int
+    cusps: int
+
+class ToleranceBoxWidths(TypedDict):
+    a2: float
+    a3: float
+    phase: float
+
+class PointTolerance(TypedDict):
+    id: int
+    position: List[float]
+    max_displacement: Optional[float]
+    d_da2: Optional[List[float]]
+    d_da3: Optional[List[float]]
+    d_dphase: List[float]
+
+class MonteCarlo(TypedDict):
+    samples: int
+    seed: int
+    same_census: int
+    max_node_shift: float
+
+class Tolerance(TypedDict):
+    """tolerance(): `sphtroch tolerance --json`."""
+    inputs: Dict[str, str]
+    topology: Literal["holds", "changes", "undecided"]
+    why: Optional[str]
+    event: Optional[Dict[str, Any]]
+    margin: Margin
+    census: ToleranceCensus
+    box: ToleranceBoxWidths
+    nodes: List[PointTolerance]
+    cusps: List[PointTolerance]
+    monte_carlo: Optional[MonteCarlo]
+
+class CertifiedMargin(TypedDict):
+    lower: float
+    upper: float
+
+class PointsSolution(TypedDict):
+    n: str
+    teeth: NotRequired[str]
+    a2: float
+    a3: float
+    phase: float
+    axis: NotRequired[List[float]]
+    frame: NotRequired[List[List[float]]]
+    params: List[float]
+    residual: float
+    certified_margin: CertifiedMargin
+    counts: Counts
+    census_certified: bool
+    isolated: bool
+
+class PointsResult(TypedDict):
+    """synth_points(): `sphtroch synth points --json`."""
+    solutions: List[PointsSolution]
+    teeth: NotRequired[str]  # with teeth=
+    complete: bool
+    undecided_boxes: int
+
+class FitCandidate(TypedDict):
+    n: str
+    teeth: NotRequired[str]
+    a2: float
+    a3: float
+    phase: float
+    rms: float
+    max_deviation: float
+    margin: float
+    certified_margin: CertifiedMargin
+    counts: Counts
+    census_certified: bool
+    node_distance: NotRequired[float]
+
+class FitResult(TypedDict):
+    """fit(): `sphtroch synth fit --json`."""
+    candidates: List[FitCandidate]
+    teeth: NotRequired[str]  # with teeth=
+    reason: str
+    dropped: int
+
+class Identified(TypedDict):
+    """identify(): `sphtroch synth identify`."""
+    n: str
+    a2: float
+    a3: float
+    phase: float
+    residual: float
+    rms: float
+    noise: float
 
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
@@ -102,8 +271,8 @@ class GearTrain:
     def texts(self) -> Tuple[str, str, str, str]:
         """(a2, a3, n, phase) as text: as given, or the shortest round-trip form of a float."""
     @overload
-    def trace(self, *, samples: Optional[Count] = ..., turns: Optional[Real] = ...,
-              velocity: Literal[False] = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    def trace(self, *, samples: Optional[Count] = None, turns: Optional[Real] = None,
+              velocity: Literal[False] = False) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """The trajectory P(theta2) (Eq. 4): t (N,), P (N, 3) unit vectors, and with
         velocity=True V = dP/dtheta2 (N, 3) (Eq. 47a); float64, owned by the arrays (no copy).
 
@@ -113,10 +282,10 @@ class GearTrain:
         `sphtroch trace`). The same numbers as `sphtroch trace` prints.
         """
     @overload
-    def trace(self, *, samples: Optional[Count] = ..., turns: Optional[Real] = ...,
+    def trace(self, *, samples: Optional[Count] = None, turns: Optional[Real] = None,
               velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
                                                 npt.NDArray[np.float64]]: ...
-    def classify(self, *, literal: Flag = False, samples: Optional[Count] = None) -> Dict[str, Any]:
+    def classify(self, *, literal: Flag = False, samples: Optional[Count] = None) -> Classification:
         """Nodes, cusps and the report's criteria: a dict with the keys and values of
         `sphtroch classify --json` (inputs, cone_angles, period, class, counts, nodes, cusps,
         boundaries, z_extremes, nearest_event, dwell_points, symmetry, criteria, censuses, agreement,
@@ -124,14 +293,14 @@ class GearTrain:
         literal: analyse the doubles as given (no snapping onto boundaries within 1e-10 rad).
         samples: polyline census samples, 1024 .. 10**7 (default 256 (q + |p|)).
         """
-    def nodes(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
+    def nodes(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Node]:
         """The "nodes" list of classify() (id "N1", "N2", ... as the plot labels them, position,
         longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs), from the certified node census (without the
         criteria). Raises UncertifiedResult when the two censuses disagree after escalation."""
-    def cusps(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Dict[str, Any]]:
+    def cusps(self, *, literal: Flag = False, samples: Optional[Count] = None) -> List[Cusp]:
         """The "cusps" list of classify() (id "C1", ..., position, param, speed)."""
     def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[Count] = None,
-            labels: str = "auto", markers: str = "auto", literal: Flag = False,
+            labels: str = "auto", markers: str = "auto", style: str = "curve", literal: Flag = False,
             samples: Optional[Count] = None) -> str:
         """The curve on the sphere as SVG text, as `sphtroch plot` draws it (the certified census;
         an uncertified count says so in the caption). view: "auto" (the default: from the curve's
@@ -140,10 +309,17 @@ class GearTrain:
         angles; size: 64 .. 8192 px (default 520); labels: "auto" (no two labels overlap; the
         picture says how many it shows), "numbers" (every N<i>, C<j>: the rows of nodes() then
         cusps()) or "none"; markers: "auto" (every node and cusp marker up to 200 of them, none
-        above; the picture says how many it hides), "all" or "none"."""
+        above; the picture says how many it hides), "all" or "none"; style: "curve" (lines, back
+        half dashed) or "density" (the time spent per steradian on the front half, for dense
+        curves, as `sphtroch plot --style density`)."""
     def _repr_svg_(self) -> str:
-        """Jupyter's picture of the train: svg() with its defaults (labels "auto", so a dense curve
-        stays readable)."""
+        """Jupyter's picture of the train, bounded in time and never raising: svg() with its
+        defaults (labels "auto", so a dense curve stays readable) when the census is cheap by the
+        library's cost estimates: at most 2000 node points |p| (|p| + q) and (|p| + q)^3 <= 1.5e5
+        (13/5, 40/9; well under 0.1 s). Otherwise the curve alone (no markers, at most 8000
+        samples), its caption saying the census was not run and that .svg() runs it (or that it
+        is beyond the census bound, as for n = 1333/2000). An error is drawn as a small SVG with
+        its one-line message."""
     def kinematics(self, t: npt.ArrayLike) -> Dict[str, npt.NDArray[np.float64]]:
         """How the tracer moves at the carrier angles t (N,), per unit carrier rate, as `sphtroch
         trace --kinematics`: {"speed": |dP/dtheta2| (= |omega x P|, Eq. 47a), "geodesic_curvature":
@@ -174,14 +350,14 @@ class GearTrain:
         analytic_nodes (the report's count for n = 1, 2, else None), analytic_cusps,
         agrees_with_report, node_points (the same node dicts as classify()["nodes"]: position,
         longitude, latitude, params, branches, kind, angle, crossing_pairs, tangency_pairs)."""
-    def margin(self) -> Dict[str, Any]:
+    def margin(self) -> Margin:
         """The certified distance to a change of the node or cusp census (`sphtroch tolerance`'s
         "margin"): {"lower", "upper", "converged", "nearest": {"kind", "name", "a2", "a3"} or None}.
         The largest d such that no boundary of the design map (pitch cones, pole lines,
         self-tangency loci) meets the square [a2 - d, a2 + d] x [a3 - d, a3 + d] lies in
         [lower, upper], radians; upper - lower <= max(1e-9, 1e-6 upper) when converged."""
     def tolerance(self, *, da2: Angle, da3: Angle, dphase: Angle = 0.0, samples: Optional[Count] = None,
-                  seed: Count = 1) -> Dict[str, Any]:
+                  seed: Count = 1) -> Tolerance:
         """`sphtroch tolerance --json` as a dict: will every train with a2, a3, phase within the
         half-widths (radians, or angle texts such as "0.1deg") draw this census? Keys topology
         ("holds", "changes", "undecided"), why, event, margin, census, box, nodes and cusps (each
@@ -250,7 +426,7 @@ def crossings(points: npt.ArrayLike, closed: Flag = True, *, pairs: Flag = False
 
 def atlas(n: RatioLike, grid: Count = 128, a2: AngleRange = (0.0, 3.141592653589793),
           a3: AngleRange = (0.0, 3.141592653589793), threads: Optional[Count] = None,
-          literal: Flag = False, *, progress: Optional[Callable[[int, int], object]] = None,
+          literal: Flag = False, *, progress: Optional[Progress] = None,
           svg: Flag = False) -> Dict[str, Any]:
     """The classification map over (a2, a3) for one gear ratio, as `sphtroch atlas`: G x G cells
     sampled at their centres (row i: a2, column j: a3). Arrays of shape (G, G): a2, a3 (float64,
@@ -262,8 +438,8 @@ def atlas(n: RatioLike, grid: Count = 128, a2: AngleRange = (0.0, 3.141592653589
     tool would exit with status 3) and, with svg=True, svg (str: the map `sphtroch atlas --svg`
     writes, the same bytes).
     grid: 1 .. 4096; ranges (lo, hi) or the CLI's "LO:HI" text, 0 <= lo < hi <= pi; threads: 1 .. 1024
-    (default: all cores). progress(done, total) is called about every 100 ms (and at the end) with the
-    cells done; Ctrl-C raises KeyboardInterrupt within ~0.1 s, and an exception progress raises stops
+    (default: all cores). progress(done, total) (or a tqdm bar: Progress) is called about every 100 ms
+    (and at the end) with the cells done; Ctrl-C raises KeyboardInterrupt within ~0.1 s, and an exception progress raises stops
     the call (the cells being computed finish first: at most threads x 64 cells).
     """
 
@@ -286,7 +462,7 @@ def boundaries(n: RatioLike, a2: Angle) -> Dict[str, Any]:
 
 def boundary_loci(n: RatioLike, a2: AngleRange = (0.0, 3.141592653589793), steps: Count = 720,
                   threads: Optional[Count] = None, *,
-                  progress: Optional[Callable[[int, int], object]] = None) -> List[Dict[str, Any]]:
+                  progress: Optional[Progress] = None) -> List[Dict[str, Any]]:
     """The boundary curves of the (a2, a3) map over an a2 range (`sphtroch boundaries --a2 LO:HI`):
     a list of {"kind", "name", "m", "label", "a2", "a3", "b"} with a2, a3, b float64 arrays (radians)
     sampled at the cell centres lo + (hi - lo)(k + 1/2)/steps. steps: 1 .. 10000; threads: 1 .. 1024
@@ -300,7 +476,7 @@ def scene(scene: Union[str, Dict[str, Any]]) -> Dict[str, Any]:
     with status 3; "explanation" is `--explain --json`'s object (stages run, their work).
     Raises InvalidInput naming "scene: <path in the scene>" as the tool does."""
 
-def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
+def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Identified:
     """The gear train of a timed trace (as `sphtroch synth identify`): t (N,) carrier angles,
     points (N, 3) unit vectors over one period, dense enough that the planet turns by less than
     3pi/4 between two samples. Returns {"n": "p/q" (the simplest fraction that fits, |p|, q <=
@@ -310,7 +486,8 @@ def identify(t: npt.ArrayLike, points: npt.ArrayLike) -> Dict[str, Any]:
 
 def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
                  ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None,
-                 free_axis: Flag = False, threads: Optional[Count] = None) -> Dict[str, Any]:
+                 free_axis: Flag = False, threads: Optional[Count] = None,
+                 progress: Optional[Progress] = None) -> PointsResult:
     """Every gear train of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`;
     or teeth="ZS:ZP" (n = ZS/ZP) or "MIN..MAX" (every n = +-ZS/ZP with both counts in the range),
     as `--teeth`, each solution then echoing its "teeth")
@@ -324,12 +501,16 @@ def synth_points(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     points (a (5, 3) array), the sun axis anywhere; each solution also has "axis" (the sun axis) and
     "frame" (the train's x, y, z axes in the points' coordinates), and the work bound is that of
     the CLI (sum of (|p| + q)^2 <= 500); threads (None: all cores) searches run at once.
-    Raises InvalidInput naming "points", "n", "ratios", "teeth", "free_axis" or "threads"."""
+    progress (a function progress(done, total) or a tqdm bar; Progress): told the ratios done,
+    at most ten times a second and at the end; an exception it raises stops the call (after the
+    ratio being searched).
+    Raises InvalidInput naming "points", "n", "ratios", "teeth", "free_axis", "threads" or "progress"."""
 
 
 def synth_points_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
                       ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None,
-                      free_axis: Flag = False, threads: Optional[Count] = None) -> str:
+                      free_axis: Flag = False, threads: Optional[Count] = None,
+                      progress: Optional[Progress] = None) -> str:
     """What synth_points computes, as the text `sphtroch synth points` prints (the same arguments,
     the same refusals): per ratio its train count and whether the list is certified complete, then
     each train with its angles, theta2 at the points, residual, census, certified margin and the
@@ -340,7 +521,7 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
         ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
         cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
         node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None,
-        min_margin: Real = 0.0) -> Dict[str, Any]:
+        min_margin: Real = 0.0, progress: Optional[Progress] = None) -> FitResult:
     """Ranked gear trains of ratio n (or of every ratio of ratios=(P, Q), as `--ratios P,Q`; or teeth="ZS:ZP"
     or "MIN..MAX" as `--teeth`, each candidate then echoing its "teeth") whose curve
     passes nearest the path's points (an (N, 3) array of unit vectors, N >= 4, untimed; sun axis Z),
@@ -350,15 +531,16 @@ def fit(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
     and/or cusps, every candidate has exactly those counts (confirmed by classify). With
     node_at=(x, y, z), every candidate's certified census has a node within node_tolerance
     (radians, default 1e-6; only with node_at) of that point ("node_distance": to its nearest
-    node). Raises InvalidInput naming "points", "n", "ratios", "teeth", "nodes", "cusps", "candidates",
-    "max-deviation", "node-at" or "node-tolerance"."""
+    node). progress: as for synth_points (the ratios done).
+    Raises InvalidInput naming "points", "n", "ratios", "teeth", "nodes", "cusps", "candidates",
+    "max-deviation", "node-at", "node-tolerance" or "progress"."""
 
 
 def fit_text(points: npt.ArrayLike, *, n: Optional[RatioLike] = None,
              ratios: Optional[Tuple[Count, Count]] = None, teeth: Optional[str] = None, nodes: Optional[Count] = None,
              cusps: Optional[Count] = None, candidates: Count = 5, max_deviation: Real = float("inf"),
              node_at: Optional[npt.ArrayLike] = None, node_tolerance: Optional[Real] = None,
-             min_margin: Real = 0.0) -> str:
+             min_margin: Real = 0.0, progress: Optional[Progress] = None) -> str:
     """What fit computes, as the text `sphtroch synth fit` prints (the same arguments, the same
     refusals): the wanted counts, the reason when there is no candidate, then each candidate best
     first with its distances, margin, census and the command that plots it."""

@@ -7,6 +7,8 @@
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/parse.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -262,26 +264,60 @@ Train make_train(py::handle a2, py::handle a3, py::handle n, py::handle phase, p
 /// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
 py::object from_json(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-const char* doc(const char* name) {
+namespace {
+
+const stub_docs::Entry& stub_entry(const char* name) {
   for (const stub_docs::Entry& e : stub_docs::kEntries)
-    if (std::string_view(e.name) == name) return e.text;
+    if (std::string_view(e.name) == name) return e;
   throw std::logic_error(std::string("sphtroch: no docstring for ") + name + " in python/sphtroch/__init__.pyi");
 }
 
+}  // namespace
+
+const char* doc(const char* name) { return stub_entry(name).builtin; }
+
+const char* python_doc(const char* name) { return stub_entry(name).python; }
+
+namespace {
+
+/// What interruptible() calls: a function f(done, total), a bar (tqdm: .total set, .update(delta)),
+/// or nothing (None: only the signal check). Held by a shared holder released with the GIL.
+struct ProgressTarget {
+  py::object target;
+  bool bar = false;
+  std::size_t shown = 0;  // the bar's count so far
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
 ParallelProgress interruptible(py::handle callback) {
-  if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
-    throw InvalidInput("progress", repr_of(callback), "not callable", "None or a function progress(done, total)");
-  py::object f = py::reinterpret_borrow<py::object>(callback);
+  const bool bar = !callback.is_none() && py::hasattr(callback, "update");
+  if (!callback.is_none() && !bar && !PyCallable_Check(callback.ptr()))
+    throw InvalidInput("progress", repr_of(callback), "neither callable nor a progress bar",
+                       "None, a function progress(done, total) or a bar with .update(n) and .total (tqdm)");
   // The std::function is copied around without the GIL: the object is kept in a shared holder
   // whose last copy is released with the GIL held.
-  auto holder = std::shared_ptr<py::object>(new py::object(std::move(f)), [](py::object* o) {
-    py::gil_scoped_acquire acquire;
-    delete o;
-  });
+  auto holder = std::shared_ptr<ProgressTarget>(new ProgressTarget{py::reinterpret_borrow<py::object>(callback), bar},
+                                                [](ProgressTarget* o) {
+                                                  py::gil_scoped_acquire acquire;
+                                                  delete o;
+                                                });
   return [holder](std::size_t done, std::size_t total) {
     py::gil_scoped_acquire acquire;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    if (!holder->is_none()) (*holder)(done, total);
+    ProgressTarget& p = *holder;
+    const auto now = std::chrono::steady_clock::now();
+    if (p.target.is_none() || (done < total && now - p.last < std::chrono::milliseconds(kProgressIntervalMs))) return;
+    p.last = now;
+    if (!p.bar) {
+      p.target(done, total);
+      return;
+    }
+    const py::object shown_total = p.target.attr("total");
+    if (shown_total.is_none() || !shown_total.equal(py::int_(total))) p.target.attr("total") = total;
+    if (done > p.shown) p.target.attr("update")(done - p.shown);
+    p.shown = std::max(p.shown, done);
   };
 }
 

@@ -8,11 +8,14 @@
 #include "sphtroch/core/kinematics.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/mark_density.hpp"
+#include "sphtroch/draw/svg.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -98,7 +101,7 @@ py::object margin(const Train& self) {
 
 /// svg(): `sphtroch plot` as SVG text. view: "auto", "top", "front", "side", "AZ,EL" or (az, el) angles.
 std::string svg(const Train& self, py::handle view, py::handle size, py::handle labels, py::handle markers,
-                py::handle literal_flag, py::handle samples) {
+                py::handle style, py::handle literal_flag, py::handle samples) {
   PlotOptions options;
   const char* const views = "auto, top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
   if (py::isinstance<py::tuple>(view) || py::isinstance<py::list>(view)) {
@@ -113,10 +116,72 @@ std::string svg(const Train& self, py::handle view, py::handle size, py::handle 
   if (!size.is_none()) options.size_px = static_cast<double>(count_arg(size, "size", 64, 8192));
   options.labels = parse_plot_labels(text_arg(labels, "labels", "auto, numbers, none"));
   options.markers = parse_mark_mode(text_arg(markers, "markers", "auto, all, none"));
+  options.style = parse_plot_style(text_arg(style, "style", "curve, density"));
   const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
   py::gil_scoped_release release;
   return plot_svg_text(self.text, self.train, literal, s, options);
+}
+
+/// _repr_svg_'s bounds on the census it runs, from the library's cost estimates
+/// (core/cost_bounds.hpp): estimated_nodes, |p| (|p| + q) node points (the node lists and their
+/// drawing grow with it), and (|p| + q)^3, the classify cost of kMaxToleranceSampleWork (about
+/// 0.007 ms a unit, an upper estimate: 1.5e5 is about 1 s there, measured <= 0.05 s for svg()).
+/// Within both the picture is svg()'s (13/5, 7/3, 19/7, 40/9); beyond either the census is not run
+/// (101/40: 14241 points; 1/1000: (|p| + q)^3 = 1e9, its census ~1.5 s). Measured times:
+/// docs/python.md (Jupyter's picture).
+constexpr double kReprCensusNodes = 2000;
+constexpr double kReprCensusCube = 1.5e5;
+
+bool repr_census_is_cheap(const GearTrain& g) {
+  const double size = static_cast<double>(g.ratio().abs_p() + g.ratio().q());
+  return estimated_nodes(g.ratio()) <= kReprCensusNodes && size * size * size <= kReprCensusCube;
+}
+
+/// The samples of the curve-only picture (beyond the bounds): plot_sample_count capped, drawn
+/// with arcs of up to 0.5 rad as single segments, so that sampling and drawing stay within ~0.1 s
+/// and the SVG within ~0.6 MB (a curve of thousands of lobes is a band at any sample count that
+/// fits a page).
+constexpr std::size_t kReprCurveSamples = 8000;
+
+/// A small valid SVG document showing one line of text (the picture of a failure).
+std::string message_svg(const std::string& message) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"520\" "
+         "height=\"40\" viewBox=\"0 0 520 40\"><text x=\"8\" y=\"24\" font-family=\"sans-serif\" font-size=\"13\">" +
+         xml_escape(one_line_text(message)) + "</text></svg>\n";
+}
+
+/// The curve alone (no census: no markers, kReprCurveSamples samples at most), its caption saying
+/// that the census was not run and what svg() does.
+std::string curve_only_svg(const Train& self) {
+  const GearTrain& g = self.train;
+  const double nodes = estimated_nodes(g.ratio());
+  PlotOptions options;
+  options.markers = MarkMode::none;
+  options.max_arc_step = 0.5;
+  options.caption = "a2 = " + self.text.a2 + ", a3 = " + self.text.a3 + ", n = " + g.ratio().str() + self.text.teeth_note() +
+                    (g.phase() != 0.0 ? ", phase = " + self.text.phase : "") + " — census not run (about " +
+                    number_text(nodes) + " node points); " +
+                    (nodes > kMaxCensusNodes ? "beyond the census bound of .svg()" : ".svg() runs it");
+  py::gil_scoped_release release;
+  const TracerCurve<double> curve(g);
+  const std::size_t n = std::min(plot_sample_count(g), kReprCurveSamples);
+  return render_sphere_svg(sample(curve, period_sampling(curve, n), false), {}, {}, options);
+}
+
+/// Jupyter's picture: svg() when the census is cheap (repr_census_is_cheap), else the curve alone;
+/// never raises: a failure (or Ctrl-C) is drawn as its one-line message.
+std::string repr_svg(const Train& self) {
+  try {
+    if (repr_census_is_cheap(self.train))
+      return svg(self, py::none(), py::none(), py::str("auto"), py::str("auto"), py::str("curve"), py::bool_(false),
+                 py::none());
+    return curve_only_svg(self);
+  } catch (const py::error_already_set& e) {  // the Python error is held by e and cleared with it
+    return message_svg(std::string("sphtroch: ") + e.what());
+  } catch (const std::exception& e) {
+    return message_svg(std::string("sphtroch: ") + e.what());
+  }
 }
 
 /// nodes(): the certified node list, or UncertifiedResult carrying the uncertified list and both
@@ -226,7 +291,8 @@ void bind_gear_train(py::module_& m) {
       .def(py::init([](py::handle a2, py::handle a3, py::handle n, py::handle phase, py::handle teeth) {
              return make_train(a2, a3, n, phase, teeth);
            }),
-           py::arg("a2"), py::arg("a3"), py::arg("n") = py::none(), py::arg("phase") = 0.0, py::arg("teeth") = py::none())
+           py::arg("a2"), py::arg("a3"), py::arg("n") = py::none(), py::arg("phase") = 0.0, py::arg("teeth") = py::none(),
+           doc("GearTrain.__init__"))
       .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); }, doc("GearTrain.a2"))
       .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); }, doc("GearTrain.a3"))
       .def_property_readonly("n", [](const Train& t) { return t.train.n(); }, doc("GearTrain.n"))
@@ -251,10 +317,8 @@ void bind_gear_train(py::module_& m) {
       .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.cusps"))
       .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(),
-           py::arg("labels") = "auto", py::arg("markers") = "auto", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
-      .def("_repr_svg_", [](const Train& t) {
-        return svg(t, py::none(), py::none(), py::str("auto"), py::str("auto"), py::bool_(false), py::none());
-      }, doc("GearTrain._repr_svg_"))
+           py::arg("labels") = "auto", py::arg("markers") = "auto", py::arg("style") = "curve", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
+      .def("_repr_svg_", &repr_svg, doc("GearTrain._repr_svg_"))
       .def("kinematics", &kinematics, py::arg("t"), doc("GearTrain.kinematics"))
       .def("report", &report, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))

@@ -114,25 +114,27 @@ PointsCall points_call(py::handle points, py::handle n, py::handle ratios, py::h
   return c;
 }
 
-/// The report of a synth_points call, the GIL released: JSON text, or with `text` the CLI's text.
-std::string points_report(const PointsCall& c, bool text) {
+/// The report of a synth_points call, the GIL released: JSON text, or with `text` the CLI's text;
+/// `progress_callback` (None, a function or a bar) told the ratios done (interruptible).
+std::string points_report(const PointsCall& c, bool text, py::handle progress_callback) {
+  const ParallelProgress progress = interruptible(progress_callback);
   py::gil_scoped_release release;
   return precision_points_report(c.points, c.request.ratios, c.request.json_members(), c.request.teeth, c.free_axis,
-                                 c.workers, text);
+                                 c.workers, text, progress);
 }
 
 /// sphtroch.synth_points(P, n=...): every train of ratio n through the three points (fixed
 /// frame), as `sphtroch synth points --json` prints it (a dict; json.loads of the library's JSON).
 py::object synth_points(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle free_axis_flag,
-                        py::handle threads) {
+                        py::handle threads, py::handle progress) {
   const PointsCall c = points_call(points, n, ratios, teeth_text, free_axis_flag, threads);
-  return py::module_::import("json").attr("loads")(points_report(c, false));
+  return py::module_::import("json").attr("loads")(points_report(c, false, progress));
 }
 
 /// sphtroch.synth_points_text(P, n=...): the same, as the text `sphtroch synth points` prints.
 py::str synth_points_text(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text,
-                          py::handle free_axis_flag, py::handle threads) {
-  return py::str(points_report(points_call(points, n, ratios, teeth_text, free_axis_flag, threads), true));
+                          py::handle free_axis_flag, py::handle threads, py::handle progress) {
+  return py::str(points_report(points_call(points, n, ratios, teeth_text, free_axis_flag, threads), true, progress));
 }
 
 /// What a fit call computes from: the path's points, the ratios and the options.
@@ -169,28 +171,31 @@ FitCall fit_call(py::handle points, py::handle n, py::handle ratios, py::handle 
   return c;
 }
 
-/// The report of a fit call, the GIL released: JSON text, or with `text` the CLI's text.
-std::string fit_call_report(const FitCall& c, bool text) {
+/// The report of a fit call, the GIL released: JSON text, or with `text` the CLI's text;
+/// `progress_callback` told the ratios done (interruptible).
+std::string fit_call_report(const FitCall& c, bool text, py::handle progress_callback) {
+  const ParallelProgress progress = interruptible(progress_callback);
   py::gil_scoped_release release;
-  return fit_report(c.points, c.request.ratios, c.options, c.request.json_members(), c.request.teeth, text);
+  return fit_report(c.points, c.request.ratios, c.options, c.request.json_members(), c.request.teeth, text, progress);
 }
 
 /// sphtroch.fit(P, n=..., nodes=None, cusps=None): ranked trains nearest the path, as `sphtroch
 /// synth fit --json` prints it (a dict).
 py::object fit(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
                py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at, py::handle node_tolerance,
-               py::handle min_margin) {
+               py::handle min_margin, py::handle progress) {
   const FitCall c =
       fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin);
-  return py::module_::import("json").attr("loads")(fit_call_report(c, false));
+  return py::module_::import("json").attr("loads")(fit_call_report(c, false, progress));
 }
 
 /// sphtroch.fit_text(P, n=...): the same, as the text `sphtroch synth fit` prints.
 py::str fit_text_report(py::handle points, py::handle n, py::handle ratios, py::handle teeth_text, py::handle nodes,
                         py::handle cusps, py::handle candidates, py::handle max_deviation, py::handle node_at,
-                        py::handle node_tolerance, py::handle min_margin) {
+                        py::handle node_tolerance, py::handle min_margin, py::handle progress) {
   return py::str(fit_call_report(
-      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin), true));
+      fit_call(points, n, ratios, teeth_text, nodes, cusps, candidates, max_deviation, node_at, node_tolerance, min_margin), true,
+      progress));
 }
 
 }  // namespace
@@ -199,19 +204,20 @@ void bind_synthesis(py::module_& m) {
   m.def("identify", &identify_dict, py::arg("t"), py::arg("points"), doc("identify"));
   m.def("synth_points", &synth_points, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("free_axis") = false,
-        py::arg("threads") = py::none(), doc("synth_points"));
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(), doc("synth_points"));
   m.def("synth_points_text", &synth_points_text, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("free_axis") = false,
-        py::arg("threads") = py::none(), doc("synth_points_text"));
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(), doc("synth_points_text"));
   m.def("fit", &fit, py::arg("points"), py::kw_only(), py::arg("n") = py::none(), py::arg("ratios") = py::none(),
         py::arg("teeth") = py::none(), py::arg("nodes") = py::none(), py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, doc("fit"));
+        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, py::arg("progress") = py::none(), doc("fit"));
   m.def("fit_text", &fit_text_report, py::arg("points"), py::kw_only(), py::arg("n") = py::none(),
         py::arg("ratios") = py::none(), py::arg("teeth") = py::none(), py::arg("nodes") = py::none(),
         py::arg("cusps") = py::none(), py::arg("candidates") = 5,
         py::arg("max_deviation") = std::numeric_limits<double>::infinity(), py::arg("node_at") = py::none(),
-        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, doc("fit_text"));
+        py::arg("node_tolerance") = py::none(), py::arg("min_margin") = 0.0, py::arg("progress") = py::none(),
+        doc("fit_text"));
 }
 
 }  // namespace sphtroch::python

@@ -37,9 +37,14 @@ namespace py = pybind11;
 // --- docstrings (arguments.cpp) -------------------------------------------------------------
 /// The docstring the stub (python/sphtroch/__init__.pyi, the one source) gives `name` ("atlas",
 /// "GearTrain", "GearTrain.trace"), from the header python/gen_docstrings.py generates at build
-/// time. Throws std::logic_error for a name the stub does not document (the import fails: the
-/// stub and the bindings cannot drift apart).
+/// time. Throws std::logic_error for a name the stub does not have (the import fails: the stub
+/// and the bindings cannot drift apart). For a function: CPython's text signature block
+/// ("name(a, *, b=None)\n--\n\n", read into __text_signature__ for inspect.signature), the
+/// stub's typed signature line(s), then the docstring; module.cpp turns pybind11's own signature
+/// lines off, so help() shows these.
 const char* doc(const char* name);
+/// The same without the text signature block: for functions defined in Python (python/sphtroch/*.py).
+const char* python_doc(const char* name);
 
 // --- bind_errors.cpp -----------------------------------------------------------------------
 /// sphtroch.InvalidInput (a ValueError) and sphtroch.UncertifiedResult (a RuntimeError), with the
@@ -87,10 +92,16 @@ std::pair<double, double> range_arg(py::handle v, const std::string& field);
 /// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
 std::size_t census_samples_arg(py::handle samples);
 
-/// The progress of a long call (atlas, boundary_loci), run on the calling thread about every
-/// 100 ms with the GIL taken: Ctrl-C (PyErr_CheckSignals) raises KeyboardInterrupt out of the call,
-/// and `callback(done, total)` is called unless it is None (an exception it raises stops the call).
-/// Throws InvalidInput("progress") unless callback is None or callable.
+/// The fewest milliseconds between two reports of a progress callback (the last one, done ==
+/// total, always goes through).
+constexpr int kProgressIntervalMs = 100;
+/// The progress of a long call (atlas, boundary_loci, synth_points, fit), run on the calling
+/// thread with the GIL taken only while it runs: Ctrl-C (PyErr_CheckSignals) raises
+/// KeyboardInterrupt out of the call at every report; the user's `callback` is reported to at most
+/// once per kProgressIntervalMs and always at done == total: a function as callback(done, total),
+/// a bar (an object with .update, e.g. tqdm) by setting .total when it differs and calling
+/// .update(done - its count so far). An exception it raises stops the call and propagates.
+/// Throws InvalidInput("progress") unless callback is None, callable or has .update.
 ParallelProgress interruptible(py::handle callback);
 
 /// A gear train and the text of its inputs (TrainText: a2, a3, n, phase, as classify --json reports them).

@@ -98,16 +98,29 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
 
 std::string precision_points_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
                                     const std::string& json_fields, const TeethSpec& teeth, bool free_axis,
-                                    std::size_t threads, bool text) {
+                                    std::size_t threads, bool text, const ParallelProgress& progress) {
   PrecisionPointsOptions options;
   options.threads = threads;
-  const auto all = precision_points_with_census(points, ratios, options, free_axis);
+  // One ratio at a time (the library's loop over the ratios, each independent of the others), so
+  // that progress is reported between them.
+  std::vector<RatioPrecisionPoints> all;
+  if (progress) progress(0, ratios.size());
+  for (const Ratio& n : ratios) {
+    for (RatioPrecisionPoints& r : precision_points_with_census(points, {n}, options, free_axis)) all.push_back(std::move(r));
+    if (progress) progress(all.size(), ratios.size());
+  }
   return text ? precision_points_text(all, teeth) : precision_points_json(all, json_fields, teeth);
 }
 
 std::string fit_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                       const std::string& json_fields, const TeethSpec& teeth, bool text) {
-  const auto all = fit_with_census(points, ratios, options);
+                       const std::string& json_fields, const TeethSpec& teeth, bool text, const ParallelProgress& progress) {
+  check_fit_cost(points.size(), ratios);  // the whole set's bound, as fit_with_census checks it
+  std::vector<RatioFit> all;  // one ratio at a time, as for precision_points_report
+  if (progress) progress(0, ratios.size());
+  for (const Ratio& n : ratios) {
+    for (RatioFit& r : fit_with_census(points, {n}, options)) all.push_back(std::move(r));
+    if (progress) progress(all.size(), ratios.size());
+  }
   return text ? fit_text(all, options, teeth) : fit_json(all, options, json_fields, teeth);
 }
 

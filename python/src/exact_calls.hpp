@@ -6,6 +6,7 @@
 #include "sphtroch/io/train_text.hpp"  // TrainText: the angles as text, as `classify --json` reports them
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/parallel_for.hpp"  // ParallelProgress
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/draw/svg_plot.hpp"  // PlotOptions (Eigen only)
@@ -58,15 +59,17 @@ std::string root_classification_json_text(const GearTrain& train, bool literal);
 /// `sphtroch synth points --json`, or with `text` what `sphtroch synth points` prints
 /// (precision_points_output.hpp): every train of each ratio through the three points (five with
 /// free_axis: `threads` searches at once), with its census. InvalidInput "points" for bad points.
+/// `progress` (if set) is called on the calling thread as progress(ratios done, ratios.size()),
+/// before the first and after each ratio; what it throws stops the call.
 std::string precision_points_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
                                     const std::string& json_fields, const TeethSpec& teeth, bool free_axis,
-                                    std::size_t threads, bool text);
+                                    std::size_t threads, bool text, const ParallelProgress& progress);
 
 /// `sphtroch synth fit --json`, or with `text` what `sphtroch synth fit` prints (path_fit_output.hpp):
 /// ranked candidates of the ratios for the path's points, each confirmed by classify. InvalidInput
-/// "points", "nodes", "cusps", "n".
+/// "points", "nodes", "cusps", "n". `progress` as for precision_points_report (ratios done).
 std::string fit_report(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios, const FitOptions& options,
-                       const std::string& json_fields, const TeethSpec& teeth, bool text);
+                       const std::string& json_fields, const TeethSpec& teeth, bool text, const ParallelProgress& progress);
 
 /// The exact self-crossings of a polyline, as `sphtroch crossings` reports them.
 struct CrossingsResult {

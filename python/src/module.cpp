@@ -20,6 +20,10 @@
 
 PYBIND11_MODULE(_sphtroch, m) {
   namespace python = sphtroch::python;
+  // The signatures come from the stub (python::doc): pybind11's own would name the arguments the
+  // bindings validate themselves `handle` and their results `object`.
+  pybind11::options options;
+  options.disable_function_signatures();
   m.doc() = "sphtroch: trajectories of spherical planetary gear trains (Lin & Tsai 1990); see __init__.pyi";
   m.attr("__version__") = SPHTROCH_VERSION_STRING;
   python::bind_errors(m);
@@ -28,5 +32,5 @@ PYBIND11_MODULE(_sphtroch, m) {
   python::bind_crossings(m);
   python::bind_synthesis(m);
   // The stub's docstring of `name`, for the package's pure-Python parts (python/sphtroch/_arrays.py).
-  m.def("_doc", [](const std::string& name) { return std::string(python::doc(name.c_str())); });
+  m.def("_doc", [](const std::string& name) { return std::string(python::python_doc(name.c_str())); });
 }

@@ -127,13 +127,15 @@ def test_svg_is_the_cli_plot_and_jupyter_shows_it():
     # label options; _repr_svg_ is svg() with its defaults (issue 21).
     tr = sphtroch.GearTrain("pi/3", "pi/2", "2")
     for kwargs, flags in [({}, []), ({"view": "top", "labels": "none"}, ["--view", "top", "--labels", "none"]),
-                          ({"view": ("30deg", 0.2), "size": 300}, ["--view", "30deg,0.2", "--size", "300"])]:
+                          ({"view": ("30deg", 0.2), "size": 300}, ["--view", "30deg,0.2", "--size", "300"]),
+                          ({"markers": "none", "style": "density"}, ["--markers", "none", "--style", "density"])]:
         assert tr.svg(**kwargs) == run_cli("plot", "--a2", "pi/3", "--a3", "pi/2", "--n", "2", *flags)
     svg = tr._repr_svg_()
     assert svg == tr.svg() and svg.startswith("<?xml") and svg.rstrip().endswith("</svg>")
     assert all(f">N{i}</text>" in svg for i in range(1, 5)) and ">N5</text>" not in svg  # Fig. 5(f): 4 nodes
     assert ">N1</text>" not in tr.svg(labels="none")
-    for bad in [{"view": "up"}, {"view": (0, 2)}, {"labels": "most"}, {"size": 10}, {"labels": 3}]:
+    for bad in [{"view": "up"}, {"view": (0, 2)}, {"labels": "most"}, {"size": 10}, {"labels": 3}, {"markers": "few"},
+                {"style": "heat"}]:
         with pytest.raises(sphtroch.InvalidInput) as e:
             tr.svg(**bad)
         assert e.value.field == next(iter(bad))

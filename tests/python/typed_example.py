@@ -1,7 +1,7 @@
 """A typed user script: `mypy --strict` must accept it (tests/python/test_typing.py), and it runs.
 NumPy scalars go wherever the runtime takes numbers, as a NumPy user writes them."""
 from fractions import Fraction
-from typing import Any, Dict, List, Optional
+from typing import List, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -13,8 +13,10 @@ def sweep(a2: float, a3s: npt.NDArray[np.float64]) -> List[int]:
     counts: List[int] = []
     for a3 in a3s:  # np.float64 elements
         train = sphtroch.GearTrain(a2, a3, np.int64(2), phase=np.float64(0.1))
-        info: Dict[str, Any] = train.classify(literal=np.bool_(False))
-        counts.append(int(info["counts"]["nodes"]))
+        info = train.classify(literal=np.bool_(False))  # a TypedDict: keys and value types checked
+        nodes: int = info["counts"]["nodes"]
+        kind: str = info["class"]
+        counts.append(nodes if kind else 0)
     return counts
 
 
@@ -38,6 +40,9 @@ def main() -> None:
     print(len(events))
     pts = sphtroch.crossings(p, closed=np.bool_(True), max_work=np.int64(10**7))
     print(pts["crossings"])
+    margin: float = train.margin()["lower"]
+    first = train.nodes()[0]["position"] if train.nodes() else [0.0, 0.0, 1.0]
+    print(margin, len(first))
 
 
 if __name__ == "__main__":
