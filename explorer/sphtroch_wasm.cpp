@@ -17,6 +17,7 @@
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/curve_view.hpp"
 #include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
 #include "sphtroch/exact/certified_census.hpp"
@@ -266,7 +267,8 @@ std::size_t page_samples(double samples) {
 
 /// `samples` points of one period (the CLI's trace --samples), as x0 y0 z0 x1 ... (unit vectors),
 /// and with `velocity` their velocities dP/dtheta2 = omega x P (Eq. 47a; the CLI's --velocity) as
-/// `velocities`, laid out the same.
+/// `velocities`, laid out the same; `view`: the direction `sphtroch plot` looks from by default,
+/// chosen from these points (draw/curve_view.hpp), [x, y, z].
 val trace(const std::string& a2, const std::string& a3, const std::string& n, const std::string& phase,
           const std::string& teeth, double samples, bool velocity) {
   return guarded([&] {
@@ -277,6 +279,9 @@ val trace(const std::string& a2, const std::string& a3, const std::string& n, co
     out.set("points", float64_array(flat(sampled.points)));
     if (velocity) out.set("velocities", float64_array(flat(sampled.velocities)));
     out.set("params", float64_array(sampled.t));
+    const std::vector<sphtroch::Vector3d> points(sampled.points.begin(), sampled.points.end());
+    const sphtroch::Vector3d view = sphtroch::view_of_curve(points, true).direction;
+    out.set("view", float64_array(std::vector<double>{view.x(), view.y(), view.z()}));
     return out;
   });
 }

@@ -84,8 +84,8 @@
     if (!X.result || !X.curve) return;
     const pts = X.curve.points, count = pts.length / 3;
     strokeRuns(ctx, pts, count, '#1c2733', 'rgba(28,39,51,0.18)', true);
-    if (X.marks.draw) drawMarks(ctx);
     drawTrain(ctx);
+    if (X.marks.draw) drawMarks(ctx);  // over the cones: whatever the carrier angle, they stay seen
     X.drawPath(ctx);
   }
 
@@ -174,12 +174,23 @@
     $('cones').checked = !lastDense;
   }
 
+  // Turns the view to look from the unit vector d (towards the viewer): project() puts d at the
+  // centre, on the front half, with +Z pointing up the screen (spin about Z brings d into the
+  // screen's depth-height plane on the viewer's side, tilt about the screen's x axis raises it to
+  // face the viewer).
+  function lookFrom(d) {
+    const h = Math.hypot(d[0], d[1]);
+    view.spin = h > 1e-9 ? Math.atan2(-d[0], -d[1]) : 0;
+    view.tilt = Math.atan2(d[2], h);
+  }
+
   function setupSphereInput() {
     const canvas = $('sphere');
     let drag = null;
     canvas.addEventListener('pointerdown', (ev) => { drag = { x: ev.clientX, y: ev.clientY }; canvas.setPointerCapture(ev.pointerId); });
     canvas.addEventListener('pointermove', (ev) => {
       if (!drag) return;
+      view.turnedByHand = true;
       view.spin += (ev.clientX - drag.x) * 0.01 / Math.sqrt(view.zoom);
       view.tilt += (ev.clientY - drag.y) * 0.01 / Math.sqrt(view.zoom);
       drag = { x: ev.clientX, y: ev.clientY };
@@ -210,5 +221,5 @@
     window.requestAnimationFrame(animate);
   }
 
-  Object.assign(X, { project, unproject, drawSphere, followDensity, setupSphereInput, animate });
+  Object.assign(X, { project, unproject, lookFrom, drawSphere, followDensity, setupSphereInput, animate });
 }

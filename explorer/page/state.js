@@ -110,6 +110,9 @@ window.Explorer = {};
     } else {
       byTestId('error').textContent = '';
       const mapKeyChanged = !X.result || X.result.n !== out.c.n;
+      // The view of `sphtroch plot` (chosen from the curve) when the page opens and when n
+      // changes, until the sphere is turned by hand.
+      if (mapKeyChanged && !X.view.turnedByHand) X.lookFrom(out.t.view);
       X.result = out.c;
       X.curve = out.t;
       X.ruler = out.e;

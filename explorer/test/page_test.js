@@ -471,6 +471,35 @@ async function checkFigure3(page) {
   check(/not certified/.test(await page.textContent('[data-testid="map-caption"]')), 'the map\'s counts are not labelled as not certified');
 }
 
+// The sphere opens looking from where `sphtroch plot` looks by default (the view it states, whole
+// degrees): that direction projects within 1 degree's arc of the canvas centre, on the front half,
+// with +Z up the screen when the view is not along Z. The README's n = 13/5 example lies below the
+// equator (seen from below); Fig. 3 from the side.
+async function checkViewFromCurve(page) {
+  for (const s of [{ a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }, { a2: 'pi/2', a3: 'pi/2', n: '1', phase: '0' }]) {
+    const where = 'view of ' + JSON.stringify(s);
+    await open(page, hashOf(s));
+    await page.reload();
+    await page.waitForSelector('body[data-ready="1"]');
+    const file = path.join(outDir, 'view.svg');
+    check(cli(['plot', ...trainArgs(s), '-o', file]).status === 0, where + ': sphtroch plot failed');
+    const m = /view from az (-?\d+) deg, el (-?\d+) deg/.exec(require('fs').readFileSync(file, 'utf8'));
+    check(m !== null, where + ': the CLI picture states no view');
+    if (!m) continue;
+    const az = Number(m[1]) * Math.PI / 180, el = Number(m[2]) * Math.PI / 180;
+    const d = [Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el)];
+    const got = await page.evaluate((d) => {
+      const c = document.getElementById('sphere');
+      return { at: window.Explorer.project(d), z: window.Explorer.project([0, 0, 1]), w: c.width, h: c.height };
+    }, d);
+    const radius = 0.46 * got.w, off = Math.hypot(got.at[0] - got.w / 2, got.at[1] - got.h / 2);
+    check(off <= radius * Math.PI / 180 && got.at[2] === true,  // project()'s third value: on the front half
+      where + ': the CLI\'s view direction projects ' + off.toFixed(1) + ' px from the centre (front: ' + got.at[2] + ')');
+    if (Math.abs(Number(m[2])) < 80) check(got.z[1] < got.h / 2, where + ': +Z does not point up the screen');
+    if (s.n === '13/5') check(Number(m[2]) < 0, where + ': not seen from below (el ' + m[2] + ')');
+  }
+}
+
 // Waits for the map's finest grid (128^2 cells).
 const mapDone = (page) => page.waitForFunction(() => /^128² cells/.test(document.querySelector('[data-testid="map-status"]').textContent),
   null, { timeout: 60000 });
@@ -600,6 +629,7 @@ async function checkMarkers(page) {
     await checkPalette(page);
     await checkMapHover(page);
     await checkMarkers(page);
+    await checkViewFromCurve(page);
   } finally {
     await browser.close();
   }

@@ -357,13 +357,14 @@ class GearTrain:
         self-tangency loci) meets the square [a2 - d, a2 + d] x [a3 - d, a3 + d] lies in
         [lower, upper], radians; upper - lower <= max(1e-9, 1e-6 upper) when converged."""
     def tolerance(self, *, da2: Angle, da3: Angle, dphase: Angle = 0.0, samples: Optional[Count] = None,
-                  seed: Count = 1) -> Tolerance:
+                  seed: Count = 1, progress: Optional[Progress] = None) -> Tolerance:
         """`sphtroch tolerance --json` as a dict: will every train with a2, a3, phase within the
         half-widths (radians, or angle texts such as "0.1deg") draw this census? Keys topology
         ("holds", "changes", "undecided"), why, event, margin, census, box, nodes and cusps (each
         with position, max_displacement (proved, or None), d_da2, d_da3, d_dphase) and monte_carlo
         (with samples: that many random trains of the box classified, seeded; None without).
-        Raises InvalidInput for a negative or NaN half-width or a box leaving [1e-6, pi - 1e-6]."""
+        progress: reported once per Monte Carlo train (see Progress). Raises InvalidInput for a
+        negative or NaN half-width or a box leaving [1e-6, pi - 1e-6]."""
     def __eq__(self, other: object) -> bool:
         """Equal trains have the same doubles a2, a3, reduced phase (in [-pi, pi], -pi taken as pi),
         the same n = p/q, and a3 given the same way (a cone reference such as "ap" and its offset):

@@ -76,15 +76,17 @@ py::object classify(const Train& self, py::handle literal_flag, py::handle sampl
 }
 
 /// tolerance(): `sphtroch tolerance --json` as a dict; half-widths as angles (radians, "0.1deg", ...).
-py::object tolerance(const Train& self, py::handle da2, py::handle da3, py::handle dphase, py::handle samples, py::handle seed) {
+py::object tolerance(const Train& self, py::handle da2, py::handle da3, py::handle dphase, py::handle samples, py::handle seed,
+                     py::handle progress_callback) {
   std::string typed;
   const double d2 = angle_arg(da2, "da2", typed), d3 = angle_arg(da3, "da3", typed), dp = angle_arg(dphase, "dphase", typed);
   const std::size_t n = samples.is_none() ? 0 : count_arg(samples, "samples", 1, kMaxToleranceSamples);
   const std::uint64_t s = count_arg(seed, "seed", 0, std::size_t(1) << 62);
+  const ParallelProgress progress = interruptible(progress_callback);  // one report per Monte Carlo train
   std::string text;
   {
     py::gil_scoped_release release;  // the half-widths are checked there (InvalidInput "da2", ...)
-    text = tolerance_json_text(self.text, self.train, d2, d3, dp, n, s);
+    text = tolerance_json_text(self.text, self.train, d2, d3, dp, n, s, progress);
   }
   return from_json(text);
 }
@@ -324,7 +326,7 @@ void bind_gear_train(py::module_& m) {
       .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
       .def("margin", &margin, doc("GearTrain.margin"))
       .def("tolerance", &tolerance, py::kw_only(), py::arg("da2"), py::arg("da3"), py::arg("dphase") = 0.0,
-           py::arg("samples") = py::none(), py::arg("seed") = 1, doc("GearTrain.tolerance"))
+           py::arg("samples") = py::none(), py::arg("seed") = 1, py::arg("progress") = py::none(), doc("GearTrain.tolerance"))
       .def("__repr__", &train_repr)
       // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:
       // NotImplemented (so train == 5 is False, and the other operand may decide).

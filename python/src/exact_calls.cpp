@@ -35,10 +35,10 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
 }
 
 std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,
-                                std::size_t samples, std::uint64_t seed) {
+                                std::size_t samples, std::uint64_t seed, const ParallelProgress& progress) {
   if (samples > 0) check_monte_carlo_cost(train, ToleranceBox{da2, da3, dphase}, samples);  // refused up front
   ToleranceReport r = tolerance_report(train, ToleranceBox{da2, da3, dphase});
-  if (samples > 0) run_monte_carlo(r, samples, seed);
+  if (samples > 0) run_monte_carlo(r, samples, seed, progress);
   return tolerance_json(text, r).dump();
 }
 

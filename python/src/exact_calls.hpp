@@ -31,9 +31,9 @@ std::string nodes_and_cusps_json_text(const TrainText& text, const GearTrain& tr
                                       std::size_t census_samples);
 
 /// `sphtroch tolerance --json` of `train` and the box (tolerance_output.hpp), with `samples`
-/// Monte Carlo trains (0: none) drawn with `seed`, as JSON text.
+/// Monte Carlo trains (0: none) drawn with `seed`, reported to `progress`, as JSON text.
 std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,
-                                std::size_t samples, std::uint64_t seed);
+                                std::size_t samples, std::uint64_t seed, const ParallelProgress& progress);
 
 /// The certified margin of `train` (topology_margin.hpp) as the JSON of tolerance's "margin".
 std::string topology_margin_json_text(const GearTrain& train);

@@ -1,4 +1,5 @@
-"""progress= of the long calls (atlas, boundary_loci, synth_points, fit): a function f(done, total)
+"""progress= of the long calls (atlas, boundary_loci, synth_points, fit, tolerance with samples): a
+function f(done, total)
 sees done rising to total, a tqdm bar ends at its total, and an exception the callback raises
 propagates out of the call."""
 import pytest
@@ -16,9 +17,12 @@ CALLS = {
     "boundary_loci": lambda progress: sphtroch.boundary_loci(2, steps=40, threads=2, progress=progress),
     "synth_points": lambda progress: sphtroch.synth_points(three_points()[0], ratios=(2, 2), progress=progress),
     "fit": lambda progress: sphtroch.fit(three_points()[1], ratios=(2, 2), candidates=1, progress=progress),
+    "tolerance": lambda progress: sphtroch.GearTrain(1.0, 2.0, 2).tolerance(da2=1e-3, da3=1e-3, samples=7,
+                                                                             progress=progress),
 }
 # cells, a2 samples, the ratios of ratios=(2, 2) (--ratios 2,2: +-1, +-2, +-1/2)
-UNITS = {"atlas": 24 * 24, "boundary_loci": 40, "synth_points": 6, "fit": 6}
+# and the Monte Carlo trains of tolerance(samples=7).
+UNITS = {"atlas": 24 * 24, "boundary_loci": 40, "synth_points": 6, "fit": 6, "tolerance": 7}
 
 
 @pytest.mark.parametrize("name", sorted(CALLS))

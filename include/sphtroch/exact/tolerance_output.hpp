@@ -29,6 +29,7 @@
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/parallel_for.hpp"  // ParallelProgress
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/io/train_text.hpp"
@@ -72,8 +73,11 @@ struct ToleranceReport {
 inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
 
 /// Classifies `samples` trains drawn uniformly from the box (std::mt19937_64 seeded with `seed`)
-/// and sets r.monte_carlo. Throws InvalidInput("samples") as check_monte_carlo_cost.
-inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed);
+/// and sets r.monte_carlo; `progress` (when set) is called with (k, samples) after the k-th train,
+/// on the calling thread, and may throw to stop the run. Throws InvalidInput("samples") as
+/// check_monte_carlo_cost.
+inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed,
+                            const ParallelProgress& progress = {});
 
 /// Throws InvalidInput("samples") unless 1 <= samples <= kMaxToleranceSamples and
 /// samples x (|p| + q)^3 (x kNearConeSampleFactor when the box's a3 range, widened by 2 da2 for the
@@ -127,7 +131,8 @@ inline void check_monte_carlo_cost(const GearTrain& train, const ToleranceBox& b
                        "samples x (|p| + q)^3 (x 25 within 1e-3 rad of a pitch cone) <= 1e7 (about a minute)");
 }
 
-inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed) {
+inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64_t seed,
+                            const ParallelProgress& progress) {
   check_monte_carlo_cost(r.train, r.box, samples);
   MonteCarloSpread m;
   m.samples = samples;
@@ -145,6 +150,7 @@ inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64
       for (const Node& s : c.nodes) nearest = std::min(nearest, std::acos(std::clamp(n.position.dot(s.position), -1.0, 1.0)));
       if (!c.nodes.empty()) m.max_node_shift = std::max(m.max_node_shift, nearest);
     }
+    if (progress) progress(k + 1, samples);
   }
   r.monte_carlo = m;
 }
