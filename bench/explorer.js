@@ -3,7 +3,8 @@
 //   first load (navigation to the first state drawn), a slider update (classify + trace + redraw;
 //   a3 moved, so the ruler's events are kept) for 60 random trains with |p|, q <= 7, the boundary
 //   events at one a2 (lib.events, 60 random), the design map (128^2 cells, then the boundary
-//   curves) in its worker, and the module's size. Prints medians; not a test (timing never is).
+//   curves) in its worker, the census of a dense curve (n = 133/200, a2 = a3 = pi/2: 26,602 nodes;
+//   lib.classify, median of 3) and the module's size. Prints medians; not a test (timing never is).
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -43,7 +44,13 @@ const median = (xs) => { const s = xs.slice().sort((a, b) => a - b); return s[Ma
       lib.events((0.1 + rnd() * 2.9).toFixed(5), n, '');
       events.push(performance.now() - t0);
     }
-    return { update, compute, events };
+    const dense = [];
+    for (let k = 0; k < 3; ++k) {
+      const t0 = performance.now();
+      lib.classify('pi/2', 'pi/2', '133/200', '0', '');
+      dense.push(performance.now() - t0);
+    }
+    return { update, compute, events, dense };
   });
   await page.goto(url + '#a2=0.7&a3=2.5&n=13/5&phase=0');
   await page.waitForSelector('body[data-ready="1"]');
@@ -56,6 +63,7 @@ const median = (xs) => { const s = xs.slice().sort((a, b) => a - b); return s[Ma
   console.log('first load (median of 5):            ' + median(loads) + ' ms');
   console.log('slider update, a3 (median of 60):    ' + median(inPage.update).toFixed(1) + ' ms (library ' + median(inPage.compute).toFixed(1) + ' ms; max ' + Math.max(...inPage.update).toFixed(1) + ')');
   console.log('boundary events at one a2 (median):  ' + median(inPage.events).toFixed(1) + ' ms (max ' + Math.max(...inPage.events).toFixed(1) + ')');
+  console.log('dense census, 133/200 (median of 3):  ' + median(inPage.dense).toFixed(0) + ' ms');
   console.log('design map, n = 13/5:                ' + status);
   console.log('wasm: ' + wasmBytes.length + ' bytes, gzip ' + zlib.gzipSync(wasmBytes).length + ' bytes; sphtroch.js ' + js.length + ' bytes');
 })();
