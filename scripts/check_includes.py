@@ -6,8 +6,8 @@
    may have sub-layers, one folder deeper (synthesis/interval/): a header's layer is its folder
    path, and a sub-layer names what it may include like any other layer (its parent included).
    CGAL and nlohmann-json are included only under exact/, except CGAL's interval type (CGAL
-   headers only) under synthesis/interval/; OpenCASCADE only under cad/ (the folder says what a
-   header costs).
+   headers only) under synthesis/interval/; OpenCASCADE only under cad/, HEALPix only in machine/dwell_map.hpp (the
+   folder says what a header costs).
 
 1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
    runs back up; each one found is printed with its path.
@@ -23,7 +23,11 @@ import re
 import sys
 
 # detail:: helpers every header may use (defined once, in the header named).
-SHARED_DETAIL = {}
+SHARED_DETAIL = {
+    "trim": "io/parse.hpp",           # spaces around typed text
+    "strict_double": "io/parse.hpp",  # a whole string as a finite double
+    "strict_int": "io/parse.hpp",     # a whole string as an integer
+}
 
 # Which folders a header of each folder may include (a folder always includes its own).
 LAYERS = {
@@ -37,6 +41,7 @@ LAYERS = {
     "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
     "synthesis/interval": ["core", "io", "map", "census", "synthesis"],  # its certified part: CGAL's intervals
     "cad": ["core", "io"],                        # OpenCASCADE: the path as a STEP B-spline
+    "machine": ["core", "io", "draw"],            # clinostats: gravity path, window means, dwell (HEALPix)
 }
 TOP_LEVEL_MAX = 8
 HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
@@ -45,6 +50,7 @@ INTERVAL_ONLY = re.compile(r'^\s*#\s*include\s+<(?!CGAL/Interval_nt\.h>)(CGAL|nl
 # GMP or MPFR, directly or through mpreal / Eigen's MPRealSupport: exact/ only.
 MULTIPRECISION = re.compile(r'^\s*#\s*include\s+<(gmp\.h|gmpxx\.h|mpfr\.h|mpreal\.h|unsupported/Eigen/MPRealSupport)>', re.M)
 OPENCASCADE = re.compile(r'^\s*#\s*include\s+<\w+\.hxx>', re.M)
+HEALPIX = re.compile(r'^\s*#\s*include\s+<(healpix_\w+|chealpix)\.h>', re.M)
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "include", "sphtroch")
 headers = sorted(os.path.relpath(os.path.join(d, f), root).replace(os.sep, "/")
@@ -83,6 +89,8 @@ for h in headers:
         problems.append(f"{h}: includes GMP or MPFR outside exact/")
     if f != "cad" and OPENCASCADE.search(text[h]):
         problems.append(f"{h}: includes OpenCASCADE outside cad/")
+    if h != "machine/dwell_map.hpp" and HEALPIX.search(text[h]):
+        problems.append(f"{h}: includes HEALPix outside machine/dwell_map.hpp")
 
 # 1. Cycles (depth-first search, reporting each back edge with the path).
 state = {}

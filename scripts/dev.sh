@@ -22,7 +22,8 @@ cd "$root"
 build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
 
-# What the library and the tool need; the tests add python3-numpy (numpy.load/numpy.save round
+# What the library and the tool need (libhealpix-cxx-dev and pkg-config: a clinostat's dwell map,
+# `sphtroch clinostat --coverage`); the tests add python3-numpy (numpy.load/numpy.save round
 # trips of the .npy files), libbenchmark-dev (bench/, built by bench/run) and the Python module's
 # build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example),
 # and jq (a console example of docs/cli.md pipes classify --json through it; ctest docs:console_examples),
@@ -32,12 +33,13 @@ jobs=${JOBS:-$(nproc)}
 # python3-mypy (mypy --strict on a typed example against the stub; ctest python:typing), and
 # python3-venv, python3-pip, python3-setuptools (pip install of the package into a venv; python:pip_install),
 # python3-nbclient, python3-nbformat, python3-ipykernel (the example notebook runs headless; python:notebook),
-# python3-tqdm (python:progress drives a tqdm bar),
+# python3-tqdm (python:progress drives a tqdm bar), python3-healpy (an independent HEALPix pixel
+# function for the clinostat's dwell maps; python:clinostat),
 # help2man (the man page, written at build time) and man-db (`man sphtroch` after an install; cli:man_page).
 # OpenCASCADE (trace -o FILE.step; optional for the library, asked for by `test`): Debian's CMake
 # config of its DataExchange part needs the ocaf and visualization packages and libtbb-dev too.
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
-          libcli11-dev nlohmann-json3-dev)
+          libcli11-dev nlohmann-json3-dev libhealpix-cxx-dev pkg-config)
 step_packages=(libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
                libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev)
 # librsvg2-dev (+ pkg-config): plot -o FILE.png renders the SVG (optional, asked for by `test`).
@@ -45,7 +47,7 @@ png_packages=(librsvg2-dev pkg-config)
 if [[ $mode == test ]]; then
   packages+=(libbenchmark-dev python3-numpy pybind11-dev python3-dev python3-pytest python3-matplotlib jq
              emscripten chromium nodejs python3-ezdxf python3-mypy python3-venv python3-pip python3-setuptools
-             python3-nbclient python3-nbformat python3-ipykernel python3-tqdm help2man man-db "${step_packages[@]}" "${png_packages[@]}")
+             python3-nbclient python3-nbformat python3-ipykernel python3-tqdm python3-healpy help2man man-db "${step_packages[@]}" "${png_packages[@]}")
 fi
 
 install_missing_packages() {

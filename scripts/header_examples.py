@@ -22,6 +22,7 @@ NO_EXAMPLE = {
     "exact_implementation.hpp": "defines classify(); it may be included in one file of a program only",
     "exact/mpreal_support.hpp": "its example needs sphtroch::mpfr; compiled by test_scalar_types",
     "cad/step_export.hpp": "its example needs sphtroch::step (OpenCASCADE); run by test_cad",
+    "machine/dwell_map.hpp": "its example needs sphtroch::healpix; the same calls run in test_machine",
 }
 
 PRELUDE = r'''

@@ -2,7 +2,9 @@
 //   sphtroch::sphtroch (Eigen only): core/ (the train, the curve, sampling), io/ (numbers, parsing,
 //     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
-//     synthesis/ (identify, path distance, path fit).
+//     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
+//     gear train, window means, the worst window mean, the time to epsilon).
+//   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
 //   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds synthesis/interval/:
 //     interval arithmetic, certified root isolation, precision points (fixed frame, free axis),
 //     the certified topology margin, box topology and node enclosures of a tolerance box.
@@ -88,6 +90,17 @@
 #include "sphtroch/synthesis/path_distance.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 #include "sphtroch/atlas/atlas_slices.hpp"
+
+#include "sphtroch/machine/clinostat.hpp"
+#include "sphtroch/machine/clinostat_text.hpp"
+#include "sphtroch/machine/clinostat_train.hpp"
+#include "sphtroch/machine/gravity_series.hpp"
+#include "sphtroch/machine/rpm.hpp"
+#include "sphtroch/machine/time_to_epsilon.hpp"
+#include "sphtroch/machine/worst_window_mean.hpp"
+#if defined(SPHTROCH_HAVE_HEALPIX)
+#include "sphtroch/machine/dwell_map.hpp"
+#endif
 
 #if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
 #include "sphtroch/synthesis/interval/boundary_enclosure.hpp"

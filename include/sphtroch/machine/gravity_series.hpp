@@ -1,0 +1,173 @@
+// sphtroch/machine/gravity_series.hpp — a clinostat's gravity as a finite trigonometric series in
+// time, its period, and its mean over any window in closed form.
+//
+//   sphtroch::ClinostatSettings s;
+//   s.outer = sphtroch::Rpm(133, 100);
+//   s.inner = sphtroch::Rpm(2);
+//   const sphtroch::GravitySeries g = sphtroch::GravitySeries::of_gravity(sphtroch::Clinostat(s));
+//   g.period_s();                 // 6000: both frames are back after 100 min
+//   g.window_mean(0.0, 600.0);    // the mean of g_s over [0 s, 600 s], units of g0
+//   g.period_mean();              // the mean over a period: 0 for perpendicular axes
+//
+// g_s = R^T (0, 0, -1) is a trigonometric polynomial of degree 1 in each frame angle (phi_o, phi_i);
+// the effective gravity of an off-centre sample adds terms of degree 2 in phi_i. So
+//   f(t) = c0 + sum_k (a_k cos th_k(t) + b_k sin th_k(t)),  th_k = j_k phi_o(t) + l_k phi_i(t),
+// with |j| <= 1, |l| <= 2. The vector coefficients are the exact discrete Fourier transform of
+// f on a 5 x 5 grid of angles (exact for these degrees, up to rounding ~1e-16). A harmonic's
+// frequency j w_o + l w_i is an exact rational; one that is exactly 0 (a resonance such as
+// w_o = w_i) is constant in time and belongs to the mean over a period. The window mean is
+//   mean(t0, W) = c + sum_{k oscillating} (a_k cos th_k(tm) + b_k sin th_k(tm)) sinc(W_k W / 2),
+// tm = t0 + W / 2, W_k = 2 pi (j w_o + l w_i) / 60 rad/s: exact in closed form; rounding ~1e-15.
+// Period: the smallest T > 0 at which every harmonic present is back, 60 / gcd of their
+// frequencies (rpm, exact). Which harmonics are present is decided from the typed angles exactly:
+// no outer harmonic when the outer axis is vertical, only the combined angle phi_o +- phi_i when
+// the axes are parallel; constant gravity (no period) when nothing turns it.
+#pragma once
+
+#include "sphtroch/machine/clinostat.hpp"
+
+#include <complex>
+#include <cstdlib>
+#include <optional>
+#include <vector>
+
+namespace sphtroch {
+
+/// One oscillating term a cos th + b sin th, th = j phi_o + l phi_i.
+struct GravityHarmonic {
+  int j = 0, l = 0;
+  Rpm::Frequency frequency{0, 1};  ///< j w_o + l w_i, rpm, exact
+  double omega = 0;                ///< the same in rad/s
+  Vector3d a = Vector3d::Zero(), b = Vector3d::Zero();
+  double amplitude = 0;            ///< sqrt(|a|^2 + |b|^2) >= |a cos th + b sin th| for every th
+};
+
+class GravitySeries {
+ public:
+  /// g_s of the machine.
+  static GravitySeries of_gravity(const Clinostat& m) { return GravitySeries(m, false); }
+  /// The effective gravity of its sample point (g_s when the offset is 0).
+  static GravitySeries of_effective_gravity(const Clinostat& m) { return GravitySeries(m, true); }
+
+  const Clinostat& machine() const noexcept { return m_; }
+  /// The terms that move, each with a non-zero exact frequency.
+  const std::vector<GravityHarmonic>& oscillating() const noexcept { return terms_; }
+  /// The mean over a period: the constant term and every harmonic of frequency exactly 0.
+  const Vector3d& period_mean() const noexcept { return constant_; }
+  /// The period in seconds, empty when the gravity does not move at all.
+  const std::optional<double>& period_s() const noexcept { return period_s_; }
+  /// The period in minutes as an exact fraction (num / den); {0, 1} without a period.
+  std::pair<__int128, __int128> period_minutes() const noexcept { return period_minutes_; }
+
+  /// f(t) from the series (equal to the machine's gravity(t) / effective_gravity(t) within ~1e-15).
+  Vector3d value(double t) const { return centred_mean(t, 0.0, 0.0); }
+
+  /// The mean of f over [t0, t0 + W]. REQUIRES W >= 0 (W = 0: f(t0)).
+  Vector3d window_mean(double t0, double w) const { return centred_mean(t0, w / 2, w); }
+
+  /// The mean over the window of length W centred at t + dt (the angles of t and dt are added, so t + dt is never rounded).
+  Vector3d centred_mean(double t, double dt, double w) const {
+    const double po = m_.outer_angle(t, dt), pi = m_.inner_angle(t, dt);
+    Vector3d sum = constant_;
+    for (const GravityHarmonic& h : terms_) {
+      const SinCos<double> th = sin_cos(h.j * po + h.l * pi);
+      sum += (h.a * th.cos + h.b * th.sin) * sinc(h.omega * w / 2);
+    }
+    return sum;
+  }
+
+  /// sin(x) / x, 1 at 0 (series below 1e-4: error < 1e-17).
+  static double sinc(double x) {
+    if (std::fabs(x) < 1e-4) return 1 - x * x / 6;
+    return sin_cos(x).sin / x;
+  }
+
+ private:
+  GravitySeries(const Clinostat& m, bool effective) : m_(m) {
+    const int kGrid = 5;  // resolves |j|, |l| <= 2
+    const double step = 2 * Constants<double>::pi() / kGrid;
+    std::complex<double> coeff[kGrid][kGrid][3] = {};
+    for (int x = 0; x < kGrid; ++x)
+      for (int y = 0; y < kGrid; ++y) {
+        const Vector3d f = effective ? m.effective_gravity_at(x * step, y * step) : m.gravity_at(x * step, y * step);
+        for (int j = 0; j < kGrid; ++j)
+          for (int l = 0; l < kGrid; ++l) {
+            const std::complex<double> e = std::polar(1.0 / (kGrid * kGrid), -step * (j * x + l * y));
+            for (int c = 0; c < 3; ++c) coeff[j][l][c] += f[c] * e;
+          }
+      }
+    const auto at = [&](int j, int l) {  // the coefficient of exp(i (j phi_o + l phi_i)), any sign
+      const int jj = (j + kGrid) % kGrid, ll = (l + kGrid) % kGrid;
+      return Eigen::Vector3cd(coeff[jj][ll][0], coeff[jj][ll][1], coeff[jj][ll][2]);
+    };
+    constant_ = at(0, 0).real();
+    // One of each pair +-(j, l): j = 1 with any l, or j = 0 with l > 0; |l| <= 2 only with an offset.
+    const int degree = effective && m.has_offset() ? 2 : 1;
+    for (int j = 0; j <= 1; ++j)
+      for (int l = (j == 0 ? 1 : -degree); l <= degree; ++l) {
+        if (!present(j, l)) continue;
+        const Eigen::Vector3cd c = at(j, l);
+        GravityHarmonic h;
+        h.j = j;
+        h.l = l;
+        h.a = 2 * c.real();
+        h.b = -2 * c.imag();
+        h.frequency = Rpm::frequency(j, m.settings().outer, l, m.settings().inner);
+        h.omega = 2 * Constants<double>::pi() * h.frequency.value() / 60;
+        h.amplitude = std::sqrt(h.a.squaredNorm() + h.b.squaredNorm());
+        if (h.frequency.is_zero()) {
+          const SinCos<double> th = sin_cos(j * m.outer_angle(0) + l * m.inner_angle(0));
+          constant_ += h.a * th.cos + h.b * th.sin;  // a resonance: constant in time
+        } else {
+          terms_.push_back(h);
+        }
+      }
+    set_period();
+  }
+
+  /// Whether harmonic (j, l) can be non-zero, from the typed angles (header).
+  bool present(int j, int l) const {
+    if (!m_.turns_with_outer() && j != 0) return false;
+    if (m_.axes_parallel()) {
+      const int s = m_.frame_angle().cos > 0 ? 1 : -1;  // v = +-u: R = Rot(u, phi_o +- phi_i)
+      return l == s * j && j != 0;
+    }
+    return true;
+  }
+
+  void set_period() {
+    // gcd of the frequencies present (rationals over a common denominator).
+    __int128 num = 0, den = 1;
+    for (const GravityHarmonic& h : terms_) {
+      const __int128 d = lcm(den, h.frequency.den);
+      num = gcd(num * (d / den), absolute(h.frequency.num) * (d / h.frequency.den));
+      den = d;
+      const __int128 g = gcd(num, den);
+      num /= g;
+      den /= g;
+    }
+    if (num == 0) return;  // nothing moves
+    period_minutes_ = {den, num};
+    period_s_ = 60.0 * static_cast<double>(den) / static_cast<double>(num);
+  }
+  static __int128 absolute(__int128 x) { return x < 0 ? -x : x; }
+  static __int128 gcd(__int128 a, __int128 b) {
+    a = absolute(a);
+    b = absolute(b);
+    while (b != 0) {
+      const __int128 r = a % b;
+      a = b;
+      b = r;
+    }
+    return a;
+  }
+  static __int128 lcm(__int128 a, __int128 b) { return a / gcd(a, b) * b; }
+
+  Clinostat m_;
+  Vector3d constant_ = Vector3d::Zero();
+  std::vector<GravityHarmonic> terms_;
+  std::optional<double> period_s_;
+  std::pair<__int128, __int128> period_minutes_{0, 1};
+};
+
+}  // namespace sphtroch

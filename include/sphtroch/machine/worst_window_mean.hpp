@@ -1,0 +1,241 @@
+// sphtroch/machine/worst_window_mean.hpp — M(W), the largest |mean gravity| over a window of length
+// W, whatever time the window starts: certified as a bracket [lower, upper].
+//
+//   sphtroch::ClinostatSettings s;
+//   s.outer = sphtroch::Rpm(133, 100);
+//   s.inner = sphtroch::Rpm(2);
+//   const sphtroch::GravitySeries g = sphtroch::GravitySeries::of_gravity(sphtroch::Clinostat(s));
+//   const sphtroch::WorstWindowMean m = sphtroch::worst_window_mean(g, 600.0);
+//   m.lower; m.upper;   // M(600 s) lies in [lower, upper], upper - lower <= 1e-9
+//   m.start_s;          // a start time whose window mean is >= lower
+//
+// Method: a branch and bound over the window's centre tm in one period [0, T) (the window mean is
+// periodic in tm with the gravity's period, so the sup over every start time is the sup over one
+// period). With m(tm) the window mean (gravity_series.hpp) and s_k = sinc(W_k W / 2), on an
+// interval [tc - h, tc + h] the proven bound (Taylor with a bound on the second derivative) is
+//   |m(tc + d)| <= max(|m(tc) + m'(tc) h|, |m(tc) - m'(tc) h|) + L2 h^2 / 2,
+//   L2 = sum_k |s_k| A_k W_k^2 >= |m''| everywhere (A_k the harmonic's amplitude),
+// because |m(tc) + m'(tc) d| is convex in d. Rounding of m and m' in double is bounded by
+// 1e-14 (|c| + sum |s_k| A_k + h sum |s_k| A_k |W_k|) (phases reduced exactly, ~3e-15 rad;
+// sin_cos within one ulp) and added to every upper bound and taken from every lower bound. The
+// intervals are split best first (largest upper bound) until upper - lower <= the width asked.
+// Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
+// Cost: the period split into pieces of 0.5 / max W_k s, then refinement near the maxima;
+// ~1 ms for 1.33 / 2.00 rpm (docs/performance.md). The caller bounds the period's length
+// (worst_window_mean_cost).
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/machine/gravity_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <vector>
+
+namespace sphtroch {
+
+struct WorstWindowMean {
+  double window_s = 0;
+  double lower = 0, upper = 0;  ///< M(W) in [lower, upper], units of g0
+  double start_s = 0;           ///< a start time in [0, T) whose window mean has |mean| >= lower
+  bool certified = false;       ///< upper - lower <= the width asked
+};
+
+/// The pieces the branch and bound starts from, T max|W_k| / 0.5: the cost's measure. Throws
+/// InvalidInput("outer") when beyond kMaxWindowPieces (a period too long for the search).
+constexpr double kMaxWindowPieces = 4e6;
+inline double worst_window_mean_cost(const GravitySeries& g) {
+  if (!g.period_s()) return 1;
+  double fastest = 0;
+  for (const GravityHarmonic& h : g.oscillating()) fastest = std::max(fastest, std::fabs(h.omega));
+  const double pieces = std::ceil(*g.period_s() * fastest / 0.5);
+  if (pieces > kMaxWindowPieces)
+    throw InvalidInput("outer", g.machine().settings().outer.str(),
+                       "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean",
+                       "speeds whose period has at most ~600000 turns of the faster frame");
+  return std::max(8.0, pieces);
+}
+
+namespace detail {
+
+/// The window mean m(tm) of one window length and the bounds of the header.
+class WindowMeanFunction {
+ public:
+  WindowMeanFunction(const GravitySeries& g, double w) : g_(g), w_(w) {
+    double l0 = g.period_mean().norm(), l1 = 0;
+    for (const GravityHarmonic& h : g.oscillating()) {
+      const double s = std::fabs(GravitySeries::sinc(h.omega * w / 2)) * h.amplitude;
+      l0 += s;
+      l1 += s * std::fabs(h.omega);
+      l2_ += s * h.omega * h.omega;
+    }
+    rounding_ = 1e-14 * l0;
+    rounding_slope_ = 1e-14 * l1;
+  }
+  struct Value {
+    Vector3d m, dm;
+  };
+  Value at(double tm) const {
+    const Clinostat& machine = g_.machine();
+    const double po = machine.outer_angle(tm), pi = machine.inner_angle(tm);
+    Value v{g_.period_mean(), Vector3d::Zero()};
+    for (const GravityHarmonic& h : g_.oscillating()) {
+      const SinCos<double> th = sin_cos(h.j * po + h.l * pi);
+      const double s = GravitySeries::sinc(h.omega * w_ / 2);
+      v.m += s * (h.a * th.cos + h.b * th.sin);
+      v.dm += s * h.omega * (h.b * th.cos - h.a * th.sin);
+    }
+    return v;
+  }
+  double lower(const Value& v) const { return std::max(0.0, v.m.norm() - rounding_); }
+  double upper(const Value& v, double h) const {
+    return std::max((v.m + v.dm * h).norm(), (v.m - v.dm * h).norm()) + l2_ * h * h / 2 + rounding_ + rounding_slope_ * h;
+  }
+
+ private:
+  const GravitySeries& g_;
+  double w_;
+  double l2_ = 0, rounding_ = 0, rounding_slope_ = 0;
+};
+
+/// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
+template <typename Stop>
+WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop) {
+  if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", number_text(w), "not a positive window", "seconds > 0");
+  WorstWindowMean out;
+  out.window_s = w;
+  if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: M(W) = |c|
+    out.lower = out.upper = g.period_mean().norm();
+    out.certified = true;
+    return out;
+  }
+  const double period = *g.period_s();
+  const WindowMeanFunction f(g, w);
+  struct Piece {
+    double centre, half, upper;
+    bool operator<(const Piece& o) const { return upper < o.upper; }
+  };
+  std::priority_queue<Piece> pieces;
+  double best_at = 0;
+  const auto add = [&](double centre, double half) {
+    const WindowMeanFunction::Value v = f.at(centre);
+    const double low = f.lower(v);
+    if (low > out.lower) {
+      out.lower = low;
+      best_at = centre;
+    }
+    pieces.push({centre, half, f.upper(v, half)});
+  };
+  const double count = worst_window_mean_cost(g);
+  const double half = period / count / 2;
+  for (double k = 0; k < count; ++k) {
+    add((2 * k + 1) * half, half);
+    if (stop(out.lower, std::numeric_limits<double>::infinity())) {  // proven above already
+      out.upper = std::numeric_limits<double>::infinity();
+      out.start_s = std::fmod(best_at - w / 2, period);
+      if (out.start_s < 0) out.start_s += period;
+      return out;
+    }
+  }
+  const double finest = std::max(1e-12, period * 1e-15);
+  while (true) {
+    const Piece top = pieces.top();
+    out.upper = top.upper;
+    if (out.upper - out.lower <= width || stop(out.lower, out.upper)) break;
+    if (top.half < finest) break;  // cannot refine further: left uncertified
+    pieces.pop();
+    add(top.centre - top.half / 2, top.half / 2);
+    add(top.centre + top.half / 2, top.half / 2);
+  }
+  out.upper = std::max(out.upper, out.lower);
+  out.certified = out.upper - out.lower <= width;
+  out.start_s = std::fmod(best_at - w / 2, period);
+  if (out.start_s < 0) out.start_s += period;
+  return out;
+}
+
+/// True when sup |F| <= epsilon is proven over the whole torus of frame angles, F(x, y) = c +
+/// sum_k s_k (a_k cos(j x + l y) + b_k sin(j x + l y)): the window mean at any start lies on it,
+/// so M(W) <= epsilon follows, at a cost independent of the period. A box of half-widths (hx, hy)
+/// about (x, y) is bounded by the largest |F + F_x dx + F_y dy| over its corners (convex in d)
+/// plus sum_k |s_k| A_k (|j| hx + |l| hy)^2 / 2 (the second derivative along d) and rounding.
+/// False when some |F| > epsilon is found or after kMaxTorusBoxes boxes (then the caller searches
+/// the path itself).
+constexpr int kMaxTorusBoxes = 4096;
+inline bool torus_below(const GravitySeries& g, double w, double epsilon) {
+  struct Term {
+    int j, l;
+    double s;
+    const GravityHarmonic* h;
+  };
+  std::vector<Term> terms;
+  double size = g.period_mean().norm();
+  for (const GravityHarmonic& h : g.oscillating()) {
+    terms.push_back({h.j, h.l, GravitySeries::sinc(h.omega * w / 2), &h});
+    size += std::fabs(terms.back().s) * h.amplitude;
+  }
+  const double rounding = 1e-14 * (size + 1);
+  struct Box {
+    double x, y, half, upper;
+    bool operator<(const Box& o) const { return upper < o.upper; }
+  };
+  std::priority_queue<Box> boxes;
+  const auto add = [&](double x, double y, double half) {
+    Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
+    double curvature = 0;
+    for (const Term& t : terms) {
+      const SinCos<double> th = sin_cos(t.j * x + t.l * y);
+      const Vector3d value = t.s * (t.h->a * th.cos + t.h->b * th.sin), slope = t.s * (t.h->b * th.cos - t.h->a * th.sin);
+      f += value;
+      fx += t.j * slope;
+      fy += t.l * slope;
+      const double reach = (std::abs(t.j) + std::abs(t.l)) * half;
+      curvature += std::fabs(t.s) * t.h->amplitude * reach * reach / 2;
+    }
+    double corner = 0;
+    for (const double sx : {-half, half})
+      for (const double sy : {-half, half}) corner = std::max(corner, (f + fx * sx + fy * sy).norm());
+    boxes.push({x, y, half, corner + curvature + rounding});
+    return f.norm() - rounding;
+  };
+  const double pi = Constants<double>::pi();
+  const int n = 4;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      if (add((2 * a + 1) * pi / n, (2 * b + 1) * pi / n, pi / n) > epsilon) return false;
+  for (int count = n * n; count < kMaxTorusBoxes; count += 4) {
+    const Box top = boxes.top();
+    if (top.upper <= epsilon) return true;
+    boxes.pop();
+    const double q = top.half / 2;
+    for (const double dx : {-q, q})
+      for (const double dy : {-q, q})
+        if (add(top.x + dx, top.y + dy, q) > epsilon) return false;
+  }
+  return boxes.top().upper <= epsilon;
+}
+
+}  // namespace detail
+
+/// M(W) as a bracket of width <= `width` (certified) or wider (certified = false: the search hit
+/// its resolution). Throws InvalidInput("window") unless W > 0 and finite.
+inline WorstWindowMean worst_window_mean(const GravitySeries& g, double window_s, double width = 1e-9) {
+  return detail::search_worst_window_mean(g, window_s, width, [](double, double) { return false; });
+}
+
+/// Whether M(W) <= epsilon: below (upper <= epsilon), above (lower > epsilon) or undecided (M(W)
+/// within rounding of epsilon). Stops as soon as one side is proven; first tries the bound over
+/// all frame angles (detail::torus_below), whose cost does not grow with the period.
+enum class WindowSide { below, above, undecided };
+inline WindowSide compare_worst_window_mean(const GravitySeries& g, double window_s, double epsilon) {
+  if (detail::torus_below(g, window_s, epsilon)) return WindowSide::below;
+  const WorstWindowMean m = detail::search_worst_window_mean(
+      g, window_s, 0.0, [epsilon](double lower, double upper) { return lower > epsilon || upper <= epsilon; });
+  if (m.lower > epsilon) return WindowSide::above;
+  if (m.upper <= epsilon) return WindowSide::below;
+  return WindowSide::undecided;
+}
+
+}  // namespace sphtroch

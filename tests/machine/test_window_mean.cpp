@@ -1,0 +1,150 @@
+// Tests of machine/gravity_series.hpp, machine/worst_window_mean.hpp and
+// machine/time_to_epsilon.hpp. Expected values: window means by composite Gauss-Legendre
+// quadrature (8 nodes per piece of at most 0.5 s, long double) of an independent rotation model
+// (Eigen AngleAxis products in long double); the mean over a period from its closed form
+// -cos(psi) cos(beta) v (no resonance); M(W) against a dense scan of start times; the time to
+// epsilon at W and W - resolution.
+#include "catch2/catch.hpp"
+#include "sphtroch/machine/time_to_epsilon.hpp"
+#include "test_support.hpp"
+
+#include <random>
+
+using namespace sphtroch;
+
+namespace {
+
+using Vec3L = Eigen::Matrix<long double, 3, 1>;
+
+/// g_s(t) = (Rot(u, phi_o) Rot(v, phi_i))^T (0, 0, -1), written from the convention.
+Vec3L model_gravity(const ClinostatSettings& s, long double t) {
+  const long double pi = 3.141592653589793238462643383279502884L;
+  const long double psi = s.tilt_deg * pi / 180, beta = s.frame_angle_deg * pi / 180;
+  const Vec3L u(std::sin(psi), 0, std::cos(psi)), w(-std::cos(psi), 0, std::sin(psi));
+  const Vec3L v = std::cos(beta) * u + std::sin(beta) * w;
+  const auto angle = [&](const Rpm& r, double phase) {
+    long double turns = static_cast<long double>(r.num()) * t / (60.0L * r.den());
+    turns -= std::floor(turns);
+    return 2 * pi * turns + phase * pi / 180;
+  };
+  const Eigen::Matrix<long double, 3, 3> frame =
+      Eigen::AngleAxis<long double>(angle(s.outer, s.phase_outer_deg), u).toRotationMatrix() *
+      Eigen::AngleAxis<long double>(angle(s.inner, s.phase_inner_deg), v).toRotationMatrix();
+  return frame.transpose() * Vec3L(0, 0, -1);
+}
+
+/// The mean of model_gravity over [t0, t0 + W], Gauss-Legendre with 8 nodes per piece of <= 0.5 s
+/// (speeds <= 12 rpm: <= 0.32 rad per piece, truncation ~1e-25).
+Vec3L quadrature_mean(const ClinostatSettings& s, long double t0, long double w) {
+  static const long double x[4] = {0.1834346424956498049394761L, 0.5255324099163289858177390L, 0.7966664774136267395915539L,
+                                   0.9602898564975362316835609L};
+  static const long double c[4] = {0.3626837833783619829651504L, 0.3137066458778872873379622L, 0.2223810344533744705443560L,
+                                   0.1012285362903762591525314L};
+  const long double pieces = std::ceil(w * 2);
+  const long double h = w / pieces;
+  Vec3L sum = Vec3L::Zero();
+  for (long double k = 0; k < pieces; ++k) {
+    const long double mid = t0 + (k + 0.5L) * h;
+    for (int i = 0; i < 4; ++i) sum += c[i] * (model_gravity(s, mid - x[i] * h / 2) + model_gravity(s, mid + x[i] * h / 2));
+  }
+  return sum * (h / 2) / w;
+}
+
+ClinostatSettings machine(const char* outer, const char* inner, double tilt = 90, double frame = 90) {
+  ClinostatSettings s;
+  s.outer = Rpm(static_cast<std::int64_t>(std::llround(std::atof(outer) * 100)), 100);
+  s.inner = Rpm(static_cast<std::int64_t>(std::llround(std::atof(inner) * 100)), 100);
+  s.tilt_deg = tilt;
+  s.frame_angle_deg = frame;
+  s.phase_outer_deg = 23;
+  s.phase_inner_deg = -41;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("window mean: closed form equals quadrature of the rotation model", "[window_mean]") {
+  std::mt19937_64 rng(46);
+  std::uniform_int_distribution<int> speed(-600, 600);
+  std::uniform_real_distribution<double> angle(0, 180), start(0, 1e5), length(0.5, 900);
+  for (int i = 0; i < 200; ++i) {
+    ClinostatSettings s;
+    s.outer = Rpm(speed(rng), 100);
+    s.inner = Rpm(speed(rng) | 1, 100);
+    s.tilt_deg = angle(rng);
+    s.frame_angle_deg = angle(rng);
+    s.phase_outer_deg = angle(rng);
+    s.phase_inner_deg = -angle(rng);
+    const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+    const double t0 = start(rng), w = length(rng);
+    const Vec3L want = quadrature_mean(s, t0, w);
+    INFO("t0 " << t0 << " W " << w << " outer " << s.outer.str() << " inner " << s.inner.str() << " diff " << static_cast<double>((g.window_mean(t0, w).cast<long double>() - want).norm()));
+    CHECK(static_cast<double>((g.window_mean(t0, w).cast<long double>() - want).norm()) <= 1e-12);
+    CHECK(static_cast<double>((g.value(t0).cast<long double>() - model_gravity(s, t0)).norm()) <= 1e-13);
+  }
+}
+
+TEST_CASE("window mean: the mean over a period is -cos(psi) cos(beta) v without resonance", "[window_mean]") {
+  std::mt19937_64 rng(47);
+  std::uniform_real_distribution<double> angle(0, 180);
+  for (int i = 0; i < 50; ++i) {
+    ClinostatSettings s = machine("1.33", "2", angle(rng), angle(rng));
+    const Clinostat m(s);
+    const GravitySeries g = GravitySeries::of_gravity(m);
+    const double pi = Constants<double>::pi();
+    const Vector3d want = -std::cos(s.tilt_deg * pi / 180) * std::cos(s.frame_angle_deg * pi / 180) * m.inner_axis();
+    CHECK((g.period_mean() - want).norm() <= 1e-14);
+    REQUIRE(g.period_s());
+    CHECK(*g.period_s() == 6000);  // 1.33 and 2 rpm: both frames back after 100 min
+    // The mean over any whole period from any start is the period mean (quadrature).
+    CHECK(static_cast<double>((quadrature_mean(s, 1234.5L, 6000) - g.period_mean().cast<long double>()).norm()) <= 1e-12);
+  }
+  // The period of a single-axis machine is that axis's turn; of equal speeds (a resonance), 1 turn.
+  CHECK(*GravitySeries::of_gravity(Clinostat(machine("0", "2.5"))).period_s() == 24);
+  CHECK(*GravitySeries::of_gravity(Clinostat(machine("3", "3", 60, 60))).period_s() == 20);
+  // Outer axis vertical: the outer frame does not turn gravity; only the inner speed sets the period.
+  CHECK(*GravitySeries::of_gravity(Clinostat(machine("1.33", "2", 0, 50))).period_s() == 30);
+}
+
+TEST_CASE("worst window mean: the bracket holds a dense scan's maximum and is at most 1e-9 wide", "[window_mean]") {
+  for (const auto& s : {machine("1.33", "2"), machine("1", "2"), machine("-0.7", "1.3", 75, 80), machine("2.5", "0"),
+                        machine("0.31", "0.5", 120, 90)}) {
+    const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+    const double period = *g.period_s();
+    for (const double w : {7.0, 60.0, 333.0, 1000.0}) {
+      const WorstWindowMean m = worst_window_mean(g, w);
+      CHECK(m.certified);
+      CHECK(m.upper - m.lower <= 1e-9);
+      double scan = 0;
+      for (double t = 0; t < period; t += period / 200000) scan = std::max(scan, g.window_mean(t, w).norm());
+      CHECK(scan <= m.upper);  // no start time beats the upper bound
+      // The start reported reaches the lower bound (quadrature of the model).
+      CHECK(static_cast<double>(quadrature_mean(s, m.start_s, w).norm()) >= m.lower - 1e-12);
+    }
+  }
+}
+
+TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted frames never reach it", "[window_mean]") {
+  for (const auto& s : {machine("1.33", "2"), machine("1", "2"), machine("3.2", "-1.7", 60, 90)}) {
+    const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+    for (const double eps : {0.05, 0.01}) {
+      const TimeToEpsilon t = time_to_epsilon(g, eps, 1.0);
+      REQUIRE(t.certified);
+      REQUIRE(t.first_s);
+      REQUIRE(t.stays_below_from_s);
+      CHECK(worst_window_mean(g, *t.first_s).upper <= eps);
+      if (*t.first_s > 1) CHECK(worst_window_mean(g, *t.first_s - 1).lower > eps);
+      CHECK(*t.stays_below_from_s >= *t.first_s);
+      if (*t.stays_below_from_s > *t.first_s) CHECK(worst_window_mean(g, *t.stays_below_from_s - 1).lower > eps);
+      for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 200; w += 7) CHECK(worst_window_mean(g, w).upper <= eps);
+    }
+  }
+  const GravitySeries tilted = GravitySeries::of_gravity(Clinostat(machine("1.33", "2", 60, 70)));  // mean 0.17 g0
+  const TimeToEpsilon t = time_to_epsilon(tilted, 0.01, 1.0);
+  CHECK_FALSE(t.first_s);
+  CHECK_FALSE(t.stays_below_from_s);
+  CHECK(t.reason.find("mean over a period") != std::string::npos);
+  CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.0, 1.0); }).field() == "epsilon");
+  CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.01, -1.0); }).field() == "resolution");
+  CHECK(test::expect_invalid([&] { worst_window_mean(tilted, 0.0); }).field() == "window");
+}
