@@ -127,6 +127,7 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // atlas, atlas-merge
 void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth identify
+void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // clinostat_command.cpp
 /// `completion bash|zsh`: register it last, so that its script lists every command (completion_command.cpp).
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS

@@ -72,7 +72,7 @@ inline ClinostatTrain clinostat_train(const Clinostat& m) {
   out.rotation.col(0) = Vector3d::UnitY();
   out.rotation.col(1) = -b.sin * m.outer_axis() + b.cos * m.outer_cross_axis();
   out.rotation.col(2) = m.inner_axis();
-  out.theta2_at_0 = -std::fmod(s.phase_inner_deg, 360.0) * (pi / 180.0);
+  out.theta2_at_0 = -std::fmod(s.phase_inner_deg, 360.0) * (pi / 180.0) + 0.0;  // + 0.0: 0, not -0
   out.theta2_rate = -s.inner.radians_per_second();
   const double a2 = s.frame_angle_deg * (pi / 180.0), a3 = pi - s.tilt_deg * (pi / 180.0);
   if (s.outer.is_zero() || s.inner.is_zero()) out.reason = "a single-axis machine (one speed is 0): the path is a circle";
@@ -86,7 +86,7 @@ inline ClinostatTrain clinostat_train(const Clinostat& m) {
   const long double two_pi = 2 * static_cast<long double>(pi);
   long double phase = static_cast<long double>(n->p()) * (-out.theta2_at_0) / n->q() -
                       std::fmod(s.phase_outer_deg, 360.0) * (static_cast<long double>(pi) / 180);
-  phase = std::fmod(phase, two_pi);
+  phase = std::fmod(phase, two_pi) + 0.0L;  // + 0: 0, not -0
   if (phase < 0) phase += two_pi;
   out.train.emplace(a2, a3, *n, static_cast<double>(phase));
   return out;

@@ -13,7 +13,8 @@
 // the effective gravity of an off-centre sample adds terms of degree 2 in phi_i. So
 //   f(t) = c0 + sum_k (a_k cos th_k(t) + b_k sin th_k(t)),  th_k = j_k phi_o(t) + l_k phi_i(t),
 // with |j| <= 1, |l| <= 2. The vector coefficients are the exact discrete Fourier transform of
-// f on a 5 x 5 grid of angles (exact for these degrees, up to rounding ~1e-16). A harmonic's
+// f on a 5 x 5 grid of angles (exact for these degrees, up to rounding ~1e-16; parts below
+// 1e-15, which are that rounding, are set to 0 so that an exact 0 reads as 0). A harmonic's
 // frequency j w_o + l w_i is an exact rational; one that is exactly 0 (a resonance such as
 // w_o = w_i) is constant in time and belongs to the mean over a period. The window mean is
 //   mean(t0, W) = c + sum_{k oscillating} (a_k cos th_k(tm) + b_k sin th_k(tm)) sinc(W_k W / 2),
@@ -87,18 +88,24 @@ class GravitySeries {
     const int kGrid = 5;  // resolves |j|, |l| <= 2
     const double step = 2 * Constants<double>::pi() / kGrid;
     std::complex<double> coeff[kGrid][kGrid][3] = {};
+    double largest = 0;  // max |f| on the grid: the transform's rounding is ~1e-16 of it
     for (int x = 0; x < kGrid; ++x)
       for (int y = 0; y < kGrid; ++y) {
         const Vector3d f = effective ? m.effective_gravity_at(x * step, y * step) : m.gravity_at(x * step, y * step);
+        largest = std::max(largest, f.norm());
         for (int j = 0; j < kGrid; ++j)
           for (int l = 0; l < kGrid; ++l) {
             const std::complex<double> e = std::polar(1.0 / (kGrid * kGrid), -step * (j * x + l * y));
             for (int c = 0; c < 3; ++c) coeff[j][l][c] += f[c] * e;
           }
       }
+    const double kRoundingZero = 1e-15 * largest;
     const auto at = [&](int j, int l) {  // the coefficient of exp(i (j phi_o + l phi_i)), any sign
       const int jj = (j + kGrid) % kGrid, ll = (l + kGrid) % kGrid;
-      return Eigen::Vector3cd(coeff[jj][ll][0], coeff[jj][ll][1], coeff[jj][ll][2]);
+      Eigen::Vector3cd c(coeff[jj][ll][0], coeff[jj][ll][1], coeff[jj][ll][2]);
+      for (int k = 0; k < 3; ++k)  // parts within the transform's rounding of 0 are 0
+        c[k] = {std::fabs(c[k].real()) < kRoundingZero ? 0.0 : c[k].real(), std::fabs(c[k].imag()) < kRoundingZero ? 0.0 : c[k].imag()};
+      return c;
     };
     constant_ = at(0, 0).real();
     // One of each pair +-(j, l): j = 1 with any l, or j = 0 with l > 0; |l| <= 2 only with an offset.

@@ -1,0 +1,135 @@
+// `sphtroch clinostat`, run as the real executable: the JSON's train and rotation reproduce the
+// gravity (Eq. 4 written here with Eigen's AngleAxis: Rz(theta2) Rx(a2) Rz(n theta2 + phase)
+// Rx(a3) z) and both equal --trace's rows and an independent rotation model of the machine; the
+// report's keys; the dwell map's size and total; bad input (exit 2, one stderr line, nothing on
+// stdout, no file).
+#include "catch2/catch.hpp"
+#include "cli_support.hpp"
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using namespace sphtroch::test;
+using nlohmann::json;
+
+Eigen::Vector3d model_gravity(double outer_rpm, double inner_rpm, double tilt_deg, double frame_deg, double t) {
+  const double pi = 3.14159265358979323846, psi = tilt_deg * pi / 180, beta = frame_deg * pi / 180;
+  const Eigen::Vector3d u(std::sin(psi), 0, std::cos(psi)), w(-std::cos(psi), 0, std::sin(psi));
+  const Eigen::Vector3d v = std::cos(beta) * u + std::sin(beta) * w;
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(2 * pi * outer_rpm * t / 60, u) * Eigen::AngleAxisd(2 * pi * inner_rpm * t / 60, v)).toRotationMatrix();
+  return r.transpose() * Eigen::Vector3d(0, 0, -1);
+}
+
+Eigen::Vector3d eq4(const json& train, double theta2) {
+  const std::string n = train["n"];
+  const auto slash = n.find('/');
+  const double ratio = slash == std::string::npos ? std::stod(n) : std::stod(n.substr(0, slash)) / std::stod(n.substr(slash + 1));
+  const Eigen::Matrix3d m = (Eigen::AngleAxisd(theta2, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(train["a2"].get<double>(), Eigen::Vector3d::UnitX()) *
+                             Eigen::AngleAxisd(ratio * theta2 + train["phase"].get<double>(), Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(train["a3"].get<double>(), Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  return m * Eigen::Vector3d::UnitZ();
+}
+
+}  // namespace
+
+TEST_CASE("clinostat --json: the train and rotation draw the gravity, as --trace and a rotation model do", "[cli][clinostat]") {
+  TempDir dir;
+  for (const auto& [outer, inner, tilt, frame] : {std::tuple{1.33, 2.0, 90.0, 90.0}, std::tuple{-0.7, 1.3, 60.0, 100.0},
+                                                  std::tuple{3.5, -2.25, 135.0, 45.0}}) {
+    const std::string machine = "--outer " + shortest_g(outer) + " --inner " + shortest_g(inner) + " --tilt " + shortest_g(tilt) +
+                                " --frame-angle " + shortest_g(frame);
+    const Result r = run("clinostat " + machine + " --json", dir);
+    REQUIRE(r.status == 0);
+    const json j = json::parse(r.out);
+    REQUIRE(j["train"].is_object());
+    Eigen::Matrix3d rotation;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) rotation(i, k) = j["train"]["rotation"][i][k];
+    const Result trace = run("clinostat " + machine + " --trace --duration 300 --samples 31", dir);
+    REQUIRE(trace.status == 0);
+    std::istringstream rows(trace.out);
+    std::string line;
+    std::getline(rows, line);
+    CHECK(line == "t,gx,gy,gz");
+    int count = 0;
+    while (std::getline(rows, line)) {
+      double t, x, y, z;
+      char c;
+      std::istringstream(line) >> t >> c >> x >> c >> y >> c >> z;
+      const Eigen::Vector3d traced(x, y, z), model = model_gravity(outer, inner, tilt, frame, t);
+      const Eigen::Vector3d mapped = rotation * eq4(j["train"], j["train"]["theta2_at_0"].get<double>() + j["train"]["theta2_rate"].get<double>() * t);
+      CHECK((traced - model).norm() <= 1e-12);
+      CHECK((mapped - model).norm() <= 1e-12);
+      ++count;
+    }
+    CHECK(count == 31);
+    CHECK(j["period_s"].is_number());
+    CHECK(j["mean_over_period"].size() == 3);
+  }
+}
+
+TEST_CASE("clinostat --json: worst window mean, time to epsilon and coverage keys", "[cli][clinostat]") {
+  TempDir dir;
+  const Result r = run("clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01 --coverage 600 --nside 4 --json", dir);
+  REQUIRE(r.status == 0);
+  const json j = json::parse(r.out);
+  CHECK(j["period_s"] == 6000.0);
+  CHECK(j["train"]["n"] == "133/200");
+  const json& m = j["worst_window_mean"];
+  CHECK(m["window_s"] == 600.0);
+  CHECK(m["upper"].get<double>() - m["lower"].get<double>() <= 1e-9);
+  CHECK(m["lower"].get<double>() > 0.01);  // M(600 s) is above 0.01 g0 for these speeds
+  const json& e = j["time_to_epsilon"];
+  CHECK(e["first_s"].get<double>() <= e["stays_below_from_s"].get<double>());
+  CHECK(e["stays_below_from_s"].get<double>() > 600);
+  const json& c = j["coverage"];
+  REQUIRE(c["dwell_s"].size() == 192);
+  double total = 0;
+  for (const auto& d : c["dwell_s"]) total += d.get<double>();
+  CHECK(total == Approx(600).epsilon(1e-12));
+  CHECK(c["fraction"].get<double>() > 0);
+  CHECK(c["fraction"].get<double>() <= 1);
+}
+
+TEST_CASE("clinostat: tilted frames never average out, and the report says why", "[cli][clinostat]") {
+  TempDir dir;
+  const Result r = run("clinostat --outer 1.33 --inner 2 --tilt 60 --frame-angle 70 --epsilon 0.01 --json", dir);
+  REQUIRE(r.status == 0);
+  const json j = json::parse(r.out);
+  CHECK(j["time_to_epsilon"]["first_s"].is_null());
+  CHECK(j["time_to_epsilon"]["stays_below_from_s"].is_null());
+  const double pi = 3.14159265358979323846;
+  CHECK(std::hypot(j["mean_over_period"][0].get<double>(), j["mean_over_period"][1].get<double>(), j["mean_over_period"][2].get<double>()) ==
+        Approx(std::cos(60 * pi / 180) * std::cos(70 * pi / 180)).epsilon(1e-12));
+  const Result single = run("clinostat --outer 0 --inner 2.5 --json", dir);
+  REQUIRE(single.status == 0);
+  CHECK(json::parse(single.out)["train"].is_null());
+  CHECK(json::parse(single.out)["period_s"] == 24.0);
+}
+
+TEST_CASE("clinostat: bad input is refused with one line naming the option, nothing on stdout", "[cli][clinostat]") {
+  TempDir dir;
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--outer 0 --inner 0", "--inner"}, {"--outer nan --inner 1", "--outer"}, {"--outer 1 --inner 1e3", "--inner"},
+           {"--outer 1001 --inner 1", "--outer"}, {"--outer 1 --inner 2 --coverage 60 --nside 3", "--nside"},
+           {"--outer 1 --inner 2 --window 0", "--window"}, {"--outer 1 --inner 2 --window -5", "--window"},
+           {"--outer 1 --inner 2 --offset 1,2", "--offset"}, {"--outer 1 --inner 2 --tilt 190", "--tilt"},
+           {"--outer 1 --inner 2 --frame-angle nan", "--frame-angle"}, {"--outer 1 --inner 2 --epsilon 0", "--epsilon"},
+           {"--outer 1 --inner 2 --trace --duration 0 -o out.csv", "--duration"},
+           {"--outer 1 --inner 2 --trace --duration 10 --samples 1 -o out.csv", "--samples"}}) {
+    const Result r = run("clinostat " + args, dir, true);
+    INFO(args << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, option));
+    CHECK(dir.entries().empty());
+  }
+}
