@@ -4,12 +4,13 @@ Angles are radians (float) or the command-line tool's text: "1.25", "pi/2", "2pi
 "90deg"; a3 also "ap", "pi-ap", "a2", "pi-a2" with an optional offset ("ap+1e-6"). Gear ratios
 n = p/q: int, fractions.Fraction, text ("5/2", "2.5") or a float that is a decimal of at most 9
 places (2.5). Every bad argument raises InvalidInput naming it; flags (closed, pairs, literal,
-velocity) accept only True or False (also numpy.bool_). Every computation runs with the
-GIL released; GearTrain objects are immutable and may be shared between threads.
+velocity) accept only True or False (also numpy.bool_). Clinostat takes its speeds in rpm and
+its angles in degrees, as `sphtroch clinostat`. Every computation runs with the GIL released;
+GearTrain and Clinostat objects are immutable and may be shared between threads.
 """
 from fractions import Fraction
-from typing import (Any, Callable, Dict, Iterator, List, Literal, NotRequired, Optional, Protocol, Tuple, TypedDict, Union,
-                    overload)
+from typing import (Any, Callable, Dict, Iterator, List, Literal, NotRequired, Optional, Protocol, Sequence, Tuple, TypedDict,
+                    Union, overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -23,6 +24,9 @@ Flag = Union[bool, np.bool_]
 Angle = Union[Real, str]
 RatioLike = Union[int, str, float, Fraction, np.integer[Any], np.floating[Any]]
 AngleRange = Union[Tuple[Angle, Angle], str]  # (lo, hi), or the CLI's "LO:HI" text ("0:pi/2")
+# A speed in rpm, read exactly: int, Fraction, text ("1.33", "4/3") or a float read as its repr ("1.33").
+RpmLike = Union[int, str, float, Fraction, np.integer[Any], np.floating[Any]]
+Point3 = Union[Tuple[Real, Real, Real], Sequence[Real], npt.NDArray[Any]]  # x, y, z
 
 class ProgressBar(Protocol):
     """What progress= takes besides a function: a bar such as tqdm.tqdm(), told the work units as
@@ -191,6 +195,40 @@ class Identified(TypedDict):
     residual: float
     rms: float
     noise: float
+
+class ClinostatTrainMap(TypedDict):
+    """Clinostat.train_map: gravity(t) = rotation @ P(theta2_at_0 + theta2_rate * t), P the train's
+    tracer (GearTrain.trace's Eq. 4); the keys of `sphtroch clinostat --json`'s "train" besides the train's own."""
+    theta2_at_0: float
+    theta2_rate: float
+    rotation: npt.NDArray[np.float64]
+
+class WorstWindowMean(TypedDict):
+    """Clinostat.worst_window_mean(): `sphtroch clinostat --window W --json`'s "worst_window_mean"."""
+    window_s: float
+    lower: float
+    upper: float
+    start_s: float
+    certified: bool
+
+class TimeToEpsilon(TypedDict):
+    """Clinostat.time_to(): `sphtroch clinostat --epsilon E --json`'s "time_to_epsilon"."""
+    epsilon: float
+    resolution_s: float
+    first_s: Optional[float]
+    stays_below_from_s: Optional[float]
+    reason: str
+    certified: bool
+
+class CoverageSummary(TypedDict):
+    """Clinostat.coverage_summary(): `sphtroch clinostat --coverage D --json`'s "coverage" but its
+    "order" ("RING") and "dwell_s" (Clinostat.coverage())."""
+    start_s: float
+    duration_s: float
+    nside: int
+    fraction: float
+    dwell_cv: float
+    bound_s: float
 
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
@@ -400,6 +438,117 @@ class PointSet:
         pandas.DataFrame(...) takes."""
     def to_dataframe(self) -> Any:
         """pandas.DataFrame(columns()) (needs pandas, imported only here)."""
+
+class Clinostat:
+    """A two-axis clinostat or random positioning machine run at constant speeds, as `sphtroch
+    clinostat` takes it: the gravity the sample feels, its means over time windows, the gear train
+    whose tracer draws its path, where on the sphere it spends its time.
+
+    Convention: lab Z up, gravity (0, 0, -1) in units of g0 = 9.80665 m/s^2; outer axis
+    u = (sin tilt, 0, cos tilt); inner axis v = cos(frame_angle) u + sin(frame_angle) w,
+    w = (-cos tilt, 0, sin tilt), carried by the outer frame; frame angles
+    phi = phase + 2 pi rpm t / 60 (t in seconds); sample frame R(t) = Rot(u, phi_o) Rot(v, phi_i);
+    the sample feels g_s = R^T (0, 0, -1).
+
+    outer_rpm, inner_rpm: signed speeds read exactly as the CLI's --outer / --inner: an int, a
+    Fraction, text ("1.33", "-2", "4/3": at most 6 decimal places, |rpm| <= 1000), or a float read
+    as its repr (1.33 -> "1.33" -> 133/100 rpm; 1e-05 or 0.1 + 0.2 are refused: give the text or
+    a Fraction). Not both 0. tilt (outer axis from the vertical), frame_angle (between the axes):
+    degrees in [0, 180]; phase_outer, phase_inner: the frames' angles at t = 0, degrees,
+    |phase| <= 1e6. offset: None (the centre) or the sample point (x, y, z) in metres, sample
+    frame, |r| <= 10; with an offset, period, mean_over_period, window_mean, worst_window_mean and
+    time_to are of the effective gravity R^T((0, 0, -1) - a / g0) there (as the CLI's averages),
+    while the train and the coverage are of g_s.
+    Immutable. Raises InvalidInput whose field is the CLI's option: "outer", "inner", "tilt",
+    "frame-angle", "phase-outer", "phase-inner" or "offset".
+    """
+
+    def __init__(self, outer_rpm: RpmLike, inner_rpm: RpmLike, *, tilt: Real = 90.0, frame_angle: Real = 90.0,
+                 phase_outer: Real = 0.0, phase_inner: Real = 0.0, offset: Optional[Point3] = None) -> None: ...
+    @property
+    def outer_rpm(self) -> str:
+        """The outer frame's exact speed as text: "1.33" when a decimal, else "p/q" ("4/3")."""
+    @property
+    def inner_rpm(self) -> str:
+        """The inner frame's exact speed as text, as outer_rpm."""
+    @property
+    def tilt(self) -> float:
+        """The outer axis from the vertical, degrees."""
+    @property
+    def frame_angle(self) -> float:
+        """The angle between the axes, degrees."""
+    @property
+    def phase_outer(self) -> float:
+        """The outer frame's angle at t = 0, degrees."""
+    @property
+    def phase_inner(self) -> float:
+        """The inner frame's angle at t = 0, degrees."""
+    @property
+    def offset(self) -> Optional[Tuple[float, float, float]]:
+        """The sample point (x, y, z), metres, or None when none was given."""
+    @property
+    def period(self) -> Optional[float]:
+        """Seconds after which the averaged gravity repeats (both frames back where they started,
+        from the exact speeds: 6000.0 for 1.33 and 2 rpm), or None when it does not move in the
+        sample. `--json`'s "period_s"."""
+    @property
+    def mean_over_period(self) -> npt.NDArray[np.float64]:
+        """The mean of the averaged gravity over a period (3,), units of g0 (resonances included:
+        a harmonic of frequency exactly 0 is constant). `--json`'s "mean_over_period"."""
+    @property
+    def train(self) -> Optional[GearTrain]:
+        """The spherical gear train whose tracer draws g_s: n = outer / inner (exact: 133/200 for
+        1.33 and 2 rpm), a2 = frame angle, a3 = pi - tilt (radians), with its phase; `--json`'s
+        "train" (n, a2, a3, phase). None for a machine whose path is a circle (a speed 0, parallel
+        axes, a vertical outer axis) or beyond the train's limits: train_note says why."""
+    @property
+    def train_map(self) -> Optional[ClinostatTrainMap]:
+        """How the train's tracer gives g_s: {"theta2_at_0", "theta2_rate" (rad/s), "rotation"
+        (3, 3)}: gravity(t) = rotation @ P(theta2_at_0 + theta2_rate t). None without a train."""
+    @property
+    def train_note(self) -> str:
+        """Why there is no train ("" when there is one): `--json`'s "train_note"."""
+    def gravity(self, t: Union[Real, npt.ArrayLike]) -> npt.NDArray[np.float64]:
+        """g_s = R(t)^T (0, 0, -1) at the times t (seconds, |t| <= 1e12): (N, 3) for t of shape (N,),
+        (3,) for a scalar; float64, units of g0 (the CLI's --trace columns gx, gy, gz). The frame
+        angles are reduced exactly (whole turns removed in integers), so t = 1e6 s keeps ~1e-15.
+        Raises InvalidInput("t")."""
+    def effective_gravity(self, t: Union[Real, npt.ArrayLike]) -> npt.NDArray[np.float64]:
+        """The effective gravity R^T ((0, 0, -1) - a / g0) of the sample point at the times t, a its
+        acceleration; shapes as gravity(). Equal to gravity() without an offset."""
+    def window_mean(self, t0: Real, window: Real) -> npt.NDArray[np.float64]:
+        """The mean of the averaged gravity (the effective gravity with an offset, else g_s) over
+        [t0, t0 + window] (3,), units of g0, in closed form (rounding ~1e-15). window: 0 .. 1e9 s
+        (0: the value at t0); |t0| <= 1e12. Raises InvalidInput("t0" or "window")."""
+    def worst_window_mean(self, window: Real) -> WorstWindowMean:
+        """M(W): the largest |mean| of the averaged gravity over a window of W seconds, whatever
+        time it starts, as a certified bracket, as `sphtroch clinostat --window W --json`:
+        {"window_s", "lower", "upper" (M(W) in [lower, upper], upper - lower <= 1e-9), "start_s" (a
+        start in [0, period) whose window mean is >= lower), "certified" (False: the bracket is
+        wider, the tool's exit status 3)}. window: (0, 1e9]. Raises InvalidInput: "window";
+        "outer" when the speeds' period is too long for the search."""
+    def time_to(self, epsilon: Real, resolution: Real = 1.0) -> TimeToEpsilon:
+        """How long to average before the mean is below epsilon whenever the experiment starts, as
+        `sphtroch clinostat --epsilon E --resolution S --json`: windows W = S, 2S, ...;
+        {"epsilon", "resolution_s", "first_s" (the shortest W with M(W) <= epsilon),
+        "stays_below_from_s" (the shortest W from which every longer one is below: M is not
+        monotone), "reason" (why both are None, or why not certified), "certified"}. epsilon:
+        (0, 1e9) units of g0; resolution: (0, 1e6] s. Raises InvalidInput: "epsilon",
+        "resolution" (also when the search would cover more than 10**6 windows), "outer"."""
+    def coverage(self, duration: Real, nside: Count = 8, start: Real = 0.0) -> npt.NDArray[np.float64]:
+        """Seconds g_s spends in each cell of the HEALPix grid of nside (RING order: healpy draws
+        it as it is) over [start, start + duration]: float64 (12 nside^2,), `--coverage D --json`'s
+        "dwell_s". Each cell's time is right within coverage_summary()'s bound_s. duration: (0, 1e12]
+        s; nside: a power of two 1 .. 1024; |start| <= 1e12. Raises InvalidInput: "coverage" (also
+        for a walk of more than 2e6 steps, and in a build without HEALPix), "nside", "start"."""
+    def coverage_summary(self, duration: Real, nside: Count = 8, start: Real = 0.0) -> CoverageSummary:
+        """The dwell map of coverage() summed up, as `--coverage D --json`'s "coverage": {"start_s",
+        "duration_s", "nside", "fraction" (share of cells visited), "dwell_cv" (coefficient of
+        variation of the dwell over all cells; 0 = uniform), "bound_s" (every cell's time is within
+        it)}."""
+    def _repr_svg_(self) -> Optional[str]:
+        """Jupyter's picture: the train's (GearTrain._repr_svg_), or None without a train (Jupyter
+        then shows the repr)."""
 
 def crossings(points: npt.ArrayLike, closed: Flag = True, *, pairs: Flag = False,
               max_crossings: Count = 10_000_000, max_work: Count = 50_000_000) -> Dict[str, Any]:

@@ -6,6 +6,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/parse.hpp"
+#include "sphtroch/machine/clinostat_text.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -216,6 +217,28 @@ Ratio ratio_arg(py::handle v) {
     return Ratio(pv, qv);  // range-checked (InvalidInput "n")
   }
   return parse_ratio(number_text(real_arg(v, "n", kRatioForms)), "n");
+}
+
+/// A speed: a str as given; an integer (not bool) as its digits; a Fraction (integer numerator and
+/// denominator) as "p/q"; any other real number as the repr of its float, so that 1.33 is read as
+/// "1.33" = 133/100 rpm. parse_rpm then reads it exactly (and refuses what it refuses).
+std::string rpm_text_arg(py::handle v, const std::string& field) {
+  if (py::isinstance<py::str>(v)) return text_arg(v, field, kRpmForms);
+  if (not_a_real(v)) throw InvalidInput(field, repr_of(v), "not a speed", kRpmForms);
+  if (PyIndex_Check(v.ptr())) {
+    PyObject* i = PyNumber_Index(v.ptr());
+    if (i == nullptr) {
+      PyErr_Clear();
+      throw InvalidInput(field, repr_of(v), "not a speed", kRpmForms);
+    }
+    return py::str(py::reinterpret_steal<py::object>(i)).cast<std::string>();
+  }
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
+    const py::object p = v.attr("numerator"), q = v.attr("denominator");
+    if (!PyIndex_Check(p.ptr()) || !PyIndex_Check(q.ptr())) throw InvalidInput(field, repr_of(v), "not a speed", kRpmForms);
+    return py::str(py::int_(p)).cast<std::string>() + "/" + py::str(py::int_(q)).cast<std::string>();
+  }
+  return repr_of(py::float_(real_arg(v, field, kRpmForms)));
 }
 
 /// (lo, hi) of angles (radians or the CLI's text), or the CLI's "LO:HI" text, field `field`.

@@ -1,7 +1,7 @@
 // python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
 // the argument converters (arguments.cpp), the exception classes (bind_errors.cpp) and one bind_*
-// function per topic (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp), called by
-// module.cpp.
+// function per topic (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp, bind_synthesis.cpp,
+// bind_clinostat.cpp), called by module.cpp.
 // The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
 //
 // Decisions
@@ -87,6 +87,9 @@ double angle_arg(py::handle v, const std::string& field, std::string& text);
 A3Spec a3_arg(py::handle v, std::string& text);
 /// n: an integer, a Fraction, the CLI's text, or a float that is a short decimal.
 Ratio ratio_arg(py::handle v);
+/// A speed in rpm as the text io's parse_rpm reads (machine/clinostat_text.hpp): a str as given, an
+/// integer's digits, a Fraction's "p/q", a float's repr ("1.33"); InvalidInput(field) for other types.
+std::string rpm_text_arg(py::handle v, const std::string& field);
 /// (lo, hi) of angles, or the CLI's "LO:HI" text.
 std::pair<double, double> range_arg(py::handle v, const std::string& field);
 /// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
@@ -126,5 +129,6 @@ void bind_gear_train(py::module_& m);  // class GearTrain: trace, classify, node
 void bind_design_map(py::module_& m);  // classify_a3_range, atlas
 void bind_crossings(py::module_& m);   // crossings
 void bind_synthesis(py::module_& m);   // identify
+void bind_clinostat(py::module_& m);   // class Clinostat: gravity, window means, time to epsilon, coverage
 
 }  // namespace sphtroch::python

@@ -31,7 +31,8 @@ TRAINS = [sphtroch.GearTrain("pi/3", "pi/2", 2), sphtroch.GearTrain(1.0, "ap", "
 
 
 def test_the_stub_declares_the_result_types():
-    assert {"Classification", "Node", "Cusp", "Margin", "Tolerance", "PointsResult", "FitResult", "Identified"} <= set(TD)
+    assert {"Classification", "Node", "Cusp", "Margin", "Tolerance", "PointsResult", "FitResult", "Identified",
+            "WorstWindowMean", "TimeToEpsilon", "CoverageSummary", "ClinostatTrainMap"} <= set(TD)
     assert "class" in TD["Classification"] and TD["Counts"] == {"nodes": "int", "crossings": "int", "tangencies": "int",
                                                                 "cusps": "int"}
 
@@ -68,3 +69,14 @@ def test_synthesis_results_have_the_declared_keys():
     assert fit["candidates"]
     at = sphtroch.fit(P[::10], n="1/2", candidates=1, node_at=np.array(tr.nodes()[0]["position"]) if tr.nodes() else None)
     check(at, "FitResult")
+
+
+def test_clinostat_results_have_the_declared_keys():
+    for c in (sphtroch.Clinostat(1.33, 2), sphtroch.Clinostat("4/3", -2, tilt=60, offset=(0.05, 0, 0))):
+        check(c.worst_window_mean(600), "WorstWindowMean")
+        check(c.time_to(0.05, 10), "TimeToEpsilon")
+        check(c.coverage_summary(600, 4), "CoverageSummary")
+        check(c.train_map, "ClinostatTrainMap")
+    far = sphtroch.Clinostat(3, 0, tilt=80).time_to(0.01)  # the mean over a period is above: no window
+    check(far, "TimeToEpsilon")
+    assert far["first_s"] is None and far["reason"]

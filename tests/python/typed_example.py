@@ -43,6 +43,11 @@ def main() -> None:
     margin: float = train.margin()["lower"]
     first = train.nodes()[0]["position"] if train.nodes() else [0.0, 0.0, 1.0]
     print(margin, len(first))
+    machine = sphtroch.Clinostat(np.float64(1.33), Fraction(2), tilt=np.int64(90), offset=(0.01, 0, np.float64(0.0)))
+    first_s: Optional[float] = machine.time_to(0.01, resolution=np.float64(10))["first_s"]
+    g = machine.gravity(np.linspace(0.0, 60.0, 7))
+    gear: Optional[sphtroch.GearTrain] = machine.train
+    assert g.shape == (7, 3) and gear is not None and first_s is not None and machine.worst_window_mean(600)["certified"]
 
 
 if __name__ == "__main__":

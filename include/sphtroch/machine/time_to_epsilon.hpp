@@ -21,7 +21,9 @@
 // Between grid points M can exceed its values at the grid by at most (1 + |c| + sum A_k) r / W
 // (|d/dW (W mean)| <= |f|); the answers are stated for the grid.
 // Cost: one comparison per grid window up to the first below epsilon, and one per window above
-// the cheap bound while going down from C / (epsilon - |c|); bounded up front by kMaxWindows.
+// the cheap bound while going down from C / (epsilon - |c|); bounded up front by kMaxWindows, and
+// while running by kMaxTimeToEpsilonWork evaluations (then not certified, and it says so: speeds
+// near a resonance, whose slow beat puts many windows within a hair of epsilon).
 #pragma once
 
 #include "sphtroch/machine/worst_window_mean.hpp"
@@ -42,7 +44,10 @@ struct TimeToEpsilon {
 };
 
 /// The largest number of grid windows searched (the tail bound over the resolution).
-constexpr double kMaxWindows = 1e6;
+constexpr double kMaxWindows = 1e7;
+/// The largest number of evaluations of the window mean the search spends (~10 s); beyond, the
+/// answer is not certified and says so (near-resonant speeds with a small epsilon).
+constexpr double kMaxTimeToEpsilonWork = 3e7;
 
 /// Throws InvalidInput("epsilon") unless 0 < epsilon < 1e9, ("resolution") unless 0 < r <= 1e6 s,
 /// and ("resolution") when the tail C / (epsilon - |c|) holds more than kMaxWindows grid windows.
@@ -71,13 +76,22 @@ inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, dou
     for (const GravityHarmonic& h : g.oscillating()) u += h.amplitude * std::fabs(GravitySeries::sinc(h.omega * w / 2));
     return u * (1 + 1e-14) + 1e-15;  // the sum's rounding
   };
+  double hint = 0;  // the start of the last window found above epsilon
+  double work = 0;
   const auto side = [&](double k) {
     const double w = k * resolution_s;
-    return cheap_upper(w) <= epsilon ? WindowSide::below : compare_worst_window_mean(g, w, epsilon);
+    if (cheap_upper(w) <= epsilon) return WindowSide::below;
+    if (work > kMaxTimeToEpsilonWork) return WindowSide::undecided;
+    return compare_worst_window_mean(g, w, epsilon, &hint, &work);
   };
   const auto undecided = [&](double k) {
     out.certified = false;
-    out.reason = "M(W) at W = " + number_text(k * resolution_s) + " s is within rounding of epsilon: not decided";
+    out.first_s.reset();
+    out.stays_below_from_s.reset();
+    out.reason = work > kMaxTimeToEpsilonWork
+                     ? "the search reached its work bound (3e7 evaluations) at W = " + number_text(k * resolution_s) +
+                           " s: not decided; a coarser resolution or a larger epsilon"
+                     : "M(W) at W = " + number_text(k * resolution_s) + " s is within rounding of epsilon: not decided";
     return out;
   };
   double first = 1;

@@ -102,7 +102,7 @@ class WindowMeanFunction {
 
 /// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
 template <typename Stop>
-WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop) {
+WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
   if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", number_text(w), "not a positive window", "seconds > 0");
   WorstWindowMean out;
   out.window_s = w;
@@ -120,6 +120,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   std::priority_queue<Piece> pieces;
   double best_at = 0;
   const auto add = [&](double centre, double half) {
+    if (work) *work += 1;
     const WindowMeanFunction::Value v = f.at(centre);
     const double low = f.lower(v);
     if (low > out.lower) {
@@ -164,7 +165,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
 /// False when some |F| > epsilon is found or after kMaxTorusBoxes boxes (then the caller searches
 /// the path itself).
 constexpr int kMaxTorusBoxes = 4096;
-inline bool torus_below(const GravitySeries& g, double w, double epsilon) {
+inline bool torus_below(const GravitySeries& g, double w, double epsilon, double* work = nullptr) {
   struct Term {
     int j, l;
     double s;
@@ -183,6 +184,7 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon) {
   };
   std::priority_queue<Box> boxes;
   const auto add = [&](double x, double y, double half) {
+    if (work) *work += 1;
     Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
     double curvature = 0;
     for (const Term& t : terms) {
@@ -229,10 +231,16 @@ inline WorstWindowMean worst_window_mean(const GravitySeries& g, double window_s
 /// within rounding of epsilon). Stops as soon as one side is proven; first tries the bound over
 /// all frame angles (detail::torus_below), whose cost does not grow with the period.
 enum class WindowSide { below, above, undecided };
-inline WindowSide compare_worst_window_mean(const GravitySeries& g, double window_s, double epsilon) {
-  if (detail::torus_below(g, window_s, epsilon)) return WindowSide::below;
+/// `hint` (optional, in and out): a window start to try first, set to the start found above
+/// epsilon (a scan over W passes the last one on: the worst start moves little from W to W + r).
+/// `work` (optional): adds the number of evaluations spent (the cost's measure).
+inline WindowSide compare_worst_window_mean(const GravitySeries& g, double window_s, double epsilon, double* hint = nullptr,
+                                            double* work = nullptr) {
+  if (hint && g.window_mean(*hint, window_s).norm() > epsilon * (1 + 1e-13) + 1e-15) return WindowSide::above;
+  if (detail::torus_below(g, window_s, epsilon, work)) return WindowSide::below;
   const WorstWindowMean m = detail::search_worst_window_mean(
-      g, window_s, 0.0, [epsilon](double lower, double upper) { return lower > epsilon || upper <= epsilon; });
+      g, window_s, 0.0, [epsilon](double lower, double upper) { return lower > epsilon || upper <= epsilon; }, work);
+  if (hint && m.lower > epsilon) *hint = m.start_s;
   if (m.lower > epsilon) return WindowSide::above;
   if (m.upper <= epsilon) return WindowSide::below;
   return WindowSide::undecided;
