@@ -3,9 +3,11 @@
 // or (--trace) the gravity seen by the sample as CSV t,gx,gy,gz or .npy. Eigen (+ HEALPix for
 // --coverage); the library's machine/ layer does the work (docs/clinostat.md).
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/io/npy.hpp"
 #include "sphtroch/io/trace_output.hpp"
+#include "sphtroch/machine/clinostat_plot.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
@@ -25,7 +27,7 @@ namespace {
 
 struct ClinostatOptions {
   ClinostatText machine;
-  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output;
+  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output, plot;
   bool json = false, trace = false;
 };
 
@@ -160,8 +162,35 @@ void write_report_text(std::ostream& out, const Clinostat& m, const Report& r, c
 #endif
 }
 
+/// --plot: the dwell map of the report's coverage (or of one period, at most an hour) and M(W)
+/// at 100 windows up to 1.25 times the time to epsilon (or three periods, at most two hours).
+std::string plot_svg(const Clinostat& m, const GravitySeries& series, const Report& r, const Request& q) {
+  ClinostatPlot plot;
+  const ClinostatSettings& s = m.settings();
+  plot.title = "clinostat " + s.outer.str() + " / " + s.inner.str() + " rpm, tilt " + number_text(s.tilt_deg) + " deg, frame angle " +
+               number_text(s.frame_angle_deg) + " deg";
+  const double period = series.period_s().value_or(60.0);
+#if defined(SPHTROCH_HAVE_HEALPIX)
+  const DwellMap dwell = r.dwell ? *r.dwell : dwell_map(m, q.start, std::min(period, 3600.0), q.nside);
+  plot.cells = cell_outlines(dwell.nside);
+  plot.dwell_s = dwell.dwell_s;
+  plot.title += "; dwell over " + number_text(dwell.duration_s) + " s";
+#endif
+  plot.epsilon = q.epsilon;
+  const double longest = r.time_to && r.time_to->stays_below_from_s ? 1.25 * *r.time_to->stays_below_from_s : std::min(3 * period, 7200.0);
+  for (int k = 1; k <= 100; ++k) {
+    const WorstWindowMean w = worst_window_mean(series, longest * k / 100, 1e-6);
+    plot.windows.push_back({w.window_s, w.lower, w.upper});
+  }
+  return clinostat_plot_svg(plot);
+}
+
 void run_report(const ClinostatOptions& o, const Clinostat& m) {
   const Request q = read_request(o);
+  if (!o.plot.empty()) {
+    check_svg_name(o.plot, "plot");
+    require_png_writer(o.plot, "plot");
+  }
 #if !defined(SPHTROCH_HAVE_HEALPIX)
   if (q.coverage) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
 #endif
@@ -176,7 +205,12 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
 #if defined(SPHTROCH_HAVE_HEALPIX)
   if (q.coverage) r.dwell = dwell_map(m, q.start, *q.coverage, q.nside);
 #endif
-  write_output("", [&](std::ostream& out) {
+  std::vector<std::string> written;
+  if (!o.plot.empty()) {
+    write_output(o.plot, [&](std::ostream& out) { out << picture_bytes(plot_svg(m, series, r, q), o.plot); }, "--plot");
+    written.push_back(o.plot);
+  }
+  write_stdout_after_outputs(written, [&](std::ostream& out) {
     if (o.json) out << report_json(r, q).dump(2) << "\n";
     else write_report_text(out, m, r, q);
   });
@@ -244,6 +278,8 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "--epsilon E: the shortest window (a multiple of --resolution) with M(W) <= E, and the one from\n"
       "which every longer window is below (M is not monotone).\n"
       "--coverage D: seconds per HEALPix cell (RING, --nside K, default 8) over [--start, --start + D].\n"
+      "--plot FILE.svg|.png: the dwell map (of --coverage, else one period up to an hour) and M(W)\n"
+      "against W (up to 1.25 x the time to epsilon, else three periods up to two hours), epsilon dashed.\n"
       "--trace --duration S --samples N: t,gx,gy,gz (N samples, both ends included; .npy by -o's suffix).\n"
       "Exit 3: a bracket or a comparison not certified (the output says which).\n"
       "Example: sphtroch clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01");
@@ -261,6 +297,7 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8: 768 cells)");
   cmd->add_option("--start", o->start, "start time of --coverage and --trace, seconds (default 0)");
   cmd->add_flag("--json", o->json, "the report as JSON (schema: docs/clinostat.md)");
+  cmd->add_option("--plot", o->plot, "also write the dwell map (Mollweide) and M(W) against W as FILE.svg or FILE.png");
   cmd->add_flag("--trace", o->trace, "write the gravity over time instead of the report");
   cmd->add_option("--duration", o->duration, "--trace: seconds covered");
   cmd->add_option("--samples", o->samples, "--trace: number of samples N (2 .. 10000000; default 1001)");

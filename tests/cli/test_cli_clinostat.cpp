@@ -114,6 +114,24 @@ TEST_CASE("clinostat: tilted frames never average out, and the report says why",
   CHECK(json::parse(single.out)["period_s"] == 24.0);
 }
 
+TEST_CASE("clinostat --plot: the dwell map's cells and the M(W) curve, the report unchanged", "[cli][clinostat]") {
+  TempDir dir;
+  const Result plain = run("clinostat --outer 1.33 --inner 2 --epsilon 0.01 --coverage 600 --nside 2", dir);
+  const Result r = run("clinostat --outer 1.33 --inner 2 --epsilon 0.01 --coverage 600 --nside 2 --plot map.svg", dir, true);
+  REQUIRE(r.status == 0);
+  CHECK(r.out == plain.out);
+  const std::string svg = slurp(dir.path / "map.svg");
+  CHECK(contains(svg.substr(0, 200), "<svg"));
+  CHECK(contains(svg, "epsilon = 0.01 g0"));
+  std::size_t cells = 0;
+  for (std::size_t at = svg.find("fill:#"); at != std::string::npos; at = svg.find("fill:#", at + 1)) ++cells;
+  CHECK(cells >= 3 * 48);  // 48 cells at nside 2, each drawn three times (across the date line), and the scale
+  const Result bad = run("clinostat --outer 1.33 --inner 2 --plot map.pdf", dir, true);
+  CHECK(bad.status == 2);
+  CHECK(bad.out.empty());
+  CHECK(contains(bad.err, "--plot"));
+}
+
 TEST_CASE("clinostat: bad input is refused with one line naming the option, nothing on stdout", "[cli][clinostat]") {
   TempDir dir;
   for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{

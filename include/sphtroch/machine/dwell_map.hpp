@@ -128,6 +128,20 @@ inline void check_dwell_request(double start_s, double duration_s, int nside) {
 
 }  // namespace detail
 
+/// Every cell's outline (RING order): 4 * steps points along its edges, unit vectors, from
+/// HEALPix's boundaries(). For pictures (clinostat_plot.hpp). REQUIRES nside a power of two <= 1024.
+inline std::vector<std::vector<Vector3d>> cell_outlines(int nside, int steps = 4) {
+  detail::check_dwell_request(0, 1, nside);
+  const T_Healpix_Base<int> base(nside, RING, SET_NSIDE);
+  std::vector<std::vector<Vector3d>> out(static_cast<std::size_t>(base.Npix()));
+  std::vector<vec3> edge;
+  for (int c = 0; c < base.Npix(); ++c) {
+    base.boundaries(c, static_cast<tsize>(steps), edge);
+    for (const vec3& v : edge) out[static_cast<std::size_t>(c)].emplace_back(v.x, v.y, v.z);
+  }
+  return out;
+}
+
 /// The dwell map over [start, start + duration] (seconds) on the HEALPix grid of nside. Throws
 /// InvalidInput: "nside" not a power of two in [1, 1024]; "coverage" duration not in (0, 1e12];
 /// "coverage" when the walk would take more than kMaxDwellSteps first-level steps.
