@@ -79,13 +79,7 @@ Machine make_machine(py::handle outer, py::handle inner, py::handle tilt, py::ha
   text.offset = offset_text(offset);
   const Clinostat m(text.settings());  // InvalidInput naming the CLI's option
   GravitySeries averaged = m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);
-  ClinostatTrain train;
-  try {
-    train = clinostat_train(m);
-  } catch (const InvalidInput& e) {  // the train's own limits (GearTrain's ranges): no train, the reason kept
-    train = ClinostatTrain{};
-    train.reason = "no gear train: " + e.message();
-  }
+  ClinostatTrain train = clinostat_train(m);  // empty with the reason where no GearTrain draws the path
   std::optional<Train> gear_train;
   if (train.train) gear_train = python_train(*train.train);
   return Machine{m, std::move(averaged), std::move(train), std::move(gear_train), !offset.is_none()};

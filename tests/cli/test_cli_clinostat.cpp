@@ -108,6 +108,14 @@ TEST_CASE("clinostat: tilted frames never average out, and the report says why",
   const double pi = 3.14159265358979323846;
   CHECK(std::hypot(j["mean_over_period"][0].get<double>(), j["mean_over_period"][1].get<double>(), j["mean_over_period"][2].get<double>()) ==
         Approx(std::cos(60 * pi / 180) * std::cos(70 * pi / 180)).epsilon(1e-12));
+  // Machines whose train GearTrain refuses: the report goes on, without the train, saying why.
+  for (const char* args : {"--outer 1 --inner 1 --frame-angle 179.99", "--outer 1 --inner -1 --frame-angle 0.01", "--outer 1 --inner 2 --tilt 1e-300"}) {
+    const Result r2 = run(std::string("clinostat ") + args + " --json", dir);
+    INFO(args << ": " << r2.err);
+    REQUIRE(r2.status == 0);
+    CHECK(json::parse(r2.out)["train"].is_null());
+    CHECK(contains(json::parse(r2.out)["train_note"].get<std::string>(), "no gear train"));
+  }
   const Result single = run("clinostat --outer 0 --inner 2.5 --json", dir);
   REQUIRE(single.status == 0);
   CHECK(json::parse(single.out)["train"].is_null());

@@ -63,7 +63,8 @@ inline std::optional<Ratio> speed_ratio(const Rpm& outer, const Rpm& inner, std:
 
 /// The train and map of the header; train empty (with the reason) for a single-axis machine (a
 /// speed 0), parallel axes (frame angle 0 or 180), a vertical outer axis (tilt 0 or 180), or a
-/// frame angle within GearTrain's carrier-twist bound of 0 or 180 degrees.
+/// frame angle within GearTrain's carrier-twist bound of 0 or 180 degrees, or any other train
+/// GearTrain refuses (its message, after "no gear train: ").
 inline ClinostatTrain clinostat_train(const Clinostat& m) {
   const ClinostatSettings& s = m.settings();
   const double pi = Constants<double>::pi();
@@ -88,7 +89,11 @@ inline ClinostatTrain clinostat_train(const Clinostat& m) {
                       std::fmod(s.phase_outer_deg, 360.0) * (static_cast<long double>(pi) / 180);
   phase = std::fmod(phase, two_pi) + 0.0L;  // + 0: 0, not -0
   if (phase < 0) phase += two_pi;
-  out.train.emplace(a2, a3, *n, static_cast<double>(phase));
+  try {  // GearTrain's own limits (a planet that barely turns, a3 rounding to pi, ...): no train, said why
+    out.train.emplace(a2, a3, *n, static_cast<double>(phase));
+  } catch (const InvalidInput& e) {
+    out.reason = "no gear train: " + e.message();
+  }
   return out;
 }
 
