@@ -97,7 +97,7 @@ inline void draw_window_curve(SvgWriter& svg, const ClinostatPlot& p, double x0,
   double low = 1;
   for (const auto& v : p.windows) low = std::min(low, std::max(v.upper, 1e-6));
   if (p.epsilon) low = std::min(low, *p.epsilon / 2);
-  const double top = std::log10(1.0), bottom = std::floor(std::log10(low));
+  const double top = 0, bottom = std::min(-1.0, std::floor(std::log10(low)));  // at least one decade
   const auto px = [&](double window) { return x0 + w * (window - w_min) / std::max(1e-9, w_max - w_min); };
   const auto py = [&](double m) { return y0 + h * (top - std::log10(std::max(m, std::pow(10.0, bottom)))) / (top - bottom); };
   for (double e = bottom; e <= top; ++e) {

@@ -145,7 +145,8 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
     const Piece top = pieces.top();
     out.upper = top.upper;
     if (out.upper - out.lower <= width || stop(out.lower, out.upper)) break;
-    if (top.half < finest) break;  // cannot refine further: left uncertified
+    if (top.half < finest || pieces.size() > kMaxWindowPieces) break;  // cannot refine further (resolution or
+                                                                       // memory): left uncertified
     pieces.pop();
     add(top.centre - top.half / 2, top.half / 2);
     add(top.centre + top.half / 2, top.half / 2);
