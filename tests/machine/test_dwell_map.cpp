@@ -86,6 +86,34 @@ TEST_CASE("dwell map: each cell's time agrees with fine sampling by HEALPix's ve
   }
 }
 
+TEST_CASE("dwell map: a path along cell edges or on a vertex is walked within the query budget, its bound holding", "[dwell]") {
+  // One speed 0 with the default frames: the outer-only circle x = 0 runs along the meridians that
+  // bound HEALPix's polar cells; the inner-only machine's axis is vertical, so gravity sits on the
+  // south pole, a vertex of four cells. Refining such steps cannot settle them; the walk must stop.
+  for (const auto& [s, nside, duration, dt] : {std::tuple{machine(1, 0, 90, 90), 1, 6000.0, 0.01}, std::tuple{machine(100, 0, 90, 90), 2, 60.0, 1e-3},
+                                               std::tuple{machine(100, 0, 90, 90), 8, 60.0, 1e-3}, std::tuple{machine(0, 100, 90, 90), 8, 60.0, 1e-3}}) {
+    const DwellMap d = dwell_map(Clinostat(s), 0.0, duration, nside);
+    const FineCount fine = fine_count(s, 0.0, duration, nside, dt);
+    double total = 0;
+    for (std::size_t i = 0; i < d.dwell_s.size(); ++i) {
+      total += d.dwell_s[i];
+      CHECK(std::fabs(d.dwell_s[i] - fine.dwell[i]) <= d.bound_s + fine.edges[i] + 1e-9);
+    }
+    CHECK(total == Approx(duration).epsilon(1e-12));
+    CHECK(d.bound_s <= duration * (1 + 1e-9));
+  }
+}
+
+TEST_CASE("dwell map: a late start is as precise as t = 0 (whole periods later, the same map within the bounds)", "[dwell]") {
+  const ClinostatSettings s = machine(133, 200, 90, 90);  // period 6000 s
+  const Clinostat m(s);
+  const DwellMap early = dwell_map(m, 12.5, 120.0, 8), late = dwell_map(m, 6000.0 * 166666 + 12.5, 120.0, 8);
+  REQUIRE(late.bound_s <= 0.01);
+  for (std::size_t i = 0; i < early.dwell_s.size(); ++i) CHECK(std::fabs(early.dwell_s[i] - late.dwell_s[i]) <= early.bound_s + late.bound_s);
+  const FineCount fine = fine_count(s, 6000.0 * 166666 + 12.5, 120.0, 8, 1e-3);
+  for (std::size_t i = 0; i < late.dwell_s.size(); ++i) CHECK(std::fabs(late.dwell_s[i] - fine.dwell[i]) <= late.bound_s + fine.edges[i] + 1e-9);
+}
+
 TEST_CASE("dwell map: a duration of whole periods and a rest equals the walk of each part", "[dwell]") {
   const ClinostatSettings s = machine(100, 200, 90, 90);  // period 60 s
   const Clinostat m(s);

@@ -124,6 +124,41 @@ TEST_CASE("worst window mean: the bracket holds a dense scan's maximum and is at
   }
 }
 
+TEST_CASE("harmonic amplitude: the largest |a cos th + b sin th|, against a dense scan of th", "[window_mean]") {
+  std::mt19937 rng(44);
+  std::uniform_real_distribution<double> coefficient(-1, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vector3d a(coefficient(rng), coefficient(rng), coefficient(rng));
+    const Vector3d b = trial % 2 ? Vector3d(a.y(), -a.x(), 0.3 * coefficient(rng)) : Vector3d(coefficient(rng), coefficient(rng), coefficient(rng));
+    const double amplitude = semi_major_axis(a, b);
+    double scan = 0;
+    for (int k = 0; k < 100000; ++k) {
+      const double th = 2 * Constants<double>::pi() * k / 100000;
+      scan = std::max(scan, (a * std::cos(th) + b * std::sin(th)).norm());
+    }
+    CHECK(amplitude >= scan);
+    CHECK(amplitude <= scan * (1 + 1e-8));  // the scan's step is 6e-5 rad: it misses at most ~1e-9 relative
+  }
+}
+
+TEST_CASE("time to epsilon near a resonance (0.999 / 1 rpm): certified, below at W, above at W - resolution", "[window_mean]") {
+  ClinostatSettings s = machine("1", "1");
+  s.outer = Rpm(999, 1000);  // period 60000 s, a 1000-min beat
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+  const TimeToEpsilon t = time_to_epsilon(g, 0.01, 1.0);
+  REQUIRE(t.certified);
+  REQUIRE(t.first_s);
+  REQUIRE(t.stays_below_from_s);
+  const auto side = [&](double w) { return compare_worst_window_mean(g, w, 0.01); };
+  CHECK(side(*t.first_s) == WindowSide::below);
+  CHECK(side(*t.first_s - 1) == WindowSide::above);
+  CHECK(side(*t.stays_below_from_s - 1) == WindowSide::above);
+  for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 5000; w += 499) CHECK(side(w) == WindowSide::below);
+  // The beat alone: M(W) ~ |sinc(W_beat W / 2)| / 2 drops below 0.01 near W_beat W / 2 = pi (W = 60000 s).
+  CHECK(*t.first_s > 50000);
+  CHECK(*t.first_s < 60000);
+}
+
 TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted frames never reach it", "[window_mean]") {
   for (const auto& s : {machine("1.33", "2"), machine("1", "2"), machine("3.2", "-1.7", 60, 90)}) {
     const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));

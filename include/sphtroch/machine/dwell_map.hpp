@@ -13,18 +13,25 @@
 // Method (rigorous up to rounding): the gravity vector g_s moves at most v = |W_o| + |W_i| rad/s
 // (its angular velocity in the sample frame has that norm at most), so over a time step
 // [t, t + h] it stays within v h / 2 of g_s(t + h / 2). HEALPix's query_disc_inclusive returns
-// every cell of a finer grid (cells about the disc's diameter across) that the disc may touch,
+// every cell of a finer grid (cells about the disc's radius across) that the disc may touch,
 // a superset; each lies inside one cell of the map (HEALPix's hierarchy). When they all lie in one
-// cell, the step's h seconds belong to that cell exactly. Otherwise the step is halved, down to tau = min(1e-5 s, h0 / 1024); a
-// step of length <= tau still touching several cells gives its time to the cell of its midpoint
-// (HEALPix's vec2pix) and adds tau to the uncertainty of each cell it may touch. bound_s is the
-// largest uncertainty of a cell (~2 tau per entry into it). Steps start at h0 with v h0 / 2 a
-// quarter of a cell's radius. A duration longer than the period is a whole number of periods (the
-// period walked once) plus the rest.
+// cell, the step's h seconds belong to that cell exactly. Otherwise the step is halved, down to
+// tau = min(1e-5 s, h0 / 1024), depth first, while the query budget lasts (each first-level step
+// adds its share, kDwellQueryBudget / steps within [4, 4096], to a pool that carries what steps
+// leave unused, up to kMaxDwellCarry); a step that is not halved further and still touches several cells gives its time
+// to the cell of its midpoint (HEALPix's vec2pix) and adds its length to the uncertainty of each
+// cell it may touch. bound_s is the largest uncertainty of a cell (~2 tau per crossing of a cell
+// edge; a path that runs along an edge, as a single-axis machine's circle along the polar cells'
+// meridians, is uncertain for the time it spends there, and the budget stops the halving that
+// cannot help). Steps start at h0 with v h0 / 2 a quarter of a cell's radius. Times are taken
+// from the start (the frame angles of start + dt are reduced exactly), so a late start is as
+// precise as t = 0. A duration longer than the period is a whole number of periods (the period
+// walked once) plus the rest.
 // Visited: a cell with time > 0. Uniformity: the coefficient of variation of the dwell times over
 // all 12 nside^2 cells (population standard deviation over the mean D / cells; 0 = uniform).
-// Cost: ~ (min(D, T) v / cell size) query_disc calls times the halvings near cell edges; refused
-// up front beyond kMaxDwellSteps first-level steps.
+// Cost: refused up front beyond kMaxDwellSteps first-level steps (~ min(D, T) v / cell size);
+// each walk makes at most max(kDwellQueryBudget, 4 steps) + kMaxDwellCarry + 64 steps query_disc
+// calls (~0.3 us each).
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_HEALPIX)
@@ -51,37 +58,44 @@ struct DwellMap {
   double dwell_cv = 0;          ///< coefficient of variation of dwell_s over all cells
 };
 
-constexpr double kMaxDwellSteps = 2e6;  // ~45 us each with their halvings: ~90 s at most
+constexpr double kMaxDwellSteps = 2e6;      // first-level steps of one walk
+constexpr double kDwellQueryBudget = 2e7;   // query_disc calls shared by a walk's first-level steps
+constexpr int kMaxDwellCarry = 65536;       // the most a step may borrow from the steps before it
 constexpr int kMaxNside = 1024;
 
 namespace detail {
 
 class DwellWalk {
  public:
-  DwellWalk(const Clinostat& m, int nside)
-      : m_(m), base_(nside, RING, SET_NSIDE), order_(T_Healpix_Base<int>::nside2order(nside)),
+  DwellWalk(const Clinostat& m, double start_s, int nside)
+      : m_(m), start_(start_s), base_(nside, RING, SET_NSIDE), order_(T_Healpix_Base<int>::nside2order(nside)),
         speed_(std::fabs(m.settings().outer.radians_per_second()) + std::fabs(m.settings().inner.radians_per_second())) {
     const double cell_radius = std::sqrt(4 * Constants<double>::pi() / base_.Npix());
     first_step_ = cell_radius / 4 / (speed_ / 2);
-    finest_ = std::min(1e-5, first_step_ / 1024);
+    finest_ = first_step_ / 16384;
     for (int o = 0; o <= 29; ++o) fine_.emplace_back(o, RING);
   }
   double first_step() const { return first_step_; }
 
-  /// Adds the time of [a, b) to dwell and its uncertainty to unsure (per cell).
+  /// Adds the time of [start + a, start + b) to dwell and its uncertainty to unsure (per cell).
   void walk(double a, double b, std::vector<double>& dwell, std::vector<double>& unsure) const {
     if (!(b > a)) return;
     const double steps = std::ceil((b - a) / first_step_);
     const double h = (b - a) / steps;
-    for (double k = 0; k < steps; ++k) step(a + k * h, h, dwell, unsure);
+    const int share = static_cast<int>(std::clamp(kDwellQueryBudget / steps, 4.0, 4096.0));
+    int pool = kMaxDwellCarry;  // what the steps so far left unused, up to kMaxDwellCarry
+    for (double k = 0; k < steps; ++k) {
+      pool = std::min(pool, kMaxDwellCarry) + share;
+      step(a + k * h, h, dwell, unsure, pool);
+    }
   }
 
  private:
   /// The cells (RING) that the disc of radius r about p may touch: the fine cells
-  /// query_disc_inclusive returns, at a level where a fine cell is ~2 r across, mapped to their
+  /// query_disc_inclusive returns, at a level where a fine cell is ~r across, mapped to their
   /// parent cells (a NESTED cell at order o + k lies inside its parent at order o).
   std::vector<int> cells_touched(const Vector3d& p, double r) const {
-    const double fine_cells = std::sqrt(Constants<double>::pi() / 3) / (r * 2);  // nside with cells ~ 2 r across
+    const double fine_cells = std::sqrt(Constants<double>::pi() / 3) / (r * 2);  // nside with cells ~ r across
     const int order = std::clamp(static_cast<int>(std::ceil(std::log2(std::max(1.0, fine_cells)))), order_, 29);
     const T_Healpix_Base<std::int64_t>& grid = fine_[static_cast<std::size_t>(order)];
     const rangeset<std::int64_t> found = grid.query_disc_inclusive(pointing(vec3(p.x(), p.y(), p.z())), r);
@@ -95,16 +109,19 @@ class DwellWalk {
     return cells;
   }
 
-  void step(double t, double h, std::vector<double>& dwell, std::vector<double>& unsure) const {
-    const Vector3d p = m_.gravity(t + h / 2);
+  /// The step [t, t + h) (seconds after the start); budget: the query_disc calls it may still make.
+  void step(double t, double h, std::vector<double>& dwell, std::vector<double>& unsure, int& budget) const {
+    const double middle = t + h / 2;
+    const Vector3d p = m_.gravity_at(m_.outer_angle(start_, middle), m_.inner_angle(start_, middle));
     const std::vector<int> cells = cells_touched(p, speed_ * h / 2 * (1 + 1e-9) + 1e-12);
+    --budget;
     if (cells.size() == 1) {
       dwell[static_cast<std::size_t>(cells[0])] += h;
       return;
     }
-    if (h > finest_) {
-      step(t, h / 2, dwell, unsure);
-      step(t + h / 2, h / 2, dwell, unsure);
+    if (h > finest_ && budget >= 2) {
+      step(t, h / 2, dwell, unsure, budget);
+      step(t + h / 2, h / 2, dwell, unsure, budget);
       return;
     }
     dwell[static_cast<std::size_t>(base_.vec2pix(vec3(p.x(), p.y(), p.z())))] += h;
@@ -112,6 +129,7 @@ class DwellWalk {
   }
 
   const Clinostat& m_;
+  double start_;
   T_Healpix_Base<int> base_;
   std::vector<T_Healpix_Base<std::int64_t>> fine_;  // the grids of orders 0 .. 29 (RING: faster queries)
   int order_;
@@ -148,7 +166,7 @@ inline std::vector<std::vector<Vector3d>> cell_outlines(int nside, int steps = 4
 inline DwellMap dwell_map(const Clinostat& m, double start_s, double duration_s, int nside = 8) {
   detail::check_dwell_request(start_s, duration_s, nside);
   const GravitySeries series = GravitySeries::of_gravity(m);
-  const detail::DwellWalk walker(m, nside);
+  const detail::DwellWalk walker(m, start_s, nside);
   const std::size_t cells = static_cast<std::size_t>(12) * static_cast<std::size_t>(nside) * static_cast<std::size_t>(nside);
   const double period = series.period_s() ? *series.period_s() : duration_s;
   const double repeats = duration_s > period ? std::floor(duration_s / period) : 0;
@@ -164,8 +182,8 @@ inline DwellMap dwell_map(const Clinostat& m, double start_s, double duration_s,
   out.start_s = start_s;
   out.duration_s = duration_s;
   std::vector<double> part(cells, 0.0), part_unsure(cells, 0.0), other(cells, 0.0), other_unsure(cells, 0.0);
-  walker.walk(start_s, start_s + rest, part, part_unsure);
-  if (repeats > 0) walker.walk(start_s + rest, start_s + period, other, other_unsure);
+  walker.walk(0, rest, part, part_unsure);
+  if (repeats > 0) walker.walk(rest, period, other, other_unsure);
   out.dwell_s.resize(cells);
   for (std::size_t i = 0; i < cells; ++i) {
     out.dwell_s[i] = part[i] + repeats * (part[i] + other[i]);

@@ -35,12 +35,43 @@
 namespace sphtroch {
 
 /// One oscillating term a cos th + b sin th, th = j phi_o + l phi_i.
+/// max over th of |a cos th + b sin th|: the square root of the larger eigenvalue of the Gram
+/// matrix [[a.a, a.b], [a.b, b.b]], rounded up by 1e-14 relative (its own rounding is ~1e-16).
+inline double semi_major_axis(const Vector3d& a, const Vector3d& b) {
+  const double aa = a.squaredNorm(), bb = b.squaredNorm(), ab = a.dot(b);
+  const double half_difference = (aa - bb) / 2;
+  return std::sqrt((aa + bb) / 2 + std::sqrt(half_difference * half_difference + ab * ab)) * (1 + 1e-14);
+}
+
+/// sin and cos of j x + l y, |j| <= 1, |l| <= 2 (the harmonics' angles), from one sin_cos_pair
+/// by angle addition and doubling: within a few ulp of sin_cos(j x + l y), as that is of the
+/// exact value (the callers' rounding allowances, 1e-14 relative, cover both).
+class HarmonicAngles {
+ public:
+  HarmonicAngles(double x, double y) {
+    const SinCosPair<double> p = sin_cos_pair(x, y);
+    x_ = p.first;
+    y_[1] = p.second;
+    y_[2] = {2 * p.second.sin * p.second.cos, (p.second.cos - p.second.sin) * (p.second.cos + p.second.sin)};
+  }
+  SinCos<double> of(int j, int l) const {
+    const SinCos<double> a = j == 0 ? SinCos<double>{0, 1} : SinCos<double>{j * x_.sin, x_.cos};
+    const SinCos<double> y = y_[std::abs(l)];
+    const SinCos<double> b{l < 0 ? -y.sin : y.sin, y.cos};
+    return {a.sin * b.cos + a.cos * b.sin, a.cos * b.cos - a.sin * b.sin};
+  }
+
+ private:
+  SinCos<double> x_{0, 1};
+  SinCos<double> y_[3] = {{0, 1}, {0, 1}, {0, 1}};
+};
+
 struct GravityHarmonic {
   int j = 0, l = 0;
   Rpm::Frequency frequency{0, 1};  ///< j w_o + l w_i, rpm, exact
   double omega = 0;                ///< the same in rad/s
   Vector3d a = Vector3d::Zero(), b = Vector3d::Zero();
-  double amplitude = 0;            ///< sqrt(|a|^2 + |b|^2) >= |a cos th + b sin th| for every th
+  double amplitude = 0;            ///< max over th of |a cos th + b sin th| (the ellipse's semi-major axis), rounded up
 };
 
 class GravitySeries {
@@ -68,10 +99,10 @@ class GravitySeries {
 
   /// The mean over the window of length W centred at t + dt (the angles of t and dt are added, so t + dt is never rounded).
   Vector3d centred_mean(double t, double dt, double w) const {
-    const double po = m_.outer_angle(t, dt), pi = m_.inner_angle(t, dt);
+    const HarmonicAngles angles(m_.outer_angle(t, dt), m_.inner_angle(t, dt));
     Vector3d sum = constant_;
     for (const GravityHarmonic& h : terms_) {
-      const SinCos<double> th = sin_cos(h.j * po + h.l * pi);
+      const SinCos<double> th = angles.of(h.j, h.l);
       sum += (h.a * th.cos + h.b * th.sin) * sinc(h.omega * w / 2);
     }
     return sum;
@@ -121,7 +152,7 @@ class GravitySeries {
         h.b = -2 * c.imag();
         h.frequency = Rpm::frequency(j, m.settings().outer, l, m.settings().inner);
         h.omega = 2 * Constants<double>::pi() * h.frequency.value() / 60;
-        h.amplitude = std::sqrt(h.a.squaredNorm() + h.b.squaredNorm());
+        h.amplitude = semi_major_axis(h.a, h.b);
         if (h.frequency.is_zero()) {
           const SinCos<double> th = sin_cos(j * m.outer_angle(0) + l * m.inner_angle(0));
           constant_ += h.a * th.cos + h.b * th.sin;  // a resonance: constant in time

@@ -20,7 +20,9 @@
 // sin_cos within one ulp) and added to every upper bound and taken from every lower bound. The
 // intervals are split best first (largest upper bound) until upper - lower <= the width asked.
 // Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
-// Cost: the period split into pieces of 0.5 / max W_k s, then refinement near the maxima;
+// Cost: the period split into pieces of 0.5 / sqrt(L2 / L0) s (L0 = |c| + sum |s_k| A_k: the
+// window damps the fast harmonics, so long windows start from few pieces; at most the refusal's
+// count, 0.5 / max W_k s), then refinement near the maxima;
 // ~1 ms for 1.33 / 2.00 rpm (docs/performance.md). The caller bounds the period's length
 // (worst_window_mean_cost).
 #pragma once
@@ -54,7 +56,7 @@ inline double worst_window_mean_cost(const GravitySeries& g) {
   if (pieces > kMaxWindowPieces)
     throw InvalidInput("outer", g.machine().settings().outer.str(),
                        "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean",
-                       "speeds whose period has at most ~600000 turns of the faster frame");
+                       "speeds whose period has at most ~318000 turns of |outer| + |inner|");
   return std::max(8.0, pieces);
 }
 
@@ -63,32 +65,39 @@ namespace detail {
 /// The window mean m(tm) of one window length and the bounds of the header.
 class WindowMeanFunction {
  public:
-  WindowMeanFunction(const GravitySeries& g, double w) : g_(g), w_(w) {
+  WindowMeanFunction(const GravitySeries& g, double w) : g_(g) {
     double l0 = g.period_mean().norm(), l1 = 0;
-    for (const GravityHarmonic& h : g.oscillating()) {
-      const double s = std::fabs(GravitySeries::sinc(h.omega * w / 2)) * h.amplitude;
+    for (std::size_t k = 0; k < g.oscillating().size(); ++k) {
+      const GravityHarmonic& h = g.oscillating()[k];
+      sincs_.push_back(GravitySeries::sinc(h.omega * w / 2));
+      const double s = std::fabs(sincs_.back()) * h.amplitude;
       l0 += s;
       l1 += s * std::fabs(h.omega);
       l2_ += s * h.omega * h.omega;
     }
+    typical_frequency_ = l0 > 0 ? std::sqrt(l2_ / l0) : 0;
     rounding_ = 1e-14 * l0;
     rounding_slope_ = 1e-14 * l1;
   }
   struct Value {
-    Vector3d m, dm;
+    Vector3d m, dm;  ///< the window mean and its derivative in tm
   };
   Value at(double tm) const {
     const Clinostat& machine = g_.machine();
-    const double po = machine.outer_angle(tm), pi = machine.inner_angle(tm);
+    const HarmonicAngles angles(machine.outer_angle(tm), machine.inner_angle(tm));
     Value v{g_.period_mean(), Vector3d::Zero()};
-    for (const GravityHarmonic& h : g_.oscillating()) {
-      const SinCos<double> th = sin_cos(h.j * po + h.l * pi);
-      const double s = GravitySeries::sinc(h.omega * w_ / 2);
+    for (std::size_t k = 0; k < g_.oscillating().size(); ++k) {
+      const GravityHarmonic& h = g_.oscillating()[k];
+      const SinCos<double> th = angles.of(h.j, h.l);
+      const double s = sincs_[k];
       v.m += s * (h.a * th.cos + h.b * th.sin);
       v.dm += s * h.omega * (h.b * th.cos - h.a * th.sin);
     }
     return v;
   }
+  /// sqrt(L2 / L0), L0 = |c| + sum_k |s_k| A_k: the frequency of the harmonics that the window
+  /// leaves (rad/s). Pieces of 0.5 / it s start the search (any piece size keeps the bound true).
+  double typical_frequency() const { return typical_frequency_; }
   double lower(const Value& v) const { return std::max(0.0, v.m.norm() - rounding_); }
   double upper(const Value& v, double h) const {
     return std::max((v.m + v.dm * h).norm(), (v.m - v.dm * h).norm()) + l2_ * h * h / 2 + rounding_ + rounding_slope_ * h;
@@ -96,8 +105,8 @@ class WindowMeanFunction {
 
  private:
   const GravitySeries& g_;
-  double w_;
-  double l2_ = 0, rounding_ = 0, rounding_slope_ = 0;
+  std::vector<double> sincs_;  // s_k = sinc(W_k W / 2), one per oscillating harmonic
+  double l2_ = 0, typical_frequency_ = 0, rounding_ = 0, rounding_slope_ = 0;
 };
 
 /// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
@@ -129,7 +138,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
     }
     pieces.push({centre, half, f.upper(v, half)});
   };
-  const double count = worst_window_mean_cost(g);
+  const double count = std::clamp(std::ceil(period * f.typical_frequency() / 0.5), 8.0, worst_window_mean_cost(g));
   const double half = period / count / 2;
   for (double k = 0; k < count; ++k) {
     add((2 * k + 1) * half, half);
@@ -188,8 +197,9 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon, double
     if (work) *work += 1;
     Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
     double curvature = 0;
+    const HarmonicAngles angles(x, y);
     for (const Term& t : terms) {
-      const SinCos<double> th = sin_cos(t.j * x + t.l * y);
+      const SinCos<double> th = angles.of(t.j, t.l);
       const Vector3d value = t.s * (t.h->a * th.cos + t.h->b * th.sin), slope = t.s * (t.h->b * th.cos - t.h->a * th.sin);
       f += value;
       fx += t.j * slope;
