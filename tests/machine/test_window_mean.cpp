@@ -141,6 +141,31 @@ TEST_CASE("harmonic amplitude: the largest |a cos th + b sin th|, against a dens
   }
 }
 
+TEST_CASE("torus bound: above a dense scan of |window mean| over both frame angles, below the triangle bound", "[window_mean]") {
+  // The window mean at a start lies on F(x, y) = c + sum_k s_k (a_k cos(j x + l y) + b_k sin(j x + l y)),
+  // written here from the harmonics; the bound must hold over the whole torus of (x, y).
+  for (const auto& s : {machine("1.33", "2"), machine("-0.7", "1.3", 75, 80), machine("0.31", "0.5", 120, 60), machine("2.5", "0", 30, 90)}) {
+    const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+    const detail::TorusGramBound bound(g);
+    for (const double w : {3.0, 40.0, 333.0, 2000.0}) {
+      double scan = 0, triangle = g.period_mean().norm();
+      for (const GravityHarmonic& h : g.oscillating()) triangle += std::fabs(GravitySeries::sinc(h.omega * w / 2)) * h.amplitude;
+      for (int i = 0; i < 400; ++i)
+        for (int k = 0; k < 400; ++k) {
+          const double x = 2 * Constants<double>::pi() * i / 400, y = 2 * Constants<double>::pi() * k / 400;
+          Vector3d f = g.period_mean();
+          for (const GravityHarmonic& h : g.oscillating()) {
+            const double th = h.j * x + h.l * y;
+            f += std::sin(h.omega * w / 2) / (h.omega * w / 2) * (h.a * std::cos(th) + h.b * std::sin(th));
+          }
+          scan = std::max(scan, f.norm());
+        }
+      CHECK(bound.upper(w) >= scan);
+      CHECK(bound.upper(w) <= triangle * (1 + 1e-12) + 1e-13);
+    }
+  }
+}
+
 TEST_CASE("time to epsilon near a resonance (0.999 / 1 rpm): certified, below at W, above at W - resolution", "[window_mean]") {
   ClinostatSettings s = machine("1", "1");
   s.outer = Rpm(999, 1000);  // period 60000 s, a 1000-min beat

@@ -16,12 +16,12 @@
 //   means is c), so when |c| >= epsilon no window qualifies: both empty, with the reason.
 // - |mean(t0, W) - c| <= sum_k A_k |sinc(W_k W / 2)| <= (sum_k 2 A_k / |W_k|) / W = C / W, so every
 //   W >= C / (epsilon - |c|) is below: the grid is searched up to there, downwards for the last W
-//   above epsilon. The cheap bound |c| + sum_k A_k |sinc(W_k W / 2)| settles most windows without
-//   a search.
+//   above epsilon. A cheap bound settles most windows without a search: detail::TorusGramBound
+//   (worst_window_mean.hpp), which is never above |c| + sum_k A_k |sinc(W_k W / 2)|.
 // Between grid points M can exceed its values at the grid by at most (1 + |c| + sum A_k) r / W
 // (|d/dW (W mean)| <= |f|); the answers are stated for the grid.
 // Cost: one comparison per grid window up to the first below epsilon, and one per window above
-// the cheap bound while going down from C / (epsilon - |c|); bounded up front by kMaxWindows, and
+// the cheap bound (TorusGramBound) while going down from C / (epsilon - |c|); bounded up front by kMaxWindows, and
 // while running by kMaxTimeToEpsilonWork evaluations (then not certified, and it says so: speeds
 // near a resonance, whose slow beat puts many windows within a hair of epsilon).
 #pragma once
@@ -51,7 +51,9 @@ constexpr double kMaxTimeToEpsilonWork = 3e7;
 
 /// Throws InvalidInput("epsilon") unless 0 < epsilon < 1e9, ("resolution") unless 0 < r <= 1e6 s,
 /// and ("resolution") when the tail C / (epsilon - |c|) holds more than kMaxWindows grid windows.
-inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, double resolution_s) {
+/// `max_work`: the evaluations the search may spend (default kMaxTimeToEpsilonWork).
+inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, double resolution_s,
+                                     double max_work = kMaxTimeToEpsilonWork) {
   if (!(epsilon > 0 && epsilon < 1e9)) throw InvalidInput("epsilon", number_text(epsilon), "not a positive bound", "0 < epsilon (units of g0)");
   if (!(resolution_s > 0 && resolution_s <= 1e6))
     throw InvalidInput("resolution", number_text(resolution_s), "not a positive step", "0 < resolution <= 1e6 seconds");
@@ -71,25 +73,23 @@ inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, dou
     throw InvalidInput("resolution", number_text(resolution_s),
                        "the search would cover " + number_text(last) + " windows up to the proven tail at " + number_text(out.tail_s) + " s",
                        "a resolution >= " + number_text(out.tail_s / kMaxWindows) + " s, or a larger epsilon");
-  const auto cheap_upper = [&](double w) {
-    double u = c;
-    for (const GravityHarmonic& h : g.oscillating()) u += h.amplitude * std::fabs(GravitySeries::sinc(h.omega * w / 2));
-    return u * (1 + 1e-14) + 1e-15;  // the sum's rounding
-  };
+  const detail::TorusGramBound torus_bound(g);
+  const auto cheap_upper = [&](double w) { return torus_bound.upper(w); };
+
   double hint = 0;  // the start of the last window found above epsilon
   double work = 0;
   const auto side = [&](double k) {
     const double w = k * resolution_s;
     if (cheap_upper(w) <= epsilon) return WindowSide::below;
-    if (work > kMaxTimeToEpsilonWork) return WindowSide::undecided;
+    if (work > max_work) return WindowSide::undecided;
     return compare_worst_window_mean(g, w, epsilon, &hint, &work);
   };
   const auto undecided = [&](double k) {
     out.certified = false;
     out.first_s.reset();
     out.stays_below_from_s.reset();
-    out.reason = work > kMaxTimeToEpsilonWork
-                     ? "the search reached its work bound (3e7 evaluations) at W = " + number_text(k * resolution_s) +
+    out.reason = work > max_work
+                     ? "the search reached its work bound (" + number_text(max_work) + " evaluations) at W = " + number_text(k * resolution_s) +
                            " s: not decided; a coarser resolution or a larger epsilon"
                      : "M(W) at W = " + number_text(k * resolution_s) + " s is within rounding of epsilon: not decided";
     return out;
