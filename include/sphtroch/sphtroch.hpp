@@ -92,6 +92,7 @@
 #include "sphtroch/atlas/atlas_slices.hpp"
 
 #include "sphtroch/machine/clinostat.hpp"
+#include "sphtroch/machine/clinostat_design.hpp"
 #include "sphtroch/machine/clinostat_plot.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"

@@ -128,6 +128,7 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth identify
 void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // clinostat_command.cpp
+void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::App*, Action>>& actions);  // design, merge
 /// `completion bash|zsh`: register it last, so that its script lists every command (completion_command.cpp).
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS

@@ -255,6 +255,8 @@ void run_trace(const ClinostatOptions& o, const Clinostat& m) {
 }
 
 void run_clinostat(const ClinostatOptions& o) {
+  if (o.machine.outer.empty() || o.machine.inner.empty())
+    throw UsageError{"clinostat: give --outer RPM and --inner RPM (or clinostat design | merge; see docs/clinostat.md)"};
   const Clinostat m(o.machine.settings());
   if (o.trace) return run_trace(o, m);
   for (const auto& [given, name] : {std::pair{!o.duration.empty(), "--duration"}, std::pair{!o.samples.empty(), "--samples"},
@@ -282,9 +284,10 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "against W (up to 1.25 x the time to epsilon, else three periods up to two hours), epsilon dashed.\n"
       "--trace --duration S --samples N: t,gx,gy,gz (N samples, both ends included; .npy by -o's suffix).\n"
       "Exit 3: a bracket or a comparison not certified (the output says which).\n"
+      "Choosing speeds: sphtroch clinostat design (and clinostat merge for its --shard parts).\n"
       "Example: sphtroch clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01");
-  cmd->add_option("--outer", o->machine.outer, "outer frame's speed, rpm (signed; exact decimal or p/q)")->required();
-  cmd->add_option("--inner", o->machine.inner, "inner frame's speed, rpm (signed; exact decimal or p/q)")->required();
+  cmd->add_option("--outer", o->machine.outer, "outer frame's speed, rpm (signed; exact decimal or p/q); required");
+  cmd->add_option("--inner", o->machine.inner, "inner frame's speed, rpm (signed; exact decimal or p/q); required");
   cmd->add_option("--tilt", o->machine.tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)");
   cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)");
   cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)");
@@ -302,7 +305,10 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--duration", o->duration, "--trace: seconds covered");
   cmd->add_option("--samples", o->samples, "--trace: number of samples N (2 .. 10000000; default 1001)");
   add_output_option(*cmd, o->output, "the --trace table");
-  actions.emplace_back(cmd, [o] { run_clinostat(*o); });
+  actions.emplace_back(cmd, [o, cmd] {
+    if (cmd->get_subcommands().empty()) run_clinostat(*o);  // else design or merge runs
+  });
+  register_clinostat_design(*cmd, actions);
 }
 
 }  // namespace sphtroch::cli

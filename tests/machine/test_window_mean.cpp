@@ -146,7 +146,7 @@ TEST_CASE("torus bound: above a dense scan of |window mean| over both frame angl
   // written here from the harmonics; the bound must hold over the whole torus of (x, y).
   for (const auto& s : {machine("1.33", "2"), machine("-0.7", "1.3", 75, 80), machine("0.31", "0.5", 120, 60), machine("2.5", "0", 30, 90)}) {
     const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
-    const detail::TorusGramBound bound(g);
+    const TorusGramBound bound(g);
     for (const double w : {3.0, 40.0, 333.0, 2000.0}) {
       double scan = 0, triangle = g.period_mean().norm();
       for (const GravityHarmonic& h : g.oscillating()) triangle += std::fabs(GravitySeries::sinc(h.omega * w / 2)) * h.amplitude;

@@ -16,7 +16,7 @@
 //   means is c), so when |c| >= epsilon no window qualifies: both empty, with the reason.
 // - |mean(t0, W) - c| <= sum_k A_k |sinc(W_k W / 2)| <= (sum_k 2 A_k / |W_k|) / W = C / W, so every
 //   W >= C / (epsilon - |c|) is below: the grid is searched up to there, downwards for the last W
-//   above epsilon. A cheap bound settles most windows without a search: detail::TorusGramBound
+//   above epsilon. A cheap bound settles most windows without a search: TorusGramBound
 //   (worst_window_mean.hpp), which is never above |c| + sum_k A_k |sinc(W_k W / 2)|.
 // Between grid points M can exceed its values at the grid by at most (1 + |c| + sum A_k) r / W
 // (|d/dW (W mean)| <= |f|); the answers are stated for the grid.
@@ -73,7 +73,7 @@ inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, dou
     throw InvalidInput("resolution", number_text(resolution_s),
                        "the search would cover " + number_text(last) + " windows up to the proven tail at " + number_text(out.tail_s) + " s",
                        "a resolution >= " + number_text(out.tail_s / kMaxWindows) + " s, or a larger epsilon");
-  const detail::TorusGramBound torus_bound(g);
+  const TorusGramBound torus_bound(g);
   const auto cheap_upper = [&](double w) { return torus_bound.upper(w); };
 
   double hint = 0;  // the start of the last window found above epsilon

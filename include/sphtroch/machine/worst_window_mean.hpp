@@ -17,7 +17,10 @@
 //   L2 = sum_k |s_k| A_k W_k^2 >= |m''| everywhere (A_k the harmonic's amplitude),
 // because |m(tc) + m'(tc) d| is convex in d. Rounding of m and m' in double is bounded by
 // 1e-14 (|c| + sum |s_k| A_k + h sum |s_k| A_k |W_k|) (phases reduced exactly, ~3e-15 rad;
-// sin_cos within one ulp) and added to every upper bound and taken from every lower bound. The
+// sin_cos within one ulp) plus the sincs' own error, which is absolute, not relative (near a zero
+// of sinc, at W a multiple of 2 pi / W_k, sin of the rounded argument is ~1e-16 x, not 0):
+// 1e-15 per harmonic, so 1e-15 sum A_k (1 + h |W_k|); both are added to every upper bound and
+// taken from every lower bound. The
 // intervals are split best first (largest upper bound) until upper - lower <= the width asked.
 // Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
 // Cost: the period split into pieces of 0.5 / sqrt(L2 / L0) s (L0 = |c| + sum |s_k| A_k: the
@@ -60,13 +63,54 @@ inline double worst_window_mean_cost(const GravitySeries& g) {
   return std::max(8.0, pieces);
 }
 
+/// A closed-form bound on sup |F| over the torus of frame angles, F = c + sum_k s_k B_k e(th_k),
+/// B_k = [a_k b_k] (3 x 2), e(th) = (cos th, sin th): expanding |F|^2 and bounding each product
+/// over independent angles, |B_k^T c| >= |c . B_k e| and sigma_km = the largest singular value of
+/// B_k^T B_m >= |B_k e . B_m e'|, so
+///   |F|^2 <= |c|^2 + 2 sum_k |s_k| |B_k^T c| + sum_k sum_m |s_k| |s_m| sigma_km.
+/// Harmonics in orthogonal directions do not add up (sigma_km = 0), so it is never above the
+/// triangle bound |c| + sum_k |s_k| A_k and often far below. The sigmas depend on the machine's
+/// geometry only: computed once here, then `upper(w)` costs one sinc per harmonic.
+class TorusGramBound {
+ public:
+  explicit TorusGramBound(const GravitySeries& g) : g_(g) {
+    const std::vector<GravityHarmonic>& h = g.oscillating();
+    const Vector3d c = g.period_mean();
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      centre_.push_back(Eigen::Vector2d(h[k].a.dot(c), h[k].b.dot(c)).norm());
+      for (std::size_t m = 0; m < h.size(); ++m) {
+        Eigen::Matrix2d product;
+        product << h[k].a.dot(h[m].a), h[k].a.dot(h[m].b), h[k].b.dot(h[m].a), h[k].b.dot(h[m].b);
+        sigma_.push_back(Eigen::JacobiSVD<Eigen::Matrix2d>(product).singularValues()(0));
+      }
+    }
+  }
+  /// The bound for window W (g0), rounded up.
+  double upper(double w) const {
+    const std::vector<GravityHarmonic>& h = g_.oscillating();
+    std::vector<double> s(h.size());
+    for (std::size_t k = 0; k < h.size(); ++k) s[k] = std::fabs(GravitySeries::sinc(h[k].omega * w / 2));
+    double square = g_.period_mean().squaredNorm(), size = g_.period_mean().norm();
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      square += 2 * s[k] * centre_[k];
+      size += s[k] * h[k].amplitude;
+      for (std::size_t m = 0; m < h.size(); ++m) square += s[k] * s[m] * sigma_[k * h.size() + m];
+    }
+    return std::sqrt(square) * (1 + 1e-13) + 1e-14 * (size + 1);  // the sums' and the SVD's rounding
+  }
+
+ private:
+  const GravitySeries& g_;
+  std::vector<double> centre_, sigma_;
+};
+
 namespace detail {
 
 /// The window mean m(tm) of one window length and the bounds of the header.
 class WindowMeanFunction {
  public:
   WindowMeanFunction(const GravitySeries& g, double w) : g_(g) {
-    double l0 = g.period_mean().norm(), l1 = 0;
+    double l0 = g.period_mean().norm(), l1 = 0, sinc_error = 0, sinc_error_slope = 0;
     for (std::size_t k = 0; k < g.oscillating().size(); ++k) {
       const GravityHarmonic& h = g.oscillating()[k];
       sincs_.push_back(GravitySeries::sinc(h.omega * w / 2));
@@ -74,10 +118,12 @@ class WindowMeanFunction {
       l0 += s;
       l1 += s * std::fabs(h.omega);
       l2_ += s * h.omega * h.omega;
+      sinc_error += 1e-15 * h.amplitude;
+      sinc_error_slope += 1e-15 * h.amplitude * std::fabs(h.omega);
     }
     typical_frequency_ = l0 > 0 ? std::sqrt(l2_ / l0) : 0;
-    rounding_ = 1e-14 * l0;
-    rounding_slope_ = 1e-14 * l1;
+    rounding_ = 1e-14 * l0 + sinc_error;
+    rounding_slope_ = 1e-14 * l1 + sinc_error_slope;
   }
   struct Value {
     Vector3d m, dm;  ///< the window mean and its derivative in tm
@@ -167,47 +213,6 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   return out;
 }
 
-/// A closed-form bound on sup |F| over the torus of frame angles, F = c + sum_k s_k B_k e(th_k),
-/// B_k = [a_k b_k] (3 x 2), e(th) = (cos th, sin th): expanding |F|^2 and bounding each product
-/// over independent angles, |B_k^T c| >= |c . B_k e| and sigma_km = the largest singular value of
-/// B_k^T B_m >= |B_k e . B_m e'|, so
-///   |F|^2 <= |c|^2 + 2 sum_k |s_k| |B_k^T c| + sum_k sum_m |s_k| |s_m| sigma_km.
-/// Harmonics in orthogonal directions do not add up (sigma_km = 0), so it is never above the
-/// triangle bound |c| + sum_k |s_k| A_k and often far below. The sigmas depend on the machine's
-/// geometry only: computed once here, then `upper(w)` costs one sinc per harmonic.
-class TorusGramBound {
- public:
-  explicit TorusGramBound(const GravitySeries& g) : g_(g) {
-    const std::vector<GravityHarmonic>& h = g.oscillating();
-    const Vector3d c = g.period_mean();
-    for (std::size_t k = 0; k < h.size(); ++k) {
-      centre_.push_back(Eigen::Vector2d(h[k].a.dot(c), h[k].b.dot(c)).norm());
-      for (std::size_t m = 0; m < h.size(); ++m) {
-        Eigen::Matrix2d product;
-        product << h[k].a.dot(h[m].a), h[k].a.dot(h[m].b), h[k].b.dot(h[m].a), h[k].b.dot(h[m].b);
-        sigma_.push_back(Eigen::JacobiSVD<Eigen::Matrix2d>(product).singularValues()(0));
-      }
-    }
-  }
-  /// The bound for window W (g0), rounded up.
-  double upper(double w) const {
-    const std::vector<GravityHarmonic>& h = g_.oscillating();
-    std::vector<double> s(h.size());
-    for (std::size_t k = 0; k < h.size(); ++k) s[k] = std::fabs(GravitySeries::sinc(h[k].omega * w / 2));
-    double square = g_.period_mean().squaredNorm(), size = g_.period_mean().norm();
-    for (std::size_t k = 0; k < h.size(); ++k) {
-      square += 2 * s[k] * centre_[k];
-      size += s[k] * h[k].amplitude;
-      for (std::size_t m = 0; m < h.size(); ++m) square += s[k] * s[m] * sigma_[k * h.size() + m];
-    }
-    return std::sqrt(square) * (1 + 1e-13) + 1e-14 * (size + 1);  // the sums' and the SVD's rounding
-  }
-
- private:
-  const GravitySeries& g_;
-  std::vector<double> centre_, sigma_;
-};
-
 /// True when sup |F| <= epsilon is proven over the whole torus of frame angles, F(x, y) = c +
 /// sum_k s_k (a_k cos(j x + l y) + b_k sin(j x + l y)): the window mean at any start lies on it,
 /// so M(W) <= epsilon follows, at a cost independent of the period. A box of half-widths (hx, hy)
@@ -288,7 +293,9 @@ enum class WindowSide { below, above, undecided };
 /// `work` (optional): adds the number of evaluations spent (the cost's measure).
 inline WindowSide compare_worst_window_mean(const GravitySeries& g, double window_s, double epsilon, double* hint = nullptr,
                                             double* work = nullptr) {
-  if (hint && g.window_mean(*hint, window_s).norm() > epsilon * (1 + 1e-13) + 1e-15) return WindowSide::above;
+  double sizes = 1;  // the window mean's rounding is within 1e-14 (1 + |c| + sum A_k) (header)
+  for (const GravityHarmonic& h : g.oscillating()) sizes += h.amplitude;
+  if (hint && g.window_mean(*hint, window_s).norm() > epsilon * (1 + 1e-13) + 1e-14 * (sizes + g.period_mean().norm())) return WindowSide::above;
   if (detail::torus_below(g, window_s, epsilon, work)) return WindowSide::below;
   const WorstWindowMean m = detail::search_worst_window_mean(
       g, window_s, 0.0, [epsilon](double lower, double upper) { return lower > epsilon || upper <= epsilon; }, work);

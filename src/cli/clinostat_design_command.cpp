@@ -1,0 +1,353 @@
+// sphtroch clinostat design | clinostat merge — choosing a clinostat's speeds: every pair of a speed
+// grid ranked by its time to epsilon, with M(window) and coverage, and the Pareto front of (time
+// to epsilon, coverage) (machine/clinostat_design.hpp does the work); a grid divided with
+// --shard I/K and its JSON parts joined back into the bytes of one run.
+//
+// One path makes both outputs: the rows as JSON (unranked, the pairs' order), then
+// ranked_output() ranks them and writes the whole; `merge` rebuilds the rows from the parts and
+// calls the same function, so a merged run equals the unsharded one byte for byte.
+#include "cli_common.hpp"
+#include "shard_parts.hpp"
+
+#include "sphtroch/core/parallel_for.hpp"
+#include "sphtroch/core/shard.hpp"
+#include "sphtroch/io/input_file.hpp"
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/machine/clinostat_design.hpp"
+#include "sphtroch/machine/clinostat_text.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace sphtroch::cli {
+
+namespace {
+
+struct DesignOptions {
+  std::string outer, inner, step, window, epsilon, resolution, coverage, nside, teeth, tilt, frame_angle, top, threads, shard, output;
+  bool json = false;
+};
+
+constexpr std::size_t kMaxDesignPartBytes = std::size_t(1) << 30;
+
+SpeedRange parse_speed_range(const std::string& text, const std::string& step, const std::string& field) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) throw InvalidInput(field, text, "not a range", "LO:HI in rpm, e.g. 0.5:5");
+  return {parse_rpm(text.substr(0, colon), field), parse_rpm(text.substr(colon + 1), field), parse_rpm(step, "step")};
+}
+
+double parse_design_number(const std::string& text, const std::string& field, double max, const std::string& valid) {
+  const std::optional<double> v = parse_number(text);
+  if (!v || !(*v > 0) || *v > max) throw InvalidInput(field, text, "not a positive number in range", valid);
+  return *v;
+}
+
+/// The request as parsed, and the same as JSON (its members name the run: every part carries it).
+DesignRequest read_design_request(const DesignOptions& o) {
+  if (o.outer.empty() || o.inner.empty() || o.step.empty() || o.window.empty() || o.epsilon.empty())
+    throw UsageError{"clinostat design: give --outer LO:HI --inner LO:HI --step RPM --window S --epsilon E (see docs/clinostat.md)"};
+  DesignRequest r;
+  r.outer = parse_speed_range(o.outer, o.step, "outer");
+  r.inner = parse_speed_range(o.inner, o.step, "inner");
+  r.window_s = parse_design_number(o.window, "window", 1e9, "seconds in (0, 1e9]");
+  r.epsilon = parse_design_number(o.epsilon, "epsilon", 1e9, "a bound in units of g0, > 0");
+  if (!o.resolution.empty()) r.resolution_s = parse_design_number(o.resolution, "resolution", 1e6, "seconds in (0, 1e6]");
+  if (!o.coverage.empty()) r.coverage_s = parse_design_number(o.coverage, "coverage", 1e12, "seconds in (0, 1e12]");
+  if (!o.nside.empty()) {
+    if (!r.coverage_s) throw UsageError{"--nside = " + o.nside + ": only with --coverage; valid: --coverage S --nside K"};
+    r.nside = static_cast<int>(parse_count(o.nside, "nside", 1, 1024));
+    if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 1024");
+  }
+#if !defined(SPHTROCH_HAVE_HEALPIX)
+  if (r.coverage_s) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
+#endif
+  if (!o.teeth.empty()) r.teeth = parse_tooth_range(o.teeth, "teeth");
+  if (!o.tilt.empty()) r.tilt_deg = parse_degrees(o.tilt, "tilt", "[0, 180] degrees");
+  if (!o.frame_angle.empty()) r.frame_angle_deg = parse_degrees(o.frame_angle, "frame-angle", "[0, 180] degrees");
+  return r;
+}
+
+nlohmann::json request_json(const DesignRequest& r) {
+  const auto range = [](const SpeedRange& s) { return s.lo.str() + ":" + s.hi.str(); };
+  nlohmann::json j = {{"outer", range(r.outer)}, {"inner", range(r.inner)}, {"step", r.outer.step.str()},
+                      {"tilt", r.tilt_deg}, {"frame_angle", r.frame_angle_deg}, {"window_s", r.window_s},
+                      {"epsilon", r.epsilon}, {"resolution_s", r.resolution_s}};
+  j["coverage_s"] = r.coverage_s ? nlohmann::json(*r.coverage_s) : nlohmann::json(nullptr);
+  j["nside"] = r.nside;
+  j["teeth"] = r.teeth ? nlohmann::json(r.teeth->str()) : nlohmann::json(nullptr);
+  return j;
+}
+
+/// The request a part or a run names, read back from its JSON (as a run writes it).
+DesignRequest request_from_json(const nlohmann::json& j) {
+  DesignOptions o;
+  o.outer = j.at("outer").get<std::string>();
+  o.inner = j.at("inner").get<std::string>();
+  o.step = j.at("step").get<std::string>();
+  o.window = number_text(j.at("window_s").get<double>());
+  o.epsilon = number_text(j.at("epsilon").get<double>());
+  o.resolution = number_text(j.at("resolution_s").get<double>());
+  if (!j.at("coverage_s").is_null()) {
+    o.coverage = number_text(j.at("coverage_s").get<double>());
+    o.nside = std::to_string(j.at("nside").get<int>());
+  }
+  if (!j.at("teeth").is_null()) o.teeth = j.at("teeth").get<std::string>();
+  o.tilt = number_text(j.at("tilt").get<double>());
+  o.frame_angle = number_text(j.at("frame_angle").get<double>());
+  const DesignRequest r = read_design_request(o);
+  if (request_json(r) != j) throw InvalidInput("shard", "\"request\" " + brief_json(j), "not written as the run writes it", "the request of sphtroch clinostat design");
+  return r;
+}
+
+nlohmann::json or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+nlohmann::json row_json(const DesignRow& row) {
+  nlohmann::json j = {{"outer", row.pair.outer.str()}, {"inner", row.pair.inner.str()}};
+  j["n"] = row.n.empty() ? nlohmann::json(nullptr) : nlohmann::json(row.n);
+  if (row.pair.teeth) j["teeth"] = row.pair.teeth->str();
+  j["period_s"] = or_null(row.period_s);
+  j["mean_over_period"] = row.period_mean;
+  j["worst_window_mean"] = row.worst ? nlohmann::json{{"lower", row.worst->lower}, {"upper", row.worst->upper}} : nlohmann::json(nullptr);
+  j["first_s"] = row.time_to ? or_null(row.time_to->first_s) : nlohmann::json(nullptr);
+  j["stays_below_from_s"] = row.time_to ? or_null(row.time_to->stays_below_from_s) : nlohmann::json(nullptr);
+  j["coverage"] = or_null(row.coverage);
+  j["dwell_cv"] = or_null(row.dwell_cv);
+  j["certified"] = row.decided();
+  j["reason"] = !row.refused.empty() ? row.refused : row.time_to ? row.time_to->reason : std::string();
+  return j;
+}
+
+/// What the ranking reads of a row's JSON.
+DesignRank rank_of(const nlohmann::json& row) {
+  DesignRank k;
+  k.outer = parse_rpm(row.at("outer").get<std::string>(), "outer").value();
+  k.inner = parse_rpm(row.at("inner").get<std::string>(), "inner").value();
+  if (!row.at("certified").get<bool>()) return k;
+  k.group = row.at("stays_below_from_s").is_null() ? 1 : 0;
+  if (k.group == 0) {
+    k.stays_s = row.at("stays_below_from_s").get<double>();
+    k.first_s = row.at("first_s").get<double>();
+  }
+  k.coverage = row.at("coverage").is_null() ? -1 : row.at("coverage").get<double>();
+  return k;
+}
+
+/// The whole run's JSON from its rows in the pairs' order: ranked, counted, the Pareto front.
+nlohmann::json ranked_output(const nlohmann::json& request, const std::vector<nlohmann::json>& rows) {
+  std::vector<std::size_t> order(rows.size());
+  std::vector<DesignRank> ranks;
+  for (const nlohmann::json& r : rows) ranks.push_back(rank_of(r));
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return design_less(ranks[a], ranks[b]); });
+  std::vector<DesignRank> ranked;
+  nlohmann::json out_rows = nlohmann::json::array();
+  std::size_t groups[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    ranked.push_back(ranks[order[k]]);
+    ++groups[ranks[order[k]].group];
+    nlohmann::json row = rows[order[k]];
+    row["rank"] = k + 1;
+    out_rows.push_back(row);
+  }
+  nlohmann::json front = nlohmann::json::array();
+  for (const std::size_t k : pareto_front(ranked)) front.push_back(k + 1);
+  return {{"request", request}, {"pairs", rows.size()}, {"reach_epsilon", groups[0]}, {"never_below", groups[1]},
+          {"undecided", groups[2]}, {"certified", groups[2] == 0}, {"pareto", front}, {"rows", out_rows}};
+}
+
+std::string cell(const nlohmann::json& v) { return v.is_null() ? "-" : v.is_string() ? v.get<std::string>() : number_text(v.get<double>()); }
+
+void write_design_text(std::ostream& out, const nlohmann::json& run, std::size_t top) {
+  const nlohmann::json& q = run.at("request");
+  out << "clinostat design: " << run.at("pairs").get<std::size_t>() << " speed pairs (outer " << cell(q.at("outer")) << ", inner "
+      << cell(q.at("inner")) << " rpm, step " << cell(q.at("step")) << " rpm" << (q.at("teeth").is_null() ? "" : ", gear-driven, teeth " + cell(q.at("teeth")))
+      << "), tilt " << cell(q.at("tilt")) << " deg, frame angle " << cell(q.at("frame_angle")) << " deg\n"
+      << "epsilon " << cell(q.at("epsilon")) << " g0 (windows in steps of " << cell(q.at("resolution_s")) << " s): "
+      << run.at("reach_epsilon").get<std::size_t>() << " pairs reach it, " << run.at("never_below").get<std::size_t>()
+      << " never do (the mean over a period is above it), " << run.at("undecided").get<std::size_t>() << " not certified\n"
+      << "rank  outer  inner  n  period_s  M(" << cell(q.at("window_s")) << " s) upper  first_s  stays_below_from_s"
+      << (q.at("coverage_s").is_null() ? "" : "  coverage(" + cell(q.at("coverage_s")) + " s)") << "\n";
+  const nlohmann::json& rows = run.at("rows");
+  for (std::size_t k = 0; k < rows.size() && k < top; ++k) {
+    const nlohmann::json& r = rows[k];
+    out << r.at("rank").get<std::size_t>() << "  " << cell(r.at("outer")) << "  " << cell(r.at("inner")) << "  " << cell(r.at("n"))
+        << (r.contains("teeth") ? " (teeth " + cell(r.at("teeth")) + ")" : "") << "  " << cell(r.at("period_s")) << "  "
+        << (r.at("worst_window_mean").is_null() ? "-" : cell(r.at("worst_window_mean").at("upper"))) << "  " << cell(r.at("first_s"))
+        << "  " << cell(r.at("stays_below_from_s")) << (q.at("coverage_s").is_null() ? "" : "  " + cell(r.at("coverage")))
+        << (r.at("certified").get<bool>() ? "" : "  NOT CERTIFIED: " + r.at("reason").get<std::string>()) << "\n";
+  }
+  if (rows.size() > top) out << "... " << rows.size() - top << " more (--top N, or --json for every pair)\n";
+  if (!q.at("coverage_s").is_null()) {
+    out << "Pareto front (shorter time to epsilon, larger coverage): ranks";
+    for (const auto& k : run.at("pareto")) out << " " << k.get<std::size_t>();
+    out << "\n";
+  }
+}
+
+void finish_run(const nlohmann::json& run, const std::string& output, bool json, std::size_t top) {
+  write_output(output, [&](std::ostream& out) {
+    if (json) out << run.dump(2) << "\n";
+    else write_design_text(out, run, top);
+  });
+  if (!run.at("certified").get<bool>())
+    throw UncertifiedResult{"clinostat design: " + std::to_string(run.at("undecided").get<std::size_t>()) +
+                            " pair(s) not certified (refused or past the work bound; their rows say why), the ranking leaves them last"};
+}
+
+void run_design(const DesignOptions& o) {
+  const DesignRequest r = read_design_request(o);
+  const std::vector<DesignPair> all = design_pairs(r);
+  if (all.empty()) throw InvalidInput("teeth", o.teeth.empty() ? o.outer : o.teeth, "no speed pair of the grid", "a grid with a pair the gears can drive");
+  std::optional<Shard> shard;
+  if (!o.shard.empty()) {
+    if (!o.json) throw UsageError{"--shard = " + o.shard + ": a part is JSON; valid: --shard I/K --json -o part.json, joined by sphtroch clinostat merge"};
+    shard = parse_shard(o.shard, all.size(), "the pairs (" + std::to_string(all.size()) + ")");
+  }
+  const auto [begin, end] = shard ? shard_range(all.size(), *shard) : std::pair<std::size_t, std::size_t>{0, all.size()};
+  const std::size_t top = o.top.empty() ? 20 : parse_count(o.top, "top", 1, kMaxDesignPairs);
+  std::vector<nlohmann::json> rows(end - begin);
+  parallel_for(rows.size(), parse_threads(o.threads), [&](std::size_t k) { rows[k] = row_json(evaluate_pair(r, all[begin + k])); });
+  if (!shard) return finish_run(ranked_output(request_json(r), rows), o.output, o.json, top);
+  nlohmann::json part = {{"request", request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
+  write_output(o.output, [&](std::ostream& out) { out << signed_part(part.dump(2) + "\n"); });
+}
+
+/// One part: checked on its own (members, request, digest, its rows the pairs of its place).
+struct DesignPart {
+  std::string path;
+  nlohmann::json request;
+  Shard shard;
+  std::vector<nlohmann::json> rows;
+};
+
+const std::string kDesignPart = "the JSON of sphtroch clinostat design ... --shard I/K --json";
+
+/// Refuses (InvalidInput "shard") a row that is not laid out as the run writes it for `pair`:
+/// its members, the pair's speeds and teeth, every number finite and in range. (The digest shows
+/// an edit of its bytes; the numbers are the run's.)
+void check_design_row(const nlohmann::json& row, const DesignPair& pair, const std::string& where) {
+  std::vector<std::string> names = {"outer", "inner", "n", "period_s", "mean_over_period", "worst_window_mean", "first_s",
+                                    "stays_below_from_s", "coverage", "dwell_cv", "certified", "reason"};
+  if (pair.teeth) names.push_back("teeth");
+  check_members(row, where, names);
+  if (row.at("outer") != pair.outer.str() || row.at("inner") != pair.inner.str() || (pair.teeth && row.at("teeth") != pair.teeth->str()))
+    throw InvalidInput("shard", where + "outer " + brief_json(row.at("outer")) + ", inner " + brief_json(row.at("inner")),
+                       "not the pair of its place", "outer " + pair.outer.str() + ", inner " + pair.inner.str());
+  const auto optional_number = [&](const char* key, double lo, double hi) {
+    if (!row.at(key).is_null()) number_member(row, where, key, lo, hi);
+  };
+  optional_number("period_s", 0, 1e13);
+  number_member(row, where, "mean_over_period", 0, 10);
+  optional_number("first_s", 0, 1e13);
+  optional_number("stays_below_from_s", 0, 1e13);
+  optional_number("coverage", 0, 1);
+  optional_number("dwell_cv", 0, 1e7);
+  const nlohmann::json& worst = row.at("worst_window_mean");
+  if (!worst.is_null()) {
+    check_members(worst, where + "\"worst_window_mean\"", {"lower", "upper"});
+    number_member(worst, where, "upper", number_member(worst, where, "lower", 0, 10), 10);
+  }
+  const bool certified = bool_member(row, where, "certified");
+  if (!row.at("reason").is_string()) throw InvalidInput("shard", where + "\"reason\" " + brief_json(row.at("reason")), "not text", "a reason");
+  if (certified && (worst.is_null() || row.at("first_s").is_null() != row.at("stays_below_from_s").is_null()))
+    throw InvalidInput("shard", where + "\"certified\" true", "without the numbers a certified row has", "M(W), and first_s and stays_below_from_s both or neither");
+}
+
+DesignPart read_design_part(const std::string& path, const std::string& text) {
+  DesignPart p;
+  p.path = path;
+  try {
+    const nlohmann::json j = parse_part_json(text);
+    check_members(j, "the part", {"request", "shard", "digest", "rows"});
+    p.request = j.at("request");
+    const DesignRequest r = request_from_json(p.request);
+    const std::vector<DesignPair> all = design_pairs(r);
+    const std::string shard = j.at("shard").get<std::string>();
+    p.shard = parse_shard(shard, all.size(), "the pairs (" + std::to_string(all.size()) + ")");
+    if (shard != p.shard.str()) throw InvalidInput("shard", shard, "not written as the run writes it", "I/K");
+    const auto [begin, end] = shard_range(all.size(), p.shard);
+    const nlohmann::json& rows = j.at("rows");
+    if (!rows.is_array() || rows.size() != end - begin)
+      throw InvalidInput("shard", "\"rows\"", "not one row per pair of the part", std::to_string(end - begin) + " rows");
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      check_design_row(rows[k], all[begin + k], "row " + std::to_string(k + 1) + ": ");
+      p.rows.push_back(rows[k]);
+    }
+    check_part_digest(path, text, j.at("digest").get<std::string>(), kDesignPart + " (unedited)");
+  } catch (const nlohmann::json::exception&) {
+    throw InvalidInput("shard", path, "not a clinostat design part", kDesignPart);
+  } catch (const InvalidInput& e) {
+    if (e.field() == "shard" && e.value() == path) throw;
+    throw InvalidInput("shard", path, e.value() + ": " + e.problem(), e.valid_range());
+  }
+  return p;
+}
+
+void run_merge(const std::vector<std::string>& paths, const std::string& output, bool json, const std::string& top_text) {
+  const std::size_t top = top_text.empty() ? 20 : parse_count(top_text, "top", 1, kMaxDesignPairs);
+  std::vector<DesignPart> parts;
+  for (const std::string& p : paths) parts.push_back(read_design_part(p, read_whole_input(p, "shard", kMaxDesignPartBytes)));
+  std::stable_sort(parts.begin(), parts.end(), [](const DesignPart& a, const DesignPart& b) { return a.shard.index < b.shard.index; });
+  std::vector<ShardName> names;
+  for (const DesignPart& p : parts) names.push_back({p.path, p.shard.index, p.shard.count, {{"request", p.request.dump()}}});
+  check_shard_set(names);
+  std::vector<nlohmann::json> rows;
+  for (const DesignPart& p : parts) rows.insert(rows.end(), p.rows.begin(), p.rows.end());
+  finish_run(ranked_output(parts[0].request, rows), output, json, top);
+}
+
+}  // namespace
+
+void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<DesignOptions>();
+  CLI::App* cmd = clinostat.add_subcommand("design", "choose the speeds: every pair of a grid ranked by time to epsilon, with coverage");
+  cmd->footer(
+      "Every pair (outer, inner) of LO, LO + step, ..., HI (exact; the pair 0, 0 left out), each with its\n"
+      "time to epsilon (the shortest window from which every longer window averages below epsilon), M(W)\n"
+      "for --window W, and with --coverage D the share of HEALPix cells visited over [0, D]. Ranked by\n"
+      "that time, then the first window below, then coverage; the Pareto front of (time, coverage).\n"
+      "--teeth MIN..MAX: a gear-driven machine, only ratios outer/inner of two tooth counts in the range.\n"
+      "Cost: at most 100000 pairs per run; per pair at most 3e5 window-mean evaluations (~0.03 s) for the\n"
+      "time to epsilon (then the row says it is not certified, exit 3), plus the coverage walk.\n"
+      "--shard I/K computes part I of K of the pairs (JSON); sphtroch clinostat merge joins the parts.\n"
+      "Example: sphtroch clinostat design --outer 0.5:5 --inner 0.5:5 --step 0.5 --window 3600 --epsilon 0.01");
+  cmd->add_option("--outer", o->outer, "outer speeds LO:HI, rpm");
+  cmd->add_option("--inner", o->inner, "inner speeds LO:HI, rpm");
+  cmd->add_option("--step", o->step, "the grid's step, rpm (both ranges)");
+  cmd->add_option("--window", o->window, "the experiment's window W: M(W) of each pair, seconds");
+  cmd->add_option("--epsilon", o->epsilon, "the bound on the averaged gravity, units of g0");
+  cmd->add_option("--resolution", o->resolution, "the step of W for the time to epsilon, seconds (default 1)");
+  cmd->add_option("--coverage", o->coverage, "also the share of cells visited over this many seconds");
+  cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8)");
+  cmd->add_option("--teeth", o->teeth, "MIN..MAX: a gear-driven machine's tooth counts");
+  cmd->add_option("--tilt", o->tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)");
+  cmd->add_option("--frame-angle", o->frame_angle, "angle between the axes, degrees in [0, 180] (default 90)");
+  cmd->add_option("--top", o->top, "rows of the text report (default 20)");
+  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
+  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the pairs (JSON; join with clinostat merge)");
+  cmd->add_flag("--json", o->json, "every pair as JSON (schema: docs/clinostat.md)");
+  add_output_option(*cmd, o->output, "the report");
+  actions.emplace_back(cmd, [o] { run_design(*o); });
+
+  auto paths = std::make_shared<std::vector<std::string>>();
+  auto merge = std::make_shared<DesignOptions>();
+  CLI::App* join = clinostat.add_subcommand("merge", "join the JSON parts of clinostat design --shard I/K");
+  join->footer("Parts in any order; the result is byte for byte what the unsharded run prints.\n"
+               "Example: sphtroch clinostat merge --json -o design.json part-*.json");
+  join->add_option("parts", *paths, "the part files (JSON)")->required();
+  join->add_flag("--json", merge->json, "the joined run as JSON (else the text report)");
+  join->add_option("--top", merge->top, "rows of the text report (default 20)");
+  add_output_option(*join, merge->output, "the joined run");
+  actions.emplace_back(join, [paths, merge] {
+    check_distinct_files({{merge->output, "--output"}}, [&] {
+      std::vector<NamedFile> in;
+      for (const auto& p : *paths) in.push_back({p, "shard"});
+      return in;
+    }());
+    run_merge(*paths, merge->output, merge->json, merge->top);
+  });
+}
+
+}  // namespace sphtroch::cli
