@@ -309,7 +309,7 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
       "for --window W, and with --coverage D the share of HEALPix cells visited over [0, D]. Ranked by\n"
       "that time, then the first window below, then coverage; the Pareto front of (time, coverage).\n"
       "--teeth MIN..MAX: a gear-driven machine, only ratios outer/inner of two tooth counts in the range.\n"
-      "Cost: at most 100000 pairs per run; per pair at most 3e5 window-mean evaluations (~0.03 s) for the\n"
+      "Cost: at most 100000 pairs per run; per pair at most 3e6 window-mean evaluations (~0.3 s) for the\n"
       "time to epsilon (then the row says it is not certified, exit 3), plus the coverage walk.\n"
       "--shard I/K computes part I of K of the pairs (JSON); sphtroch clinostat merge joins the parts.\n"
       "Example: sphtroch clinostat design --outer 0.5:5 --inner 0.5:5 --step 0.5 --window 3600 --epsilon 0.01");

@@ -24,7 +24,7 @@
 // Pareto front (with coverage): the decided pairs that no other beats in both stays_below_from_s
 // (shorter) and coverage fraction (larger), in rank order.
 // Cost: at most kMaxDesignPairs pairs per run; per pair at most kDesignWorkPerPair window-mean
-// evaluations (~0.1 s) for the time to epsilon, plus the worst window mean (~1 ms), plus the
+// evaluations (~0.3 s) for the time to epsilon, plus the worst window mean (~1 ms), plus the
 // coverage walk (bounded by dwell_map.hpp's limits) when asked.
 #pragma once
 
@@ -43,7 +43,7 @@
 namespace sphtroch {
 
 constexpr std::size_t kMaxDesignPairs = 100000;
-constexpr double kDesignWorkPerPair = 3e5;
+constexpr double kDesignWorkPerPair = 3e6;
 
 /// lo, lo + step, ..., <= hi (rpm, exact).
 struct SpeedRange {
