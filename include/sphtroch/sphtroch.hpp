@@ -39,6 +39,7 @@
 #include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/reading.hpp"
+#include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/shard.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/core/teeth.hpp"
