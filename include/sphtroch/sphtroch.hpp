@@ -46,6 +46,7 @@
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/core/work.hpp"
 
+#include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/node_csv.hpp"
 #include "sphtroch/io/npy.hpp"

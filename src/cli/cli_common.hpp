@@ -129,6 +129,7 @@ void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>
 void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth identify
 void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // clinostat_command.cpp
 void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::App*, Action>>& actions);  // design, merge
+void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // chain trace (chain_command.cpp)
 /// `completion bash|zsh`: register it last, so that its script lists every command (completion_command.cpp).
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS

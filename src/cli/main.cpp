@@ -176,6 +176,7 @@ int main(int argc, char** argv) {
   register_scene(app, actions);
 #endif
   register_clinostat(app, actions);
+  register_chain(app, actions);
   register_completion(app, actions);  // last: its script lists the commands above
   if (const auto bad = unknown_command(app, argc, argv)) return fail(*bad);
   if (const auto bad = flag_with_value(app, argc, argv)) return fail(*bad);

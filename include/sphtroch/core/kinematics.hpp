@@ -52,15 +52,18 @@ struct DwellPoint {
   double speed = 0.0;
 };
 
-/// The motion at theta2 (see header).
-inline PathKinematics path_kinematics(const TracerCurve<double>& curve, double theta2);
+/// The motion at theta2 (see header). Curve: TracerCurve<double> or any curve with point,
+/// screw_axis (its angular velocity) and acceleration (ChainCurve<double>: s for theta2).
+template <typename Curve>
+PathKinematics path_kinematics(const Curve& curve, double theta2);
 
 /// The speed minima of one period, in increasing theta2 (see header).
 inline std::vector<DwellPoint> dwell_points(const TracerCurve<double>& curve);
 
 // Implementation details follow.
 
-inline PathKinematics path_kinematics(const TracerCurve<double>& curve, double theta2) {
+template <typename Curve>
+PathKinematics path_kinematics(const Curve& curve, double theta2) {
   const Vector3d P = curve.point(theta2);
   const Vector3d omega = curve.screw_axis(theta2);
   const Vector3d V = omega.cross(P);

@@ -26,6 +26,7 @@
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/gear_train.hpp"  // reduce_phase
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/core/types.hpp"
@@ -66,8 +67,9 @@ class ChainRate {
   std::int64_t p_ = 0, q_ = 1;
 };
 
-/// Joint i: its rate N_i, its phase P_i (radians, the joint angle at s = 0) and the twist A_i
-/// (radians, [0, pi]) from its axis to the next one (or to the tool axis, for the last joint).
+/// Joint i: its rate N_i, its phase P_i (radians, the joint angle at s = 0; RotationChain keeps it
+/// reduced to [-pi, pi] as GearTrain does, reduce_phase) and the twist A_i (radians, [0, pi]) from
+/// its axis to the next one (or to the tool axis, for the last joint).
 struct ChainStage {
   double twist = 0;
   ChainRate rate;
@@ -93,6 +95,7 @@ class RotationChain {
         throw InvalidInput("twists", number_text(s.twist) + " (stage " + std::to_string(i + 1) + ")", "outside [0, pi]", "A in [0, pi] radians");
       if (!std::isfinite(s.phase))
         throw InvalidInput("phases", number_text(s.phase) + " (stage " + std::to_string(i + 1) + ")", "not finite", "a finite angle in radians");
+      stages_[i].phase = reduce_phase(s.phase);  // to [-pi, pi] as GearTrain's phase: the same curve
     }
     std::int64_t l = 1;
     for (const ChainStage& s : stages_) {
@@ -180,8 +183,10 @@ class ChainCurve {
     return axes;
   }
 
-  /// omega = sum_i N_i Z_i: the last body's angular velocity per unit s.
+  /// omega = sum_i N_i Z_i: the last body's angular velocity per unit s (its instantaneous axis).
   Vec3 angular_velocity(const Scalar& s) const { return weighted_sum(joint_axes(s), size()); }
+  /// The same, by TracerCurve's name (the trace writer and path_kinematics take either curve).
+  Vec3 screw_axis(const Scalar& s) const { return angular_velocity(s); }
 
   /// dP/ds = omega x P.
   Vec3 velocity(const Scalar& s) const { return Vec3(angular_velocity(s).cross(point(s))); }

@@ -155,8 +155,9 @@ inline void write_obj_lines(OutputFile& out, std::size_t count, bool closed) {
 
 }  // namespace trace_output_detail
 
-inline void write_trace(OutputFile& out, const TracerCurve<double>& curve, const UniformSampling<double>& sampling,
-                        const TraceWriteOptions& options) {
+/// Curve: TracerCurve<double>, or any curve with point, screw_axis and acceleration (ChainCurve<double>).
+template <typename Curve>
+void write_trace(OutputFile& out, const Curve& curve, const UniformSampling<double>& sampling, const TraceWriteOptions& options) {
   namespace d = trace_output_detail;
   const bool vel = options.velocity, kin = options.kinematics;
   check_cone_distance(options.radius);  // before the first byte

@@ -1,0 +1,94 @@
+// sphtroch/io/chain_text.hpp — a rotation chain as typed: comma-separated twists, rates and
+// phases (the `sphtroch chain` options; one reader for every front end).
+//
+//   sphtroch::ChainText text{"pi/2,1.2,0.4", "1,-2/3,5/3", ""};
+//   const sphtroch::RotationChain chain = text.chain();   // phases all 0
+//
+// Twists and phases in any angle form of parse_angle ("pi/2", "0.3", "2*pi/3"); twists in
+// [0, pi]. Rates exactly: integers, decimals (up to 9 places) or p/q, and 0 (a joint that does
+// not turn). Errors name the option ("twists", "rates", "phases") and the stage; lists of
+// different lengths are refused naming the shorter or longer one.
+#pragma once
+
+#include "sphtroch/core/rotation_chain.hpp"
+#include "sphtroch/io/parse.hpp"
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace sphtroch {
+
+/// The items of a comma-separated list, each as typed (an empty list: none; an empty item: "").
+inline std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> items;
+  if (detail::trim(text).empty()) return items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    items.emplace_back(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) return items;
+    start = comma + 1;
+  }
+}
+
+/// True for a zero written as parse_ratio's forms would write it: "0", "-0", "0/7", "0.0", "-0.000".
+inline bool is_zero_rate_text(std::string_view s) {
+  if (const std::size_t slash = s.find('/'); slash != std::string_view::npos)
+    return detail::strict_int(s.substr(0, slash)) == std::optional<std::int64_t>(0) && detail::strict_int(s.substr(slash + 1)).value_or(0) != 0;
+  if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
+  const std::size_t dot = s.find('.');
+  const std::string_view whole = s.substr(0, dot), fraction = dot == std::string_view::npos ? std::string_view() : s.substr(dot + 1);
+  const auto zeros = [](std::string_view t) { return t.find_first_not_of('0') == std::string_view::npos; };
+  if (dot != std::string_view::npos && (fraction.empty() || fraction.size() > 9)) return false;
+  return !(whole.empty() && fraction.empty()) && zeros(whole) && zeros(fraction);
+}
+
+/// A joint rate: 0 in any form (is_zero_rate_text), else parse_ratio's exact forms.
+inline ChainRate parse_chain_rate(std::string_view text, const std::string& field = "rates") {
+  if (is_zero_rate_text(detail::trim(text))) return ChainRate(0);
+  const Ratio r = parse_ratio(text, field);
+  return ChainRate(r.p(), r.q());
+}
+
+struct ChainText {
+  std::string twists, rates, phases;  ///< comma-separated; phases "" = all 0
+
+  RotationChain chain() const {
+    const std::vector<std::string> a = split_list(twists), n = split_list(rates), p = split_list(phases);
+    if (a.empty()) throw InvalidInput("twists", twists, "no twist", "A1,...,Ak: k angles in [0, pi]");
+    for (const auto& [list, field] : {std::pair{&a, "twists"}, std::pair{&n, "rates"}, std::pair{&p, "phases"}})
+      for (const std::string& item : *list)
+        if (detail::trim(item).empty())
+          throw InvalidInput(field, field == std::string("twists") ? twists : field == std::string("rates") ? rates : phases,
+                             "an empty item", "comma-separated values, one per stage");
+    if (n.size() != a.size())
+      throw InvalidInput("rates", rates, std::to_string(n.size()) + " rate(s) for " + std::to_string(a.size()) + " twist(s)",
+                         "one rate per twist: N1,...,Nk");
+    if (!p.empty() && p.size() != a.size())
+      throw InvalidInput("phases", phases, std::to_string(p.size()) + " phase(s) for " + std::to_string(a.size()) + " twist(s)",
+                         "one phase per twist: P1,...,Pk (or none: all 0)");
+    std::vector<ChainStage> stages;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const std::string stage = " (stage " + std::to_string(i + 1) + ")";
+      ChainStage s;
+      s.twist = parse_angle_item(a[i], "twists", stage);
+      s.rate = parse_chain_rate(n[i], "rates");
+      s.phase = p.empty() ? 0.0 : parse_angle_item(p[i], "phases", stage);
+      stages.push_back(s);
+    }
+    return RotationChain(stages);
+  }
+
+ private:
+  static double parse_angle_item(const std::string& item, const std::string& field, const std::string& stage) {
+    try {
+      return parse_angle(item, field);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(field, item + stage, e.problem(), e.valid_range());
+    }
+  }
+};
+
+}  // namespace sphtroch

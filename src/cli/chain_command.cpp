@@ -1,0 +1,103 @@
+// sphtroch chain trace — the curve of a gear-coupled rotation chain (core/rotation_chain.hpp),
+// written by the same writer as `sphtroch trace` (io/trace_output.hpp): CSV t,x,y,z (t the motor
+// parameter s), .npy, DXF or OBJ. For k = 2 with rates 1,n and phases 0,theta_p the bytes are
+// those of `sphtroch trace --a2 A1 --a3 A2 --n n --phase theta_p` (ChainCurve computes the same
+// bits as TracerCurve, and the default sample count is the same).
+#include "cli_common.hpp"
+
+#include "sphtroch/core/rotation_chain.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/io/chain_text.hpp"
+#include "sphtroch/io/trace_output.hpp"
+
+#include <cmath>
+
+namespace sphtroch::cli {
+
+namespace {
+
+struct ChainOptions {
+  ChainText chain;
+  std::string samples, output, format, threads, radius;
+  bool velocity = false, kinematics = false, degrees = false;
+};
+
+/// 360 samples per unit of s times the sum of |N_i| over a period: 360 sum_i |p_i| (L / q_i) / g,
+/// for k = 2 (rates 1, p/q) trace's 360 (q + |p|). Refused above kMaxDefaultSamples.
+std::size_t default_chain_samples(const RotationChain& c) {
+  double units = 0;
+  for (const ChainStage& s : c.stages())
+    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(c.common_denominator() / s.rate.q());
+  const double n = 360.0 * units / static_cast<double>(c.numerator_gcd());
+  if (n > static_cast<double>(kMaxDefaultSamples))
+    throw InvalidInput("rates", c.rates_text(),
+                       "the default sample count, 360 sum |N_i| over the period 2 pi L / g, is " + number_text(n),
+                       "at most 1000000: give --samples N (3 .. 10000000)");
+  return static_cast<std::size_t>(n);
+}
+
+TraceFormat chain_format(const ChainOptions& o) {
+  const auto ends = [&](const char* ext) {
+    const std::string e = std::string(".") + ext;
+    return o.output.size() >= e.size() && o.output.compare(o.output.size() - e.size(), e.size(), e) == 0;
+  };
+  const std::string f = o.format;
+  if (f == "npy" || (f.empty() && ends("npy"))) return TraceFormat::npy;
+  if (f == "dxf" || (f.empty() && ends("dxf"))) return TraceFormat::dxf;
+  if (f == "obj" || (f.empty() && ends("obj"))) return TraceFormat::obj;
+  if (f.empty() || f == "csv") return TraceFormat::csv;
+  throw InvalidInput("format", f, "not a format of chain trace", "csv, npy, dxf (3-D polyline), obj (polyline)");
+}
+
+void run_chain_trace(const ChainOptions& o) {
+  const RotationChain chain = o.chain.chain();
+  const std::size_t n = o.samples.empty() ? default_chain_samples(chain) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
+  TraceWriteOptions options;
+  options.format = chain_format(o);
+  options.velocity = o.velocity;
+  options.kinematics = o.kinematics;
+  options.degrees = o.degrees;
+  options.radius = parse_radius(o.radius);
+  if (options.format == TraceFormat::dxf || options.format == TraceFormat::obj)
+    for (const auto& [flag, name] : {std::pair{o.velocity, "--velocity"}, std::pair{o.kinematics, "--kinematics"}, std::pair{o.degrees, "--degrees"}})
+      if (flag) throw UsageError{std::string(name) + ": a DXF or OBJ file holds the path only; valid: " + name + " with CSV or .npy"};
+  options.threads = o.threads.empty() ? parse_threads("") + 1 : parse_threads(o.threads);
+  const ChainCurve<double> curve(chain);
+  const UniformSampling<double> sampling{curve.period(), n, n, true};
+  OutputFile out = OutputFile::open(o.output, "--output");  // every check above comes first
+  write_trace(out, curve, sampling, options);
+  out.commit();
+}
+
+void add_chain_options(CLI::App& cmd, ChainText& chain) {
+  cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)")->required();
+  cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)")->required();
+  cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
+}
+
+}  // namespace
+
+void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  CLI::App* chain = app.add_subcommand("chain", "a gear-coupled rotation chain: the curve of its tool axis (k = 2: the gear train)");
+  chain->require_subcommand(1);
+  auto o = std::make_shared<ChainOptions>();
+  CLI::App* cmd = chain->add_subcommand("trace", "print the chain's curve P(s) as CSV t,x,y,z, or write .npy, DXF, OBJ");
+  cmd->footer(
+      "P(s) = Rz(N1 s + P1) Rx(A1) Rz(N2 s + P2) Rx(A2) ... Rz(Nk s + Pk) Rx(Ak) z (docs/cli.md: chain).\n"
+      "Closed curve: N samples over one period 2 pi L / g (L the lcm of the rates' denominators, g the\n"
+      "gcd of the numerators of N_i L); default 360 sum |N_i| L / g, at most 1000000. The t column is s.\n"
+      "With --twists A2,A3 --rates 1,n --phases 0,PHASE the bytes are `sphtroch trace`'s.\n"
+      "Example: sphtroch chain trace --twists pi/2,1.2,0.4 --rates 1,-2/3,5/3 --samples 8");
+  add_chain_options(*cmd, o->chain);
+  cmd->add_option("--samples", o->samples, "number of samples N (3 .. 10000000)");
+  cmd->add_flag("--velocity", o->velocity, "add columns vx,vy,vz = dP/ds = omega x P");
+  cmd->add_flag("--degrees", o->degrees, "the t column (s) in degrees, header t_deg");
+  cmd->add_flag("--kinematics", o->kinematics, "add columns speed,geodesic_curvature,tangential_acceleration (per unit s)");
+  cmd->add_option("--format", o->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");
+  cmd->add_option("--radius", o->radius, "scale positions (and velocities) by R in [1e-100, 1e100]");
+  cmd->add_option("--threads", o->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
+  add_output_option(*cmd, o->output, "the curve");
+  actions.emplace_back(cmd, [o] { run_chain_trace(*o); });
+}
+
+}  // namespace sphtroch::cli
