@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -24,6 +25,8 @@
 namespace sphtroch::cli {
 
 namespace {
+
+constexpr int kMaxPlotNside = 32;
 
 struct ClinostatOptions {
   ClinostatText machine;
@@ -185,12 +188,24 @@ std::string plot_svg(const Clinostat& m, const GravitySeries& series, const Repo
   return clinostat_plot_svg(plot);
 }
 
+/// --plot's file: FILE.svg or FILE.png (any case), not standard output; its map at most nside 32
+/// (12,288 cells drawn; the SVG grows as the cells).
+void check_plot_request(const std::string& plot, const Request& q) {
+  std::string lower = plot;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto ends = [&](const char* e) { return lower.size() > 4 && lower.compare(lower.size() - 4, 4, e) == 0; };
+  if (!ends(".svg") && !ends(".png")) throw InvalidInput("plot", plot, "not a picture file name", "FILE.svg or FILE.png");
+  check_svg_name(plot, "plot");
+  require_png_writer(plot, "plot");
+  if (q.nside > kMaxPlotNside)
+    throw InvalidInput("nside", std::to_string(q.nside), "too many cells to draw with --plot", "nside <= 32 with --plot (12,288 cells)");
+}
+
 void run_report(const ClinostatOptions& o, const Clinostat& m) {
   const Request q = read_request(o);
-  if (!o.plot.empty()) {
-    check_svg_name(o.plot, "plot");
-    require_png_writer(o.plot, "plot");
-  }
+  if (!o.plot.empty()) check_plot_request(o.plot, q);
+  if (!o.start.empty() && !q.coverage && o.plot.empty())
+    throw UsageError{"--start = " + o.start + ": only with --coverage, --plot or --trace; valid: --coverage S --start T"};
 #if !defined(SPHTROCH_HAVE_HEALPIX)
   if (q.coverage) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
 #endif
@@ -222,7 +237,8 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
 /// --trace: N samples over [start, start + duration], both ends included; CSV or .npy (by -o).
 void run_trace(const ClinostatOptions& o, const Clinostat& m) {
   for (const auto& [given, name] : {std::pair{!o.window.empty(), "--window"}, std::pair{!o.epsilon.empty(), "--epsilon"},
-                                    std::pair{!o.coverage.empty(), "--coverage"}, std::pair{o.json, "--json"}})
+                                    std::pair{!o.coverage.empty(), "--coverage"}, std::pair{o.json, "--json"},
+                                    std::pair{!o.plot.empty(), "--plot"}})
     if (given) throw UsageError{std::string(name) + ": not with --trace; valid: --trace --duration S --samples N [-o FILE]"};
   if (o.duration.empty()) throw UsageError{"--trace needs --duration S; valid: --trace --duration S --samples N [-o FILE]"};
   const double duration = parse_positive(o.duration, "duration", Clinostat::kMaxTime, "seconds in (0, 1e12]");
@@ -306,7 +322,12 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--samples", o->samples, "--trace: number of samples N (2 .. 10000000; default 1001)");
   add_output_option(*cmd, o->output, "the --trace table");
   actions.emplace_back(cmd, [o, cmd] {
-    if (cmd->get_subcommands().empty()) run_clinostat(*o);  // else design or merge runs
+    if (cmd->get_subcommands().empty()) return run_clinostat(*o);
+    // design or merge runs; an option of clinostat itself given before it would be lost
+    for (const CLI::Option* opt : cmd->get_options())
+      if (opt->count() > 0 && opt->get_name() != "--help")
+        throw UsageError{opt->get_name() + ": an option of clinostat, given before " + cmd->get_subcommands()[0]->get_name() +
+                         "; valid: the options after the subcommand (sphtroch clinostat " + cmd->get_subcommands()[0]->get_name() + " --help)"};
   });
   register_clinostat_design(*cmd, actions);
 }

@@ -30,7 +30,8 @@ struct DesignOptions {
   bool json = false;
 };
 
-constexpr std::size_t kMaxDesignPartBytes = std::size_t(1) << 30;
+constexpr std::size_t kMaxDesignPartBytes = std::size_t(1) << 27;  // 128 MiB: 100000 rows are ~40 MB
+constexpr std::size_t kMaxDesignNside = 64;
 
 SpeedRange parse_speed_range(const std::string& text, const std::string& step, const std::string& field) {
   const auto colon = text.find(':');
@@ -52,13 +53,14 @@ DesignRequest read_design_request(const DesignOptions& o) {
   r.outer = parse_speed_range(o.outer, o.step, "outer");
   r.inner = parse_speed_range(o.inner, o.step, "inner");
   r.window_s = parse_design_number(o.window, "window", 1e9, "seconds in (0, 1e9]");
-  r.epsilon = parse_design_number(o.epsilon, "epsilon", 1e9, "a bound in units of g0, > 0");
+  r.epsilon = parse_design_number(o.epsilon, "epsilon", 1e9, "0 < epsilon <= 1e9 (units of g0)");
   if (!o.resolution.empty()) r.resolution_s = parse_design_number(o.resolution, "resolution", 1e6, "seconds in (0, 1e6]");
   if (!o.coverage.empty()) r.coverage_s = parse_design_number(o.coverage, "coverage", 1e12, "seconds in (0, 1e12]");
   if (!o.nside.empty()) {
     if (!r.coverage_s) throw UsageError{"--nside = " + o.nside + ": only with --coverage; valid: --coverage S --nside K"};
-    r.nside = static_cast<int>(parse_count(o.nside, "nside", 1, 1024));
-    if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 1024");
+    // Each worker holds a map of 12 nside^2 cells (four arrays of doubles): 64 keeps a worker's maps under 2 MB.
+    r.nside = static_cast<int>(parse_count(o.nside, "nside", 1, kMaxDesignNside));
+    if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 64");
   }
 #if !defined(SPHTROCH_HAVE_HEALPIX)
   if (r.coverage_s) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
@@ -66,6 +68,12 @@ DesignRequest read_design_request(const DesignOptions& o) {
   if (!o.teeth.empty()) r.teeth = parse_tooth_range(o.teeth, "teeth");
   if (!o.tilt.empty()) r.tilt_deg = parse_degrees(o.tilt, "tilt", "[0, 180] degrees");
   if (!o.frame_angle.empty()) r.frame_angle_deg = parse_degrees(o.frame_angle, "frame-angle", "[0, 180] degrees");
+  ClinostatSettings check;  // the frames, checked up front as the single-machine command checks them
+  check.outer = Rpm(1);
+  check.tilt_deg = r.tilt_deg;
+  check.frame_angle_deg = r.frame_angle_deg;
+  const Clinostat checked(check);
+  static_cast<void>(checked);
   return r;
 }
 
@@ -97,7 +105,8 @@ DesignRequest request_from_json(const nlohmann::json& j) {
   o.tilt = number_text(j.at("tilt").get<double>());
   o.frame_angle = number_text(j.at("frame_angle").get<double>());
   const DesignRequest r = read_design_request(o);
-  if (request_json(r) != j) throw InvalidInput("shard", "\"request\" " + brief_json(j), "not written as the run writes it", "the request of sphtroch clinostat design");
+  if (request_json(r).dump() != j.dump())  // as text: 90 and 90.0 compare equal as numbers
+    throw InvalidInput("shard", "\"request\" " + brief_json(j), "not written as the run writes it", "the request of sphtroch clinostat design");
   return r;
 }
 
@@ -115,7 +124,10 @@ nlohmann::json row_json(const DesignRow& row) {
   j["coverage"] = or_null(row.coverage);
   j["dwell_cv"] = or_null(row.dwell_cv);
   j["certified"] = row.decided();
-  j["reason"] = !row.refused.empty() ? row.refused : row.time_to ? row.time_to->reason : std::string();
+  std::string reason = !row.refused.empty() ? row.refused : row.time_to ? row.time_to->reason : std::string();
+  if (reason.empty() && row.worst && !row.worst->certified)
+    reason = "M(W)'s bracket [" + number_text(row.worst->lower) + ", " + number_text(row.worst->upper) + "] is wider than 1e-9";
+  j["reason"] = reason;
   return j;
 }
 
@@ -199,7 +211,9 @@ void finish_run(const nlohmann::json& run, const std::string& output, bool json,
 void run_design(const DesignOptions& o) {
   const DesignRequest r = read_design_request(o);
   const std::vector<DesignPair> all = design_pairs(r);
-  if (all.empty()) throw InvalidInput("teeth", o.teeth.empty() ? o.outer : o.teeth, "no speed pair of the grid", "a grid with a pair the gears can drive");
+  if (all.empty())
+    throw o.teeth.empty() ? InvalidInput("outer", o.outer, "no machine on the grid (outer and inner both 0 is not one)", "a grid with a speed not 0")
+                          : InvalidInput("teeth", o.teeth, "no speed pair of the grid that gears in the range drive", "a grid with such a pair");
   std::optional<Shard> shard;
   if (!o.shard.empty()) {
     if (!o.json) throw UsageError{"--shard = " + o.shard + ": a part is JSON; valid: --shard I/K --json -o part.json, joined by sphtroch clinostat merge"};
@@ -212,6 +226,11 @@ void run_design(const DesignOptions& o) {
   if (!shard) return finish_run(ranked_output(request_json(r), rows), o.output, o.json, top);
   nlohmann::json part = {{"request", request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
   write_output(o.output, [&](std::ostream& out) { out << signed_part(part.dump(2) + "\n"); });
+  std::size_t undecided = 0;
+  for (const nlohmann::json& row : rows) undecided += row.at("certified").get<bool>() ? 0 : 1;
+  if (undecided > 0)
+    throw UncertifiedResult{"clinostat design: part " + shard->str() + ": " + std::to_string(undecided) +
+                            " pair(s) not certified (refused or past the work bound; their rows say why)"};
 }
 
 /// One part: checked on its own (members, request, digest, its rows the pairs of its place).
@@ -227,7 +246,7 @@ const std::string kDesignPart = "the JSON of sphtroch clinostat design ... --sha
 /// Refuses (InvalidInput "shard") a row that is not laid out as the run writes it for `pair`:
 /// its members, the pair's speeds and teeth, every number finite and in range. (The digest shows
 /// an edit of its bytes; the numbers are the run's.)
-void check_design_row(const nlohmann::json& row, const DesignPair& pair, const std::string& where) {
+void check_design_row(const nlohmann::json& row, const DesignPair& pair, bool coverage_asked, const std::string& where) {
   std::vector<std::string> names = {"outer", "inner", "n", "period_s", "mean_over_period", "worst_window_mean", "first_s",
                                     "stays_below_from_s", "coverage", "dwell_cv", "certified", "reason"};
   if (pair.teeth) names.push_back("teeth");
@@ -249,7 +268,22 @@ void check_design_row(const nlohmann::json& row, const DesignPair& pair, const s
     check_members(worst, where + "\"worst_window_mean\"", {"lower", "upper"});
     number_member(worst, where, "upper", number_member(worst, where, "lower", 0, 10), 10);
   }
+  if (!row.at("first_s").is_null() && !row.at("stays_below_from_s").is_null() &&
+      row.at("first_s").get<double>() > row.at("stays_below_from_s").get<double>())
+    throw InvalidInput("shard", where + "\"first_s\" " + brief_json(row.at("first_s")), "after \"stays_below_from_s\"", "first_s <= stays_below_from_s");
+  const std::string n = pair.inner.is_zero() ? std::string() : [&] {
+    const auto [num, den] = detail::speed_ratio(pair.outer, pair.inner);
+    return den == 1 ? std::to_string(num) : std::to_string(num) + "/" + std::to_string(den);
+  }();
+  if (n.empty() ? !row.at("n").is_null() : row.at("n") != n)
+    throw InvalidInput("shard", where + "\"n\" " + brief_json(row.at("n")), "not outer / inner", n.empty() ? "null" : n);
   const bool certified = bool_member(row, where, "certified");
+  if (certified && row.at("coverage").is_null() == coverage_asked)
+    throw InvalidInput("shard", where + "\"coverage\" " + brief_json(row.at("coverage")), "not what the request asks",
+                       coverage_asked ? "a share of cells (the request has coverage_s)" : "null (the request has no coverage_s)");
+  for (const char* key : {"period_s", "mean_over_period", "first_s", "stays_below_from_s", "coverage", "dwell_cv"})
+    if (row.at(key).is_number_integer())  // the run writes doubles: 60.0, not 60
+      throw InvalidInput("shard", where + "\"" + key + "\" " + brief_json(row.at(key)), "not written as the run writes it", "a number with a decimal point");
   if (!row.at("reason").is_string()) throw InvalidInput("shard", where + "\"reason\" " + brief_json(row.at("reason")), "not text", "a reason");
   if (certified && (worst.is_null() || row.at("first_s").is_null() != row.at("stays_below_from_s").is_null()))
     throw InvalidInput("shard", where + "\"certified\" true", "without the numbers a certified row has", "M(W), and first_s and stays_below_from_s both or neither");
@@ -272,7 +306,7 @@ DesignPart read_design_part(const std::string& path, const std::string& text) {
     if (!rows.is_array() || rows.size() != end - begin)
       throw InvalidInput("shard", "\"rows\"", "not one row per pair of the part", std::to_string(end - begin) + " rows");
     for (std::size_t k = 0; k < rows.size(); ++k) {
-      check_design_row(rows[k], all[begin + k], "row " + std::to_string(k + 1) + ": ");
+      check_design_row(rows[k], all[begin + k], r.coverage_s.has_value(), "row " + std::to_string(k + 1) + ": ");
       p.rows.push_back(rows[k]);
     }
     check_part_digest(path, text, j.at("digest").get<std::string>(), kDesignPart + " (unedited)");
@@ -309,8 +343,9 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
       "for --window W, and with --coverage D the share of HEALPix cells visited over [0, D]. Ranked by\n"
       "that time, then the first window below, then coverage; the Pareto front of (time, coverage).\n"
       "--teeth MIN..MAX: a gear-driven machine, only ratios outer/inner of two tooth counts in the range.\n"
-      "Cost: at most 100000 pairs per run; per pair at most 3e6 window-mean evaluations (~0.3 s) for the\n"
-      "time to epsilon (then the row says it is not certified, exit 3), plus the coverage walk.\n"
+      "Cost: at most 100000 pairs per run; per pair ~1 ms at typical speeds, at most M(W)'s 4e6 pieces\n"
+      "(~3 s: fast speeds with a short window) and 3e6 window-mean evaluations for the time to epsilon\n"
+      "(then the row says it is not certified, exit 3), plus the coverage walk (--nside <= 64).\n"
       "--shard I/K computes part I of K of the pairs (JSON); sphtroch clinostat merge joins the parts.\n"
       "Example: sphtroch clinostat design --outer 0.5:5 --inner 0.5:5 --step 0.5 --window 3600 --epsilon 0.01");
   cmd->add_option("--outer", o->outer, "outer speeds LO:HI, rpm");

@@ -71,14 +71,18 @@ inline void check_part_digest(const std::string& path, const std::string& text, 
                        valid);
 }
 
+constexpr int kMaxPartDepth = 16;
+
 /// A part's text parsed as JSON, refusing (InvalidInput "shard") what the run never writes and a
 /// reader would take in more than one way: a member given twice in one object (nlohmann keeps the
 /// last, another reader the first), and text that is not JSON (named by its byte offset and the
 /// bytes there, control and non-ASCII bytes as '?': NaN, Infinity, 0x1p-3 ...).
 inline nlohmann::json parse_part_json(const std::string& text) {
   std::vector<std::vector<std::string>> keys;  // the member names seen in each open object
-  const auto check = [&keys](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+  const auto check = [&keys](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
+    if (depth > kMaxPartDepth)  // parts nest 5 deep; copying or printing a deeper value recurses without bound
+      throw InvalidInput("shard", "nesting depth " + std::to_string(depth), "deeper than a part", "JSON nested at most 16 levels");
     if (event == E::object_start) keys.emplace_back();
     if (event == E::object_end && !keys.empty()) keys.pop_back();
     if (event == E::key && !keys.empty()) {

@@ -149,7 +149,10 @@ TEST_CASE("clinostat: bad input is refused with one line naming the option, noth
            {"--outer 1 --inner 2 --offset 1,2", "--offset"}, {"--outer 1 --inner 2 --tilt 190", "--tilt"},
            {"--outer 1 --inner 2 --frame-angle nan", "--frame-angle"}, {"--outer 1 --inner 2 --epsilon 0", "--epsilon"},
            {"--outer 1 --inner 2 --trace --duration 0 -o out.csv", "--duration"},
-           {"--outer 1 --inner 2 --trace --duration 10 --samples 1 -o out.csv", "--samples"}}) {
+           {"--outer 1 --inner 2 --trace --duration 10 --samples 1 -o out.csv", "--samples"},
+           {"--outer 1.33 --inner 2 --coverage 60 --nside 64 --plot map.svg", "--nside"}, {"--outer 1.33 --inner 2 --plot -", "--plot"},
+           {"--outer 1.33 --inner 2 --plot map.txt", "--plot"}, {"--outer 1 --inner 2 --start 5", "--start"},
+           {"--outer 1 --inner 2 --trace --duration 10 --plot map.svg", "--plot"}}) {
     const Result r = run("clinostat " + args, dir, true);
     INFO(args << " -> " << r.err);
     CHECK(r.status == 2);

@@ -162,7 +162,11 @@ TEST_CASE("clinostat merge: K parts join into the unsharded run's bytes, and edi
   const Result foreign = run("clinostat merge part1.json other.json part3.json -o joined.json", dir, true);
   CHECK(foreign.status == 2);
   CHECK(contains(foreign.err, "other.json"));
-  for (const Result& r : {missing, bad, foreign}) {
+  std::ofstream(dir.path / "deep.json") << std::string(100000, '[') << std::string(100000, ']');  // nesting that would recurse
+  const Result deep = run("clinostat merge part1.json deep.json part3.json -o joined.json", dir, true);
+  CHECK(deep.status == 2);
+  CHECK(contains(deep.err, "deep.json"));
+  for (const Result& r : {missing, bad, foreign, deep}) {
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
   }
@@ -170,6 +174,13 @@ TEST_CASE("clinostat merge: K parts join into the unsharded run's bytes, and edi
 }
 
 TEST_CASE("clinostat design: bad input is refused with one line naming the option, nothing on stdout", "[cli][clinostat]") {
+  {
+    TempDir options_dir;  // an option of clinostat itself, given before design, would be lost: refused
+    const Result before = run("clinostat --tilt 75 design --outer 1:2 --inner 1:2 --step 0.5 --window 60 --epsilon 0.1", options_dir, true);
+    CHECK(before.status == 2);
+    CHECK(before.out.empty());
+    CHECK(contains(before.err, "--tilt"));
+  }
   TempDir dir;
   const std::string base = "--window 600 --epsilon 0.01";
   for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
@@ -179,7 +190,11 @@ TEST_CASE("clinostat design: bad input is refused with one line naming the optio
            {"--outer 1:2 --inner 1:2 --step 0.5 --window 600 --epsilon -1", "--epsilon"},
            {"--outer 1:2 --inner 1:2 --step 0.5 --coverage 60 --nside 3 " + base, "--nside"},
            {"--outer 1:2 --inner 1:2 --step 0.5 --teeth 5..2 " + base, "--teeth"}, {"--outer 1:2 --inner 1:2 --step 0.5 --json --shard 9/4 " + base, "--shard"},
-           {"--outer 1:2 --inner 1:2 --step 0.5 --shard 1/2 " + base, "--shard"}, {"--outer 1:2 --inner 1:2 --step 0.5", "--window"}}) {
+           {"--outer 1:2 --inner 1:2 --step 0.5 --shard 1/2 " + base, "--shard"}, {"--outer 1:2 --inner 1:2 --step 0.5", "--window"},
+           {"--outer 1:2 --inner 1:2 --step 0.5 --tilt 181 " + base, "--tilt"}, {"--outer 1:2 --inner 1:2 --step 0.5 --frame-angle -1 " + base, "--frame-angle"},
+           {"--outer 1:2 --inner 1:2 --step 0.5 --window 600 --epsilon 1e10", "--epsilon"},
+           {"--outer 1:2 --inner 1:2 --step 0.5 --coverage 60 --nside 128 " + base, "--nside"},
+           {"--outer 0:0 --inner 0:0 --step 1 " + base, "--outer"}, {"--outer 1:317 --inner 1:316 --step 1 " + base, "--step"}}) {
     const Result r = run("clinostat design " + args, dir, true);
     INFO(args << " -> " << r.err);
     CHECK(r.status == 2);

@@ -129,6 +129,8 @@ TEST_CASE("rotation chain: bad chains are refused naming the option", "[chain]")
   CHECK(test::expect_invalid([] {
           RotationChain({{1, ChainRate(1, 999983), 0}, {1, ChainRate(1, 999979), 0}, {1, ChainRate(1, 999961), 0}});
         }).field() == "rates");  // three large primes: the lcm is ~1e18
+  // A joint turning 1e12 times a period: its angle would lose whole radians in double.
+  CHECK(test::expect_invalid([] { RotationChain({{1, ChainRate(1000000), 0}, {1, ChainRate(1, 999983), 0}}); }).field() == "rates");
   // Twists 0 and pi (coaxial joints) are chains.
   CHECK(RotationChain({{0.0, ChainRate(1), 0}, {Constants<double>::pi(), ChainRate(2), 0}}).size() == 2);
 }

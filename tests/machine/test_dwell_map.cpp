@@ -122,6 +122,15 @@ TEST_CASE("dwell map: a duration of whole periods and a rest equals the walk of 
     CHECK(std::fabs(whole.dwell_s[i] - (2 * one.dwell_s[i] + rest.dwell_s[i])) <= whole.bound_s + 2 * one.bound_s + rest.bound_s);
 }
 
+TEST_CASE("dwell map: the coefficient of variation of a tiny duration (one cell of 768: sqrt(767))", "[dwell]") {
+  const Clinostat m(machine(133, 200, 90, 90));
+  for (const double d : {1e-300, 1e-200, 1e-160, 1e-6}) {
+    const DwellMap map = dwell_map(m, 0, d, 8);
+    REQUIRE(map.visited == 1);
+    CHECK(map.dwell_cv == Approx(std::sqrt(767.0)).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("dwell map: bad requests are refused naming the option", "[dwell]") {
   const Clinostat m(machine(133, 200, 90, 90));
   for (const int nside : {0, 3, 6, 2048, -8}) CHECK(test::expect_invalid([&] { dwell_map(m, 0, 60, nside); }).field() == "nside");

@@ -166,6 +166,27 @@ TEST_CASE("torus bound: above a dense scan of |window mean| over both frame angl
   }
 }
 
+TEST_CASE("worst window mean of a very short window: certified at 1 (a mean of unit vectors is at most 1 long)", "[window_mean]") {
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(machine("1.33", "2")));
+  for (const double w : {1e-3, 1e-9, 1e-300}) {
+    const WorstWindowMean m = worst_window_mean(g, w);
+    CHECK(m.certified);
+    CHECK(m.upper <= 1);
+    CHECK(m.lower >= 1 - 1e-9);
+  }
+}
+
+TEST_CASE("time to epsilon: a mean over a period within rounding of epsilon is not decided, and says so", "[window_mean]") {
+  // Speeds 1 and -1 rpm resonate: the mean over a period is 1/2 in exact arithmetic.
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(machine("1", "-1")));
+  REQUIRE(std::fabs(g.period_mean().norm() - 0.5) <= 1e-15);
+  const TimeToEpsilon t = time_to_epsilon(g, 0.5, 1.0);
+  CHECK_FALSE(t.certified);
+  CHECK(t.reason.find("within rounding") != std::string::npos);
+  CHECK(time_to_epsilon(g, 0.49, 1.0).certified);  // above epsilon: none, certified
+  CHECK_FALSE(time_to_epsilon(g, 0.49, 1.0).first_s);
+}
+
 TEST_CASE("time to epsilon near a resonance (0.999 / 1 rpm): certified, below at W, above at W - resolution", "[window_mean]") {
   ClinostatSettings s = machine("1", "1");
   s.outer = Rpm(999, 1000);  // period 60000 s, a 1000-min beat

@@ -300,7 +300,7 @@ BAD_CALLS = [
     (lambda: C.effective_gravity(float("nan")), "t"), (lambda: C.window_mean(0, -1), "window"),
     (lambda: C.window_mean(float("inf"), 1), "t0"), (lambda: C.worst_window_mean(0), "window"),
     (lambda: C.worst_window_mean(2e9), "window"), (lambda: C.time_to(0), "epsilon"), (lambda: C.time_to(0.01, 0), "resolution"),
-    (lambda: C.time_to(1e-12), "resolution"), (lambda: C.coverage(0), "coverage"), (lambda: C.coverage(10, nside=3), "nside"),
+    (lambda: C.time_to(1e-12), "epsilon"), (lambda: C.time_to(1e-7), "resolution"), (lambda: C.coverage(0), "coverage"), (lambda: C.coverage(10, nside=3), "nside"),
     (lambda: C.coverage(10, nside=True), "nside"), (lambda: C.coverage(10, start=float("nan")), "start"),
     (lambda: C.coverage_summary(1e12, nside=1024), "coverage"),
 ]

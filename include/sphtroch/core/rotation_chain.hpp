@@ -21,8 +21,10 @@
 // Period: with L the lcm of the rates' denominators and g the gcd of the numerators of N_i L,
 // every joint angle is back after s = 2 pi L / g. The curve may close sooner (a twist of 0 or pi
 // makes joints coaxial); the period is the one every joint shares.
-// Error: as TracerCurve (curve.hpp): a few ulp of Scalar per component for |s| up to the period
-// (each angle p s / q + P rounds once; sin and cos of a large argument carry its rounding).
+// Error: as TracerCurve (curve.hpp): for |s| up to the period each joint angle p s / q + P (three
+// roundings) is at most 2 pi 1e6 rad (refused beyond: kMaxTurnsPerPeriod), so its absolute
+// error, and the points', is below ~1e-9 in double (a few ulp of the angle); sin and cos of a
+// large argument carry that rounding.
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
@@ -49,6 +51,8 @@ class ChainRate {
     const std::string shown = std::to_string(p) + "/" + std::to_string(q);
     const std::string valid = "p/q with |p|, |q| <= 1000000, q != 0";
     if (q == 0) throw InvalidInput("rates", shown, "zero denominator", valid);
+    if (p < -kMaxTerm * kMaxTerm || p > kMaxTerm * kMaxTerm || q < -kMaxTerm * kMaxTerm || q > kMaxTerm * kMaxTerm)
+      throw InvalidInput("rates", shown, "a term too large", valid);  // (and no negation of INT64_MIN below)
     if (q < 0) p = -p, q = -q;
     const std::int64_t g = std::gcd(p < 0 ? -p : p, q);
     p_ = p / g;
@@ -81,6 +85,8 @@ class RotationChain {
   static constexpr std::size_t kMaxStages = 16;
   /// The largest common denominator L of the rates accepted (the period is 2 pi L / g).
   static constexpr std::int64_t kMaxCommonDenominator = 1000000000;
+  /// The most turns any joint makes in a period (its angle, up to 2 pi 1e6 rad, keeps ~1e-9 rad).
+  static constexpr double kMaxTurnsPerPeriod = 1e6;
 
   /// REQUIRES 1 <= k <= kMaxStages stages, each twist in [0, pi] and each phase finite, some rate
   /// not 0 (else omega = 0: nothing moves), the rates' common denominator <= kMaxCommonDenominator.
@@ -106,6 +112,14 @@ class RotationChain {
     std::int64_t g = 0;
     for (const ChainStage& s : stages_) g = std::gcd(g, (s.rate.p() < 0 ? -s.rate.p() : s.rate.p()) * (l / s.rate.q()));
     if (g == 0) throw InvalidInput("rates", rates_text(), "every rate is 0: nothing turns (omega = 0)", "at least one rate not 0");
+    // Joint i turns |p_i| (L / q_i) / g times a period; its angle must stay small enough for
+    // double to hold it to ~1e-9 rad (as a gear train's angle, at most 2 pi 1e6 rad).
+    for (const ChainStage& s : stages_) {
+      const double turns = std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(l / s.rate.q()) / static_cast<double>(g);
+      if (turns > kMaxTurnsPerPeriod)
+        throw InvalidInput("rates", rates_text(), "a joint turns " + number_text(turns) + " times in the period 2 pi L / g",
+                           "rates whose joints turn at most 1e6 times a period (a period of at most 1e6 turns of each joint)");
+    }
     common_denominator_ = l;
     numerator_gcd_ = g;
   }
@@ -147,7 +161,7 @@ class ChainCurve {
   }
   const RotationChain& chain() const noexcept { return chain_; }
 
-  /// theta_i = N_i s + P_i, formed as p s / q + P (one rounding, as TracerCurve's planet angle).
+  /// theta_i = N_i s + P_i, formed as p s / q + P (as TracerCurve's planet angle).
   Scalar joint_angle(std::size_t i, const Scalar& s) const { return p_[i] * s / q_[i] + phase_[i]; }
 
   /// P(s), a unit vector in the base frame: the stages applied from the last to the first, each

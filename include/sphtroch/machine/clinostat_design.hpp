@@ -23,9 +23,10 @@
 // pairs whose mean over a period is above epsilon (never below); then the refused or undecided.
 // Pareto front (with coverage): the decided pairs that no other beats in both stays_below_from_s
 // (shorter) and coverage fraction (larger), in rank order.
-// Cost: at most kMaxDesignPairs pairs per run; per pair at most kDesignWorkPerPair window-mean
-// evaluations (~0.3 s) for the time to epsilon, plus the worst window mean (~1 ms), plus the
-// coverage walk (bounded by dwell_map.hpp's limits) when asked.
+// Cost: at most kMaxDesignPairs pairs per run; per pair ~1 ms at typical speeds, at most the worst
+// window mean's kMaxWindowPieces (~3 s, fast speeds with a short window) plus kDesignWorkPerPair
+// window-mean evaluations (~0.3 s) for the time to epsilon, plus the coverage walk (bounded by
+// dwell_map.hpp's limits) when asked.
 #pragma once
 
 #include "sphtroch/core/teeth.hpp"
@@ -111,12 +112,12 @@ inline std::pair<std::int64_t, std::int64_t> speed_ratio(const Rpm& outer, const
 
 /// Every pair of the grid (outer-major, both in increasing order), less (0, 0), and with a tooth
 /// range only the pairs that gears in it can drive. Throws InvalidInput ("outer", "inner",
-/// "step") for a bad range and ("pairs") for more than kMaxDesignPairs pairs.
+/// "step") for a bad range and ("step") for more than kMaxDesignPairs pairs.
 inline std::vector<DesignPair> design_pairs(const DesignRequest& r) {
   const std::vector<Rpm> outer = detail::range_speeds(r.outer, "outer"), inner = detail::range_speeds(r.inner, "inner");
   if (outer.size() * inner.size() > kMaxDesignPairs)
-    throw InvalidInput("pairs", std::to_string(outer.size()) + " x " + std::to_string(inner.size()), "too many speed pairs",
-                       "at most " + std::to_string(kMaxDesignPairs) + " pairs per run: a coarser --step, or --shard");
+    throw InvalidInput("step", r.outer.step.str() + " (" + std::to_string(outer.size()) + " x " + std::to_string(inner.size()) + " pairs)",
+                       "too many speed pairs", "at most " + std::to_string(kMaxDesignPairs) + " pairs per run: a coarser step or shorter ranges");
   std::vector<DesignPair> pairs;
   for (const Rpm& o : outer)
     for (const Rpm& i : inner) {

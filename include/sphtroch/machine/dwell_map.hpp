@@ -16,7 +16,7 @@
 // every cell of a finer grid (cells about the disc's radius across) that the disc may touch,
 // a superset; each lies inside one cell of the map (HEALPix's hierarchy). When they all lie in one
 // cell, the step's h seconds belong to that cell exactly. Otherwise the step is halved, down to
-// tau = min(1e-5 s, h0 / 1024), depth first, while the query budget lasts (each first-level step
+// tau = h0 / 16384, depth first, while the query budget lasts (each first-level step
 // adds its share, kDwellQueryBudget / steps within [4, 4096], to a pool that carries what steps
 // leave unused, up to kMaxDwellCarry); a step that is not halved further and still touches several cells gives its time
 // to the cell of its midpoint (HEALPix's vec2pix) and adds its length to the uncertainty of each
@@ -190,14 +190,16 @@ inline DwellMap dwell_map(const Clinostat& m, double start_s, double duration_s,
     out.bound_s = std::max(out.bound_s, part_unsure[i] + repeats * (part_unsure[i] + other_unsure[i]));
   }
   out.bound_s += duration_s * 1e-12;  // the sums' rounding
-  const double mean = duration_s / static_cast<double>(cells);
+  // The CV from each cell's share of the mean, d / (D / cells), so that a duration near the
+  // smallest doubles does not underflow: sqrt(sum (share - 1)^2 / cells).
   double square = 0;
   for (const double d : out.dwell_s) {
     out.visited += d > 0 ? 1 : 0;
-    square += (d - mean) * (d - mean);
+    const double share = d / duration_s * static_cast<double>(cells);
+    square += (share - 1) * (share - 1);
   }
   out.visited_fraction = static_cast<double>(out.visited) / static_cast<double>(cells);
-  out.dwell_cv = std::sqrt(square / static_cast<double>(cells)) / mean;
+  out.dwell_cv = std::sqrt(square / static_cast<double>(cells));
   return out;
 }
 

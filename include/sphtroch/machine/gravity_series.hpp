@@ -29,6 +29,7 @@
 
 #include <complex>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -88,6 +89,9 @@ class GravitySeries {
   const Vector3d& period_mean() const noexcept { return constant_; }
   /// The period in seconds, empty when the gravity does not move at all.
   const std::optional<double>& period_s() const noexcept { return period_s_; }
+  /// A bound on |f(t)| for every t: 1 for g_s (a unit vector; so every window mean too), none
+  /// (infinity) for the effective gravity of an off-centre sample.
+  double norm_bound() const noexcept { return unit_ ? 1.0 : std::numeric_limits<double>::infinity(); }
   /// The period in minutes as an exact fraction (num / den); {0, 1} without a period.
   std::pair<__int128, __int128> period_minutes() const noexcept { return period_minutes_; }
 
@@ -115,7 +119,7 @@ class GravitySeries {
   }
 
  private:
-  GravitySeries(const Clinostat& m, bool effective) : m_(m) {
+  GravitySeries(const Clinostat& m, bool effective) : m_(m), unit_(!(effective && m.has_offset())) {
     const int kGrid = 5;  // resolves |j|, |l| <= 2
     const double step = 2 * Constants<double>::pi() / kGrid;
     std::complex<double> coeff[kGrid][kGrid][3] = {};
@@ -202,6 +206,7 @@ class GravitySeries {
   static __int128 lcm(__int128 a, __int128 b) { return a / gcd(a, b) * b; }
 
   Clinostat m_;
+  bool unit_ = true;  // f is g_s, a unit vector
   Vector3d constant_ = Vector3d::Zero();
   std::vector<GravityHarmonic> terms_;
   std::optional<double> period_s_;

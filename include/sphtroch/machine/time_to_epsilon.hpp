@@ -13,7 +13,8 @@
 // not monotone in W, hence the two answers. Both are decided by certified comparisons and a proof
 // of the tail:
 // - M(W) >= |c| for every W (c the mean over a period: the mean over start times of the window
-//   means is c), so when |c| >= epsilon no window qualifies: both empty, with the reason.
+//   means is c), so when |c| > epsilon no window qualifies: both empty, with the reason (and when
+//   |c| is within rounding of epsilon the answer is not certified, and says so).
 // - |mean(t0, W) - c| <= sum_k A_k |sinc(W_k W / 2)| <= (sum_k 2 A_k / |W_k|) / W = C / W, so every
 //   W >= C / (epsilon - |c|) is below: the grid is searched up to there, downwards for the last W
 //   above epsilon. A cheap bound settles most windows without a search: TorusGramBound
@@ -49,26 +50,35 @@ constexpr double kMaxWindows = 1e7;
 /// answer is not certified and says so (near-resonant speeds with a small epsilon).
 constexpr double kMaxTimeToEpsilonWork = 3e7;
 
-/// Throws InvalidInput("epsilon") unless 0 < epsilon < 1e9, ("resolution") unless 0 < r <= 1e6 s,
+/// Throws InvalidInput("epsilon") unless 0 < epsilon <= 1e9, ("resolution") unless 0 < r <= 1e6 s,
 /// and ("resolution") when the tail C / (epsilon - |c|) holds more than kMaxWindows grid windows.
 /// `max_work`: the evaluations the search may spend (default kMaxTimeToEpsilonWork).
 inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, double resolution_s,
                                      double max_work = kMaxTimeToEpsilonWork) {
-  if (!(epsilon > 0 && epsilon < 1e9)) throw InvalidInput("epsilon", number_text(epsilon), "not a positive bound", "0 < epsilon (units of g0)");
+  if (!(epsilon > 0 && epsilon <= 1e9)) throw InvalidInput("epsilon", number_text(epsilon), "not a bound in range", "0 < epsilon <= 1e9 (units of g0)");
   if (!(resolution_s > 0 && resolution_s <= 1e6))
     throw InvalidInput("resolution", number_text(resolution_s), "not a positive step", "0 < resolution <= 1e6 seconds");
   TimeToEpsilon out;
   out.epsilon = epsilon;
   out.resolution_s = resolution_s;
   const double c = g.period_mean().norm();
-  if (c >= epsilon) {
-    out.reason = "the mean over a period, " + number_text(c) + " g0, is not below epsilon: no window is (M(W) >= it for every W)";
+  if (std::fabs(c - epsilon) <= epsilon * 1e-12 + 1e-14) {  // c's rounding (~1e-16) could put it on either side
+    out.certified = false;
+    out.reason = "the mean over a period, " + number_text(c) + " g0, is within rounding of epsilon: not decided";
+    return out;
+  }
+  if (c > epsilon) {
+    out.reason = "the mean over a period, " + number_text(c) + " g0, is above epsilon: no window is below (M(W) >= it for every W)";
     return out;
   }
   double tail = 0;
   for (const GravityHarmonic& h : g.oscillating()) tail += 2 * h.amplitude / std::fabs(h.omega);
   out.tail_s = tail / (epsilon - c);
   const double last = std::ceil(out.tail_s / resolution_s);
+  if (out.tail_s / kMaxWindows > 1e6)  // no resolution would do
+    throw InvalidInput("epsilon", number_text(epsilon),
+                       "so close to the mean over a period (" + number_text(c) + " g0) that the proven tail is at " + number_text(out.tail_s) + " s",
+                       "an epsilon whose tail, (sum 2 A_k / |W_k|) / (epsilon - |c|), is at most 1e13 s: a larger epsilon");
   if (last > kMaxWindows)
     throw InvalidInput("resolution", number_text(resolution_s),
                        "the search would cover " + number_text(last) + " windows up to the proven tail at " + number_text(out.tail_s) + " s",

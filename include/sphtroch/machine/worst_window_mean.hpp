@@ -22,6 +22,8 @@
 // 1e-15 per harmonic, so 1e-15 sum A_k (1 + h |W_k|); both are added to every upper bound and
 // taken from every lower bound. The
 // intervals are split best first (largest upper bound) until upper - lower <= the width asked.
+// For g_s (unit vectors) the upper bound is also at most 1: a very short window, whose mean is
+// within rounding of 1 long everywhere, is then certified at once.
 // Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
 // Cost: the period split into pieces of 0.5 / sqrt(L2 / L0) s (L0 = |c| + sum |s_k| A_k: the
 // window damps the fast harmonics, so long windows start from few pieces; at most the refusal's
@@ -89,7 +91,8 @@ class TorusGramBound {
   double upper(double w) const {
     const std::vector<GravityHarmonic>& h = g_.oscillating();
     std::vector<double> s(h.size());
-    for (std::size_t k = 0; k < h.size(); ++k) s[k] = std::fabs(GravitySeries::sinc(h[k].omega * w / 2));
+    // |sinc| rounded up by its absolute error (~5e-16: the rounding of W_k W / 2); the bound grows with each s_k.
+    for (std::size_t k = 0; k < h.size(); ++k) s[k] = std::fabs(GravitySeries::sinc(h[k].omega * w / 2)) + 1e-15;
     double square = g_.period_mean().squaredNorm(), size = g_.period_mean().norm();
     for (std::size_t k = 0; k < h.size(); ++k) {
       square += 2 * s[k] * centre_[k];
@@ -198,7 +201,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   const double finest = std::max(1e-12, period * 1e-15);
   while (true) {
     const Piece top = pieces.top();
-    out.upper = top.upper;
+    out.upper = std::min(top.upper, g.norm_bound());  // a mean of unit vectors is at most 1 long
     if (out.upper - out.lower <= width || stop(out.lower, out.upper)) break;
     if (top.half < finest || pieces.size() > kMaxWindowPieces) break;  // cannot refine further (resolution or
                                                                        // memory): left uncertified
@@ -233,7 +236,9 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon, double
     terms.push_back({h.j, h.l, GravitySeries::sinc(h.omega * w / 2), &h});
     size += std::fabs(terms.back().s) * h.amplitude;
   }
-  const double rounding = 1e-14 * (size + 1);
+  double amplitudes = 0;
+  for (const GravityHarmonic& h : g.oscillating()) amplitudes += h.amplitude;
+  const double rounding = 1e-14 * (size + 1) + 1e-15 * amplitudes;  // and the sincs' absolute error
   struct Box {
     double x, y, half, upper;
     bool operator<(const Box& o) const { return upper < o.upper; }
