@@ -97,7 +97,8 @@ TEST_CASE("clinostat design: a row's times are the single machine's", "[cli][cli
   TempDir dir;
   const Result r = run("clinostat design --outer 1:2 --inner 1.5:2.5 --step 0.5 --window 900 --epsilon 0.01 --json", dir);
   REQUIRE(r.status == 0);
-  for (const json& row : json::parse(r.out)["rows"]) {
+  const json d = json::parse(r.out);  // kept: a range over a temporary's member would dangle
+  for (const json& row : d["rows"]) {
     const Result one = run("clinostat --outer " + row["outer"].get<std::string>() + " --inner " + row["inner"].get<std::string>() +
                                " --window 900 --epsilon 0.01 --json", dir);
     REQUIRE(one.status == 0);
