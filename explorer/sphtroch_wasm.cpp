@@ -11,6 +11,9 @@
 // A count is certified by the library's rule, the CLI's (exact/certified_census.hpp: the polyline
 // census with CGAL's exact predicates against the root census), compiled header-only without GMP
 // (SPHTROCH_EXACT_WITHOUT_GMP, CGAL_NO_GMP: see explorer/CMakeLists.txt).
+// A clinostat (machine/) is read by the CLI's reader (ClinostatText) and computed by the library's
+// functions that `sphtroch clinostat` runs (its train, period, mean, M(W), time to epsilon); the
+// dwell map needs HEALPix, which the module does not have.
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
@@ -28,6 +31,9 @@
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/map/extremes_and_symmetry.hpp"
+#include "sphtroch/machine/clinostat_text.hpp"
+#include "sphtroch/machine/clinostat_train.hpp"
+#include "sphtroch/machine/time_to_epsilon.hpp"
 #include "sphtroch/synthesis/interval/precision_points.hpp"
 #include "sphtroch/synthesis/interval/tolerance_box.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
@@ -35,6 +41,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -568,6 +575,162 @@ val tolerance(const std::string& a2, const std::string& a3, const std::string& n
   });
 }
 
+// ---- the clinostat panel -------------------------------------------------------------------------
+
+/// The machine of `sphtroch clinostat --outer O --inner I [--tilt T] [--frame-angle F]` ("" takes
+/// the CLI's default), read by the CLI's reader: InvalidInput naming the CLI's option.
+sphtroch::Clinostat page_clinostat(const std::string& outer, const std::string& inner, const std::string& tilt,
+                                   const std::string& frame_angle) {
+  sphtroch::ClinostatText text;
+  text.outer = outer;
+  text.inner = inner;
+  text.tilt = tilt;
+  text.frame_angle = frame_angle;
+  return sphtroch::Clinostat(text.settings());
+}
+
+/// --window or --epsilon as `sphtroch clinostat` reads them: parse_number, then (0, 1e9], refused in
+/// the words of src/cli/clinostat_command.cpp's parse_positive. That reader is the CLI's own (not
+/// in the library), so this copies its bounds and words; page_test.js checks the lines agree.
+double clinostat_positive(const std::string& text, const std::string& field, const std::string& valid) {
+  const std::optional<double> v = sphtroch::parse_number(text);
+  if (!v || !(*v > 0) || *v > 1e9) throw sphtroch::InvalidInput(field, text, "not a positive number in range", valid);
+  return *v;
+}
+
+val vector_array(const sphtroch::Vector3d& v) { return float64_array(std::vector<double>{v.x(), v.y(), v.z()}); }
+
+/// --json's "train" (theta2At0, theta2Rate, rotation: Q by rows, 9 numbers), or null.
+val clinostat_train_object(const sphtroch::ClinostatTrain& ct) {
+  if (!ct.train) return val::null();
+  val out = train_object(*ct.train);
+  out.set("theta2At0", ct.theta2_at_0);
+  out.set("theta2Rate", ct.theta2_rate);
+  std::vector<double> rows;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) rows.push_back(ct.rotation(i, j));
+  out.set("rotation", float64_array(rows));
+  return out;
+}
+
+/// g_s at `samples` times evenly over one period from t = 0 (x0 y0 z0 x1 ...; one point when the
+/// gravity does not move): the machine's gravity(t), the CLI's --trace.
+val gravity_path(const sphtroch::Clinostat& m, const std::optional<double>& period, double samples) {
+  const std::size_t count = period ? static_cast<std::size_t>(samples) : 1;
+  std::vector<sphtroch::Vector3d> points;
+  points.reserve(count);
+  for (std::size_t k = 0; k < count; ++k)
+    points.push_back(m.gravity(period ? *period * static_cast<double>(k) / static_cast<double>(count) : 0.0));
+  return float64_array(flat(points));
+}
+
+/// The page's samples of the gravity path: 100 per turn of |outer| + |inner| over a period, within
+/// [360, maxSamples].
+double path_samples(const sphtroch::Clinostat& m, const std::optional<double>& period, double max_samples) {
+  if (!period) return 1;
+  const double rpm = std::fabs(m.settings().outer.value()) + std::fabs(m.settings().inner.value());
+  return std::clamp(std::ceil(100 * *period * rpm / 60), 360.0, std::max(360.0, std::floor(max_samples)));
+}
+
+/// What `sphtroch clinostat --json` gives without --window and --epsilon: {outer, inner (the
+/// speeds as the CLI prints them), outerRpm, innerRpm, tilt, frameAngle (degrees), train (as
+/// clinostat_train_object) | null, trainNote ("" with a train), periodS | null, meanOverPeriod
+/// [x, y, z], meanNorm (its length)}, and the gravity path (gravity_path, path_samples points): `path`.
+val clinostat(const std::string& outer, const std::string& inner, const std::string& tilt, const std::string& frame_angle,
+              double max_samples) {
+  return guarded([&] {
+    const sphtroch::Clinostat m = page_clinostat(outer, inner, tilt, frame_angle);
+    const sphtroch::GravitySeries series = sphtroch::GravitySeries::of_gravity(m);
+    const sphtroch::ClinostatTrain ct = sphtroch::clinostat_train(m);
+    const sphtroch::ClinostatSettings& s = m.settings();
+    val out = val::object();
+    out.set("outer", s.outer.str());
+    out.set("inner", s.inner.str());
+    out.set("outerRpm", s.outer.value());
+    out.set("innerRpm", s.inner.value());
+    out.set("tilt", s.tilt_deg);
+    out.set("frameAngle", s.frame_angle_deg);
+    out.set("train", clinostat_train_object(ct));
+    out.set("trainNote", ct.reason);
+    out.set("periodS", series.period_s() ? val(*series.period_s()) : val::null());
+    out.set("meanOverPeriod", vector_array(series.period_mean()));
+    out.set("meanNorm", series.period_mean().norm());
+    out.set("path", gravity_path(m, series.period_s(), path_samples(m, series.period_s(), max_samples)));
+    return out;
+  });
+}
+
+/// The gravity series of the machine, refused up front as the CLI refuses it when --window or
+/// --epsilon is given (worst_window_mean_cost: a period too long for the search, InvalidInput "outer").
+sphtroch::GravitySeries searchable_series(const sphtroch::Clinostat& m) {
+  sphtroch::GravitySeries series = sphtroch::GravitySeries::of_gravity(m);
+  sphtroch::worst_window_mean_cost(series);
+  return series;
+}
+
+/// --json's "worst_window_mean" for --window W (the text as the CLI reads it): {windowS, lower,
+/// upper, startS, certified}; M(W) in [lower, upper], certified when no wider than 1e-9.
+val clinostat_window(const std::string& outer, const std::string& inner, const std::string& tilt,
+                     const std::string& frame_angle, const std::string& window) {
+  return guarded([&] {
+    const sphtroch::Clinostat m = page_clinostat(outer, inner, tilt, frame_angle);
+    const double w = clinostat_positive(window, "window", "seconds in (0, 1e9]");
+    const sphtroch::WorstWindowMean r = sphtroch::worst_window_mean(searchable_series(m), w);
+    val out = val::object();
+    out.set("windowS", r.window_s);
+    out.set("lower", r.lower);
+    out.set("upper", r.upper);
+    out.set("startS", r.start_s);
+    out.set("certified", r.certified);
+    return out;
+  });
+}
+
+/// M(W) at `count` windows W = longest k / count, k = 1 .. count (1 .. 200), each a bracket no
+/// wider than 1e-6 (as `sphtroch clinostat --plot` draws it): {windows, lower, upper: Float64Array}.
+val clinostat_windows(const std::string& outer, const std::string& inner, const std::string& tilt,
+                      const std::string& frame_angle, double longest, double count) {
+  return guarded([&] {
+    const sphtroch::GravitySeries series = searchable_series(page_clinostat(outer, inner, tilt, frame_angle));
+    if (!(longest > 0 && longest <= 1e9))
+      throw sphtroch::InvalidInput("window", sphtroch::number_text(longest), "not a positive number in range", "seconds in (0, 1e9]");
+    if (!(count >= 1 && count <= 200 && count == std::floor(count)))
+      throw sphtroch::InvalidInput("windows", sphtroch::number_text(count), "outside the valid range", "integer 1 .. 200");
+    std::vector<double> windows, lower, upper;
+    for (double k = 1; k <= count; ++k) {
+      const sphtroch::WorstWindowMean r = sphtroch::worst_window_mean(series, longest * k / count, 1e-6);
+      windows.push_back(r.window_s);
+      lower.push_back(r.lower);
+      upper.push_back(r.upper);
+    }
+    val out = val::object();
+    out.set("windows", float64_array(windows));
+    out.set("lower", float64_array(lower));
+    out.set("upper", float64_array(upper));
+    return out;
+  });
+}
+
+/// --json's "time_to_epsilon" for --epsilon E (the CLI's reader) at the CLI's default resolution,
+/// 1 s: {epsilon, resolutionS, firstS | null, staysBelowFromS | null, reason, certified}.
+val clinostat_epsilon(const std::string& outer, const std::string& inner, const std::string& tilt,
+                      const std::string& frame_angle, const std::string& epsilon) {
+  return guarded([&] {
+    const sphtroch::Clinostat m = page_clinostat(outer, inner, tilt, frame_angle);
+    const double e = clinostat_positive(epsilon, "epsilon", "a bound in units of g0, > 0");
+    const sphtroch::TimeToEpsilon r = sphtroch::time_to_epsilon(searchable_series(m), e, 1.0);
+    const auto or_null = [](const std::optional<double>& v) { return v ? val(*v) : val::null(); };
+    val out = val::object();
+    out.set("epsilon", r.epsilon);
+    out.set("resolutionS", r.resolution_s);
+    out.set("firstS", or_null(r.first_s));
+    out.set("staysBelowFromS", or_null(r.stays_below_from_s));
+    out.set("reason", r.reason);
+    out.set("certified", r.certified);
+    return out;
+  });
+}
+
 /// A shortest round-trip text of a double (what the CLI prints for it).
 std::string number_text(double v) { return sphtroch::number_text(v); }
 
@@ -587,4 +750,8 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("fit", &fit);
   emscripten::function("points", &points);
   emscripten::function("tolerance", &tolerance);
+  emscripten::function("clinostat", &clinostat);
+  emscripten::function("clinostatWindow", &clinostat_window);
+  emscripten::function("clinostatWindows", &clinostat_windows);
+  emscripten::function("clinostatEpsilon", &clinostat_epsilon);
 }

@@ -13,6 +13,7 @@
 //   tolerance.js       the certified margin and the tolerance box (readouts; map.js draws them)
 //   controls.js        text fields, sliders, hash changes
 //   exports.js         trace CSV, sphere SVG, scene JSON, the command copied
+//   clinostat.js       the clinostat panel: its texts, worker (clinostat_worker.js), path and M(W)
 //   main.js            this: the start
 // Test contract (docs/explorer.md): data-testid nodes, crossings, tangencies, cusps, class, error,
 // one data-testid="event" per a3 event (data-a3: shortest round-trip text, data-kind); the state
@@ -33,12 +34,15 @@
     X.setupMapAxes();
     X.setupFit();
     X.setupTolerance();
+    X.setupClinostat();
     X.update(false);
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, X.state),
       nodePositions: () => (X.result ? Array.from(X.result.nodePositions) : []),
       cuspPositions: () => (X.result ? Array.from(X.result.cuspPositions) : []),
-      timing: () => Object.assign({}, X.timing), project: (p) => X.project(p), lib: module };
+      timing: () => Object.assign({}, X.timing), project: (p) => X.project(p), lib: module,
+      // The clinostat panel's gravity path shown (x0 y0 z0 x1 ...; [] when none).
+      clinostatPath: () => (X.clinostat && X.clinostat.report && X.clinostat.report.path ? Array.from(X.clinostat.report.path) : []) };
     document.body.dataset.ready = '1';
     window.requestAnimationFrame(X.animate);
   }

@@ -4,19 +4,22 @@
 // tracer), and the view's input (drag to turn, wheel to zoom about the pointer). The cones are
 // off by default on a dense curve (X.marks.dense: the rule hides its markers); the cones box
 // still turns them on.
+// drawPathSphere draws any closed path of unit vectors on a sphere of its own canvas and view (the
+// clinostat panel's gravity path), with the same projection and front/back strokes.
 'use strict';
 {
   const X = window.Explorer;
   const { $ } = X;
   const view = X.view;
 
-  function project(p) {
-    const cs = Math.cos(view.spin), ss = Math.sin(view.spin), ct = Math.cos(view.tilt), st = Math.sin(view.tilt);
+  // [x, y, front] of the unit vector p on `canvas` (the sphere view's by default) seen as `v` says
+  // ({spin, tilt, zoom, panX, panY}; the sphere view's by default).
+  function project(p, canvas = $('sphere'), v = view) {
+    const cs = Math.cos(v.spin), ss = Math.sin(v.spin), ct = Math.cos(v.tilt), st = Math.sin(v.tilt);
     const x1 = cs * p[0] - ss * p[1], y1 = ss * p[0] + cs * p[1], z1 = p[2];
     const y2 = ct * y1 - st * z1, z2 = st * y1 + ct * z1; // tilt about the screen's x axis
-    const canvas = $('sphere');
-    const radius = 0.46 * canvas.width * view.zoom;
-    return [canvas.width / 2 + view.panX + radius * x1, canvas.height / 2 + view.panY - radius * z2, y2 < 0];
+    const radius = 0.46 * canvas.width * v.zoom;
+    return [canvas.width / 2 + v.panX + radius * x1, canvas.height / 2 + v.panY - radius * z2, y2 < 0];
   }
 
   // The point of the front half of the sphere under a pointer event (project() inverted), or null
@@ -33,13 +36,15 @@
     return [cs * x1 + ss * y1, -ss * x1 + cs * y1, z1];
   }
 
-  function strokeRuns(ctx, points, count, frontStyle, backStyle, closed) {
+  // The polyline of `count` points (x0 y0 z0 x1 ...) as runs on the front (solid) and the back
+  // (faint); `at` projects a point (project() of the sphere view by default).
+  function strokeRuns(ctx, points, count, frontStyle, backStyle, closed, at = project) {
     for (const front of [false, true]) {
       ctx.beginPath();
       let open = false;
       for (let k = 0; k <= count - (closed ? 0 : 1); ++k) {
         const i = k % count;
-        const s = project([points[3 * i], points[3 * i + 1], points[3 * i + 2]]);
+        const s = at([points[3 * i], points[3 * i + 1], points[3 * i + 2]]);
         if (s[2] === front) {
           if (open) ctx.lineTo(s[0], s[1]); else ctx.moveTo(s[0], s[1]);
           open = true;
@@ -69,18 +74,23 @@
     return pts;
   }
 
-  function drawSphere() {
-    const canvas = $('sphere');
-    const ctx = canvas.getContext('2d');
+  // The sphere's disc on a cleared canvas.
+  function drawDisc(ctx, canvas, v) {
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    const centre = project([0, 0, 0]);
+    const centre = project([0, 0, 0], canvas, v);
     ctx.beginPath();
-    ctx.arc(centre[0], centre[1], 0.46 * canvas.width * view.zoom, 0, 2 * Math.PI);
+    ctx.arc(centre[0], centre[1], 0.46 * canvas.width * v.zoom, 0, 2 * Math.PI);
     ctx.fillStyle = '#f4f6fa';
     ctx.fill();
     ctx.strokeStyle = '#9aa4b2';
     ctx.lineWidth = 1;
     ctx.stroke();
+  }
+
+  function drawSphere() {
+    const canvas = $('sphere');
+    const ctx = canvas.getContext('2d');
+    drawDisc(ctx, canvas, view);
     if (!X.result || !X.curve) return;
     const pts = X.curve.points, count = pts.length / 3;
     strokeRuns(ctx, pts, count, '#1c2733', 'rgba(28,39,51,0.18)', true);
@@ -213,6 +223,42 @@
     }, { passive: false });
   }
 
+  // A closed path of unit vectors (x0 y0 z0 x1 ..., or null: the disc alone) on `canvas` seen as
+  // `v`, its first point marked (violet) and the coordinate axes' ends labelled on the front.
+  function drawPathSphere(canvas, v, points) {
+    const ctx = canvas.getContext('2d');
+    const at = (p) => project(p, canvas, v);
+    drawDisc(ctx, canvas, v);
+    ctx.font = '11px sans-serif';
+    for (const [label, p] of [['+X', [1, 0, 0]], ['+Y', [0, 1, 0]], ['+Z', [0, 0, 1]]]) {
+      const s = at(p);
+      ctx.fillStyle = s[2] ? '#556' : 'rgba(85,85,102,0.35)';
+      ctx.fillText(label, s[0] + 3, s[1] - 3);
+    }
+    if (!points || points.length < 3) return;
+    const count = points.length / 3;
+    if (count > 1) strokeRuns(ctx, points, count, '#1c2733', 'rgba(28,39,51,0.18)', true, at);
+    const s = at([points[0], points[1], points[2]]);
+    ctx.beginPath();
+    ctx.arc(s[0], s[1], 4.5, 0, 2 * Math.PI);
+    ctx.fillStyle = '#7b2cbf';
+    ctx.fill();
+  }
+
+  // Drag on `canvas` turns `v` and calls redraw().
+  function turnOnDrag(canvas, v, redraw) {
+    let drag = null;
+    canvas.addEventListener('pointerdown', (ev) => { drag = { x: ev.clientX, y: ev.clientY }; canvas.setPointerCapture(ev.pointerId); });
+    canvas.addEventListener('pointermove', (ev) => {
+      if (!drag) return;
+      v.spin += (ev.clientX - drag.x) * 0.01;
+      v.tilt += (ev.clientY - drag.y) * 0.01;
+      drag = { x: ev.clientX, y: ev.clientY };
+      redraw();
+    });
+    canvas.addEventListener('pointerup', () => { drag = null; });
+  }
+
   function animate(time) {
     if ($('animate').checked && X.result) {
       view.theta = (time / 1000) * 0.6 * Math.max(1, X.result.q / 2);
@@ -221,5 +267,6 @@
     window.requestAnimationFrame(animate);
   }
 
-  Object.assign(X, { project, unproject, lookFrom, drawSphere, followDensity, setupSphereInput, animate });
+  Object.assign(X, { project, unproject, lookFrom, drawSphere, followDensity, setupSphereInput, animate, drawPathSphere,
+    turnOnDrag });
 }

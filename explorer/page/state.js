@@ -12,16 +12,22 @@
 //   X.ruler   events() at the current a2 and n
 //   X.view    the sphere view {spin, tilt, zoom, panX, panY, theta}
 //   X.tolerance  tolerance() of the current state and half-widths (tolerance.js), or null
+// The clinostat panel's texts live in X.state too (clinostat: on | off, and the CLI's options
+// outer, inner, tilt, frame-angle, window, epsilon), in the hash only while the panel is on.
 'use strict';
 window.Explorer = {};
 {
   const X = window.Explorer;
   const FIELDS = ['a2', 'a3', 'n', 'teeth', 'phase'];  // the text fields (id FIELD-text)
-  const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0', markers: 'auto' };
+  // The clinostat panel's text fields (id and data-testid clinostat-FIELD): `sphtroch clinostat`'s
+  // options, the hash's keys.
+  const CLINOSTAT_FIELDS = ['outer', 'inner', 'tilt', 'frame-angle', 'window', 'epsilon'];
+  const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0', markers: 'auto', clinostat: 'off',
+    outer: '1.33', inner: '2', tilt: '90', 'frame-angle': '90', window: '600', epsilon: '0.01' };
   const $ = (id) => document.getElementById(id);
   const byTestId = (id) => document.querySelector('[data-testid="' + id + '"]');
 
-  Object.assign(X, { FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
+  Object.assign(X, { FIELDS, CLINOSTAT_FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
     ruler: null, marks: null, view: { spin: 0.5, tilt: 1.1, zoom: 1, panX: 0, panY: 0, theta: 0 } });
 
   // ---- the URL hash and the text fields -------------------------------------------------------
@@ -48,18 +54,28 @@ window.Explorer = {};
     if (s.n !== '' || s.teeth === '') parts.push('n=' + enc(s.n));
     parts.push('phase=' + enc(s.phase));
     if (s.markers !== DEFAULT_STATE.markers) parts.push('markers=' + enc(s.markers));  // links stay short
+    if (s.clinostat === 'on') for (const f of ['clinostat'].concat(CLINOSTAT_FIELDS)) parts.push(f + '=' + enc(s[f]));
     return '#' + parts.join('&');
+  }
+
+  // The current state into the hash (a view is a link).
+  function writeHash() {
+    history.replaceState(null, '', hashOf(X.state));
   }
 
   function fillFields() {
     for (const f of FIELDS) $(f + '-text').value = X.state[f];
     $('markers').value = X.state.markers;
+    for (const f of CLINOSTAT_FIELDS) $('clinostat-' + f).value = X.state[f];
+    $('clinostat-on').checked = X.state.clinostat === 'on';
   }
 
   function readFields() {
     const s = {};
     for (const f of FIELDS) s[f] = $(f + '-text').value.trim();
     s.markers = $('markers').value;
+    for (const f of CLINOSTAT_FIELDS) s[f] = $('clinostat-' + f).value.trim();
+    s.clinostat = $('clinostat-on').checked ? 'on' : 'off';
     return s;
   }
 
@@ -120,7 +136,7 @@ window.Explorer = {};
       if (mapKeyChanged) X.startMap();
       syncSliders();
     }
-    if (pushHash) history.replaceState(null, '', hashOf(X.state));
+    if (pushHash) writeHash();
     X.renderReadouts();
     X.scheduleCertificate();
     X.renderRuler();
@@ -128,6 +144,7 @@ window.Explorer = {};
     X.drawSphere();
     X.drawMap();
     X.scheduleTolerance();
+    X.scheduleClinostat();
     timing.total = performance.now() - start;
   }
 
@@ -137,5 +154,5 @@ window.Explorer = {};
     $('phase-slider').value = X.result.phase;
   }
 
-  Object.assign(X, { readHash, fillFields, readFields, newWorker, samplesFor, update, timing });
+  Object.assign(X, { readHash, writeHash, fillFields, readFields, newWorker, samplesFor, update, timing });
 }

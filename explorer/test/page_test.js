@@ -19,6 +19,9 @@
 //    count: `sphtroch classify` at the cell's centre), the design not moved;
 //  - markers: n = 133/200 (26,602 nodes) opens with them hidden and said so, cones off, the path
 //    drawn; "all" draws them (and goes into the hash); Fig. 3 draws its node.
+//  - the clinostat panel: its train, period, mean, M(W) (bit for bit) and time to epsilon equal
+//    `sphtroch clinostat ... --json`, its gravity path equals `--trace`, the URL state round-trips,
+//    bad texts show the CLI's line and no number, "show its train above" makes it the design.
 // Exit status 0 when every check holds; each failure is printed.
 'use strict';
 const path = require('path');
@@ -609,6 +612,115 @@ async function checkMarkers(page) {
   check(fig3.note === '' && fig3.cones && (await redPixels(page)) > 10, 'Fig. 3: its node is not drawn: ' + JSON.stringify(fig3));
 }
 
+// The clinostat panel (clinostat.js) for the state `s` (the CLI's option texts): waits until the
+// worker is done and reads its readouts' data attributes, error line and hash.
+async function readClinostat(page) {
+  await page.waitForFunction(() => ['done', 'error'].includes(document.querySelector('[data-testid="clinostat-status"]').dataset.state),
+    null, { timeout: 30000 });
+  return page.evaluate(() => {
+    const cell = (id) => document.querySelector('[data-testid="clinostat-' + id + '"]');
+    const out = { error: cell('error').textContent, hash: window.location.hash, path: window.sphtrochExplorer.clinostatPath() };
+    for (const id of ['train', 'period', 'mean', 'worst', 'time']) out[id] = Object.assign({ text: cell(id).textContent }, cell(id).dataset);
+    out.command = cell('command').textContent;
+    out.coverage = cell('coverage').textContent;
+    return out;
+  });
+}
+
+const CLINOSTAT_DEFAULTS = { outer: '1.33', inner: '2', tilt: '90', 'frame-angle': '90', window: '600', epsilon: '0.01' };
+const clinostatHash = (s) => hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }) + '&clinostat=on' +
+  Object.keys(CLINOSTAT_DEFAULTS).map((k) => '&' + k + '=' + encodeURIComponent(s[k]).replace(/%2F/g, '/')).join('');
+const clinostatArgs = (s) => ['clinostat', '--outer', s.outer, '--inner', s.inner, '--tilt', s.tilt, '--frame-angle', s['frame-angle'],
+  '--window', s.window, '--epsilon', s.epsilon];
+
+// The panel's numbers against `sphtroch clinostat --json` of the same texts (the page shows the
+// module's shortest round-trip texts): within `tolerance` (0: the same double) for the numbers of
+// the gravity's series (mean, M(W) bracket), exactly for the rest; the start of a window reaching
+// M(W)'s lower end (any such start will do: equal maxima) the CLI's when tolerance is 0, else in
+// [0, period). And the gravity path against --trace, within 1e-14.
+function compareClinostat(got, s, where, tolerance) {
+  const run = cli([...clinostatArgs(s), '--json']);
+  check(run.status === 0 && got.error === '', where + ': the CLI exited ' + run.status + ' (' + run.stderr + '), the page says "' + got.error + '"');
+  if (run.status !== 0) return;
+  const want = JSON.parse(run.stdout), w = want.worst_window_mean, e = want.time_to_epsilon, t = want.train;
+  const same = (a, b) => (b === null ? a === '' : a !== '' && Math.abs(Number(a) - b) <= tolerance);
+  const exact = (a, b) => (b === null ? a === '' : a !== '' && Number(a) === b);
+  const start = tolerance === 0 ? exact(got.worst.start, w.start_s) : Number(got.worst.start) >= 0 && Number(got.worst.start) < want.period_s;
+  const pairs = [['n', got.train.n, t.n], ['a2', exact(got.train.a2, t.a2), true], ['a3', exact(got.train.a3, t.a3), true],
+    ['phase', exact(got.train.phase, t.phase), true], ['period', exact(got.period.value, want.period_s), true],
+    ['mean', ['x', 'y', 'z'].every((k, i) => same(got.mean[k], want.mean_over_period[i])), true],
+    ['M(W) bracket', same(got.worst.lower, w.lower) && same(got.worst.upper, w.upper) && start, true],
+    ['M(W) certified', got.worst.certified, w.certified ? '1' : '0'],
+    ['time to epsilon', exact(got.time.first, e.first_s) && exact(got.time.stays, e.stays_below_from_s), true],
+    ['epsilon certified', got.time.certified, e.certified ? '1' : '0']];
+  for (const [what, a, b] of pairs) check(a === b, where + ': ' + what + ' ' + a + ' != CLI ' + b + ' (' + JSON.stringify(got).slice(0, 400) + ')');
+  const samples = got.path.length / 3;
+  const rows = cli(['clinostat', '--outer', s.outer, '--inner', s.inner, '--tilt', s.tilt, '--frame-angle', s['frame-angle'], '--trace',
+    '--duration', String(want.period_s), '--samples', String(samples + 1)]).stdout.trim().split('\n').slice(1);
+  let worst = rows.length === samples + 1 ? 0 : Infinity;
+  for (let k = 0; k < samples && worst < Infinity; ++k) {
+    const g = rows[k].split(',').map(Number);
+    worst = Math.max(worst, Math.hypot(g[1] - got.path[3 * k], g[2] - got.path[3 * k + 1], g[3] - got.path[3 * k + 2]));
+  }
+  check(samples >= 360 && worst <= 1e-14, where + ': the gravity path (' + samples + ' points) is ' + worst + ' from sphtroch clinostat --trace');
+}
+
+// The clinostat panel: `sphtroch clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01
+// --json`'s numbers (M(W) bit for bit) and a tilted, frame-angled machine whose mean over a period
+// is above epsilon (no time to epsilon);
+// the hash round-trips (a typed text goes into it, and opening it gives that panel); bad texts show
+// the CLI's line and no number; "show its train above" makes the train the design; the path drawn.
+async function checkClinostat(page) {
+  await open(page, clinostatHash(CLINOSTAT_DEFAULTS));
+  compareClinostat(await readClinostat(page), CLINOSTAT_DEFAULTS, 'clinostat 1.33/2', 0);
+  const dark = await page.evaluate(() => {
+    const c = document.querySelector('[data-testid="clinostat-sphere"]'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let k = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] + d[i + 1] + d[i + 2] < 300 && d[i + 3] > 0) ++k;
+    return k;
+  });
+  check(dark > 2000, 'clinostat: the gravity path is not drawn (' + dark + ' dark pixels)');
+  const tilted = { outer: '4/3', inner: '-2.5', tilt: '60', 'frame-angle': '75', window: '90', epsilon: '0.1' };
+  await page.fill('[data-testid="clinostat-outer"]', tilted.outer);
+  for (const k of ['inner', 'tilt', 'frame-angle', 'window', 'epsilon']) await page.fill('[data-testid="clinostat-' + k + '"]', tilted[k]);
+  const typed = await readClinostat(page);
+  check(decodeURIComponent(typed.hash) === decodeURIComponent(clinostatHash(tilted)), 'clinostat: the hash ' + typed.hash + ' != ' + clinostatHash(tilted));
+  await page.goto('about:blank');  // a new page load from the hash, not a change of the hash
+  await open(page, typed.hash);
+  const reopened = await readClinostat(page);
+  const fields = await page.evaluate(() => window.sphtrochExplorer.state());
+  check(Object.keys(tilted).every((k) => fields[k] === tilted[k]) && fields.clinostat === 'on',
+    'clinostat: the hash did not give back the texts: ' + JSON.stringify(fields));
+  // The module's series of a tilted machine differs from the CLI's in the last bits (its C
+  // library's sin and cos in the series' transform, musl's, round differently from glibc's).
+  compareClinostat(reopened, tilted, 'clinostat ' + JSON.stringify(tilted), 1e-15);
+  await checkClinostatRefusals(page);
+  await open(page, clinostatHash(CLINOSTAT_DEFAULTS));
+  const shown = await readClinostat(page);
+  await page.click('#clinostat-use-train');
+  const design = await page.evaluate(() => window.sphtrochExplorer.state());
+  check(design.n === shown.train.n && design.a2 === shown.train.a2 && design.a3 === shown.train.a3 && design.phase === shown.train.phase,
+    'clinostat: "show its train above" gave ' + JSON.stringify(design) + ' for ' + JSON.stringify(shown.train));
+  await page.uncheck('[data-testid="clinostat-on"]');
+  check(!/clinostat|outer=/.test(await page.evaluate(() => window.location.hash)), 'clinostat: off, the hash still carries the panel');
+}
+
+// Bad texts: the CLI's one line (its stderr, exit 2) and no number of the panel left.
+async function checkClinostatRefusals(page) {
+  for (const [field, value] of [['outer', 'abc'], ['outer', '5000'], ['tilt', '200'], ['window', '-1'], ['epsilon', 'x'],
+    ['epsilon', '1e-9']]) {
+    const s = Object.assign({}, CLINOSTAT_DEFAULTS, { [field]: value });
+    await open(page, clinostatHash(CLINOSTAT_DEFAULTS));
+    await readClinostat(page);
+    await page.fill('[data-testid="clinostat-' + field + '"]', value);
+    const got = await readClinostat(page);
+    const want = cli(clinostatArgs(s));
+    check(want.status === 2 && got.error === want.stderr, 'clinostat ' + field + ' = ' + value + ': page "' + got.error + '" != CLI "' + want.stderr + '"');
+    check(['train', 'period', 'mean', 'worst', 'time'].every((id) => got[id].text === '') && got.command === '',
+      'clinostat ' + field + ' = ' + value + ': a number is still shown: ' + JSON.stringify(got).slice(0, 300));
+  }
+}
+
 (async () => {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
   const page = await browser.newPage({ viewport: { width: 1400, height: 1100 } });
@@ -630,11 +742,12 @@ async function checkMarkers(page) {
     await checkMapHover(page);
     await checkMarkers(page);
     await checkViewFromCurve(page);
+    await checkClinostat(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones, Fig. 3 certified, palette, map hover, markers' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones, Fig. 3 certified, palette, map hover, markers, clinostat' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });
