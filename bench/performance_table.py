@@ -21,7 +21,7 @@ SECTIONS = [  # (anchor, title): the order of the table; every row of performanc
     ("crossings", "Crossings and classify"), ("atlas", "Atlas"), ("boundaries", "Boundaries"),
     ("tolerance", "Tolerance"),
     ("identify", "Identify"), ("synth-points", "Precision points"), ("free-axis", "Precision points, free axis"),
-    ("fit", "Fit"), ("clinostat", "Clinostats"), ("explorer", "Explorer"), ("python", "Python"), ("compile", "Compile time"),
+    ("fit", "Fit"), ("clinostat", "Clinostats"), ("chain", "Rotation chains"), ("explorer", "Explorer"), ("python", "Python"), ("compile", "Compile time"),
     ("ci", "Continuous integration"),
 ]
 

@@ -23,7 +23,8 @@ build_dir=${BUILD_DIR:-build}
 jobs=${JOBS:-$(nproc)}
 
 # What the library and the tool need (libhealpix-cxx-dev and pkg-config: a clinostat's dwell map,
-# `sphtroch clinostat --coverage`); the tests add python3-numpy (numpy.load/numpy.save round
+# `sphtroch clinostat --coverage`; liburdfdom-dev: rotation chains read from and written as URDF
+# robot descriptions, `sphtroch chain --urdf`); the tests add python3-numpy (numpy.load/numpy.save round
 # trips of the .npy files), libbenchmark-dev (bench/, built by bench/run) and the Python module's
 # build and tests (pybind11-dev, python3-dev, python3-pytest; python3-matplotlib for the example),
 # and jq (a console example of docs/cli.md pipes classify --json through it; ctest docs:console_examples),
@@ -39,7 +40,7 @@ jobs=${JOBS:-$(nproc)}
 # OpenCASCADE (trace -o FILE.step; optional for the library, asked for by `test`): Debian's CMake
 # config of its DataExchange part needs the ocaf and visualization packages and libtbb-dev too.
 packages=(build-essential cmake libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libmpfrc++-dev
-          libcli11-dev nlohmann-json3-dev libhealpix-cxx-dev pkg-config)
+          libcli11-dev nlohmann-json3-dev libhealpix-cxx-dev liburdfdom-dev pkg-config)
 step_packages=(libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
                libocct-data-exchange-dev libocct-ocaf-dev libocct-visualization-dev libtbb-dev)
 # librsvg2-dev (+ pkg-config): plot -o FILE.png renders the SVG (optional, asked for by `test`).

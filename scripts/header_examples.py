@@ -23,6 +23,7 @@ NO_EXAMPLE = {
     "exact/mpreal_support.hpp": "its example needs sphtroch::mpfr; compiled by test_scalar_types",
     "cad/step_export.hpp": "its example needs sphtroch::step (OpenCASCADE); run by test_cad",
     "machine/dwell_map.hpp": "its example needs sphtroch::healpix; the same calls run in test_machine",
+    "io/urdf_chain.hpp": "its example needs sphtroch::urdf (urdfdom); the same calls run in test_io",
 }
 
 PRELUDE = r'''

@@ -5,7 +5,9 @@
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
 //     gear train, window means, the worst window mean, the time to epsilon).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
-//   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds synthesis/interval/:
+//   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains as URDF).
+//   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds census/interval/
+//     (the certified census of rotation chains) and synthesis/interval/:
 //     interval arithmetic, certified root isolation, precision points (fixed frame, free axis),
 //     the certified topology margin, box topology and node enclosures of a tolerance box.
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
@@ -57,6 +59,9 @@
 #include "sphtroch/io/ratio_set.hpp"
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/train_text.hpp"
+#if defined(SPHTROCH_HAVE_URDF)
+#include "sphtroch/io/urdf_chain.hpp"
+#endif
 
 #include "sphtroch/draw/curve_view.hpp"
 #include "sphtroch/draw/dwell_raster.hpp"
@@ -107,6 +112,10 @@
 #endif
 
 #if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
+#include "sphtroch/census/interval/chain_box_search.hpp"
+#include "sphtroch/census/interval/chain_census.hpp"
+#include "sphtroch/census/interval/chain_enclosure.hpp"
+#include "sphtroch/census/interval/chain_tangency.hpp"
 #include "sphtroch/synthesis/interval/boundary_enclosure.hpp"
 #include "sphtroch/synthesis/interval/free_axis_points.hpp"
 #include "sphtroch/synthesis/interval/interval.hpp"
@@ -123,6 +132,7 @@
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/arc_predicates.hpp"
 #include "sphtroch/exact/certified_census.hpp"
+#include "sphtroch/exact/chain_census_output.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/exact/polyline_census.hpp"

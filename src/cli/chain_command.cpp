@@ -69,13 +69,36 @@ void run_chain_trace(const ChainOptions& o) {
   out.commit();
 }
 
-void add_chain_options(CLI::App& cmd, ChainText& chain) {
-  cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)")->required();
-  cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)")->required();
-  cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
+
+struct ChainExportOptions {
+  ChainText chain;
+  std::string urdf, name;
+};
+
+/// chain export --urdf FILE: the chain as a URDF (io/urdf_chain.hpp), joint_1.. with <mimic>.
+void run_chain_export(const ChainExportOptions& o) {
+  const RotationChain chain = o.chain.chain();
+#if defined(SPHTROCH_HAVE_URDF)
+  const std::string xml = chain_to_urdf(chain, o.name.empty() ? "sphtroch_chain" : o.name);
+  OutputFile out = OutputFile::open(o.urdf, "--urdf");
+  out.write(xml);
+  out.commit();
+#else
+  throw InvalidInput("urdf", o.urdf, "this build has no urdfdom", "a build with sphtroch::urdf (Debian's liburdfdom-dev)");
+#endif
 }
 
 }  // namespace
+
+void add_chain_options(CLI::App& cmd, ChainText& chain) {
+  cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)");
+  cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)");
+  cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
+  cmd.add_option("--urdf", chain.urdf, "or read the chain from a URDF FILE (- for stdin) whose joints are coupled by <mimic>");
+  cmd.add_option("--from", chain.from, "with --urdf: the link the chain starts at (the curve is in its first joint's frame)");
+  cmd.add_option("--to", chain.to, "with --urdf: the link that carries the tool axis");
+  cmd.add_option("--axis", chain.axis, "with --urdf: the tool axis X,Y,Z in the --to link's frame (default 0,0,1)");
+}
 
 void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
   CLI::App* chain = app.add_subcommand("chain", "a gear-coupled rotation chain: the curve of its tool axis (k = 2: the gear train)");
@@ -98,6 +121,19 @@ void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   cmd->add_option("--threads", o->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
   add_output_option(*cmd, o->output, "the curve");
   actions.emplace_back(cmd, [o] { run_chain_trace(*o); });
+  auto e = std::make_shared<ChainExportOptions>();
+  CLI::App* exp = chain->add_subcommand("export", "write the chain as a URDF robot description (--urdf FILE)");
+  exp->add_option("--twists", e->chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi]");
+  exp->add_option("--rates", e->chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)");
+  exp->add_option("--phases", e->chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
+  exp->add_option("--urdf", e->urdf, "the URDF file to write (- for stdout)")->required();
+  exp->add_option("--name", e->name, "the robot's name (default sphtroch_chain)");
+  exp->footer("joint_1.. are continuous joints about z, the first turning one the motor, the others <mimic> it\n"
+              "(multiplier N_i / N_m); `chain classify --urdf FILE --from base_link --to tool` reads it back.");
+  actions.emplace_back(exp, [e] { run_chain_export(*e); });
+#ifdef SPHTROCH_HAVE_ANALYSIS
+  register_chain_census(*chain, actions);
+#endif
 }
 
 }  // namespace sphtroch::cli

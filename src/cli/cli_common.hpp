@@ -7,6 +7,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/train_text.hpp"
+#include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/core/sampling.hpp"
@@ -130,6 +131,8 @@ void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
 void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // clinostat_command.cpp
 void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::App*, Action>>& actions);  // design, merge
 void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // chain trace (chain_command.cpp)
+/// --twists, --rates, --phases of every chain subcommand, into the library's reader.
+void add_chain_options(CLI::App& cmd, ChainText& chain);
 /// `completion bash|zsh`: register it last, so that its script lists every command (completion_command.cpp).
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS
@@ -137,6 +140,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth points, merge, fit
 void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action>>& actions);  // synth_fit_command.cpp
+void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Action>>& actions);  // chain classify, nodes
 /// `synth merge` of synth fit shards (their texts already read), synth_fit_command.cpp.
 void run_fit_merge(const std::vector<std::string>& paths, const std::vector<std::string>& texts, const std::string& output);
 /// Parses and validates a scene's text as `sphtroch scene` does, without touching the file system

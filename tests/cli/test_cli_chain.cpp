@@ -2,13 +2,21 @@
 // the bytes of `sphtroch trace` on random trains, with and without --velocity --kinematics; for
 // k = 3, 4 every row against a product of Eigen AngleAxis rotations in long double written here
 // from the model; the period and the default count from the rates; bad input (exit 2, one line
-// naming the option, nothing on stdout, no file).
+// naming the option, nothing on stdout, no file). chain classify and nodes: for k = 2 the counts,
+// node positions and branches of `sphtroch classify` (the gear train's two censuses); for k = 3
+// each node's two branch parameters give one point of the rotation model; the report's Fig. 3
+// node at (0, 1, 0) (Eq. 25); a chain written by `chain export --urdf` reads back to the same
+// census; bad input, including URDF files, exits 2 with one line.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
+#include "test_support.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -117,5 +125,140 @@ TEST_CASE("chain trace: bad input is refused with one line naming the option", "
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, option));
     CHECK(dir.entries().empty());
+  }
+}
+
+TEST_CASE("chain classify, k = 2: counts, node positions and branches equal classify's on random trains", "[cli][chain]") {
+  TempDir dir;
+  std::mt19937 rng(4545);
+  std::uniform_real_distribution<double> angle(0.05, 3.09), phase(0, 6.28);
+  std::uniform_int_distribution<int> num(-5, 5), den(1, 5);
+  int compared = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const double a2 = angle(rng), a3 = angle(rng), ph = phase(rng);
+    const int p = num(rng), q = den(rng);
+    if (p == 0) continue;
+    const std::string n = std::to_string(p) + "/" + std::to_string(q);
+    const Result train = run("classify --a2 " + shortest_g(a2) + " --a3 " + shortest_g(a3) + " --n " + n + " --phase " + shortest_g(ph) + " --json", dir, true);
+    const auto t = nlohmann::json::parse(train.out);
+    // Within 1e-5 of a pitch cone the two censuses resolve near-cusp loops differently (docs/chains.md).
+    if (std::fabs(t["boundaries"]["pitch_cone_margin"].get<double>()) < 1e-5 ||
+        std::fabs(t["boundaries"]["mirror_pitch_cone_margin"].get<double>()) < 1e-5 || t["counts"]["tangencies"].get<int>() > 0)
+      continue;
+    const Result chain = run("chain classify --twists " + shortest_g(a2) + "," + shortest_g(a3) + " --rates 1," + n + " --phases 0," + shortest_g(ph) + " --json", dir);
+    const auto c = nlohmann::json::parse(chain.out);
+    INFO("a2 " << shortest_g(a2) << " a3 " << shortest_g(a3) << " n " << n << " phase " << shortest_g(ph));
+    REQUIRE(train.status == 0);
+    CHECK(c["certified"] == true);
+    CHECK(c["counts"] == t["counts"]);
+    CHECK(c["class"] == t["class"]);
+    for (const auto& node : t["nodes"]) {
+      const Eigen::Vector3d x(node["position"][0], node["position"][1], node["position"][2]);
+      bool found = false;
+      for (const auto& other : c["nodes"]) {
+        const Eigen::Vector3d y(other["position"][0], other["position"][1], other["position"][2]);
+        if ((x - y).norm() < 1e-9 && other["branches"] == node["branches"]) found = true;
+      }
+      CHECK(found);
+    }
+    ++compared;
+  }
+  CHECK(compared > 30);
+}
+
+TEST_CASE("chain classify and nodes: a k = 3 chain's table is its JSON, and the report's Fig. 3 node (Eq. 25)", "[cli][chain]") {
+  TempDir dir;
+  const std::string chain = "--twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --phases 0,0.3,0";
+  const auto j = nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out);
+  const std::vector<std::string> rows = split_lines(run("chain nodes " + chain, dir).out);
+  REQUIRE(rows.size() == 1 + j["nodes"].size() + j["cusps"].size());
+  CHECK(rows[0] == "kind,x,y,z,t1,t2,branches,id");
+  // Each node's two branch parameters give the same point of the model (an independent product of rotations).
+  const std::vector<Stage> stages{{M_PI / 2, 1, 1, 0}, {M_PI / 3, 1, 2, 0.3}, {M_PI / 4, -3, 2, 0}};
+  for (const auto& node : j["nodes"]) {
+    const auto a = model(stages, node["params"][0].get<double>()), b = model(stages, node["params"][1].get<double>());
+    CHECK((a - b).norm() < 1e-12);
+  }
+  const auto fig3 = nlohmann::json::parse(run("chain classify --twists pi/2,pi/2 --rates 1,1 --json", dir).out);
+  REQUIRE(fig3["nodes"].size() == 1);
+  CHECK(std::fabs(fig3["nodes"][0]["position"][1].get<double>() - 1.0) < 1e-12);
+}
+
+TEST_CASE("chain nodes, k = 2 with rates 1,n: the bytes of sphtroch nodes, tangencies and cusps included", "[cli][chain]") {
+  TempDir dir;
+  std::mt19937 rng(4546);
+  std::uniform_real_distribution<double> angle(0.05, 3.09), phase(0, 6.28);
+  std::uniform_int_distribution<int> num(-5, 5), den(1, 5);
+  std::vector<std::string> trains = {"pi/2 " + shortest_g(std::atan(3 * std::sqrt(3.0))) + " 3 0",  // three tangencies (closed form)
+                                     "pi/2 pi/2 1 0", "1 0.31987291043476807 2 0.5"};             // Fig. 3; two cusps (a3 = a_p)
+  for (int k = 0; k < 40; ++k) {
+    const int p = num(rng), q = den(rng);
+    if (p != 0) trains.push_back(shortest_g(angle(rng)) + " " + shortest_g(angle(rng)) + " " + std::to_string(p) + "/" + std::to_string(q) + " " + shortest_g(phase(rng)));
+  }
+  for (const std::string& t : trains) {
+    std::istringstream in(t);
+    std::string a2, a3, n, ph;
+    in >> a2 >> a3 >> n >> ph;
+    const Result chain = run("chain nodes --twists " + a2 + "," + a3 + " --rates 1," + n + " --phases 0," + ph, dir, true);
+    const Result train = run("nodes --a2 " + a2 + " --a3 " + a3 + " --n " + n + " --phase " + ph, dir, true);
+    INFO(t);
+    CHECK(chain.status == train.status);
+    CHECK(chain.out == train.out);
+  }
+  const auto tangent = nlohmann::json::parse(run("chain classify --twists pi/2," + shortest_g(std::atan(3 * std::sqrt(3.0))) + " --rates 1,3 --json", dir).out);
+  CHECK(tangent["counts"]["tangencies"] == 3);
+  const auto cusps = nlohmann::json::parse(run("chain classify --twists 1,0.31987291043476807 --rates 1,2 --json", dir).out);
+  CHECK(cusps["counts"]["cusps"] == 2);
+}
+
+TEST_CASE("chain classify, k = 2 with a motor rate other than 1: each node's parameters give one point of the model", "[cli][chain]") {
+  TempDir dir;
+  const std::vector<Stage> stages{{1.1, 2, 1, 0.3}, {2.0, 4, 3, 0.1}};
+  const auto j = nlohmann::json::parse(run("chain classify --twists 1.1,2 --rates 2,4/3 --phases 0.3,0.1 --json", dir).out);
+  REQUIRE(j["certified"] == true);
+  REQUIRE(!j["nodes"].empty());
+  for (const auto& node : j["nodes"]) {
+    const auto a = model(stages, node["params"][0].get<double>()), b = model(stages, node["params"][1].get<double>());
+    CHECK((a - b).norm() < 1e-12);
+    CHECK(node["params"][1].get<double>() < j["chain"]["period"].get<double>());
+  }
+}
+
+TEST_CASE("chain export --urdf, read back with chain classify --urdf: the same census", "[cli][chain]") {
+  TempDir dir;
+  const std::string chain = "--twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --phases 0,0.3,0";
+  REQUIRE(run("chain export " + chain + " --urdf wrist.urdf", dir).status == 0);
+  const auto a = nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out);
+  const auto b = nlohmann::json::parse(run("chain classify --urdf wrist.urdf --from base_link --to tool --json", dir).out);
+  CHECK(b["counts"] == a["counts"]);
+  CHECK(b["chain"]["rates"] == a["chain"]["rates"]);  // the motor's rate is 1 here, so the rates are the same
+  for (std::size_t k = 0; k < a["nodes"].size(); ++k)
+    for (int x = 0; x < 3; ++x) CHECK(std::fabs(a["nodes"][k]["position"][x].get<double>() - b["nodes"][k]["position"][x].get<double>()) < 1e-12);
+}
+
+TEST_CASE("chain classify, nodes, export: bad input is refused with one line naming the option", "[cli][chain]") {
+  TempDir dir;
+  {
+    std::ofstream bad(dir.path / "bad.urdf");
+    bad << "<robot name='x'><link name='a'/><joint name='j' type='prismatic'><parent link='a'/><child link='b'/>"
+           "<axis xyz='0 0 1'/><limit lower='0' upper='1' effort='1' velocity='1'/></joint><link name='b'/></robot>";
+  }
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"classify --twists 1,2 --rates 1", "--rates"}, {"classify --twists 1,nan --rates 1,2", "--twists"},
+           {"classify --twists 1,4 --rates 1,2", "--twists"}, {"classify --twists 1,2 --rates 1,x", "--rates"},
+           {"classify --twists 1,2 --rates 0,0", "--rates"}, {"classify", "--twists"},
+           {"nodes --twists 1,2 --rates 1,2 --radius -1", "--radius"},
+           {"classify --twists 1,2 --rates 1,1/99991 --phases 0,0", "--rates"},
+           {"classify --urdf missing.urdf --from a --to b", "--urdf"}, {"classify --urdf bad.urdf --from a --to b", "--urdf"},
+           {"classify --urdf bad.urdf --from a", "--to"}, {"classify --twists 1,2 --rates 1,2 --from a", "--from"},
+           {"classify --urdf bad.urdf --twists 1 --from a --to b", "--twists"}, {"classify --urdf bad.urdf --from a --to b --axis 0,0", "--axis"},
+           {"export --twists 1,2 --rates 1,2 --urdf out/x.urdf", "--urdf"}, {"export --twists 1,9 --rates 1,2 --urdf x.urdf", "--twists"}}) {
+    const Result r = run("chain " + args, dir, true);
+    INFO(args << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, option));
+    CHECK(dir.entries().size() == 1);  // bad.urdf only
   }
 }

@@ -398,6 +398,10 @@ inline nlohmann::json root_classification_json(const RootClassification& c) {
           {"node_points", report_detail::nodes_json(c.node_points)}};
 }
 
+/// Nodes and cusps in the schema of classify --json's "nodes" and "cusps" (every census's report uses it).
+inline nlohmann::json node_list_json(const std::vector<Node>& nodes) { return report_detail::nodes_json(nodes); }
+inline nlohmann::json cusp_list_json(const std::vector<Cusp>& cusps) { return report_detail::cusps_json(cusps); }
+
 inline nlohmann::json classification_json(const TrainText& text, const Classification& c) {
   namespace d = report_detail;
   const GearTrain& tr = c.snapped.train;

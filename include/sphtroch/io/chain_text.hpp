@@ -8,11 +8,20 @@
 // [0, pi]. Rates exactly: integers, decimals (up to 9 places) or p/q, and 0 (a joint that does
 // not turn). Errors name the option ("twists", "rates", "phases") and the stage; lists of
 // different lengths are refused naming the shorter or longer one.
+// Or from a robot description: urdf (a file, - for stdin, at most kMaxUrdfBytes), from and to
+// (links), axis (the tool axis in the to link's frame, "X,Y,Z", default "0,0,1"), read by
+// io/urdf_chain.hpp when the build has urdfdom (SPHTROCH_HAVE_URDF), else refused naming "urdf".
+// One source only: twists/rates/phases with urdf, or from/to/axis without it, are refused.
 #pragma once
 
 #include "sphtroch/core/rotation_chain.hpp"
+#include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
+#if defined(SPHTROCH_HAVE_URDF)
+#include "sphtroch/io/urdf_chain.hpp"
+#endif
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -52,10 +61,24 @@ inline ChainRate parse_chain_rate(std::string_view text, const std::string& fiel
   return ChainRate(r.p(), r.q());
 }
 
+/// The largest URDF file read (a robot description is kilobytes; this bounds the parser's memory).
+constexpr std::size_t kMaxUrdfBytes = std::size_t{16} << 20;
+
 struct ChainText {
   std::string twists, rates, phases;  ///< comma-separated; phases "" = all 0
+  std::string urdf, from, to, axis;   ///< a URDF file, its links, the tool axis "X,Y,Z" ("" = 0,0,1)
 
   RotationChain chain() const {
+    if (!urdf.empty()) return urdf_chain();
+    for (const auto& [value, field] : {std::pair{&from, "from"}, std::pair{&to, "to"}, std::pair{&axis, "axis"}})
+      if (!value->empty()) throw InvalidInput(field, *value, "given without --urdf", "--from, --to and --axis with --urdf FILE");
+    if (twists.empty() && rates.empty())
+      throw InvalidInput("twists", "", "no chain given", "--twists A1,...,Ak --rates N1,...,Nk, or --urdf FILE --from LINK --to LINK");
+    return typed_chain();
+  }
+
+ private:
+  RotationChain typed_chain() const {
     const std::vector<std::string> a = split_list(twists), n = split_list(rates), p = split_list(phases);
     if (a.empty()) throw InvalidInput("twists", twists, "no twist", "A1,...,Ak: k angles in [0, pi]");
     for (const auto& [list, field] : {std::pair{&a, "twists"}, std::pair{&n, "rates"}, std::pair{&p, "phases"}})
@@ -81,7 +104,33 @@ struct ChainText {
     return RotationChain(stages);
   }
 
- private:
+  RotationChain urdf_chain() const {
+    for (const auto& [value, field] : {std::pair{&twists, "twists"}, std::pair{&rates, "rates"}, std::pair{&phases, "phases"}})
+      if (!value->empty()) throw InvalidInput(field, *value, "given with --urdf", "either --urdf FILE or --twists/--rates/--phases");
+    if (from.empty()) throw InvalidInput("from", "", "missing", "--from LINK: the link the chain starts at");
+    if (to.empty()) throw InvalidInput("to", "", "missing", "--to LINK: the link that carries the tool axis");
+#if defined(SPHTROCH_HAVE_URDF)
+    const std::string xml = read_whole_input(urdf, "urdf", kMaxUrdfBytes);
+    return chain_from_urdf(xml, from, to, tool_axis());
+#else
+    throw InvalidInput("urdf", urdf, "this build has no urdfdom", "a build with sphtroch::urdf (Debian's liburdfdom-dev)");
+#endif
+  }
+
+  Vector3d tool_axis() const {
+    if (axis.empty()) return Vector3d::UnitZ();
+    const std::vector<std::string> items = split_list(axis);
+    const std::string valid = "X,Y,Z: three finite numbers, not all 0";
+    if (items.size() != 3) throw InvalidInput("axis", axis, std::to_string(items.size()) + " number(s)", valid);
+    Vector3d v;
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<double> x = detail::strict_double(detail::trim(items[static_cast<std::size_t>(k)]));
+      if (!x) throw InvalidInput("axis", axis, "not a number: " + items[static_cast<std::size_t>(k)], valid);
+      v[k] = *x;
+    }
+    return v;  // zero or huge: refused by read_urdf_chain, naming "axis"
+  }
+
   static double parse_angle_item(const std::string& item, const std::string& field, const std::string& stage) {
     try {
       return parse_angle(item, field);

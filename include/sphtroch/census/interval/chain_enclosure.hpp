@@ -1,0 +1,153 @@
+// sphtroch/census/interval/chain_enclosure.hpp — enclosures of a rotation chain's point P(s), its
+// velocity P'(s) and acceleration P''(s) over an interval of the motor parameter s (interval
+// arithmetic, outward rounded): the evaluations behind the chain's certified census
+// (chain_census.hpp).
+//
+//   const sphtroch::RotationChain chain({{1.0, sphtroch::ChainRate(1), 0.0}, {2.0, sphtroch::ChainRate(2, 3), 0.0}});
+//   sphtroch::RoundingGuard upward;                      // REQUIRED while the jets are computed
+//   const sphtroch::ChainEnclosure e(chain);
+//   sphtroch::ChainJet j = e.jet(sphtroch::Interval(0.1, 0.2));
+//   j.point[0];   // contains P_x(s) for every s in [0.1, 0.2]
+//
+// Contract: for every s in S, P(s), P'(s), P''(s) of ChainCurve (core/rotation_chain.hpp) lie in
+// jet(S).point, .velocity, .acceleration (componentwise), and |omega(s)| >= jet(S).omega_norm.inf().
+// How: the joint angles N_i S + P_i in intervals (N_i = p_i / q_i enclosed), their sines and
+// cosines by interval_sincos (synthesis/interval/interval.hpp), the frames R_i = R_{i-1} Rz Rx
+// multiplied out in intervals; omega = sum N_i Z_i, P' = omega x P, P'' = omega' x P + omega x
+// (omega x P) with omega' = sum_i N_i (W_{i-1} x Z_i) (the formulas of rotation_chain.hpp).
+// The natural extension overestimates in proportion to the width of S; `sharp_jet` intersects it
+// with the mean-value forms P(c) + P'(S)(S - c) and P'(c) + P''(S)(S - c) (first-order sharp).
+#pragma once
+
+#if !defined(SPHTROCH_HAVE_INTERVAL)
+#error "sphtroch/census/interval/chain_enclosure.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
+#endif
+
+#include "sphtroch/core/rotation_chain.hpp"
+#include "sphtroch/synthesis/interval/interval.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace sphtroch {
+
+/// A vector of three intervals.
+using IntervalVec3 = std::array<Interval, 3>;
+
+inline IntervalVec3 cross(const IntervalVec3& a, const IntervalVec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline Interval dot(const IntervalVec3& a, const IntervalVec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+/// Whether some component excludes 0 (then the vector is not 0 anywhere in the box).
+inline bool excludes_zero(const IntervalVec3& v) { return !may_vanish(v[0]) || !may_vanish(v[1]) || !may_vanish(v[2]); }
+/// The smallest box holding both.
+inline IntervalVec3 hull(const IntervalVec3& a, const IntervalVec3& b) {
+  IntervalVec3 h;
+  for (int k = 0; k < 3; ++k) h[k] = Interval(std::min(a[k].inf(), b[k].inf()), std::max(a[k].sup(), b[k].sup()));
+  return h;
+}
+/// Whether the two boxes meet.
+inline bool boxes_meet(const IntervalVec3& a, const IntervalVec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a[k].sup() < b[k].inf() || b[k].sup() < a[k].inf()) return false;
+  return true;
+}
+
+/// P, P', P'' enclosed over an interval of s, and |omega| from below.
+struct ChainJet {
+  IntervalVec3 point, velocity, acceleration;
+  Interval omega_norm;  // encloses |omega(s)|
+};
+
+class ChainEnclosure {
+ public:
+  /// REQUIRES the rounding mode upward (a RoundingGuard held).
+  explicit ChainEnclosure(const RotationChain& chain) {
+    for (const ChainStage& s : chain.stages()) {
+      rate_.push_back(Interval(static_cast<double>(s.rate.p())) / Interval(static_cast<double>(s.rate.q())));
+      phase_.push_back(Interval(s.phase));
+      twist_.push_back(interval_sincos(Interval(s.twist)));
+    }
+  }
+
+  /// The enclosures over S (natural extension). REQUIRES rounding upward.
+  ChainJet jet(const Interval& s) const {
+    const std::size_t k = rate_.size();
+    std::vector<std::pair<Interval, Interval>> trig(k);
+    {
+      const RoundingGuard nearest(CGAL_FE_TONEAREST);
+      for (std::size_t i = 0; i < k; ++i) trig[i] = interval_sincos_in_nearest_mode(angle(i, s));
+    }
+    std::array<IntervalVec3, 3> r = {IntervalVec3{Interval(1), Interval(0), Interval(0)},  // columns of R
+                                     IntervalVec3{Interval(0), Interval(1), Interval(0)},
+                                     IntervalVec3{Interval(0), Interval(0), Interval(1)}};
+    std::vector<IntervalVec3> axes(k);
+    for (std::size_t i = 0; i < k; ++i) {
+      axes[i] = r[2];
+      r = times_stage(r, trig[i], twist_[i]);
+    }
+    ChainJet j;
+    j.point = r[2];
+    IntervalVec3 omega = zero(), omega_dot = zero();
+    for (std::size_t i = 0; i < k; ++i) {
+      if (i > 0) add_scaled(omega_dot, rate_[i], cross(omega, axes[i]));  // omega here is W_{i-1}
+      add_scaled(omega, rate_[i], axes[i]);
+    }
+    j.velocity = cross(omega, j.point);
+    const IntervalVec3 a = cross(omega_dot, j.point), b = cross(omega, j.velocity);
+    j.acceleration = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    const Interval square = dot(omega, omega);
+    j.omega_norm = CGAL::sqrt(Interval(std::max(square.inf(), 0.0), std::max(square.sup(), 0.0)));
+    return j;
+  }
+
+  /// jet(S) narrowed by the mean-value forms about the middle of S (see header). REQUIRES rounding upward.
+  ChainJet sharp_jet(const Interval& s) const {
+    ChainJet wide = jet(s);
+    const Interval c = centre_of(s);
+    const ChainJet mid = jet(c);
+    const Interval d = s - c;
+    for (int x = 0; x < 3; ++x) {
+      wide.point[x] = narrowed(wide.point[x], mid.point[x] + wide.velocity[x] * d);
+      wide.velocity[x] = narrowed(wide.velocity[x], mid.velocity[x] + wide.acceleration[x] * d);
+    }
+    return wide;
+  }
+
+ private:
+  Interval angle(std::size_t i, const Interval& s) const { return rate_[i] * s + phase_[i]; }
+
+  static IntervalVec3 zero() { return {Interval(0), Interval(0), Interval(0)}; }
+  static void add_scaled(IntervalVec3& sum, const Interval& f, const IntervalVec3& v) {
+    for (int x = 0; x < 3; ++x) sum[x] += f * v[x];
+  }
+  /// The intersection of two enclosures of the same quantity (both hold it, so they meet).
+  static Interval narrowed(const Interval& a, const Interval& b) {
+    const double lo = std::max(a.inf(), b.inf()), hi = std::min(a.sup(), b.sup());
+    return lo <= hi ? Interval(lo, hi) : a;
+  }
+  /// R Rz(theta) Rx(A), by columns: with t = (sin, cos) of theta, a = (sin, cos) of A,
+  /// Rz Rx = [[c, -s ca, s sa], [s, c ca, -c sa], [0, sa, ca]].
+  static std::array<IntervalVec3, 3> times_stage(const std::array<IntervalVec3, 3>& r, const std::pair<Interval, Interval>& t,
+                                                 const std::pair<Interval, Interval>& a) {
+    const Interval& st = t.first;
+    const Interval& ct = t.second;
+    const Interval& sa = a.first;
+    const Interval& ca = a.second;
+    std::array<IntervalVec3, 3> out;
+    for (int x = 0; x < 3; ++x) {
+      out[0][x] = r[0][x] * ct + r[1][x] * st;
+      const Interval y = r[1][x] * ct - r[0][x] * st;  // R (Rz e_y)
+      out[1][x] = y * ca + r[2][x] * sa;
+      out[2][x] = r[2][x] * ca - y * sa;
+    }
+    return out;
+  }
+
+  std::vector<Interval> rate_, phase_;
+  std::vector<std::pair<Interval, Interval>> twist_;
+};
+
+}  // namespace sphtroch
