@@ -4,9 +4,10 @@
 // the t columns are the motor parameter s). Exit 3 after the output when it is not certified.
 // k = 2 with both rates not 0 is the gear train a2 = A1, a3 = A2, n = N2 / N1, theta_p = P2 - n P1
 // (theta2 = N1 s + P1): its nodes and cusps are the train's (`sphtroch classify`'s root and
-// polyline censuses, with tangencies), their parameters mapped to s; the chain census runs
-// beside them as a third census, and a certified chain census that disagrees leaves the answer
-// not certified. For rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s, byte for byte.
+// polyline censuses, with tangencies), their parameters mapped to s; the chain census of the
+// train classify analyses (twists snapped onto a boundary within 1e-10, as classify reads them)
+// runs beside them as a third census, and a certified chain census that disagrees leaves the
+// answer not certified. For rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s, byte for byte.
 #include "cli_common.hpp"
 
 #include "sphtroch/census/interval/chain_census.hpp"
@@ -52,9 +53,20 @@ double chain_param(const RotationChain& chain, double theta2, double period) {
   return chain_census_detail::reduce_param(s, period);
 }
 
-/// The k = 2 census from the gear train's two censuses, checked by the chain census `check`.
-ChainCensus train_census(const RotationChain& chain, const GearTrain& train, const ChainCensus& check) {
+/// The chain of the train `classify` analyses: its twists as snapped onto a boundary within
+/// 1e-10 (the default reading), the chain's rates and phases.
+RotationChain analysed_chain(const RotationChain& chain, const GearTrain& analysed) {
+  std::vector<ChainStage> stages = chain.stages();
+  stages[0].twist = analysed.a2();
+  stages[1].twist = analysed.a3();
+  return RotationChain(stages);
+}
+
+/// The k = 2 census from the gear train's two censuses, checked by the chain census of the
+/// analysed train (a smaller budget: a check only; a tangency's boxes may stay undecided).
+ChainCensus train_census(const RotationChain& chain, const GearTrain& train) {
   const Analysis a(train);
+  const ChainCensus check = chain_census(analysed_chain(chain, a.analysed()), kMaxChainBoxes / 10);
   ChainCensus c = check;
   c.method = "the gear train's root and polyline censuses (classify), checked by the chain census";
   c.nodes = a.nodes();
@@ -77,9 +89,7 @@ ChainCensus train_census(const RotationChain& chain, const GearTrain& train, con
 /// The census `chain classify` and `chain nodes` print (see top).
 ChainCensus census_of(const RotationChain& chain) {
   const std::optional<GearTrain> train = train_of(chain);
-  if (!train) return chain_census(chain);
-  // Only a check here: a tangency leaves its boxes undecided, so it gets a smaller budget (~2 s).
-  return train_census(chain, *train, chain_census(chain, kMaxChainBoxes / 10));
+  return train ? train_census(chain, *train) : chain_census(chain);
 }
 
 void check_chain_certified(const ChainCensus& c) {

@@ -190,6 +190,7 @@ TEST_CASE("chain nodes, k = 2 with rates 1,n: the bytes of sphtroch nodes, tange
   std::uniform_real_distribution<double> angle(0.05, 3.09), phase(0, 6.28);
   std::uniform_int_distribution<int> num(-5, 5), den(1, 5);
   std::vector<std::string> trains = {"pi/2 " + shortest_g(std::atan(3 * std::sqrt(3.0))) + " 3 0",  // three tangencies (closed form)
+                                     "pi/2 " + shortest_g(std::atan(3 * std::sqrt(3.0)) + 3e-11) + " 3 0",  // snapped onto them by classify
                                      "pi/2 pi/2 1 0", "1 0.31987291043476807 2 0.5"};             // Fig. 3; two cusps (a3 = a_p)
   for (int k = 0; k < 40; ++k) {
     const int p = num(rng), q = den(rng);
