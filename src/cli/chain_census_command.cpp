@@ -98,6 +98,7 @@ void check_chain_certified(const ChainCensus& c) {
 }
 
 void run_chain_classify(const ChainCensusOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
   const ChainCensus c = census_of(chain);
   write_output(o.output, [&](std::ostream& out) {
@@ -108,6 +109,7 @@ void run_chain_classify(const ChainCensusOptions& o) {
 }
 
 void run_chain_nodes(const ChainCensusOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
   const NodesCsvOptions csv{parse_radius(o.radius), o.degrees};  // checked before the work
   const ChainCensus c = census_of(chain);

@@ -50,6 +50,7 @@ TraceFormat chain_format(const ChainOptions& o) {
 }
 
 void run_chain_trace(const ChainOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
   const std::size_t n = o.samples.empty() ? default_chain_samples(chain) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
   TraceWriteOptions options;

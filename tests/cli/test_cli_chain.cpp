@@ -232,7 +232,13 @@ TEST_CASE("chain export --urdf, read back with chain classify --urdf: the same c
   const auto a = nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out);
   const auto b = nlohmann::json::parse(run("chain classify --urdf wrist.urdf --from base_link --to tool --json", dir).out);
   CHECK(b["counts"] == a["counts"]);
-  CHECK(b["chain"]["rates"] == a["chain"]["rates"]);  // the motor's rate is 1 here, so the rates are the same
+  CHECK(b["chain"]["rates"] == a["chain"]["rates"]);
+  // An output that is the --urdf input is refused before the work, the input kept.
+  const std::string before = slurp(dir.path / "wrist.urdf");
+  const Result same = run("chain classify --urdf wrist.urdf --from base_link --to tool -o wrist.urdf", dir, true);
+  CHECK(same.status == 2);
+  CHECK(contains(same.err, "--urdf"));
+  CHECK(slurp(dir.path / "wrist.urdf") == before);  // the motor's rate is 1 here, so the rates are the same
   for (std::size_t k = 0; k < a["nodes"].size(); ++k)
     for (int x = 0; x < 3; ++x) CHECK(std::fabs(a["nodes"][k]["position"][x].get<double>() - b["nodes"][k]["position"][x].get<double>()) < 1e-12);
 }

@@ -251,3 +251,24 @@ TEST_CASE("urdf chain: refusals name the joint or link and say why") {
   }
   SECTION("a zero tool axis") { CHECK(refusal(wrist_urdf(), "base_link", "flange", Eigen::Vector3d::Zero()).field() == "axis"); }
 }
+
+TEST_CASE("urdf chain: documents nesting deeper than 64 elements or with an element of more than 64 attributes are refused before urdfdom") {
+  // 50,000 nested elements overflow urdfdom's recursive parser; 100,000 attributes take it minutes.
+  std::string deep = wrist_urdf();
+  const std::size_t at = deep.find('>', deep.find("<robot")) + 1;
+  std::string open, close;
+  for (int k = 0; k < 50000; ++k) open += "<a>", close += "</a>";
+  deep.insert(at, open + close);
+  const InvalidInput d = refusal(deep);
+  CHECK(d.field() == "urdf");
+  CHECK(d.problem().find("nest") != std::string::npos);
+  std::string wide = wrist_urdf();
+  std::string attributes;
+  for (int k = 0; k < 100000; ++k) attributes += " a" + std::to_string(k) + "=\"1\"";
+  wide.insert(wide.find("<robot") + 6, attributes);
+  const InvalidInput w = refusal(wide);
+  CHECK(w.field() == "urdf");
+  CHECK(w.problem().find("attributes") != std::string::npos);
+  // A legal document is as deep as 64 and as wide as 64.
+  CHECK_NOTHROW(read_urdf_chain(wrist_urdf(), "base_link", "flange", Eigen::Vector3d(1, 0, 1)));
+}

@@ -114,9 +114,47 @@ inline InvalidInput joint_error(const std::string& joint, const std::string& pro
 const char* const kValidJoint = "revolute or continuous joints (and fixed ones) whose axis lines meet at one point, one motor";
 const char* const kValidMimic = "a mimic of the motor (or of a joint that mimics it) with a multiplier p/q, |p|, q <= 1e6";
 
+/// Robot descriptions nest a few levels and carry a few attributes per element; deeper or wider
+/// documents are refused before urdfdom's recursive parser sees them (a deep one overflows its
+/// stack, a wide one takes quadratic time).
+constexpr std::size_t kMaxUrdfDepth = 64, kMaxUrdfAttributes = 64;
+
+/// InvalidInput when an element of xml nests deeper than kMaxUrdfDepth or has more than
+/// kMaxUrdfAttributes attributes (counted as '=' inside a tag: an overestimate, on the safe side).
+inline void check_xml_shape(const std::string& xml) {
+  const std::string valid = "a URDF document nesting at most 64 elements, each with at most 64 attributes";
+  std::size_t depth = 0, attributes = 0;
+  bool in_tag = false;
+  for (std::size_t i = 0; i < xml.size(); ++i) {
+    const char c = xml[i];
+    if (!in_tag && c == '<') {
+      in_tag = true, attributes = 0;
+      const char next = i + 1 < xml.size() ? xml[i + 1] : '\0';
+      if (next == '/') depth = depth > 0 ? depth - 1 : 0;
+      else if (next != '?' && next != '!' && ++depth > kMaxUrdfDepth) throw InvalidInput("urdf", "the document", "elements nest deeper than 64", valid);
+    } else if (in_tag && c == '=' && ++attributes > kMaxUrdfAttributes) {
+      throw InvalidInput("urdf", "the document", "an element has more than 64 attributes", valid);
+    } else if (in_tag && c == '>') {
+      in_tag = false;
+      if (i > 0 && xml[i - 1] == '/' && depth > 0) --depth;
+    }
+  }
+}
+
+/// The chain of the stages read, its refusals (RotationChain's contract) naming "urdf": the
+/// user gave a file, not --twists or --rates.
+inline RotationChain checked_chain(const std::vector<ChainStage>& stages) {
+  try {
+    return RotationChain(stages);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("urdf", e.field() + " " + e.value(), e.problem(), e.valid_range());
+  }
+}
+
 /// The model urdfdom parses from xml; InvalidInput when it cannot.
 inline urdf::ModelInterfaceSharedPtr parse_model(const std::string& xml) {
   const std::string valid = "a URDF document (<robot name=...> with links and joints)";
+  check_xml_shape(xml);
   urdf::ModelInterfaceSharedPtr model;
   // urdfdom logs its parse errors through console_bridge on stderr: quiet while it parses, so
   // that a refusal is the one line of InvalidInput (the caller's log level is restored).
@@ -455,7 +493,7 @@ inline UrdfChain read_urdf_chain(const std::string& urdf_xml, const std::string&
   const std::vector<d::Drive> drives = d::stage_drives(*model, g);
   std::vector<std::string> names;
   for (const urdf::JointConstSharedPtr& joint : g.joints) names.push_back(joint->name);
-  return UrdfChain{RotationChain(d::chain_stages(g, drives, tool)), Matrix3d(g.fixed[0] * d::axis_frame(g.axes[0])), names,
+  return UrdfChain{d::checked_chain(d::chain_stages(g, drives, tool)), Matrix3d(g.fixed[0] * d::axis_frame(g.axes[0])), names,
                    drives.front().motor, centre};
 }
 
