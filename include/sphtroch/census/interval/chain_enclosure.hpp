@@ -10,7 +10,7 @@
 //   j.point[0];   // contains P_x(s) for every s in [0.1, 0.2]
 //
 // Contract: for every s in S, P(s), P'(s), P''(s) of ChainCurve (core/rotation_chain.hpp) lie in
-// jet(S).point, .velocity, .acceleration (componentwise), and |omega(s)| >= jet(S).omega_norm.inf().
+// jet(S).point, .velocity, .acceleration (componentwise).
 // How: the joint angles N_i S + P_i in intervals (N_i = p_i / q_i enclosed), their sines and
 // cosines by interval_sincos (synthesis/interval/interval.hpp), the frames R_i = R_{i-1} Rz Rx
 // multiplied out in intervals; omega = sum N_i Z_i, P' = omega x P, P'' = omega' x P + omega x
@@ -55,10 +55,9 @@ inline bool boxes_meet(const IntervalVec3& a, const IntervalVec3& b) {
   return true;
 }
 
-/// P, P', P'' enclosed over an interval of s, and |omega| from below.
+/// P, P', P'' enclosed over an interval of s.
 struct ChainJet {
   IntervalVec3 point, velocity, acceleration;
-  Interval omega_norm;  // encloses |omega(s)|
 };
 
 class ChainEnclosure {
@@ -98,8 +97,6 @@ class ChainEnclosure {
     j.velocity = cross(omega, j.point);
     const IntervalVec3 a = cross(omega_dot, j.point), b = cross(omega, j.velocity);
     j.acceleration = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-    const Interval square = dot(omega, omega);
-    j.omega_norm = CGAL::sqrt(Interval(std::max(square.inf(), 0.0), std::max(square.sup(), 0.0)));
     return j;
   }
 
