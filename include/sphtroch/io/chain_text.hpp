@@ -1,7 +1,9 @@
 // sphtroch/io/chain_text.hpp — a rotation chain as typed: comma-separated twists, rates and
 // phases (the `sphtroch chain` options; one reader for every front end).
 //
-//   sphtroch::ChainText text{"pi/2,1.2,0.4", "1,-2/3,5/3", ""};
+//   sphtroch::ChainText text;
+//   text.twists = "pi/2,1.2,0.4";
+//   text.rates = "1,-2/3,5/3";
 //   const sphtroch::RotationChain chain = text.chain();   // phases all 0
 //
 // Twists and phases in any angle form of parse_angle ("pi/2", "0.3", "2*pi/3"); twists in
