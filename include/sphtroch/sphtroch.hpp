@@ -133,6 +133,7 @@
 #include "sphtroch/exact/arc_predicates.hpp"
 #include "sphtroch/exact/certified_census.hpp"
 #include "sphtroch/exact/chain_census_output.hpp"
+#include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/exact/polyline_census.hpp"

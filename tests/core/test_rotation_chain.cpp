@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <random>
 
 using namespace sphtroch;
@@ -60,6 +61,19 @@ TEST_CASE("rotation chain, k = 2: the gear train's curve bit for bit, its deriva
     if (p == 0) continue;
     const GearTrain train(angle(rng), angle(rng), Ratio(p, den(rng)), phase(rng));
     const RotationChain chain({{train.a2(), ChainRate(1), 0.0}, {train.a3(), ChainRate(train.ratio().p(), train.ratio().q()), train.phase()}});
+    const RotationChain converted = chain_of(train);
+    REQUIRE(converted.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      CHECK(converted.stages()[i].twist == chain.stages()[i].twist);
+      CHECK(converted.stages()[i].rate == chain.stages()[i].rate);
+      CHECK(converted.stages()[i].phase == chain.stages()[i].phase);
+    }
+    const std::optional<GearTrain> back = gear_train_of(chain);
+    REQUIRE(back.has_value());
+    CHECK(back->a2() == train.a2());
+    CHECK(back->a3() == train.a3());
+    CHECK(back->ratio() == train.ratio());
+    CHECK(back->phase() == train.phase());
     const TracerCurve<double> curve(train);
     const ChainCurve<double> chained(chain);
     CHECK(chain.period() == curve.period());
@@ -72,6 +86,30 @@ TEST_CASE("rotation chain, k = 2: the gear train's curve bit for bit, its deriva
       CHECK((curve.screw_axis(t) - chained.angular_velocity(t)).norm() <= 1e-14 * (1 + curve.screw_axis(t).norm()));
     }
   }
+}
+
+TEST_CASE("rotation chain, k = 2 with any motor rate: gear_train_of gives the same curve, theta2 = N1 s + P1", "[chain]") {
+  std::mt19937 rng(46);
+  std::uniform_real_distribution<double> angle(0.05, 3.09), phase(-3, 3), s(-20, 20);
+  std::uniform_int_distribution<int> num(-6, 6), den(1, 6);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int p1 = num(rng), p2 = num(rng);
+    if (p1 == 0 || p2 == 0) continue;
+    const RotationChain chain({{angle(rng), ChainRate(p1, den(rng)), phase(rng)}, {angle(rng), ChainRate(p2, den(rng)), phase(rng)}});
+    const std::optional<GearTrain> train = gear_train_of(chain);
+    REQUIRE(train.has_value());
+    const TracerCurve<double> curve(*train);
+    const double n1 = chain.stages()[0].rate.value(), p = chain.stages()[0].phase;
+    for (int k = 0; k < 5; ++k) {
+      const double t = s(rng), theta2 = n1 * t + p;
+      CHECK((model_point(chain, t) - curve.point(theta2).cast<long double>()).norm() < 1e-12);
+      CHECK(std::fabs(chain_param_of_theta2(chain, theta2) - t) < 1e-12 * (1 + std::fabs(t)));
+    }
+  }
+  // Not a gear train: k = 3, a rate 0, a twist of 0.
+  CHECK_FALSE(gear_train_of(RotationChain({{1.0, ChainRate(1), 0.0}, {1.0, ChainRate(2), 0.0}, {1.0, ChainRate(3), 0.0}})).has_value());
+  CHECK_FALSE(gear_train_of(RotationChain({{1.0, ChainRate(0), 0.0}, {1.0, ChainRate(2), 0.0}})).has_value());
+  CHECK_FALSE(gear_train_of(RotationChain({{0.0, ChainRate(1), 0.0}, {1.0, ChainRate(2), 0.0}})).has_value());
 }
 
 TEST_CASE("rotation chain, k = 3 and 4: a product of rotation matrices, its derivatives, its period", "[chain]") {

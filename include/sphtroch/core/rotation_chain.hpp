@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -233,5 +234,35 @@ class ChainCurve {
   std::vector<SinCos<Scalar>> twists_;
   std::vector<Scalar> p_, q_, phase_;
 };
+
+/// The gear train as the k = 2 chain (the report's Eq. 4, s = theta2): stages (a2, 1, 0) and
+/// (a3, n, theta_p). ChainCurve<double> of it computes TracerCurve<double>'s bits.
+inline RotationChain chain_of(const GearTrain& train) {
+  return RotationChain({{train.a2(), ChainRate(1), 0.0}, {train.a3(), ChainRate(train.ratio().p(), train.ratio().q()), train.phase()}});
+}
+
+/// The gear train of a k = 2 chain whose rates are both not 0: a2 = A1, a3 = A2, n = N2 / N1,
+/// theta_p = P2 - n P1, with theta2 = N1 s + P1 (chain_param maps theta2 back to s). nullopt for
+/// any other chain, and when GearTrain refuses it (a twist of 0 or pi, or n beyond Ratio's terms).
+inline std::optional<GearTrain> gear_train_of(const RotationChain& chain) {
+  if (chain.size() != 2 || chain.stages()[0].rate.is_zero() || chain.stages()[1].rate.is_zero()) return std::nullopt;
+  const ChainStage& first = chain.stages()[0];
+  const ChainStage& second = chain.stages()[1];
+  std::int64_t p = second.rate.p() * first.rate.q(), q = second.rate.q() * first.rate.p();  // |terms| <= 1e12
+  const std::int64_t g = std::gcd(p < 0 ? -p : p, q < 0 ? -q : q);
+  try {
+    const Ratio n(p / g, q / g);
+    return GearTrain(first.twist, second.twist, n, second.phase - n.value() * first.phase);
+  } catch (const InvalidInput&) {
+    return std::nullopt;
+  }
+}
+
+/// The chain's parameter s at the train's carrier angle theta2 (gear_train_of): (theta2 - P1) / N1,
+/// not reduced to a period.
+inline double chain_param_of_theta2(const RotationChain& chain, double theta2) {
+  const ChainStage& first = chain.stages()[0];
+  return (theta2 - first.phase) / first.rate.value();
+}
 
 }  // namespace sphtroch
