@@ -9,6 +9,7 @@ during every computation. The API with its contracts is in __init__.pyi (and doc
     tr.classify()["class"]                # "nodes": the dict of `sphtroch classify --json`
 """
 from ._sphtroch import (  # noqa: F401
+    Chain,
     Clinostat,
     GearTrain,
     InvalidInput,
@@ -33,4 +34,4 @@ from ._arrays import PointSet, attach as _attach
 _attach(GearTrain, _doc)
 _plot.attach(GearTrain, _doc)
 
-__all__ = ["Clinostat", "GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "fit_text", "identify", "scene", "synth_points", "synth_points_text", "__version__"]
+__all__ = ["Chain", "Clinostat", "GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "fit_text", "identify", "scene", "synth_points", "synth_points_text", "__version__"]

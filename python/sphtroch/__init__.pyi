@@ -230,6 +230,27 @@ class CoverageSummary(TypedDict):
     dwell_cv: float
     bound_s: float
 
+class ChainInfo(TypedDict):
+    twists: List[float]
+    rates: List[str]
+    phases: List[float]
+    period: float
+    curve_period: float
+
+class ChainCertificate(TypedDict):
+    method: str
+    why: str
+    arcs: int
+    arc_pairs: int
+    boxes: int
+    undecided: int
+    cusp_resolution: float
+    cusp_zone: float
+
+ChainClassification = TypedDict("ChainClassification", {
+    "chain": ChainInfo, "class": str, "certified": bool, "certificate": ChainCertificate, "counts": Counts,
+    "nodes": List[Node], "cusps": List[Cusp]})
+
 class UncertifiedResult(RuntimeError):
     """A node count the polyline census and the independent root-count census do not agree on,
     even after escalation (docs/cli.md: Certified counts; the tool's exit status 3). Raised by
@@ -409,6 +430,81 @@ class GearTrain:
         GearTrain("60deg", 1.2, "13/5") == GearTrain("pi/3", 1.2, "13/5"). Texts are not compared."""
     def __hash__(self) -> int:
         """Consistent with ==: trains can key a dict or a set (memoising a sweep)."""
+    def __reduce__(self) -> Any: ...
+
+class Chain:
+    """A gear-coupled rotation chain (docs/chains.md), as `sphtroch chain` reads it: k revolute
+    joints (1 <= k <= 16) about intersecting axes, joint i turning N_i times as fast as one motor
+    parameter s, each followed by a fixed twist; the tool axis traces
+    P(s) = Rz(N1 s + P1) Rx(A1) Rz(N2 s + P2) Rx(A2) ... Rz(Nk s + Pk) Rx(Ak) z.
+
+    twists: k angles in [0, pi] (radians or the angle text "pi/2"); rates: k exact rates (int,
+    Fraction, text "-2/3" or "1.5", or a float that is a short decimal; 0 is a joint that does not
+    turn; not all 0); phases: k angles, each joint's angle at s = 0 (default all 0). Each may also
+    be the CLI's comma-separated text ("pi/2,1.2,0.4"). Chain(twists=[a2, a3], rates=[1, n],
+    phases=[0, theta_p]) is GearTrain(a2, a3, n, phase=theta_p) (`train`).
+    Immutable; picklable (the lists are kept as the CLI's text). Raises InvalidInput naming
+    "twists", "rates" or "phases" (lists of different lengths, NaN, a twist outside [0, pi], a rate
+    that is not exact, every rate 0, rates whose period exceeds the chain's bounds).
+    """
+
+    def __init__(self, twists: Union[Sequence[Angle], str], rates: Union[Sequence[RatioLike], str],
+                 phases: Union[Sequence[Angle], str, None] = None) -> None: ...
+    @property
+    def twists(self) -> Tuple[float, ...]:
+        """A1, ..., Ak, radians."""
+    @property
+    def rates(self) -> Tuple[str, ...]:
+        """N1, ..., Nk in lowest terms, "p/q" or "p"."""
+    @property
+    def phases(self) -> Tuple[float, ...]:
+        """P1, ..., Pk reduced to [-pi, pi], radians."""
+    @property
+    def period(self) -> float:
+        """2 pi L / g: every joint is back after this s (L the lcm of the rates' denominators, g the
+        gcd of the numerators of N_i L)."""
+    @property
+    def train(self) -> Optional[GearTrain]:
+        """For k = 2 with both rates not 0, the gear train drawing the same curve: a2 = A1, a3 = A2,
+        n = N2 / N1, phase = P2 - n P1 (its carrier angle theta2 = N1 s + P1); else None."""
+    def __len__(self) -> int:
+        """k, the number of joints."""
+    @overload
+    def trace(self, *, samples: Optional[Count] = None,
+              velocity: Literal[False] = False) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+        """The curve over one period: s (N,) with s_i = period i / N, P (N, 3) unit vectors, and with
+        velocity=True V = dP/ds = omega x P (N, 3); float64. samples: 3 .. 10**7, default
+        360 sum |N_i| L / g (at most 10**6). The numbers `sphtroch chain trace` prints."""
+    @overload
+    def trace(self, *, samples: Optional[Count] = None,
+              velocity: Literal[True]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64],
+                                                npt.NDArray[np.float64]]: ...
+    def kinematics(self, t: npt.ArrayLike) -> Dict[str, npt.NDArray[np.float64]]:
+        """How the tool axis moves at the motor parameters t (N,), per unit s, as `sphtroch chain
+        trace --kinematics`: {"speed", "geodesic_curvature", "tangential_acceleration"}, float64
+        (N,); 0 curvature and tangential acceleration at a cusp. Raises InvalidInput("t") unless t
+        is a 1-D array of finite numbers with |t| <= period."""
+    def classify(self) -> ChainClassification:
+        """The certified census: a dict with the keys and values of `sphtroch chain classify
+        --json` (chain, class, certified, certificate, counts, nodes, cusps; params are values of s).
+        For k = 2 the gear train's census (classify's), checked by the chain census. "certified"
+        is False when a box stayed undecided or the censuses disagree."""
+    def nodes(self) -> List[Node]:
+        """The "nodes" list of classify(). Raises UncertifiedResult (with .nodes) when the census is
+        not certified (the CLI's exit status 3)."""
+    def cusps(self) -> List[Cusp]:
+        """The "cusps" list of classify() (id, position, param, speed)."""
+    def report(self) -> str:
+        """The text `sphtroch chain classify` prints for this chain (the same bytes)."""
+    def svg(self, *, view: Union[str, Tuple[Angle, Angle], None] = None, size: Optional[Count] = None,
+            labels: str = "auto", markers: str = "auto", style: str = "curve") -> str:
+        """The curve on the sphere as SVG text, as `sphtroch chain plot` draws it (the same bytes):
+        the nodes and cusps of classify(), the caption saying NOT CERTIFIED when the census is not.
+        The options are GearTrain.svg's."""
+    def __eq__(self, other: object) -> bool:
+        """The same chain: equal twists, rates and reduced phases (as doubles and exact rates)."""
+    def __hash__(self) -> int:
+        """Consistent with ==."""
     def __reduce__(self) -> Any: ...
 
 class PointSet:

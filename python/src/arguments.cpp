@@ -5,6 +5,8 @@
 
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/mark_density.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 
@@ -342,6 +344,26 @@ ParallelProgress interruptible(py::handle callback) {
     if (done > p.shown) p.target.attr("update")(done - p.shown);
     p.shown = std::max(p.shown, done);
   };
+}
+
+/// The picture options of svg(): view "auto", "top", "front", "side", "AZ,EL" or (az, el) angles;
+/// size 64 .. 8192 px; labels, markers, style as `sphtroch plot` reads them.
+PlotOptions plot_options_arg(py::handle view, py::handle size, py::handle labels, py::handle markers, py::handle style) {
+  PlotOptions options;
+  const char* const views = "auto, top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
+  if (py::isinstance<py::tuple>(view) || py::isinstance<py::list>(view)) {
+    const py::sequence pair = py::reinterpret_borrow<py::sequence>(view);
+    if (pair.size() != 2) throw InvalidInput("view", repr_of(view), "not a view", views);
+    std::string ignored;
+    set_plot_view(options, number_text(angle_arg(pair[0], "view", ignored)) + "," + number_text(angle_arg(pair[1], "view", ignored)));
+  } else if (!view.is_none()) {
+    set_plot_view(options, text_arg(view, "view", views));
+  }
+  if (!size.is_none()) options.size_px = static_cast<double>(count_arg(size, "size", 64, 8192));
+  options.labels = parse_plot_labels(text_arg(labels, "labels", "auto, numbers, none"));
+  options.markers = parse_mark_mode(text_arg(markers, "markers", "auto, all, none"));
+  options.style = parse_plot_style(text_arg(style, "style", "curve, density"));
+  return options;
 }
 
 }  // namespace sphtroch::python

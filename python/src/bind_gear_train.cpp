@@ -101,24 +101,10 @@ py::object margin(const Train& self) {
   return from_json(text);
 }
 
-/// svg(): `sphtroch plot` as SVG text. view: "auto", "top", "front", "side", "AZ,EL" or (az, el) angles.
+/// svg(): `sphtroch plot` as SVG text (the picture options: plot_options_arg).
 std::string svg(const Train& self, py::handle view, py::handle size, py::handle labels, py::handle markers,
                 py::handle style, py::handle literal_flag, py::handle samples) {
-  PlotOptions options;
-  const char* const views = "auto, top, front, side, \"AZ,EL\" or (az, el) angles, el in [-pi/2, pi/2]";
-  if (py::isinstance<py::tuple>(view) || py::isinstance<py::list>(view)) {
-    const py::sequence pair = py::reinterpret_borrow<py::sequence>(view);
-    if (pair.size() != 2) throw InvalidInput("view", repr_of(view), "not a view", views);
-    std::string ignored;
-    set_plot_view(options, number_text(angle_arg(pair[0], "view", ignored)) + "," +
-                               number_text(angle_arg(pair[1], "view", ignored)));
-  } else if (!view.is_none()) {
-    set_plot_view(options, text_arg(view, "view", views));
-  }
-  if (!size.is_none()) options.size_px = static_cast<double>(count_arg(size, "size", 64, 8192));
-  options.labels = parse_plot_labels(text_arg(labels, "labels", "auto, numbers, none"));
-  options.markers = parse_mark_mode(text_arg(markers, "markers", "auto, all, none"));
-  options.style = parse_plot_style(text_arg(style, "style", "curve, density"));
+  const PlotOptions options = plot_options_arg(view, size, labels, markers, style);
   const bool literal = flag_arg(literal_flag, "literal");
   const std::size_t s = census_samples_arg(samples);
   py::gil_scoped_release release;

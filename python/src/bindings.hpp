@@ -19,6 +19,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/ratio.hpp"
+#include "sphtroch/draw/svg_plot.hpp"  // PlotOptions
 #include "sphtroch/io/train_text.hpp"
 
 #include <pybind11/numpy.h>
@@ -92,6 +93,9 @@ Ratio ratio_arg(py::handle v);
 std::string rpm_text_arg(py::handle v, const std::string& field);
 /// (lo, hi) of angles, or the CLI's "LO:HI" text.
 std::pair<double, double> range_arg(py::handle v, const std::string& field);
+/// svg()'s picture options (GearTrain.svg, Chain.svg): view "auto", "top", "front", "side",
+/// "AZ,EL" or (az, el) angles; size 64 .. 8192; labels, markers, style as `sphtroch plot` reads them.
+PlotOptions plot_options_arg(py::handle view, py::handle size, py::handle labels, py::handle markers, py::handle style);
 /// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
 std::size_t census_samples_arg(py::handle samples);
 
@@ -130,5 +134,6 @@ void bind_design_map(py::module_& m);  // classify_a3_range, atlas
 void bind_crossings(py::module_& m);   // crossings
 void bind_synthesis(py::module_& m);   // identify
 void bind_clinostat(py::module_& m);   // class Clinostat: gravity, window means, time to epsilon, coverage
+void bind_chain(py::module_& m);       // class Chain: a rotation chain's trace, kinematics, classify, nodes, cusps, report
 
 }  // namespace sphtroch::python

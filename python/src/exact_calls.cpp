@@ -5,6 +5,8 @@
 #include "sphtroch/exact/classification_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/exact/chain_census_output.hpp"
+#include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"
 #include "sphtroch/exact/scene.hpp"
@@ -32,6 +34,19 @@ std::string classification_json_text(const TrainText& text, const GearTrain& tra
                                       std::size_t census_samples) {
   const Analysis a(train, settings_of(literal, census_samples));  // as `sphtroch classify` runs it
   return classification_json(text, a.classification()).dump();
+}
+
+std::string chain_classification_json_text(const RotationChain& chain) {
+  return chain_census_json(chain, classify_chain(chain)).dump();
+}
+
+std::string chain_classification_report_text(const RotationChain& chain) { return chain_census_text(chain, classify_chain(chain)); }
+
+std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options) {
+  const ChainCensus c = classify_chain(chain);
+  const ChainCurve<double> curve(chain);
+  const std::size_t n = chain_plot_sample_count(chain);
+  return chain_plot_svg(chain, sample(curve, UniformSampling<double>{curve.period(), n, n, true}), c, options);
 }
 
 std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,

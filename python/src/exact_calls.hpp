@@ -7,6 +7,7 @@
 
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/parallel_for.hpp"  // ParallelProgress
+#include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/draw/svg_plot.hpp"  // PlotOptions (Eigen only)
@@ -51,6 +52,13 @@ std::string scene_json_text(const std::string& scene_text);
 /// caption, as the CLI's picture does), drawn with `options` (view, size, labels).
 std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool literal, std::size_t census_samples,
                           const PlotOptions& options);
+
+/// Chain.classify(): `sphtroch chain classify --json` of the chain (classify_chain, chain_census_json),
+/// the certified field inside. Chain.report(): the text `sphtroch chain classify` prints.
+std::string chain_classification_json_text(const RotationChain& chain);
+std::string chain_classification_report_text(const RotationChain& chain);
+/// Chain.svg(): `sphtroch chain plot`'s SVG (chain_plot_svg of the chain_plot_sample_count samples).
+std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options);
 
 /// Python's classify_roots(): the root-count classification (Reading{literal}) as
 /// root_classification_json (classification_output.hpp), JSON text.

@@ -24,22 +24,10 @@ struct AnalysisOptions {
   std::string samples, output;
   bool literal = false;
   bool json = false;
-  std::string view, size, labels, markers, style;  // plot only
+  PlotFlags plot;                   // plot only
   std::string radius;               // nodes only
   bool degrees = false;             // nodes only
 };
-
-/// plot's --view, --size, --labels, --markers, --style (svg_plot.hpp: set_plot_view,
-/// parse_plot_labels, parse_plot_style; mark_density.hpp: parse_mark_mode).
-PlotOptions plot_options(const AnalysisOptions& o) {
-  PlotOptions p;
-  if (!o.view.empty()) set_plot_view(p, o.view);
-  if (!o.size.empty()) p.size_px = static_cast<double>(parse_count(o.size, "size", 64, 8192));
-  if (!o.labels.empty()) p.labels = parse_plot_labels(o.labels);
-  if (!o.markers.empty()) p.markers = parse_mark_mode(o.markers);
-  if (!o.style.empty()) p.style = parse_plot_style(o.style);
-  return p;
-}
 
 void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
   o.train.add_to(cmd);
@@ -90,7 +78,7 @@ void run_plot(const AnalysisOptions& o) {
   check_svg_name(o.output, "output");
   const GearTrain train = o.train.train();
   const Analysis a(train, analysis_settings(o));
-  const PlotOptions options = plot_options(o);
+  const PlotOptions options = o.plot.options();
   const std::string svg =
       plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate(), options);
   const std::string bytes = picture_bytes(svg, o.output);  // PNG for FILE.png
@@ -232,16 +220,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("plot", "the curve on the sphere as SVG, nodes and cusps marked");
     add_analysis_options(*cmd, *o);
-    cmd->add_option("--view", o->view,
-                    "auto (default: from the curve's mean direction or a principal axis, stated in the picture), "
-                    "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
-    cmd->add_option("--size", o->size, "width and height of the picture in px (64 .. 8192; default 520)");
-    cmd->add_option("--labels", o->labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
-    cmd->add_option("--markers", o->markers,
-                    "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none");
-    cmd->add_option("--style", o->style,
-                    "curve (default: the lines, back half dashed) or density (time spent per steradian on the front half, "
-                    "for dense curves)");
+    o->plot.add_to(*cmd);
     cmd->footer("Labels N<i>, C<j> are the rows of `sphtroch nodes` (nodes, then cusps).\n"
                 "Example: sphtroch plot --a2 pi/3 --a3 pi/2 --n 2 -o fig5f.svg");
     actions.emplace_back(cmd, [o] { run_plot(*o); });

@@ -1,11 +1,13 @@
-// sphtroch chain classify | nodes — the certified census of a rotation chain's curve
+// sphtroch chain classify | nodes | plot — the certified census of a rotation chain's curve
 // (exact/chain_classification.hpp): its nodes and cusps, as text or JSON
 // (exact/chain_census_output.hpp), or as the nodes table of `sphtroch nodes` (io/node_csv.hpp,
-// the t columns are the motor parameter s). Exit 3 after the output when it is not certified.
+// the t columns are the motor parameter s), or drawn on the sphere (chain_plot_svg). Exit 3 after
+// the output when it is not certified.
 // The census is classify_chain's (exact/chain_classification.hpp): for k = 2 the gear train's,
 // checked by the chain census; for rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s,
 // byte for byte.
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/chain_census_output.hpp"
@@ -20,7 +22,19 @@ struct ChainCensusOptions {
   ChainText chain;
   std::string output, radius;
   bool json = false, degrees = false;
+  PlotFlags plot;  // plot only
 };
+
+/// classify_chain of the chain as read; a chain read from --urdf that the census refuses (a tool
+/// axis that does not move) is refused naming --urdf, the option the user gave.
+ChainCensus census_of(const ChainText& text, const RotationChain& chain) {
+  try {
+    return classify_chain(chain);
+  } catch (const InvalidInput& e) {
+    if (text.urdf.empty()) throw;
+    throw InvalidInput("urdf", text.urdf + " (" + e.field() + " " + e.value() + ")", e.problem(), e.valid_range());
+  }
+}
 
 void check_chain_certified(const ChainCensus& c) {
   if (!c.certified)
@@ -30,7 +44,7 @@ void check_chain_certified(const ChainCensus& c) {
 void run_chain_classify(const ChainCensusOptions& o) {
   check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
-  const ChainCensus c = classify_chain(chain);
+  const ChainCensus c = census_of(o.chain, chain);
   write_output(o.output, [&](std::ostream& out) {
     if (o.json) out << chain_census_json(chain, c).dump(2) << "\n";
     else out << chain_census_text(chain, c);
@@ -42,8 +56,24 @@ void run_chain_nodes(const ChainCensusOptions& o) {
   check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
   const NodesCsvOptions csv{parse_radius(o.radius), o.degrees};  // checked before the work
-  const ChainCensus c = classify_chain(chain);
+  const ChainCensus c = census_of(o.chain, chain);
   write_output(o.output, [&](std::ostream& out) { write_nodes_csv(out, c.nodes, c.cusps, csv); });
+  check_chain_certified(c);
+}
+
+/// The chain's curve (chain_plot_sample_count samples over the period) with the census's nodes
+/// and cusps: SVG, or PNG for FILE.png.
+void run_chain_plot(const ChainCensusOptions& o) {
+  check_svg_name(o.output, "output");
+  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
+  const RotationChain chain = o.chain.chain();
+  const PlotOptions options = o.plot.options();  // checked before the work
+  const ChainCensus c = census_of(o.chain, chain);
+  const ChainCurve<double> curve(chain);
+  const std::size_t n = chain_plot_sample_count(chain);
+  const std::string svg = chain_plot_svg(chain, sample(curve, UniformSampling<double>{curve.period(), n, n, true}), c, options);
+  const std::string bytes = picture_bytes(svg, o.output);
+  write_output(o.output, [&](std::ostream& out) { out << bytes; });
   check_chain_certified(c);
 }
 
@@ -70,6 +100,17 @@ void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Act
     add_output_option(*cmd, o->output, "the table");
     cmd->footer("t1, t2 are the first two branch parameters s (radians). Exit 3 when not certified.");
     actions.emplace_back(cmd, [o] { run_chain_nodes(*o); });
+  }
+  {
+    auto o = std::make_shared<ChainCensusOptions>();
+    CLI::App* cmd = chain.add_subcommand("plot", "the chain's curve on the sphere as SVG (or PNG), nodes and cusps marked");
+    add_chain_options(*cmd, o->chain);
+    o->plot.add_to(*cmd);
+    add_output_option(*cmd, o->output, "the picture (FILE.svg, or FILE.png with the librsvg component)");
+    cmd->footer("The census of chain classify; labels N<i>, C<j> are the rows of `sphtroch chain nodes`.\n"
+                "Exit 3, after the picture (its caption says NOT CERTIFIED), when the census is not certified.\n"
+                "Example: sphtroch chain plot --twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 -o wrist.svg");
+    actions.emplace_back(cmd, [o] { run_chain_plot(*o); });
   }
 }
 

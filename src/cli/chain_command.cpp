@@ -22,20 +22,6 @@ struct ChainOptions {
   bool velocity = false, kinematics = false, degrees = false;
 };
 
-/// 360 samples per unit of s times the sum of |N_i| over a period: 360 sum_i |p_i| (L / q_i) / g,
-/// for k = 2 (rates 1, p/q) trace's 360 (q + |p|). Refused above kMaxDefaultSamples.
-std::size_t default_chain_samples(const RotationChain& c) {
-  double units = 0;
-  for (const ChainStage& s : c.stages())
-    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(c.common_denominator() / s.rate.q());
-  const double n = 360.0 * units / static_cast<double>(c.numerator_gcd());
-  if (n > static_cast<double>(kMaxDefaultSamples))
-    throw InvalidInput("rates", c.rates_text(),
-                       "the default sample count, 360 sum |N_i| over the period 2 pi L / g, is " + number_text(n),
-                       "at most 1000000: give --samples N (3 .. 10000000)");
-  return static_cast<std::size_t>(n);
-}
-
 TraceFormat chain_format(const ChainOptions& o) {
   const auto ends = [&](const char* ext) {
     const std::string e = std::string(".") + ext;
@@ -52,7 +38,7 @@ TraceFormat chain_format(const ChainOptions& o) {
 void run_chain_trace(const ChainOptions& o) {
   check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
   const RotationChain chain = o.chain.chain();
-  const std::size_t n = o.samples.empty() ? default_chain_samples(chain) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
+  const std::size_t n = o.samples.empty() ? chain_trace_sample_count(chain) : parse_count(o.samples, "samples", kMinSamples, kMaxSamples);
   TraceWriteOptions options;
   options.format = chain_format(o);
   options.velocity = o.velocity;

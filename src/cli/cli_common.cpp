@@ -35,6 +35,29 @@ void TrainOptions::add_to(CLI::App& command) {
   command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
 }
 
+void PlotFlags::add_to(CLI::App& cmd) {
+  cmd.add_option("--view", view,
+                 "auto (default: from the curve's mean direction or a principal axis, stated in the picture), "
+                 "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
+  cmd.add_option("--size", size, "width and height of the picture in px (64 .. 8192; default 520)");
+  cmd.add_option("--labels", labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
+  cmd.add_option("--markers", markers,
+                 "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none");
+  cmd.add_option("--style", style,
+                 "curve (default: the lines, back half dashed) or density (time spent per steradian on the front half, "
+                 "for dense curves)");
+}
+
+PlotOptions PlotFlags::options() const {
+  PlotOptions p;
+  if (!view.empty()) set_plot_view(p, view);
+  if (!size.empty()) p.size_px = static_cast<double>(parse_count(size, "size", 64, 8192));
+  if (!labels.empty()) p.labels = parse_plot_labels(labels);
+  if (!markers.empty()) p.markers = parse_mark_mode(markers);
+  if (!style.empty()) p.style = parse_plot_style(style);
+  return p;
+}
+
 void check_svg_name(const std::string& path, const std::string& field) {
   const std::optional<std::string> ext = other_picture_format(path);
   if (!ext) return;

@@ -11,6 +11,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/output_file.hpp"
 #include "sphtroch/core/sampling.hpp"
+#include "sphtroch/draw/svg_plot.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -65,6 +66,15 @@ struct TrainOptions : TrainText {
 
 /// Adds "-o,--output FILE" to a command.
 void add_output_option(CLI::App& command, std::string& path, const std::string& what);
+
+/// The picture options of `plot` and `chain plot` as typed: --view, --size, --labels, --markers,
+/// --style (draw/svg_plot.hpp: set_plot_view, parse_plot_labels, parse_plot_style;
+/// draw/mark_density.hpp: parse_mark_mode). options() reads them (InvalidInput naming the option).
+struct PlotFlags {
+  std::string view, size, labels, markers, style;
+  void add_to(CLI::App& command);
+  PlotOptions options() const;
+};
 
 /// Refuses (InvalidInput `field`) an SVG output named as another picture format (.png, .pdf, ...
 /// in any case): SVG bytes in a .png are a file no viewer opens. Other names pass.

@@ -121,7 +121,7 @@ TEST_CASE("chain trace: bad input is refused with one line naming the option", "
            {"--twists 1,nan --rates 1,2", "--twists"}, {"--twists 1,3.5 --rates 1,2", "--twists"},
            {"--twists 1,-0.1 --rates 1,2", "--twists"}, {"--twists 1,2 --rates 1,x", "--rates"},
            {"--twists 1,2 --rates 1,1/0", "--rates"}, {"--twists 1,2 --rates 0,0/3", "--rates"},
-           {"--twists 1,2 --rates 1,2 --phases 0,inf", "--phases"}, {"--twists 1,2 --rates 1,999999/1000000 -o out.csv", "--rates"},
+           {"--twists 1,2 --rates 1,2 --phases 0,inf", "--phases"}, {"--twists 1,2 --rates 1,999999/1000000 -o out.csv", "--samples"},
            {"--twists 1,2 --rates 1,2 --samples 2 -o out.csv", "--samples"}, {"--twists , --rates 1", "--twists"}}) {
     const Result r = run("chain trace " + args, dir, true);
     INFO(args << " -> " << r.err);
@@ -233,9 +233,9 @@ TEST_CASE("chain classify, k = 2 with a motor rate other than 1: each node's par
 TEST_CASE("chain export --urdf, read back with chain classify --urdf: the same census", "[cli][chain]") {
   TempDir dir;
   const std::string chain = "--twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --phases 0,0.3,0";
-  REQUIRE(run("chain export " + chain + " --urdf wrist.urdf", dir).status == 0);
+  REQUIRE(run("chain export " + chain + " --urdf wrist.urdf", dir, true).status == 0);
   const auto a = nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out);
-  const auto b = nlohmann::json::parse(run("chain classify --urdf wrist.urdf --from base_link --to tool --json", dir).out);
+  const auto b = nlohmann::json::parse(run("chain classify --urdf wrist.urdf --from base_link --to tool --json", dir, true).out);
   CHECK(b["counts"] == a["counts"]);
   CHECK(b["chain"]["rates"] == a["chain"]["rates"]);
   // An output that is the --urdf input is refused before the work, the input kept.
@@ -264,7 +264,10 @@ TEST_CASE("chain classify, nodes, export: bad input is refused with one line nam
            {"classify --urdf missing.urdf --from a --to b", "--urdf"}, {"classify --urdf bad.urdf --from a --to b", "--urdf"},
            {"classify --urdf bad.urdf --from a", "--to"}, {"classify --twists 1,2 --rates 1,2 --from a", "--from"},
            {"classify --urdf bad.urdf --twists 1 --from a --to b", "--twists"}, {"classify --urdf bad.urdf --from a --to b --axis 0,0", "--axis"},
-           {"export --twists 1,2 --rates 1,2 --urdf out/x.urdf", "--urdf"}, {"export --twists 1,9 --rates 1,2 --urdf x.urdf", "--twists"}}) {
+           {"export --twists 1,2 --rates 1,2 --urdf out/x.urdf", "--urdf"}, {"export --twists 1,9 --rates 1,2 --urdf x.urdf", "--twists"},
+           {"classify --twists 1,2 --rates 1,2/x", "(stage 2)"}, {"classify --twists 1,2,3 --rates 1,2,1/0", "(stage 3)"},
+           {"plot --twists 1,2 --rates 1,2/3 -o x.pdf", "--output"}, {"plot --twists 1,2 --rates 1,2/3 --size 10 -o x.svg", "--size"},
+           {"plot --twists 1,2 --rates 1,2/3 --view sideways -o x.svg", "--view"}, {"plot --twists 1,2 --rates 1 -o x.svg", "--rates"}}) {
     const Result r = run("chain " + args, dir, true);
     INFO(args << " -> " << r.err);
     CHECK(r.status == 2);
@@ -273,4 +276,65 @@ TEST_CASE("chain classify, nodes, export: bad input is refused with one line nam
     CHECK(contains(r.err, option));
     CHECK(dir.entries().size() == 1);  // bad.urdf only
   }
+}
+
+TEST_CASE("chain plot: for k = 2 the picture of sphtroch plot, for k = 3 the census of chain classify", "[cli][chain]") {
+  TempDir dir;
+  // Everything but the caption (the <title> and the <text> elements) is plot's: the same curve
+  // bits (ChainCurve = TracerCurve), the same sample count, the same census.
+  const auto without_text = [](std::string svg) {
+    for (const char* tag : {"title", "text"}) {
+      const std::string open = std::string("<") + tag, close = std::string("</") + tag + ">";
+      for (std::size_t at; (at = svg.find(open)) != std::string::npos;) svg.erase(at, svg.find(close, at) + close.size() - at);
+    }
+    return svg;
+  };
+  std::mt19937 rng(4547);
+  std::uniform_real_distribution<double> angle(0.05, 3.09), phase(0, 6.28);
+  std::uniform_int_distribution<int> num(-5, 5), den(1, 5);
+  int compared = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const int p = num(rng), q = den(rng);
+    const std::string a2 = shortest_g(angle(rng)), a3 = shortest_g(angle(rng)), ph = shortest_g(phase(rng));
+    if (p == 0) continue;
+    const std::string n = std::to_string(p) + "/" + std::to_string(q);
+    const Result chain = run("chain plot --twists " + a2 + "," + a3 + " --rates 1," + n + " --phases 0," + ph + " -o c.svg", dir, true);
+    const Result train = run("plot --a2 " + a2 + " --a3 " + a3 + " --n " + n + " --phase " + ph + " -o p.svg", dir, true);
+    INFO(a2 << " " << a3 << " " << n << " " << ph);
+    REQUIRE(chain.status == train.status);
+    const std::string c = slurp(dir.path / "c.svg"), t = slurp(dir.path / "p.svg");
+    CHECK(c != t);  // the captions differ
+    CHECK(without_text(c) == without_text(t));
+    ++compared;
+  }
+  CHECK(compared > 15);
+  const std::string wrist = "--twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --phases 0,0.3,0";
+  const auto j = nlohmann::json::parse(run("chain classify " + wrist + " --json", dir).out);
+  REQUIRE(run("chain plot " + wrist + " -o w.svg", dir, true).status == 0);
+  const std::string svg = slurp(dir.path / "w.svg");
+  const std::string nodes = std::to_string(j["counts"]["nodes"].get<int>());
+  CHECK(contains(svg, "rates 1,1/2,-3/2, phases 0,0.3,0 — " + nodes + " node(s)"));
+  for (std::size_t i = 1; i <= j["nodes"].size(); ++i) CHECK(contains(svg, ">N" + std::to_string(i) + "<"));
+  // Not certified: the picture says so in its caption, then exit 3.
+  const std::string sixteen = "--twists 1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1 --rates 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16";
+  const Result u = run("chain plot " + sixteen + " -o u.svg", dir, true);
+  CHECK(u.status == 3);
+  CHECK(contains(slurp(dir.path / "u.svg"), "NOT CERTIFIED"));
+  const auto uj = nlohmann::json::parse(run("chain classify " + sixteen + " --json", dir, true).out);
+  CHECK(uj["certified"] == false);
+  CHECK(uj["class"] == "unknown");
+}
+
+TEST_CASE("chain --urdf: a tool axis that does not move names --urdf, a huge --axis is a direction", "[cli][chain]") {
+  TempDir dir;
+  REQUIRE(run("chain export --twists 0,0 --rates 1,2 --urdf still.urdf", dir, true).status == 0);
+  const Result still = run("chain classify --urdf still.urdf --from base_link --to tool", dir, true);
+  CHECK(still.status == 2);
+  CHECK(count_lines(still.err) == 1);
+  CHECK(contains(still.err, "--urdf"));
+  REQUIRE(run("chain export --twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --urdf wrist.urdf", dir, true).status == 0);
+  const auto unit = nlohmann::json::parse(run("chain classify --urdf wrist.urdf --from base_link --to tool --axis 1,1,0 --json", dir, true).out);
+  const Result huge = run("chain classify --urdf wrist.urdf --from base_link --to tool --axis 1e300,1e300,0 --json", dir, true);
+  REQUIRE(huge.status == 0);
+  CHECK(nlohmann::json::parse(huge.out) == unit);
 }

@@ -11,6 +11,8 @@
 
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/types.hpp"
 
 #include <algorithm>
@@ -92,6 +94,24 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
   return static_cast<std::size_t>(std::max(std::ceil(n), static_cast<double>(kMinSamples)));
 }
 
+/// Default sample count of a rotation chain's closed curve (`sphtroch chain trace`, Chain.trace):
+/// 360 per unit of s times sum_i |N_i| over the period 2 pi L / g, i.e. 360 sum_i |p_i| (L / q_i) / g
+/// (about 0.5 degree of every joint's motion per step; for k = 2 with rates 1, p/q trace's
+/// 360 (q + |p|)), at least kMinSamples. Throws InvalidInput("samples", "(default)") above
+/// kMaxDefaultSamples, as trace_sample_count.
+inline std::size_t chain_trace_sample_count(const RotationChain& chain) {
+  double units = 0;
+  for (const ChainStage& s : chain.stages())
+    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(chain.common_denominator() / s.rate.q());
+  const double n = 360.0 * units / static_cast<double>(chain.numerator_gcd());
+  if (n > static_cast<double>(kMaxDefaultSamples))
+    throw InvalidInput("samples", "(default)",
+                       "rates " + chain.rates_text() + " need 360 sum |N_i| L / g = " + number_text(std::ceil(n)) +
+                           " samples per period, more than 1000000",
+                       "give the number of samples explicitly (3 .. 10000000), or rates with smaller terms");
+  return static_cast<std::size_t>(std::max(std::ceil(n), static_cast<double>(kMinSamples)));
+}
+
 /// A uniform sampling: t_i = span * i / divisor for i < count (closed: divisor = count, the last
 /// point joins the first; open: divisor = count - 1, both ends included). The one formula of
 /// every uniform sampling, so that a stage that needs only the parameters (the screw axis, a
@@ -124,9 +144,10 @@ UniformSampling<Scalar> turns_sampling(const TracerCurve<Scalar>& curve, double 
   return UniformSampling<Scalar>{Constants<Scalar>::two_pi() * Scalar(turns), n, n - 1, false};
 }
 
-/// The trajectory of a sampling (points, and velocities when asked).
-template <typename Scalar>
-Trajectory<Scalar> sample(const TracerCurve<Scalar>& curve, const UniformSampling<Scalar>& s, bool with_velocity = false) {
+/// The trajectory of a sampling (points, and velocities when asked) of a curve with point(t) and
+/// velocity(t) in Scalar: TracerCurve<Scalar> or ChainCurve<Scalar> (core/rotation_chain.hpp).
+template <typename Curve, typename Scalar>
+Trajectory<Scalar> sample(const Curve& curve, const UniformSampling<Scalar>& s, bool with_velocity = false) {
   Trajectory<Scalar> tr;
   tr.closed = s.closed;
   tr.t.reserve(s.count);

@@ -62,6 +62,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/portable_trig.hpp"
+#include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/draw/curve_view.hpp"
 #include "sphtroch/draw/dwell_raster.hpp"
@@ -98,6 +99,16 @@ constexpr double kAxisReach = 1.22;
 inline std::size_t plot_sample_count(const GearTrain& train) {
   const auto& r = train.ratio();
   return std::clamp<std::size_t>(720 * static_cast<std::size_t>(r.q() + r.abs_p()), 1440, 400000);
+}
+
+/// Samples of a rotation chain's curve drawn by `sphtroch chain plot`: 720 per unit of s times
+/// sum |N_i| over the period (twice chain_trace_sample_count's density; for k = 2 with rates 1,
+/// p/q plot_sample_count's), clamped to [1440, 400000].
+inline std::size_t chain_plot_sample_count(const RotationChain& chain) {
+  double units = 0;
+  for (const ChainStage& s : chain.stages())
+    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(chain.common_denominator() / s.rate.q());
+  return static_cast<std::size_t>(std::clamp(720.0 * units / static_cast<double>(chain.numerator_gcd()), 1440.0, 400000.0));
 }
 
 /// Which marks get their N<i>/C<j> label (contract 4).

@@ -1,13 +1,13 @@
 // sphtroch/exact/chain_classification.hpp — the census every front end reports for a rotation
-// chain (`sphtroch chain classify|nodes`, Python's Chain.classify):
-// - k = 2 with both rates not 0 is the gear train gear_train_of(chain) (core/rotation_chain.hpp):
-//   its nodes and cusps are the train's (Analysis: `sphtroch classify`'s root and polyline
-//   censuses, tangencies included), their parameters mapped to s in [0, period). The chain census
-//   (census/interval/chain_census.hpp) of the train Analysis analyses (twists snapped onto a
-//   boundary within 1e-10, as classify reads them) runs beside them as a third census, with a
-//   tenth of the box budget (a check: a tangency's boxes may stay undecided); a certified chain
-//   census that disagrees leaves the answer not certified.
-// - every other chain: chain_census(chain).
+// chain (`sphtroch chain classify|nodes|plot`, Python's Chain.classify).
+// A k = 2 chain with both rates not 0 is the gear train gear_train_of(chain)
+// (core/rotation_chain.hpp): its nodes and cusps are the train's (Analysis: `sphtroch classify`'s
+// root and polyline censuses, tangencies included), their parameters mapped to s in [0, period).
+// The chain census (census/interval/chain_census.hpp) of the train Analysis analyses (twists
+// snapped onto a boundary within 1e-10, as classify reads them) runs beside them as a third
+// census, with a tenth of the box budget (a check: a tangency's boxes may stay undecided); a
+// certified chain census that disagrees leaves the answer not certified.
+// Every other chain: chain_census(chain).
 // Cost: Analysis's (classify's) for k = 2, chain_census's bound otherwise.
 //
 //   const sphtroch::RotationChain chain({{1.0, sphtroch::ChainRate(1), 0.0}, {2.0, sphtroch::ChainRate(2, 3), 0.0}});
@@ -44,7 +44,7 @@ inline RotationChain analysed_chain(const RotationChain& chain, const GearTrain&
 inline ChainCensus train_census(const RotationChain& chain, const GearTrain& train) {
   const Analysis a(train);
   const ChainCensus check = chain_census(analysed_chain(chain, a.analysed()), kMaxChainBoxes / 10);
-  const auto to_s = [&](double theta2) { return chain_census_detail::reduce_param(chain_param_of_theta2(chain, theta2), check.period); };
+  const auto to_s = [&](double theta2) { return reduce_param(chain_param_of_theta2(chain, theta2), check.period); };
   ChainCensus c = check;
   c.method = "the gear train's root and polyline censuses (classify), checked by the chain census";
   c.nodes = a.nodes();

@@ -99,7 +99,7 @@ struct ChainText {
       const std::string stage = " (stage " + std::to_string(i + 1) + ")";
       ChainStage s;
       s.twist = parse_angle_item(a[i], "twists", stage);
-      s.rate = parse_chain_rate(n[i], "rates");
+      s.rate = parse_rate_item(n[i], stage);
       s.phase = p.empty() ? 0.0 : parse_angle_item(p[i], "phases", stage);
       stages.push_back(s);
     }
@@ -131,6 +131,16 @@ struct ChainText {
       v[k] = *x;
     }
     return v;  // zero or huge: refused by read_urdf_chain, naming "axis"
+  }
+
+  /// A rate; a refusal names the stage and the chain's valid forms (0 included).
+  static ChainRate parse_rate_item(const std::string& item, const std::string& stage) {
+    try {
+      return parse_chain_rate(item, "rates");
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("rates", item + stage, e.problem(),
+                         "an exact rate: an integer, a decimal (at most 9 places) or p/q with |p|, |q| <= 1000000, or 0");
+    }
   }
 
   static double parse_angle_item(const std::string& item, const std::string& field, const std::string& stage) {

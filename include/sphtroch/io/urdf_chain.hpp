@@ -316,8 +316,10 @@ inline Vector3d checked_axis(const urdf::Joint& joint) {
                      : joint.type == urdf::Joint::FLOATING ? "floating" : "of an unknown type";
   if (!is_revolute(joint)) throw joint_error(joint.name, std::string("a ") + kind + " joint: a rotation chain has only revolute ones", kValidJoint);
   const Vector3d axis(joint.axis.x, joint.axis.y, joint.axis.z);
-  if (!(axis.norm() > 0) || !std::isfinite(axis.norm())) throw joint_error(joint.name, "its axis is zero (or not finite)", kValidJoint);
-  return axis / axis.norm();
+  const double m = axis.cwiseAbs().maxCoeff();  // scaled first: a huge axis is a direction too
+  if (!axis.allFinite() || !(m > 0)) throw joint_error(joint.name, "its axis is zero (or not finite)", kValidJoint);
+  const Vector3d scaled = axis / m;
+  return scaled / scaled.norm();
 }
 
 inline PathGeometry path_geometry(const std::vector<urdf::JointConstSharedPtr>& path) {
@@ -397,11 +399,12 @@ inline ZxzAngles zxz_angles(const Matrix3d& g) {
 
 /// The unit tool axis in to_link's frame; InvalidInput("axis") for a zero or non-finite one.
 inline Vector3d unit_tool_axis(const Vector3d& axis) {
-  const double n = axis.norm();
-  if (!(n > 0) || !std::isfinite(n))
+  const double n = axis.cwiseAbs().maxCoeff();  // scaled first: 1e300,1e300,0 is a direction too
+  if (!axis.allFinite() || !(n > 0))
     throw InvalidInput("axis", number_text(axis.x()) + "," + number_text(axis.y()) + "," + number_text(axis.z()), "zero or not finite",
                        "a nonzero direction X,Y,Z in the to link's frame");
-  return axis / n;
+  const Vector3d scaled = axis / n;
+  return scaled / scaled.norm();
 }
 
 /// Every stage's drive; InvalidInput naming a joint driven by another motor than joint 1's.

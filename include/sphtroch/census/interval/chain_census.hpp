@@ -89,6 +89,13 @@ struct ChainCensus {
   std::size_t arcs = 0, arc_pairs = 0, boxes = 0, undecided = 0;
 };
 
+/// x reduced to [0, period): the census's parameters (and the k = 2 dispatch's, chain_classification.hpp).
+inline double reduce_param(double x, double period) {
+  double r = x - period * std::floor(x / period);
+  if (r >= period || r < 0) r = 0;
+  return r;
+}
+
 namespace chain_census_detail {
 
 
@@ -261,12 +268,6 @@ inline void search_window(const std::vector<Arc>& arcs, std::size_t i, const Cha
 }
 
 
-/// x reduced to [0, T).
-inline double reduce_param(double x, double period) {
-  double r = x - period * std::floor(x / period);
-  if (r >= period || r < 0) r = 0;
-  return r;
-}
 
 /// Parameters within tol of each other (circularly, mod T) as one branch: the cluster index of each.
 inline std::vector<std::size_t> branch_clusters(const std::vector<double>& params, double tol, double period) {

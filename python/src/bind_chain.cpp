@@ -1,0 +1,231 @@
+// python/src/bind_chain.cpp — the class sphtroch.Chain (bindings.hpp): a gear-coupled rotation
+// chain (core/rotation_chain.hpp) read from twists, rates and phases as `sphtroch chain` reads
+// them (io/chain_text.hpp: each list is turned into the CLI's comma-separated text, so that the
+// one reader checks it), with trace, kinematics, classify, nodes, cusps, report, svg, train, repr,
+// equality and pickling.
+#include "bindings.hpp"
+#include "exact_calls.hpp"
+
+#include "sphtroch/core/kinematics.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/rotation_chain.hpp"
+#include "sphtroch/core/sampling.hpp"
+#include "sphtroch/io/chain_text.hpp"
+
+#include <pybind11/numpy.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sphtroch::python {
+namespace {
+
+/// A chain and its three lists as the CLI's text (what repr and pickling give back).
+struct Chain {
+  RotationChain chain;
+  std::string twists, rates, phases;
+};
+
+const char* const kRateForms = "exact rates: int, fractions.Fraction, text (\"-2/3\", \"1.5\", \"0\") or a float that is a short decimal";
+
+/// One rate as the CLI's text: a str as given, an integer's digits, a Fraction's "p/q", a float's repr.
+std::string rate_text(py::handle v) {
+  if (py::isinstance<py::str>(v)) return text_arg(v, "rates", kRateForms);
+  if (PyIndex_Check(v.ptr()) && !PyBool_Check(v.ptr()) && !py::isinstance<py::array>(v)) {
+    PyObject* i = PyNumber_Index(v.ptr());
+    if (i != nullptr) return py::str(py::reinterpret_steal<py::object>(i)).cast<std::string>();
+    PyErr_Clear();
+  }
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
+    const py::object p = v.attr("numerator"), q = v.attr("denominator");
+    if (PyIndex_Check(p.ptr()) && PyIndex_Check(q.ptr()) && !PyBool_Check(v.ptr()))
+      return py::str(py::int_(p)).cast<std::string>() + "/" + py::str(py::int_(q)).cast<std::string>();
+  }
+  return repr_of(py::float_(real_arg(v, "rates", kRateForms)));
+}
+
+/// A list argument as the CLI's comma-separated text: a str is that text already; a sequence
+/// (list, tuple, 1-D array) gives one item per element, each turned into text by `item`.
+template <typename ItemText>
+std::string list_text(py::handle v, const std::string& field, const std::string& valid, ItemText item) {
+  if (py::isinstance<py::str>(v)) return text_arg(v, field, valid);
+  if (py::isinstance<py::bytes>(v) || !PySequence_Check(v.ptr()) || py::isinstance<py::dict>(v))
+    throw InvalidInput(field, repr_of(v), "not a list", valid);
+  const py::sequence items = py::reinterpret_borrow<py::sequence>(v);
+  if (items.size() > RotationChain::kMaxStages) throw InvalidInput(field, std::to_string(items.size()) + " items", "not a chain length", "1 to 16 stages");
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string one = item(items[i]);
+    if (one.find(',') != std::string::npos) throw InvalidInput(field, repr_of(items[i]), "one item holds a comma", valid);
+    text += (i ? "," : "") + one;
+  }
+  return text;
+}
+
+Chain make_chain(py::handle twists, py::handle rates, py::handle phases) {
+  const auto angle_text = [](const char* field) {
+    return [field](py::handle a) {
+      std::string text;
+      angle_arg(a, field, text);
+      return text;
+    };
+  };
+  Chain c{RotationChain({{0.0, ChainRate(1), 0.0}}), "", "", ""};
+  ChainText text;
+  text.twists = c.twists = list_text(twists, "twists", "a list of k angles in [0, pi] (radians or text), or the CLI's \"A1,...,Ak\"", angle_text("twists"));
+  text.rates = c.rates = list_text(rates, "rates", std::string("a list of k ") + kRateForms + ", or the CLI's \"N1,...,Nk\"", rate_text);
+  if (!phases.is_none())
+    text.phases = c.phases = list_text(phases, "phases", "a list of k angles (radians or text), or the CLI's \"P1,...,Pk\"", angle_text("phases"));
+  c.chain = text.chain();
+  return c;
+}
+
+py::tuple value_key(const Chain& c) {
+  py::list key;
+  const double pi = Constants<double>::pi();
+  for (const ChainStage& s : c.chain.stages()) key.append(py::make_tuple(s.twist, s.rate.p(), s.rate.q(), s.phase == -pi ? pi : s.phase));
+  return py::tuple(key);
+}
+
+py::tuple trace(const Chain& self, py::handle samples, py::handle velocity_flag) {
+  const bool velocity = flag_arg(velocity_flag, "velocity");
+  const std::size_t n = samples.is_none() ? chain_trace_sample_count(self.chain) : count_arg(samples, "samples", kMinSamples, kMaxSamples);
+  auto tr = std::make_unique<Trajectory<double>>();
+  {
+    py::gil_scoped_release release;
+    const ChainCurve<double> curve(self.chain);
+    *tr = sample(curve, UniformSampling<double>{curve.period(), n, n, true}, velocity);  // `chain trace`'s sampling
+  }
+  const Trajectory<double>& v = *tr;
+  const py::capsule owner = capsule_of(std::move(tr));
+  const auto rows = static_cast<py::ssize_t>(v.size());
+  py::array_t<double> t(std::vector<py::ssize_t>{rows}, v.t.data(), owner);
+  py::array_t<double> p(std::vector<py::ssize_t>{rows, 3}, v.points.front().data(), owner);
+  if (!velocity) return py::make_tuple(t, p);
+  py::array_t<double> vel(std::vector<py::ssize_t>{rows, 3}, v.velocities.front().data(), owner);
+  return py::make_tuple(t, p, vel);
+}
+
+/// kinematics(t): speed, geodesic curvature, tangential acceleration per unit s, |t| <= the period.
+py::dict kinematics(const Chain& self, py::handle t_arg) {
+  const double period = self.chain.period();
+  const std::string valid = "an (N,) array of finite s with |s| <= the period " + number_text(period);
+  const RealArray t = real_array_arg(t_arg, "t", valid);
+  if (t.ndim() != 1) throw InvalidInput("t", shape_text(t), "not a 1-D array of motor parameters", valid);
+  const std::vector<double> in(t.data(), t.data() + t.shape(0));
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (!(std::fabs(in[i]) <= period)) throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite or beyond a period", valid);
+  const std::size_t n = in.size();
+  py::array_t<double> speed(n), curvature(n), tangential(n);
+  double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
+  {
+    py::gil_scoped_release release;
+    const ChainCurve<double> curve(self.chain);
+    for (std::size_t i = 0; i < n; ++i) {
+      const PathKinematics pk = path_kinematics(curve, in[i]);
+      s[i] = pk.speed, k[i] = pk.geodesic_curvature, a[i] = pk.tangential_acceleration;
+    }
+  }
+  py::dict d;
+  d["speed"] = speed;
+  d["geodesic_curvature"] = curvature;
+  d["tangential_acceleration"] = tangential;
+  return d;
+}
+
+py::object classify(const Chain& self) {
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = chain_classification_json_text(self.chain);
+  }
+  return from_json(text);
+}
+
+/// nodes(): the certified node list, else UncertifiedResult carrying it (the CLI's exit 3).
+py::object nodes(const Chain& self) {
+  const py::object all = classify(self);
+  if (!all["certified"].cast<bool>())
+    raise_uncertified("chain: the census is not certified: " + all["certificate"]["why"].cast<std::string>() + " (see docs/chains.md)",
+                      all["nodes"], py::none(), py::none());
+  return all["nodes"];
+}
+
+/// svg(): `sphtroch chain plot`'s SVG (the picture options: plot_options_arg).
+std::string svg(const Chain& self, py::handle view, py::handle size, py::handle labels, py::handle markers, py::handle style) {
+  const PlotOptions options = plot_options_arg(view, size, labels, markers, style);
+  py::gil_scoped_release release;
+  return chain_plot_svg_text(self.chain, options);
+}
+
+std::string report(const Chain& self) {
+  py::gil_scoped_release release;
+  return chain_classification_report_text(self.chain);
+}
+
+/// The gear train of a k = 2 chain with both rates not 0 (gear_train_of), else None.
+py::object train(const Chain& self) {
+  const std::optional<GearTrain> g = gear_train_of(self.chain);
+  if (!g) return py::none();
+  Train t{*g, {}};
+  t.text.a2 = number_text(g->a2());
+  t.text.a3 = number_text(g->a3());
+  t.text.n = g->ratio().str();
+  t.text.phase = number_text(g->phase());
+  return py::cast(t);
+}
+
+std::string chain_repr(const Chain& c) {
+  return "Chain(twists=" + repr_of(py::str(c.twists)) + ", rates=" + repr_of(py::str(c.rates)) +
+         (c.phases.empty() ? std::string() : ", phases=" + repr_of(py::str(c.phases))) + ")";
+}
+
+}  // namespace
+
+void bind_chain(py::module_& m) {
+  py::class_<Chain>(m, "Chain", doc("Chain"))
+      .def(py::init(&make_chain), py::arg("twists"), py::arg("rates"), py::arg("phases") = py::none(), doc("Chain.__init__"))
+      .def_property_readonly("twists", [](const Chain& c) {
+        py::list l;
+        for (const ChainStage& s : c.chain.stages()) l.append(s.twist);
+        return py::tuple(l);
+      }, doc("Chain.twists"))
+      .def_property_readonly("rates", [](const Chain& c) {
+        py::list l;
+        for (const ChainStage& s : c.chain.stages()) l.append(s.rate.str());
+        return py::tuple(l);
+      }, doc("Chain.rates"))
+      .def_property_readonly("phases", [](const Chain& c) {
+        py::list l;
+        for (const ChainStage& s : c.chain.stages()) l.append(s.phase);
+        return py::tuple(l);
+      }, doc("Chain.phases"))
+      .def_property_readonly("period", [](const Chain& c) { return c.chain.period(); }, doc("Chain.period"))
+      .def_property_readonly("train", &train, doc("Chain.train"))
+      .def("__len__", [](const Chain& c) { return c.chain.size(); }, doc("Chain.__len__"))
+      .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("velocity") = false, doc("Chain.trace"))
+      .def("kinematics", &kinematics, py::arg("t"), doc("Chain.kinematics"))
+      .def("classify", &classify, doc("Chain.classify"))
+      .def("nodes", &nodes, doc("Chain.nodes"))
+      .def("cusps", [](const Chain& c) -> py::object { return classify(c)["cusps"]; }, doc("Chain.cusps"))
+      .def("report", &report, doc("Chain.report"))
+      .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(), py::arg("labels") = "auto",
+           py::arg("markers") = "auto", py::arg("style") = "curve", doc("Chain.svg"))
+      .def("__repr__", &chain_repr)
+      .def("__eq__", [](const Chain& a, py::handle other) -> py::object {
+        if (!py::isinstance<Chain>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        return py::bool_(value_key(a).equal(value_key(other.cast<const Chain&>())));
+      }, doc("Chain.__eq__"))
+      .def("__hash__", [](const Chain& c) { return py::hash(value_key(c)); }, doc("Chain.__hash__"))
+      // Pickling calls the constructor again with the three texts (validated as any input).
+      .def("__reduce__", [](py::object self) {
+        const Chain& c = self.cast<const Chain&>();
+        const py::object phases = c.phases.empty() ? py::object(py::none()) : py::object(py::str(c.phases));
+        return py::make_tuple(py::type::of(self), py::make_tuple(c.twists, c.rates, phases));
+      });
+}
+
+}  // namespace sphtroch::python
