@@ -50,7 +50,7 @@ Eigen::Matrix<long double, 3, 1> model(const std::vector<Stage>& stages, long do
 
 }  // namespace
 
-TEST_CASE("chain trace, k = 2: the bytes of sphtroch trace", "[cli][chain]") {
+TEST_CASE("chain trace, k = 2: the bytes of sphtroch trace (1000 trains)", "[cli][chain]") {
   TempDir dir;
   std::mt19937 rng(2045);
   std::uniform_real_distribution<double> angle(0.01, 3.13), phase(0, 6.28);
@@ -189,7 +189,7 @@ TEST_CASE("chain classify and nodes: a k = 3 chain's table is its JSON, and the 
   CHECK(std::fabs(fig3["nodes"][0]["position"][1].get<double>() - 1.0) < 1e-12);
 }
 
-TEST_CASE("chain nodes, k = 2 with rates 1,n: the bytes of sphtroch nodes, tangencies and cusps included", "[cli][chain]") {
+TEST_CASE("chain nodes, k = 2 with rates 1,n: the bytes of sphtroch nodes, tangencies and cusps included (1000 trains)", "[cli][chain]") {
   TempDir dir;
   std::mt19937 rng(4546);
   std::uniform_real_distribution<double> angle(0.05, 3.09), phase(0, 6.28);
