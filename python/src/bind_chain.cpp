@@ -110,30 +110,9 @@ py::tuple trace(const Chain& self, py::handle samples, py::handle velocity_flag)
 }
 
 /// kinematics(t): speed, geodesic curvature, tangential acceleration per unit s, |t| <= the period.
-py::dict kinematics(const Chain& self, py::handle t_arg) {
+py::dict kinematics(const Chain& self, py::handle t) {
   const double period = self.chain.period();
-  const std::string valid = "an (N,) array of finite s with |s| <= the period " + number_text(period);
-  const RealArray t = real_array_arg(t_arg, "t", valid);
-  if (t.ndim() != 1) throw InvalidInput("t", shape_text(t), "not a 1-D array of motor parameters", valid);
-  const std::vector<double> in(t.data(), t.data() + t.shape(0));
-  for (std::size_t i = 0; i < in.size(); ++i)
-    if (!(std::fabs(in[i]) <= period)) throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite or beyond a period", valid);
-  const std::size_t n = in.size();
-  py::array_t<double> speed(n), curvature(n), tangential(n);
-  double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
-  {
-    py::gil_scoped_release release;
-    const ChainCurve<double> curve(self.chain);
-    for (std::size_t i = 0; i < n; ++i) {
-      const PathKinematics pk = path_kinematics(curve, in[i]);
-      s[i] = pk.speed, k[i] = pk.geodesic_curvature, a[i] = pk.tangential_acceleration;
-    }
-  }
-  py::dict d;
-  d["speed"] = speed;
-  d["geodesic_curvature"] = curvature;
-  d["tangential_acceleration"] = tangential;
-  return d;
+  return kinematics_dict(ChainCurve<double>(self.chain), t, period, "an (N,) array of finite s with |s| <= the period " + number_text(period));
 }
 
 py::object classify(const Chain& self) {

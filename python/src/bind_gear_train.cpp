@@ -214,30 +214,8 @@ std::string train_repr(const Train& t) {
 constexpr double kMaxKinematicsAngle = 2 * 3.141592653589793 * 1e6;
 
 /// kinematics(t): speed, geodesic curvature, tangential acceleration at each carrier angle.
-py::dict kinematics(const Train& self, py::handle t_arg) {
-  const std::string valid = "an (N,) array of finite radians, |t| <= 2 pi 1e6";
-  const RealArray t = real_array_arg(t_arg, "t", valid);
-  if (t.ndim() != 1) throw InvalidInput("t", shape_text(t), "not a 1-D array of carrier angles", valid);
-  const std::vector<double> in(t.data(), t.data() + t.shape(0));  // copied with the GIL held
-  for (std::size_t i = 0; i < in.size(); ++i)
-    if (!(std::fabs(in[i]) <= kMaxKinematicsAngle))
-      throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite or too large", valid);
-  const std::size_t n = in.size();
-  py::array_t<double> speed(n), curvature(n), tangential(n);
-  double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
-  {
-    py::gil_scoped_release release;
-    const TracerCurve<double> curve(self.train);
-    for (std::size_t i = 0; i < n; ++i) {
-      const PathKinematics pk = path_kinematics(curve, in[i]);
-      s[i] = pk.speed, k[i] = pk.geodesic_curvature, a[i] = pk.tangential_acceleration;
-    }
-  }
-  py::dict d;
-  d["speed"] = speed;
-  d["geodesic_curvature"] = curvature;
-  d["tangential_acceleration"] = tangential;
-  return d;
+py::dict kinematics(const Train& self, py::handle t) {
+  return kinematics_dict(TracerCurve<double>(self.train), t, kMaxKinematicsAngle, "an (N,) array of finite radians, |t| <= 2 pi 1e6");
 }
 
 /// report(): the text `sphtroch classify` prints.

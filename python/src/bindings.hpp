@@ -17,6 +17,8 @@
 #pragma once
 
 #include "sphtroch/core/gear_train.hpp"
+#include "sphtroch/core/kinematics.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/draw/svg_plot.hpp"  // PlotOptions
@@ -25,11 +27,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace sphtroch::python {
 
@@ -98,6 +102,34 @@ std::pair<double, double> range_arg(py::handle v, const std::string& field);
 PlotOptions plot_options_arg(py::handle view, py::handle size, py::handle labels, py::handle markers, py::handle style);
 /// The census's samples: None (the default count) or a count in [kMinCensusSamples, kMaxSamples].
 std::size_t census_samples_arg(py::handle samples);
+
+/// kinematics(t) of GearTrain and Chain: {"speed", "geodesic_curvature", "tangential_acceleration"}
+/// (core/kinematics.hpp's path_kinematics of `curve`, built with the GIL released) at the
+/// parameters t, a 1-D array of finite numbers with |t| <= max_abs; else InvalidInput("t", .., valid).
+template <typename Curve>
+py::dict kinematics_dict(const Curve& curve, py::handle t_arg, double max_abs, const std::string& valid) {
+  const RealArray t = real_array_arg(t_arg, "t", valid);
+  if (t.ndim() != 1) throw InvalidInput("t", shape_text(t), "not a 1-D array", valid);
+  const std::vector<double> in(t.data(), t.data() + t.shape(0));  // copied with the GIL held
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (!(std::fabs(in[i]) <= max_abs))
+      throw InvalidInput("t", "t[" + std::to_string(i) + "] = " + number_text(in[i]), "not finite or too large", valid);
+  const std::size_t n = in.size();
+  py::array_t<double> speed(n), curvature(n), tangential(n);
+  double *s = speed.mutable_data(), *k = curvature.mutable_data(), *a = tangential.mutable_data();
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < n; ++i) {
+      const PathKinematics pk = path_kinematics(curve, in[i]);
+      s[i] = pk.speed, k[i] = pk.geodesic_curvature, a[i] = pk.tangential_acceleration;
+    }
+  }
+  py::dict d;
+  d["speed"] = speed;
+  d["geodesic_curvature"] = curvature;
+  d["tangential_acceleration"] = tangential;
+  return d;
+}
 
 /// The fewest milliseconds between two reports of a progress callback (the last one, done ==
 /// total, always goes through).
