@@ -71,6 +71,7 @@
 
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/boundary_events_output.hpp"
+#include "sphtroch/map/chain_events.hpp"
 #include "sphtroch/map/boundary_snap.hpp"
 #include "sphtroch/map/closed_form_boundaries.hpp"
 #include "sphtroch/map/criteria.hpp"

@@ -35,6 +35,8 @@ char numpy_kind(py::handle v) {
   return py::dtype::from_args(v.attr("dtype")).kind();
 }
 
+}  // namespace
+
 /// Not a number whatever float() or __index__ would make of it: bool and numpy.bool_, None, text
 /// (str, bytes), complex numbers (also NumPy's), and NumPy values of a dtype other than integer or
 /// float (a 0-d text array).
@@ -45,8 +47,6 @@ bool not_a_real(py::handle v) {
   const char kind = numpy_kind(v);
   return kind != 0 && kind != 'i' && kind != 'u' && kind != 'f';
 }
-
-}  // namespace
 
 /// A str as UTF-8, else InvalidInput: "not a string" (bytes, numbers, arrays), or not encodable
 /// (a lone surrogate such as "\ud800").

@@ -29,12 +29,14 @@ struct Chain {
   std::string twists, rates, phases;
 };
 
-const char* const kRateForms = "exact rates: int, fractions.Fraction, text (\"-2/3\", \"1.5\", \"0\") or a float that is a short decimal";
+const char* const kRateForms =
+    "exact rates: int, fractions.Fraction, text (\"-2/3\", \"1.5\", \"0\") or a float that is a short decimal, |p|, q <= 1e6 in lowest terms";
 
 /// One rate as the CLI's text: a str as given, an integer's digits, a Fraction's "p/q", a float's repr.
 std::string rate_text(py::handle v) {
   if (py::isinstance<py::str>(v)) return text_arg(v, "rates", kRateForms);
-  if (PyIndex_Check(v.ptr()) && !PyBool_Check(v.ptr()) && !py::isinstance<py::array>(v)) {
+  if (not_a_real(v)) throw InvalidInput("rates", repr_of(v), "not a rate", kRateForms);  // bool, None, complex, ...
+  if (PyIndex_Check(v.ptr()) && !py::isinstance<py::array>(v)) {
     PyObject* i = PyNumber_Index(v.ptr());
     if (i != nullptr) return py::str(py::reinterpret_steal<py::object>(i)).cast<std::string>();
     PyErr_Clear();
@@ -54,8 +56,18 @@ std::string list_text(py::handle v, const std::string& field, const std::string&
   if (py::isinstance<py::str>(v)) return text_arg(v, field, valid);
   if (py::isinstance<py::bytes>(v) || !PySequence_Check(v.ptr()) || py::isinstance<py::dict>(v))
     throw InvalidInput(field, repr_of(v), "not a list", valid);
-  const py::sequence items = py::reinterpret_borrow<py::sequence>(v);
-  if (items.size() > RotationChain::kMaxStages) throw InvalidInput(field, std::to_string(items.size()) + " items", "not a chain length", "1 to 16 stages");
+  if (py::isinstance<py::array>(v) && py::reinterpret_borrow<py::array>(v).ndim() != 1)
+    throw InvalidInput(field, shape_text(py::reinterpret_borrow<py::array>(v)), "not a 1-D list", valid);
+  std::vector<py::object> items;
+  try {  // a sequence whose len() or [] raises is a bad argument, not the caller's exception
+    const py::sequence seq = py::reinterpret_borrow<py::sequence>(v);
+    const std::size_t n = seq.size();
+    if (n > RotationChain::kMaxStages) throw InvalidInput(field, std::to_string(n) + " items", "not a chain length", "1 to 16 stages");
+    for (std::size_t i = 0; i < n; ++i) items.push_back(seq[i]);
+  } catch (const py::error_already_set& e) {
+    const std::string raised = py::str(e.type().attr("__name__")).cast<std::string>() + " " + py::str(e.value()).cast<std::string>();
+    throw InvalidInput(field, repr_of(py::type::of(v)), "not a list (it raised " + raised + ")", valid);
+  }
   std::string text;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::string one = item(items[i]);
@@ -167,41 +179,41 @@ std::string chain_repr(const Chain& c) {
 void bind_chain(py::module_& m) {
   py::class_<Chain>(m, "Chain", doc("Chain"))
       .def(py::init(&make_chain), py::arg("twists"), py::arg("rates"), py::arg("phases") = py::none(), doc("Chain.__init__"))
-      .def_property_readonly("twists", [](const Chain& c) {
+      .def_property_readonly("twists", checked(+[](const Chain& c) {
         py::list l;
         for (const ChainStage& s : c.chain.stages()) l.append(s.twist);
         return py::tuple(l);
-      }, doc("Chain.twists"))
-      .def_property_readonly("rates", [](const Chain& c) {
+      }), doc("Chain.twists"))
+      .def_property_readonly("rates", checked(+[](const Chain& c) {
         py::list l;
         for (const ChainStage& s : c.chain.stages()) l.append(s.rate.str());
         return py::tuple(l);
-      }, doc("Chain.rates"))
-      .def_property_readonly("phases", [](const Chain& c) {
+      }), doc("Chain.rates"))
+      .def_property_readonly("phases", checked(+[](const Chain& c) {
         py::list l;
         for (const ChainStage& s : c.chain.stages()) l.append(s.phase);
         return py::tuple(l);
-      }, doc("Chain.phases"))
-      .def_property_readonly("period", [](const Chain& c) { return c.chain.period(); }, doc("Chain.period"))
-      .def_property_readonly("train", &train, doc("Chain.train"))
-      .def("__len__", [](const Chain& c) { return c.chain.size(); }, doc("Chain.__len__"))
-      .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("velocity") = false, doc("Chain.trace"))
-      .def("kinematics", &kinematics, py::arg("t"), doc("Chain.kinematics"))
-      .def("classify", &classify, doc("Chain.classify"))
-      .def("nodes", &nodes, doc("Chain.nodes"))
-      .def("cusps", [](const Chain& c) -> py::object { return classify(c)["cusps"]; }, doc("Chain.cusps"))
-      .def("report", &report, doc("Chain.report"))
-      .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(), py::arg("labels") = "auto",
+      }), doc("Chain.phases"))
+      .def_property_readonly("period", checked(+[](const Chain& c) { return c.chain.period(); }), doc("Chain.period"))
+      .def_property_readonly("train", checked(&train), doc("Chain.train"))
+      .def("__len__", checked(+[](const Chain& c) { return c.chain.size(); }), doc("Chain.__len__"))
+      .def("trace", checked(&trace), py::kw_only(), py::arg("samples") = py::none(), py::arg("velocity") = false, doc("Chain.trace"))
+      .def("kinematics", checked(&kinematics), py::arg("t"), doc("Chain.kinematics"))
+      .def("classify", checked(&classify), doc("Chain.classify"))
+      .def("nodes", checked(&nodes), doc("Chain.nodes"))
+      .def("cusps", checked(+[](const Chain& c) -> py::object { return classify(c)["cusps"]; }), doc("Chain.cusps"))
+      .def("report", checked(&report), doc("Chain.report"))
+      .def("svg", checked(&svg), py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(), py::arg("labels") = "auto",
            py::arg("markers") = "auto", py::arg("style") = "curve", doc("Chain.svg"))
-      .def("__repr__", &chain_repr)
-      .def("__eq__", [](const Chain& a, py::handle other) -> py::object {
+      .def("__repr__", checked(&chain_repr))
+      .def("__eq__", checked(+[](const Chain& a, py::handle other) -> py::object {
         if (!py::isinstance<Chain>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        return py::bool_(value_key(a).equal(value_key(other.cast<const Chain&>())));
-      }, doc("Chain.__eq__"))
-      .def("__hash__", [](const Chain& c) { return py::hash(value_key(c)); }, doc("Chain.__hash__"))
+        return py::bool_(value_key(a).equal(value_key(value_of<Chain>(other))));
+      }), doc("Chain.__eq__"))
+      .def("__hash__", checked(+[](const Chain& c) { return py::hash(value_key(c)); }), doc("Chain.__hash__"))
       // Pickling calls the constructor again with the three texts (validated as any input).
       .def("__reduce__", [](py::object self) {
-        const Chain& c = self.cast<const Chain&>();
+        const Chain& c = value_of<Chain>(self);
         const py::object phases = c.phases.empty() ? py::object(py::none()) : py::object(py::str(c.phases));
         return py::make_tuple(py::type::of(self), py::make_tuple(c.twists, c.rates, phases));
       });

@@ -267,36 +267,36 @@ void bind_clinostat(py::module_& m) {
       .def(py::init(&make_machine), py::arg("outer_rpm"), py::arg("inner_rpm"), py::kw_only(), py::arg("tilt") = 90.0,
            py::arg("frame_angle") = 90.0, py::arg("phase_outer") = 0.0, py::arg("phase_inner") = 0.0, py::arg("offset") = py::none(),
            doc("Clinostat.__init__"))
-      .def_property_readonly("outer_rpm", [](M c) { return c.machine.settings().outer.str(); }, doc("Clinostat.outer_rpm"))
-      .def_property_readonly("inner_rpm", [](M c) { return c.machine.settings().inner.str(); }, doc("Clinostat.inner_rpm"))
-      .def_property_readonly("tilt", [](M c) { return c.machine.settings().tilt_deg; }, doc("Clinostat.tilt"))
-      .def_property_readonly("frame_angle", [](M c) { return c.machine.settings().frame_angle_deg; }, doc("Clinostat.frame_angle"))
-      .def_property_readonly("phase_outer", [](M c) { return c.machine.settings().phase_outer_deg; }, doc("Clinostat.phase_outer"))
-      .def_property_readonly("phase_inner", [](M c) { return c.machine.settings().phase_inner_deg; }, doc("Clinostat.phase_inner"))
-      .def_property_readonly("offset", [](M c) -> py::object {
+      .def_property_readonly("outer_rpm", checked(+[](M c) { return c.machine.settings().outer.str(); }), doc("Clinostat.outer_rpm"))
+      .def_property_readonly("inner_rpm", checked(+[](M c) { return c.machine.settings().inner.str(); }), doc("Clinostat.inner_rpm"))
+      .def_property_readonly("tilt", checked(+[](M c) { return c.machine.settings().tilt_deg; }), doc("Clinostat.tilt"))
+      .def_property_readonly("frame_angle", checked(+[](M c) { return c.machine.settings().frame_angle_deg; }), doc("Clinostat.frame_angle"))
+      .def_property_readonly("phase_outer", checked(+[](M c) { return c.machine.settings().phase_outer_deg; }), doc("Clinostat.phase_outer"))
+      .def_property_readonly("phase_inner", checked(+[](M c) { return c.machine.settings().phase_inner_deg; }), doc("Clinostat.phase_inner"))
+      .def_property_readonly("offset", checked(+[](M c) -> py::object {
         const Vector3d& r = c.machine.settings().offset_m;
         return c.offset_given ? py::object(py::make_tuple(r.x(), r.y(), r.z())) : py::object(py::none());
-      }, doc("Clinostat.offset"))
-      .def_property_readonly("period", [](M c) { return or_none(c.averaged.period_s()); }, doc("Clinostat.period"))
-      .def_property_readonly("mean_over_period", [](M c) { return vector_array(c.averaged.period_mean()); },
+      }), doc("Clinostat.offset"))
+      .def_property_readonly("period", checked(+[](M c) { return or_none(c.averaged.period_s()); }), doc("Clinostat.period"))
+      .def_property_readonly("mean_over_period", checked(+[](M c) { return vector_array(c.averaged.period_mean()); }),
                              doc("Clinostat.mean_over_period"))
-      .def_property_readonly("train", [](M c) -> py::object { return c.gear_train ? py::cast(*c.gear_train) : py::object(py::none()); },
+      .def_property_readonly("train", checked(+[](M c) -> py::object { return c.gear_train ? py::cast(*c.gear_train) : py::object(py::none()); }),
                              doc("Clinostat.train"))
-      .def_property_readonly("train_map", &train_map, doc("Clinostat.train_map"))
-      .def_property_readonly("train_note", [](M c) { return c.train.reason; }, doc("Clinostat.train_note"))
-      .def("gravity", [](M c, py::handle t) { return gravity_at_times(c, t, false); }, py::arg("t"), doc("Clinostat.gravity"))
-      .def("effective_gravity", [](M c, py::handle t) { return gravity_at_times(c, t, true); }, py::arg("t"),
+      .def_property_readonly("train_map", checked(&train_map), doc("Clinostat.train_map"))
+      .def_property_readonly("train_note", checked(+[](M c) { return c.train.reason; }), doc("Clinostat.train_note"))
+      .def("gravity", checked(+[](M c, py::handle t) { return gravity_at_times(c, t, false); }), py::arg("t"), doc("Clinostat.gravity"))
+      .def("effective_gravity", checked(+[](M c, py::handle t) { return gravity_at_times(c, t, true); }), py::arg("t"),
            doc("Clinostat.effective_gravity"))
-      .def("window_mean", &window_mean, py::arg("t0"), py::arg("window"), doc("Clinostat.window_mean"))
-      .def("worst_window_mean", &worst, py::arg("window"), doc("Clinostat.worst_window_mean"))
-      .def("time_to", &time_to, py::arg("epsilon"), py::arg("resolution") = 1.0, doc("Clinostat.time_to"))
-      .def("coverage", &coverage, py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0, doc("Clinostat.coverage"))
-      .def("coverage_summary", &coverage_summary, py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0,
+      .def("window_mean", checked(&window_mean), py::arg("t0"), py::arg("window"), doc("Clinostat.window_mean"))
+      .def("worst_window_mean", checked(&worst), py::arg("window"), doc("Clinostat.worst_window_mean"))
+      .def("time_to", checked(&time_to), py::arg("epsilon"), py::arg("resolution") = 1.0, doc("Clinostat.time_to"))
+      .def("coverage", checked(&coverage), py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0, doc("Clinostat.coverage"))
+      .def("coverage_summary", checked(&coverage_summary), py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0,
            doc("Clinostat.coverage_summary"))
-      .def("_repr_svg_", [](M c) -> py::object {
+      .def("_repr_svg_", checked(+[](M c) -> py::object {
         return c.gear_train ? py::cast(*c.gear_train).attr("_repr_svg_")() : py::object(py::none());
-      }, doc("Clinostat._repr_svg_"))
-      .def("__repr__", &machine_repr);
+      }), doc("Clinostat._repr_svg_"))
+      .def("__repr__", checked(&machine_repr));
 }
 
 }  // namespace sphtroch::python

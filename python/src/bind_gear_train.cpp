@@ -261,48 +261,48 @@ void bind_gear_train(py::module_& m) {
            doc("GearTrain.__init__"))
       .def_property_readonly("a2", [](const Train& t) { return t.train.a2(); }, doc("GearTrain.a2"))
       .def_property_readonly("a3", [](const Train& t) { return t.train.a3(); }, doc("GearTrain.a3"))
-      .def_property_readonly("n", [](const Train& t) { return t.train.n(); }, doc("GearTrain.n"))
-      .def_property_readonly("ratio", [](const Train& t) { return t.train.ratio().str(); }, doc("GearTrain.ratio"))
-      .def_property_readonly("p", [](const Train& t) { return t.train.ratio().p(); }, doc("GearTrain.p"))
-      .def_property_readonly("q", [](const Train& t) { return t.train.ratio().q(); }, doc("GearTrain.q"))
-      .def_property_readonly("phase", [](const Train& t) { return t.train.phase(); }, doc("GearTrain.phase"))
-      .def_property_readonly("planet_cone", [](const Train& t) { return t.train.planet_cone(); }, doc("GearTrain.planet_cone"))
-      .def_property_readonly("sun_cone", [](const Train& t) { return t.train.sun_cone(); }, doc("GearTrain.sun_cone"))
-      .def_property_readonly("period", [](const Train& t) { return t.train.period(); }, doc("GearTrain.period"))
-      .def_property_readonly("teeth", [](const Train& t) -> py::object {
+      .def_property_readonly("n", checked(+[](const Train& t) { return t.train.n(); }), doc("GearTrain.n"))
+      .def_property_readonly("ratio", checked(+[](const Train& t) { return t.train.ratio().str(); }), doc("GearTrain.ratio"))
+      .def_property_readonly("p", checked(+[](const Train& t) { return t.train.ratio().p(); }), doc("GearTrain.p"))
+      .def_property_readonly("q", checked(+[](const Train& t) { return t.train.ratio().q(); }), doc("GearTrain.q"))
+      .def_property_readonly("phase", checked(+[](const Train& t) { return t.train.phase(); }), doc("GearTrain.phase"))
+      .def_property_readonly("planet_cone", checked(+[](const Train& t) { return t.train.planet_cone(); }), doc("GearTrain.planet_cone"))
+      .def_property_readonly("sun_cone", checked(+[](const Train& t) { return t.train.sun_cone(); }), doc("GearTrain.sun_cone"))
+      .def_property_readonly("period", checked(+[](const Train& t) { return t.train.period(); }), doc("GearTrain.period"))
+      .def_property_readonly("teeth", checked(+[](const Train& t) -> py::object {
         return t.text.teeth.empty() ? py::object(py::none()) : py::object(py::str(t.text.teeth));
-      }, doc("GearTrain.teeth"))
-      .def_property_readonly("texts", [](const Train& t) {
+      }), doc("GearTrain.teeth"))
+      .def_property_readonly("texts", checked(+[](const Train& t) {
         return py::make_tuple(t.text.a2, t.text.a3, t.text.n.empty() ? t.train.ratio().str() : t.text.n, t.text.phase);
-      }, doc("GearTrain.texts"))
-      .def("trace", &trace, py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
+      }), doc("GearTrain.texts"))
+      .def("trace", checked(&trace), py::kw_only(), py::arg("samples") = py::none(), py::arg("turns") = py::none(),
            py::arg("velocity") = false, doc("GearTrain.trace"))
-      .def("classify", &classify, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.classify"))
-      .def("nodes", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); },
+      .def("classify", checked(&classify), py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.classify"))
+      .def("nodes", checked(+[](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "nodes"); }),
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.nodes"))
-      .def("cusps", [](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); },
+      .def("cusps", checked(+[](const Train& t, py::handle literal, py::handle s) { return nodes_and_cusps(t, literal, s, "cusps"); }),
            py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.cusps"))
-      .def("svg", &svg, py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(),
+      .def("svg", checked(&svg), py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(),
            py::arg("labels") = "auto", py::arg("markers") = "auto", py::arg("style") = "curve", py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.svg"))
-      .def("_repr_svg_", &repr_svg, doc("GearTrain._repr_svg_"))
-      .def("kinematics", &kinematics, py::arg("t"), doc("GearTrain.kinematics"))
-      .def("report", &report, py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))
-      .def("classify_roots", &classify_roots, py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
-      .def("margin", &margin, doc("GearTrain.margin"))
-      .def("tolerance", &tolerance, py::kw_only(), py::arg("da2"), py::arg("da3"), py::arg("dphase") = 0.0,
+      .def("_repr_svg_", checked(&repr_svg), doc("GearTrain._repr_svg_"))
+      .def("kinematics", checked(&kinematics), py::arg("t"), doc("GearTrain.kinematics"))
+      .def("report", checked(&report), py::kw_only(), py::arg("literal") = false, py::arg("samples") = py::none(), doc("GearTrain.report"))
+      .def("classify_roots", checked(&classify_roots), py::kw_only(), py::arg("literal") = false, doc("GearTrain.classify_roots"))
+      .def("margin", checked(&margin), doc("GearTrain.margin"))
+      .def("tolerance", checked(&tolerance), py::kw_only(), py::arg("da2"), py::arg("da3"), py::arg("dphase") = 0.0,
            py::arg("samples") = py::none(), py::arg("seed") = 1, py::arg("progress") = py::none(), doc("GearTrain.tolerance"))
-      .def("__repr__", &train_repr)
+      .def("__repr__", checked(&train_repr))
       // By value (value_key): GearTrain("60deg", ...) == GearTrain("pi/3", ...). Another type:
       // NotImplemented (so train == 5 is False, and the other operand may decide).
-      .def("__eq__", [](const Train& a, py::handle other) -> py::object {
+      .def("__eq__", checked(+[](const Train& a, py::handle other) -> py::object {
         if (!py::isinstance<Train>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        return py::bool_(value_key(a).equal(value_key(other.cast<const Train&>())));
-      }, doc("GearTrain.__eq__"))
-      .def("__hash__", [](const Train& t) { return py::hash(value_key(t)); }, doc("GearTrain.__hash__"))
+        return py::bool_(value_key(a).equal(value_key(value_of<Train>(other))));
+      }), doc("GearTrain.__eq__"))
+      .def("__hash__", checked(+[](const Train& t) { return py::hash(value_key(t)); }), doc("GearTrain.__hash__"))
       // Pickling (every protocol, also 0 and 1) calls the constructor again with the four input
       // texts: a tampered pickle is validated like any other input (InvalidInput).
       .def("__reduce__", [](py::object self) {
-        const Train& t = self.cast<const Train&>();
+        const Train& t = value_of<Train>(self);
         const py::object n = t.text.teeth.empty() ? py::object(py::str(t.text.n)) : py::object(py::none());
         const py::object teeth = t.text.teeth.empty() ? py::object(py::none()) : py::object(py::str(t.text.teeth));
         return py::make_tuple(py::type::of(self), py::make_tuple(t.text.a2, t.text.a3, n, t.text.phase, teeth));

@@ -63,6 +63,9 @@ void bind_errors(py::module_& m);
 // The one home of argument conversion: no binding casts a user's value with pybind11 (whose
 // failures are RuntimeError / TypeError) or lets NumPy convert text, bool or complex silently.
 std::string repr_of(py::handle v);
+/// Not a number whatever float() or __index__ would make of it: bool and numpy.bool_, None, text,
+/// complex numbers, NumPy values of a dtype other than integer or float.
+bool not_a_real(py::handle v);
 /// A str as UTF-8, else InvalidInput: "not a string", or not encodable (a lone surrogate "\ud800").
 std::string text_arg(py::handle v, const std::string& field, const std::string& valid);
 /// A flag: True or False (also numpy.bool_); truthy objects ("yes", 1, None) are refused.
@@ -159,6 +162,25 @@ py::capsule capsule_of(std::unique_ptr<Owner> owner) {
 
 /// JSON text -> Python objects (json.loads), so the dicts are exactly the CLI's JSON.
 py::object from_json(const std::string& text);
+
+/// The C++ value behind a bound object (GearTrain, Chain, Clinostat); InvalidInput("self") when
+/// the object was made by __new__ without __init__ (Chain.__new__(Chain), or a pickle's NEWOBJ):
+/// pybind11 would hand such a method uninitialised memory.
+template <typename T>
+const T& value_of(py::handle self) {
+  auto* inst = reinterpret_cast<py::detail::instance*>(self.ptr());
+  py::detail::value_and_holder vh = inst->get_value_and_holder(py::detail::get_type_info(typeid(T)));
+  if (!vh.holder_constructed())
+    throw InvalidInput("self", py::str(py::type::of(self).attr("__name__")).cast<std::string>() + " object without __init__",
+                       "not initialised", "an object made by calling the class");
+  return *static_cast<const T*>(vh.value_ptr());
+}
+
+/// A method bound through value_of: f(const T&, args...) as g(self, args...).
+template <typename T, typename R, typename... A>
+auto checked(R (*f)(const T&, A...)) {
+  return [f](py::handle self, A... args) -> R { return f(value_of<T>(self), args...); };
+}
 
 // --- one function per topic ----------------------------------------------------------------
 void bind_gear_train(py::module_& m);  // class GearTrain: trace, classify, nodes, cusps, classify_roots

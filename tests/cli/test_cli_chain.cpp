@@ -20,6 +20,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -337,4 +338,50 @@ TEST_CASE("chain --urdf: a tool axis that does not move names --urdf, a huge --a
   const Result huge = run("chain classify --urdf wrist.urdf --from base_link --to tool --axis 1e300,1e300,0 --json", dir, true);
   REQUIRE(huge.status == 0);
   CHECK(nlohmann::json::parse(huge.out) == unit);
+}
+
+TEST_CASE("chain boundaries: along A2 of a two-stage chain, counts either side are chain classify's", "[cli][chain]") {
+  TempDir dir;
+  // Motor rates other than 1 (n = N2 / N1); each event's node counts just below and just above
+  // against the certified census of chain classify there, and its values against `boundaries`.
+  for (const auto& [twist1, rates, n] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"pi/2", "2,6", "3"}, {"1.1", "2,5", "5/2"}, {"0.7", "-3,2", "-2/3"}, {"2.2", "1,-5/2", "-5/2"}}) {
+    const auto events = nlohmann::json::parse(run("chain boundaries --twists " + twist1 + ",1 --rates " + rates + " --vary A2:0:pi --json", dir).out);
+    const auto train = nlohmann::json::parse(run("boundaries --n " + n + " --a2 " + twist1 + " --json", dir).out);
+    REQUIRE(events["events"].size() == train["events"].size());
+    REQUIRE(!events["events"].empty());
+    for (std::size_t i = 0; i < events["events"].size(); ++i) {
+      const auto& e = events["events"][i];
+      CHECK(e["value"] == train["events"][i]["a3"]);
+      const double v = e["value"].get<double>();
+      bool isolated = true;
+      for (const auto& other : events["events"])
+        if (&other != &e && std::fabs(other["value"].get<double>() - v) < 1e-3) isolated = false;
+      if (!isolated || e["kind"] == "pole") continue;
+      for (const auto& [side, key] : {std::pair{-1e-5, "nodes_below"}, std::pair{1e-5, "nodes_above"}}) {
+        const auto c = nlohmann::json::parse(
+            run("chain classify --twists " + twist1 + "," + shortest_g(v + side) + " --rates " + rates + " --json", dir).out);
+        INFO(twist1 << " " << rates << " A2 = " << shortest_g(v + side));
+        CHECK(c["certified"] == true);
+        CHECK(c["counts"]["nodes"] == e[key]);
+      }
+    }
+  }
+  // Phases: no event; the census is the same at any P1 (and at any P2 of two stages).
+  const auto none = nlohmann::json::parse(run("chain boundaries --twists 1,2,0.5 --rates 1,2/3,-1 --vary P1:0:6 --json", dir).out);
+  CHECK(none["events"].empty());
+  CHECK(!none["note"].get<std::string>().empty());
+  const auto counts = [&](const std::string& chain) { return nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out)["counts"]; };
+  CHECK(counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 0,0.3,0") == counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 2.5,0.3,0"));
+  CHECK(counts("--twists 1,2 --rates 2,5 --phases 0,0") == counts("--twists 1,2 --rates 2,5 --phases 0,1.7"));
+  // Families not computed, and bad ranges: exit 2 naming --vary.
+  for (const std::string& vary : {"A2:0:1", "A1:0:1", "P2:0:1", "X1:0:1", "A4:0:1", "A1:1:0", "A1:0:4", "A1:0", "P1:0:nan"}) {
+    const std::string chain = vary == "A1:0:1" || vary == "A1:1:0" || vary == "A1:0:4" || vary == "A1:0" ? "--twists 1,2 --rates 1,2" : "--twists 1,2,3 --rates 1,2,3";
+    const Result r = run("chain boundaries " + chain + " --vary " + vary, dir, true);
+    INFO(vary << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "--vary"));
+  }
 }

@@ -154,3 +154,37 @@ def test_bad_input_names_the_argument(kwargs, field):
         sphtroch.Chain(**kwargs)
     assert e.value.field == field
     assert "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("make, by_value", [(lambda: sphtroch.Chain.__new__(sphtroch.Chain), True),
+                                            (lambda: sphtroch.GearTrain.__new__(sphtroch.GearTrain), True),
+                                            (lambda: sphtroch.Clinostat.__new__(sphtroch.Clinostat), False),
+                                            (lambda: pickle.loads(b"\x80\x02csphtroch._sphtroch\nChain\nq\x00)\x81q\x01."), True)])
+def test_an_object_made_without_init_raises_instead_of_reading_memory(make, by_value):
+    obj = make()
+    uses = [lambda: obj.period, lambda: repr(obj)] + ([lambda: hash(obj), lambda: obj == obj] if by_value else [])
+    for use in uses:
+        with pytest.raises(sphtroch.InvalidInput) as e:
+            use()
+        assert e.value.field == "self"
+
+
+class RaisingList:
+    def __len__(self):
+        raise ZeroDivisionError("len")
+
+    def __getitem__(self, i):
+        raise ZeroDivisionError("item")
+
+
+@pytest.mark.parametrize("kwargs, field", [
+    (dict(twists=np.array(1.0), rates=[1]), "twists"),
+    (dict(twists=np.ones((3, 1)), rates=[1, 1, 1]), "twists"),
+    (dict(twists=[1, 1, 1], rates=[np.bool_(False), np.bool_(False), np.bool_(True)]), "rates"),
+    (dict(twists=[1, 1], rates=[1, None]), "rates"),
+    (dict(twists=RaisingList(), rates=[1]), "twists"),
+])
+def test_arrays_bools_and_raising_containers_are_bad_input(kwargs, field):
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        sphtroch.Chain(**kwargs)
+    assert e.value.field == field

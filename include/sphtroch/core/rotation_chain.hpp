@@ -132,6 +132,12 @@ class RotationChain {
   std::int64_t numerator_gcd() const noexcept { return numerator_gcd_; }
   /// 2 pi L / g: the s after which every joint is back (in double; ChainCurve::period in Scalar).
   double period() const { return Constants<double>::two_pi() * static_cast<double>(common_denominator_) / static_cast<double>(numerator_gcd_); }
+  /// "1.5707963267948966,1,0.4": the twists as shortest round-trip doubles.
+  std::string twists_text() const {
+    std::string t;
+    for (const ChainStage& s : stages_) t += (t.empty() ? "" : ",") + number_text(s.twist);
+    return t;
+  }
   /// "1,-2/3,5/3".
   std::string rates_text() const {
     std::string t;
@@ -241,18 +247,32 @@ inline RotationChain chain_of(const GearTrain& train) {
   return RotationChain({{train.a2(), ChainRate(1), 0.0}, {train.a3(), ChainRate(train.ratio().p(), train.ratio().q()), train.phase()}});
 }
 
-/// The gear train of a k = 2 chain whose rates are both not 0: a2 = A1, a3 = A2, n = N2 / N1,
-/// theta_p = P2 - n P1, with theta2 = N1 s + P1 (chain_param maps theta2 back to s). nullopt for
-/// any other chain, and when GearTrain refuses it (a twist of 0 or pi, or n beyond Ratio's terms).
-inline std::optional<GearTrain> gear_train_of(const RotationChain& chain) {
+/// n = N2 / N1 of a k = 2 chain whose rates are both not 0 (the ratio of gear_train_of); nullopt
+/// for any other chain, and beyond Ratio's terms.
+inline std::optional<Ratio> gear_ratio_of(const RotationChain& chain) {
   if (chain.size() != 2 || chain.stages()[0].rate.is_zero() || chain.stages()[1].rate.is_zero()) return std::nullopt;
-  const ChainStage& first = chain.stages()[0];
-  const ChainStage& second = chain.stages()[1];
-  std::int64_t p = second.rate.p() * first.rate.q(), q = second.rate.q() * first.rate.p();  // |terms| <= 1e12
+  const ChainRate& first = chain.stages()[0].rate;
+  const ChainRate& second = chain.stages()[1].rate;
+  const std::int64_t p = second.p() * first.q(), q = second.q() * first.p();  // |terms| <= 1e12
   const std::int64_t g = std::gcd(p < 0 ? -p : p, q < 0 ? -q : q);
   try {
-    const Ratio n(p / g, q / g);
-    return GearTrain(first.twist, second.twist, n, second.phase - n.value() * first.phase);
+    return Ratio(p / g, q / g);
+  } catch (const InvalidInput&) {
+    return std::nullopt;
+  }
+}
+
+/// The gear train of a k = 2 chain whose rates are both not 0: a2 = A1, a3 = A2, n = N2 / N1
+/// (gear_ratio_of), theta_p = P2 - n P1, with theta2 = N1 s + P1 (chain_param_of_theta2 maps
+/// theta2 back to s). nullopt for any other chain, and when GearTrain refuses it (a twist of 0 or
+/// pi, or n beyond Ratio's terms).
+inline std::optional<GearTrain> gear_train_of(const RotationChain& chain) {
+  const std::optional<Ratio> n = gear_ratio_of(chain);
+  if (!n) return std::nullopt;
+  const ChainStage& first = chain.stages()[0];
+  const ChainStage& second = chain.stages()[1];
+  try {
+    return GearTrain(first.twist, second.twist, *n, second.phase - n->value() * first.phase);
   } catch (const InvalidInput&) {
     return std::nullopt;
   }

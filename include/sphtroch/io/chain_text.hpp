@@ -139,7 +139,7 @@ struct ChainText {
       return parse_chain_rate(item, "rates");
     } catch (const InvalidInput& e) {
       throw InvalidInput("rates", item + stage, e.problem(),
-                         "an exact rate: an integer, a decimal (at most 9 places) or p/q with |p|, |q| <= 1000000, or 0");
+                         "an exact rate: an integer, p/q or a decimal (at most 9 places) that is p/q with |p|, |q| <= 1000000 in lowest terms, or 0");
     }
   }
 

@@ -147,7 +147,7 @@ inline ReducedChain reduced_chain(const RotationChain& chain) {
   }
   const bool moves = std::any_of(r.stages.begin(), r.stages.end(), [](const ChainStage& s) { return !s.rate.is_zero(); });
   if (!moves)
-    throw InvalidInput("twists", chain.rates_text(), "the tool axis does not move: every joint that turns is coaxial with it",
+    throw InvalidInput("twists", chain.twists_text(), "the tool axis does not move: every joint that turns is coaxial with it (rates " + chain.rates_text() + ")",
                        "a chain whose tool axis moves (a turning joint not on the tool axis)");
   return r;
 }
