@@ -132,6 +132,13 @@ class RotationChain {
   std::int64_t numerator_gcd() const noexcept { return numerator_gcd_; }
   /// 2 pi L / g: the s after which every joint is back (in double; ChainCurve::period in Scalar).
   double period() const { return Constants<double>::two_pi() * static_cast<double>(common_denominator_) / static_cast<double>(numerator_gcd_); }
+  /// sum_i |N_i| L / g: the joints' turns in one period, all together (the sample counts' unit).
+  double total_turns() const {
+    double turns = 0;
+    for (const ChainStage& s : stages_)
+      turns += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(common_denominator_ / s.rate.q());
+    return turns / static_cast<double>(numerator_gcd_);
+  }
   /// "1.5707963267948966,1,0.4": the twists as shortest round-trip doubles.
   std::string twists_text() const {
     std::string t;

@@ -100,10 +100,7 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
 /// 360 (q + |p|)), at least kMinSamples. Throws InvalidInput("samples", "(default)") above
 /// kMaxDefaultSamples, as trace_sample_count.
 inline std::size_t chain_trace_sample_count(const RotationChain& chain) {
-  double units = 0;
-  for (const ChainStage& s : chain.stages())
-    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(chain.common_denominator() / s.rate.q());
-  const double n = 360.0 * units / static_cast<double>(chain.numerator_gcd());
+  const double n = 360.0 * chain.total_turns();
   if (n > static_cast<double>(kMaxDefaultSamples))
     throw InvalidInput("samples", "(default)",
                        "rates " + chain.rates_text() + " need 360 sum |N_i| L / g = " + number_text(std::ceil(n)) +

@@ -105,10 +105,7 @@ inline std::size_t plot_sample_count(const GearTrain& train) {
 /// sum |N_i| over the period (twice chain_trace_sample_count's density; for k = 2 with rates 1,
 /// p/q plot_sample_count's), clamped to [1440, 400000].
 inline std::size_t chain_plot_sample_count(const RotationChain& chain) {
-  double units = 0;
-  for (const ChainStage& s : chain.stages())
-    units += std::fabs(static_cast<double>(s.rate.p())) * static_cast<double>(chain.common_denominator() / s.rate.q());
-  return static_cast<std::size_t>(std::clamp(720.0 * units / static_cast<double>(chain.numerator_gcd()), 1440.0, 400000.0));
+  return static_cast<std::size_t>(std::clamp(720.0 * chain.total_turns(), 1440.0, 400000.0));
 }
 
 /// Which marks get their N<i>/C<j> label (contract 4).

@@ -28,11 +28,11 @@
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/rotation_chain.hpp"
-#include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
