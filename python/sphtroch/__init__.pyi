@@ -501,6 +501,12 @@ class Chain:
         """The curve on the sphere as SVG text, as `sphtroch chain plot` draws it (the same bytes):
         the nodes and cusps of classify(), the caption saying NOT CERTIFIED when the census is not.
         The options are GearTrain.svg's."""
+    def boundaries(self, vary: str) -> Dict[str, Any]:
+        """Where the census changes as one twist or phase varies: vary "NAME:LO:HI" (A2:0:pi, P3:0:1),
+        the dict `sphtroch chain boundaries --vary VARY --json` prints (chain, vary, accuracy,
+        uncovered, certified, why, note, events with value, kind, name, nodes_below, nodes_above,
+        cusps_below, cusps_above). "certified" is False where the CLI exits 3. Raises
+        InvalidInput("vary") for a bad range."""
     def __eq__(self, other: object) -> bool:
         """The same chain: equal twists, rates and reduced phases (as doubles and exact rates)."""
     def __hash__(self) -> int:

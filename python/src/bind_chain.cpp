@@ -1,7 +1,7 @@
 // python/src/bind_chain.cpp — the class sphtroch.Chain (bindings.hpp): a gear-coupled rotation
 // chain (core/rotation_chain.hpp) read from twists, rates and phases as `sphtroch chain` reads
 // them (io/chain_text.hpp: each list is turned into the CLI's comma-separated text, so that the
-// one reader checks it), with trace, kinematics, classify, nodes, cusps, report, svg, train, repr,
+// one reader checks it), with trace, kinematics, classify, nodes, cusps, report, boundaries, svg, train, repr,
 // equality and pickling.
 #include "bindings.hpp"
 #include "exact_calls.hpp"
@@ -152,6 +152,17 @@ std::string svg(const Chain& self, py::handle view, py::handle size, py::handle 
   return chain_plot_svg_text(self.chain, options);
 }
 
+/// boundaries(vary): `sphtroch chain boundaries --vary VARY --json` as a dict.
+py::object boundaries(const Chain& self, py::handle vary) {
+  const std::string text = text_arg(vary, "vary", "NAME:LO:HI, NAME = Ai (a twist) or Pi (a phase), LO < HI radians (A2:0:pi)");
+  std::string json;
+  {
+    py::gil_scoped_release release;
+    json = chain_boundaries_json_text(self.chain, text);
+  }
+  return from_json(json);
+}
+
 std::string report(const Chain& self) {
   py::gil_scoped_release release;
   return chain_classification_report_text(self.chain);
@@ -203,6 +214,7 @@ void bind_chain(py::module_& m) {
       .def("nodes", checked(&nodes), doc("Chain.nodes"))
       .def("cusps", checked(+[](const Chain& c) -> py::object { return classify(c)["cusps"]; }), doc("Chain.cusps"))
       .def("report", checked(&report), doc("Chain.report"))
+      .def("boundaries", checked(&boundaries), py::arg("vary"), doc("Chain.boundaries"))
       .def("svg", checked(&svg), py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(), py::arg("labels") = "auto",
            py::arg("markers") = "auto", py::arg("style") = "curve", doc("Chain.svg"))
       .def("__repr__", checked(&chain_repr))

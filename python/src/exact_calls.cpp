@@ -5,6 +5,7 @@
 #include "sphtroch/exact/classification_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
+#include "sphtroch/census/interval/chain_family_events.hpp"
 #include "sphtroch/exact/chain_census_output.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
@@ -41,6 +42,12 @@ std::string chain_classification_json_text(const RotationChain& chain) {
 }
 
 std::string chain_classification_report_text(const RotationChain& chain) { return chain_census_text(chain, classify_chain(chain)); }
+
+std::string chain_boundaries_json_text(const RotationChain& chain, const std::string& vary) {
+  std::ostringstream out;
+  write_chain_events_json(out, chain, chain_family_events(chain, parse_chain_vary(vary, chain.size())));
+  return out.str();
+}
 
 std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options) {
   const ChainCensus c = classify_chain(chain);

@@ -57,6 +57,8 @@ std::string plot_svg_text(const TrainText& text, const GearTrain& train, bool li
 /// the certified field inside. Chain.report(): the text `sphtroch chain classify` prints.
 std::string chain_classification_json_text(const RotationChain& chain);
 std::string chain_classification_report_text(const RotationChain& chain);
+/// Chain.boundaries(vary): `sphtroch chain boundaries --vary VARY --json` (chain_family_events).
+std::string chain_boundaries_json_text(const RotationChain& chain, const std::string& vary);
 /// Chain.svg(): `sphtroch chain plot`'s SVG (chain_plot_svg of the chain_plot_sample_count samples).
 std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options);
 

@@ -1,14 +1,16 @@
-// sphtroch chain classify | nodes | plot — the certified census of a rotation chain's curve
+// sphtroch chain classify | nodes | plot | boundaries — the certified census of a rotation chain's curve
 // (exact/chain_classification.hpp): its nodes and cusps, as text or JSON
 // (exact/chain_census_output.hpp), or as the nodes table of `sphtroch nodes` (io/node_csv.hpp,
 // the t columns are the motor parameter s), or drawn on the sphere (chain_plot_svg). Exit 3 after
 // the output when it is not certified.
 // The census is classify_chain's (exact/chain_classification.hpp): for k = 2 the gear train's,
 // checked by the chain census; for rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s,
-// byte for byte.
+// byte for byte. boundaries: where the census changes as one twist or phase varies
+// (census/interval/chain_family_events.hpp); exit 3 after the report when not certified.
 #include "cli_common.hpp"
 #include "png_output.hpp"
 
+#include "sphtroch/census/interval/chain_family_events.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/chain_census_output.hpp"
 #include "sphtroch/io/chain_text.hpp"
@@ -77,6 +79,25 @@ void run_chain_plot(const ChainCensusOptions& o) {
   check_chain_certified(c);
 }
 
+struct ChainBoundariesOptions {
+  ChainText chain;
+  std::string vary, output;
+  bool json = false;
+};
+
+/// chain boundaries --vary NAME:LO:HI: where the census changes along one family.
+void run_chain_boundaries(const ChainBoundariesOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
+  const RotationChain chain = o.chain.chain();
+  const ChainEvents events = chain_family_events(chain, parse_chain_vary(o.vary, chain.size()));
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) write_chain_events_json(out, chain, events);
+    else write_chain_events_text(out, chain, events);
+  });
+  if (!events.certified)
+    throw UncertifiedResult{"chain boundaries: not certified: " + events.why + " (exit status 3; see docs/chains.md)"};
+}
+
 }  // namespace
 
 void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Action>>& actions) {
@@ -111,6 +132,21 @@ void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Act
                 "Exit 3, after the picture (its caption says NOT CERTIFIED), when the census is not certified.\n"
                 "Example: sphtroch chain plot --twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 -o wrist.svg");
     actions.emplace_back(cmd, [o] { run_chain_plot(*o); });
+  }
+  {
+    auto b = std::make_shared<ChainBoundariesOptions>();
+    CLI::App* cmd = chain.add_subcommand("boundaries", "where the chain's census changes as one twist or phase varies (--vary)");
+    add_chain_options(*cmd, b->chain);
+    cmd->add_option("--vary", b->vary, "NAME:LO:HI: the twist Ai or phase Pi varied over [LO, HI] radians (A2:0:pi)")->required();
+    cmd->add_flag("--json", b->json, "the events as JSON");
+    add_output_option(*cmd, b->output, "the events");
+    cmd->footer("Closed forms: P1 of any chain and P2 of a two-stage chain (no event: the curve turns about z);\n"
+                "A2 of a two-stage chain (the gear train's boundaries: pitch cones, poles, self-tangencies).\n"
+                "Every other family: one certified census per slab of the range, failed slabs halved to 1e-9:\n"
+                "cusp births, self-tangencies and triple points within the stated accuracy (docs/chains.md).\n"
+                "Exit 3, after the report, when not certified.\n"
+                "Example: sphtroch chain boundaries --twists pi/2,1 --rates 1,3 --vary A2:0:pi");
+    actions.emplace_back(cmd, [b] { run_chain_boundaries(*b); });
   }
 }
 

@@ -1,16 +1,15 @@
-// sphtroch chain trace | export | boundaries — a gear-coupled rotation chain (core/rotation_chain.hpp):
+// sphtroch chain trace | export — a gear-coupled rotation chain (core/rotation_chain.hpp):
 // its curve written by the same writer as `sphtroch trace` (io/trace_output.hpp): CSV t,x,y,z (t the motor
 // parameter s), .npy, DXF or OBJ. For k = 2 with rates 1,n and phases 0,theta_p the bytes are
 // those of `sphtroch trace --a2 A1 --a3 A2 --n n --phase theta_p` (ChainCurve computes the same
 // bits as TracerCurve, and the default sample count is the same). export writes a URDF
-// (io/urdf_chain.hpp); boundaries, the events along one twist or phase (map/chain_events.hpp).
+// (io/urdf_chain.hpp). classify, nodes, plot and boundaries need the census: chain_census_command.cpp.
 #include "cli_common.hpp"
 
 #include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/trace_output.hpp"
-#include "sphtroch/map/chain_events.hpp"
 
 #include <cmath>
 
@@ -77,23 +76,6 @@ void run_chain_export(const ChainExportOptions& o) {
 #endif
 }
 
-struct ChainBoundariesOptions {
-  ChainText chain;
-  std::string vary, output;
-  bool json = false;
-};
-
-/// chain boundaries --vary NAME:LO:HI: where the census changes along one family (map/chain_events.hpp).
-void run_chain_boundaries(const ChainBoundariesOptions& o) {
-  check_distinct_files({{o.output, "--output"}}, {{o.chain.urdf, "--urdf"}});
-  const RotationChain chain = o.chain.chain();
-  const ChainEvents events = chain_events(chain, parse_chain_vary(o.vary, chain.size()));
-  write_output(o.output, [&](std::ostream& out) {
-    if (o.json) write_chain_events_json(out, chain, events);
-    else write_chain_events_text(out, chain, events);
-  });
-}
-
 }  // namespace
 
 void add_chain_options(CLI::App& cmd, ChainText& chain) {
@@ -137,17 +119,6 @@ void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   exp->footer("joint_1.. are continuous joints about z, the first turning one the motor, the others <mimic> it\n"
               "(multiplier N_i / N_m); `chain classify --urdf FILE --from base_link --to tool` reads it back.");
   actions.emplace_back(exp, [e] { run_chain_export(*e); });
-  auto b = std::make_shared<ChainBoundariesOptions>();
-  CLI::App* bounds = chain->add_subcommand("boundaries", "where the chain's census changes as one twist or phase varies (--vary)");
-  add_chain_options(*bounds, b->chain);
-  bounds->add_option("--vary", b->vary, "NAME:LO:HI: the twist Ai or phase Pi varied over [LO, HI] radians (A2:0:pi)")->required();
-  bounds->add_flag("--json", b->json, "the events as JSON");
-  add_output_option(*bounds, b->output, "the events");
-  bounds->footer("Computed: P1 of any chain and P2 of a two-stage chain (no event: the curve turns about z);\n"
-                 "A2 of a two-stage chain (the gear train's boundaries: pitch cones, poles, self-tangencies).\n"
-                 "Other families are refused (exit 2; docs/chains.md).\n"
-                 "Example: sphtroch chain boundaries --twists pi/2,1 --rates 1,3 --vary A2:0:pi");
-  actions.emplace_back(bounds, [b] { run_chain_boundaries(*b); });
 #ifdef SPHTROCH_HAVE_ANALYSIS
   register_chain_census(*chain, actions);
 #endif

@@ -374,14 +374,105 @@ TEST_CASE("chain boundaries: along A2 of a two-stage chain, counts either side a
   const auto counts = [&](const std::string& chain) { return nlohmann::json::parse(run("chain classify " + chain + " --json", dir).out)["counts"]; };
   CHECK(counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 0,0.3,0") == counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 2.5,0.3,0"));
   CHECK(counts("--twists 1,2 --rates 2,5 --phases 0,0") == counts("--twists 1,2 --rates 2,5 --phases 0,1.7"));
-  // Families not computed, and bad ranges: exit 2 naming --vary.
-  for (const std::string& vary : {"A2:0:1", "A1:0:1", "P2:0:1", "X1:0:1", "A4:0:1", "A1:1:0", "A1:0:4", "A1:0", "P1:0:nan"}) {
-    const std::string chain = vary == "A1:0:1" || vary == "A1:1:0" || vary == "A1:0:4" || vary == "A1:0" ? "--twists 1,2 --rates 1,2" : "--twists 1,2,3 --rates 1,2,3";
+  // Bad ranges: exit 2 naming --vary.
+  for (const std::string& vary : std::vector<std::string>{"A2:0:1e-7", "P2:0:7", "X1:0:1", "A4:0:1", "A1:1:0", "A1:0:4", "A1:0", "P1:0:nan"}) {
+    const std::string chain = vary == "A1:1:0" || vary == "A1:0:4" || vary == "A1:0" ? "--twists 1,2 --rates 1,2" : "--twists 1,2,3 --rates 1,2,3";
     const Result r = run("chain boundaries " + chain + " --vary " + vary, dir, true);
     INFO(vary << " -> " << r.err);
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, "--vary"));
+  }
+}
+
+namespace {
+
+/// The events of `chain boundaries --twists TWISTS ... --json`, required to exit 0 and be certified.
+nlohmann::json checked_events(const std::string& twists, const std::string& rates, const std::string& vary, const TempDir& dir) {
+  const std::string chain = " --twists " + twists + " --rates " + rates;
+  const Result r = run("chain boundaries" + chain + " --vary " + vary + " --json", dir);
+  INFO(chain << " --vary " << vary << ": " << r.err);
+  REQUIRE(r.status == 0);
+  const auto events = nlohmann::json::parse(r.out);
+  CHECK(events["certified"] == true);
+  return events;
+}
+
+/// The twists with the varied one (between `before` and `after`, either may be empty) at x.
+std::string twists_with(const std::string& before, double x, const std::string& after) {
+  return before + (before.empty() ? "" : ",") + shortest_g(x) + (after.empty() ? "" : ",") + after;
+}
+
+/// chain classify's node count with the varied twist (between `before` and `after`) set to x.
+int nodes_at(const std::string& before, double x, const std::string& after, const std::string& rates, const TempDir& dir) {
+  const std::string twists = twists_with(before, x, after);
+  const auto c = nlohmann::json::parse(run("chain classify --twists " + twists + " --rates " + rates + " --json", dir).out);
+  INFO(twists << " " << rates);
+  CHECK(c["certified"] == true);
+  return c["counts"]["nodes"].get<int>();
+}
+
+}  // namespace
+
+TEST_CASE("chain boundaries (slab search): a gear train inside a longer chain has the train's events", "[cli][chain]") {
+  TempDir dir;
+  // Twists a2, A2, 0: the last joint turns the tool about itself, so the chain is the gear train
+  // a2, n = N2 / N1 with a3 = A2, but its A2 family goes through the slab search (three stages).
+  // Expected: `boundaries` (closed forms and the root function's scan, another method): the same
+  // events, kinds pitch_cone -> cusp, pole -> triple_point, values within the stated accuracy.
+  for (const auto& [a2, rates, n] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"1.1", "1,3,5", "3"}, {"0.8", "2,-3,1", "-3/2"}}) {
+    const auto chain = nlohmann::json::parse(run("chain boundaries --twists " + a2 + ",1,0 --rates " + rates + " --vary A2:0.05:3.1 --json", dir).out);
+    const auto train = nlohmann::json::parse(run("boundaries --n " + n + " --a2 " + a2 + " --json", dir).out);
+    INFO(a2 << " " << rates);
+    CHECK(chain["certified"] == true);
+    std::vector<nlohmann::json> expected;
+    for (const auto& e : train["events"])
+      if (e["a3"].get<double>() >= 0.05 && e["a3"].get<double>() <= 3.1) expected.push_back(e);
+    REQUIRE(chain["events"].size() == expected.size());
+    const double accuracy = chain["accuracy"].get<double>();
+    CHECK(accuracy < 1e-4);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      const auto& e = chain["events"][i];
+      const std::string kind = expected[i]["kind"];
+      CHECK(e["kind"] == (kind == "pitch_cone" ? "cusp" : kind == "pole" ? "triple_point" : "tangency"));
+      CHECK(std::fabs(e["value"].get<double>() - expected[i]["a3"].get<double>()) <= accuracy + 1e-9);
+      if (kind != "pole") CHECK(std::fabs(e["value"].get<double>() - expected[i]["a3"].get<double>()) <= 1e-9);
+      CHECK(e["nodes_below"] == expected[i]["nodes_below"]);
+      CHECK(e["nodes_above"] == expected[i]["nodes_above"]);
+    }
+  }
+}
+
+TEST_CASE("chain boundaries (slab search): three stages and A1 of two, counts either side are chain classify's", "[cli][chain]") {
+  TempDir dir;
+  // A3 of a three-stage chain (cusp births and self-tangencies), A1 of a two-stage one; each
+  // event away from the others: chain classify (the census at one value) just below and above.
+  struct Family {
+    std::string before, after, rates, vary;
+    double lo, hi;
+  };
+  for (const Family& f : {Family{"1.2,0.9", "", "1,2,-3", "A3:0.8:0.95", 0.8, 0.95}, Family{"", "1", "1,3", "A1:0.3:1.2", 0.3, 1.2},
+                          Family{"", "0.6", "2,-5", "A1:0.2:1.4", 0.2, 1.4}}) {
+    const auto events = checked_events(twists_with(f.before, 0.5 * (f.lo + f.hi), f.after), f.rates, f.vary, dir);
+    INFO(f.before << " | " << f.after << " " << f.rates << " " << f.vary);
+    CHECK(!events["events"].empty());
+    for (const auto& e : events["events"]) {
+      const double v = e["value"].get<double>();
+      bool isolated = e["kind"] != "triple_point";
+      for (const auto& other : events["events"])
+        if (&other != &e && std::fabs(other["value"].get<double>() - v) < 1e-3) isolated = false;
+      if (!isolated) continue;
+      CHECK(nodes_at(f.before, v - 1e-6, f.after, f.rates, dir) == e["nodes_below"].get<int>());
+      CHECK(nodes_at(f.before, v + 1e-6, f.after, f.rates, dir) == e["nodes_above"].get<int>());
+    }
+    // Between consecutive events the count is constant: the middles agree with the events' sides.
+    for (std::size_t i = 0; i + 1 < events["events"].size(); ++i) {
+      const double middle = 0.5 * (events["events"][i]["value"].get<double>() + events["events"][i + 1]["value"].get<double>());
+      CHECK(nodes_at(f.before, middle, f.after, f.rates, dir) == events["events"][i]["nodes_above"].get<int>());
+    }
+    CHECK(nodes_at(f.before, f.lo, f.after, f.rates, dir) == events["events"].front()["nodes_below"].get<int>());
+    CHECK(nodes_at(f.before, f.hi, f.after, f.rates, dir) == events["events"].back()["nodes_above"].get<int>());
   }
 }

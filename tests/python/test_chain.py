@@ -91,6 +91,24 @@ def test_classify_and_report_are_the_cli_and_nodes_are_self_intersections():
         assert np.linalg.norm(np.array(node["position"]) - points[0]) < 1e-12
 
 
+def test_boundaries_are_the_cli_and_refuse_bad_ranges():
+    # A3 of three stages: the slab search; its dict is the CLI's JSON, its counts either side
+    # of each event are classify()'s just below and above (the census at one value).
+    c = sphtroch.Chain(twists=[1.2, 0.9, 0.7], rates=[1, 2, -3])
+    got = c.boundaries("A3:0.8:0.94")
+    assert got == json.loads(run_cli("chain", "boundaries", "--twists", "1.2,0.9,0.7", "--rates", "1,2,-3",
+                                     "--vary", "A3:0.8:0.94", "--json"))
+    assert got["certified"] and [e["kind"] for e in got["events"]] == ["cusp", "tangency"]
+    for e in got["events"]:
+        for side, key in ((-1e-6, "nodes_below"), (1e-6, "nodes_above")):
+            counts = sphtroch.Chain(twists=[1.2, 0.9, e["value"] + side], rates=[1, 2, -3]).classify()["counts"]
+            assert counts["nodes"] == e[key]
+    for bad in ("A3:1:0", "A4:0:1", "A3:0", 3):
+        with pytest.raises(sphtroch.InvalidInput) as err:
+            c.boundaries(bad)
+        assert err.value.field == "vary"
+
+
 def test_svg_is_the_picture_chain_plot_draws(tmp_path):
     out = tmp_path / "w.svg"
     subprocess.run([EXE, "chain", "plot", "--twists", "pi/2,1.2,0.4", "--rates", "1,-2/3,5/3", "--phases", "0,0.3,-1",

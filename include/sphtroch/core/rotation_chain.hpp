@@ -81,6 +81,15 @@ struct ChainStage {
   double phase = 0;
 };
 
+/// One twist (A) or phase (P) of stage `stage` (1-based) varied over [lo, hi] (radians): a
+/// one-parameter family of chains (`chain boundaries --vary`, map/chain_events.hpp).
+struct ChainVary {
+  bool twist = true;
+  std::size_t stage = 1;
+  double lo = 0, hi = 0;
+  std::string name() const { return (twist ? "A" : "P") + std::to_string(stage); }
+};
+
 class RotationChain {
  public:
   static constexpr std::size_t kMaxStages = 16;

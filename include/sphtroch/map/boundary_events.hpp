@@ -77,12 +77,15 @@ constexpr std::size_t kMaxLocusSteps = 10000;  // ~2 ms per step and core for p,
 /// this in a3 (radians).
 constexpr double kLocusJump = 0.25;
 
-enum class BoundaryEventKind { pitch_cone, pole, tangency };
+/// cusp and triple_point: a rotation chain's events (census/interval/chain_family_events.hpp).
+enum class BoundaryEventKind { pitch_cone, pole, tangency, cusp, triple_point };
 inline const char* to_string(BoundaryEventKind k) {
   switch (k) {
     case BoundaryEventKind::pitch_cone: return "pitch_cone";
     case BoundaryEventKind::pole: return "pole";
     case BoundaryEventKind::tangency: return "tangency";
+    case BoundaryEventKind::cusp: return "cusp";
+    case BoundaryEventKind::triple_point: return "triple_point";
   }
   return "?";
 }

@@ -19,8 +19,9 @@
 //   the node points on either side as classify counts them. With a rate 0 the curve is a circle
 //   for every A2: no event.
 // Every other family (A1 of a two-stage chain; a twist, or a phase other than P1, of a longer
-// chain) is refused up front, InvalidInput("vary") naming what is computed: its events are the
-// certified solutions of square systems this version does not solve.
+// chain) has no closed form: chain_events refuses it (InvalidInput "vary"), and
+// chain_family_events (census/interval/chain_family_events.hpp, CGAL intervals) searches it;
+// that search uses chain_events for the families above, so every front end calls it.
 // Cost: boundary_set's (cost_bounds.hpp: refused beyond the census bound, InvalidInput "n",
 // reported as "rates").
 #pragma once
@@ -39,14 +40,6 @@
 #include <vector>
 
 namespace sphtroch {
-
-/// One twist (A) or phase (P) of stage `stage` (1-based) varied over [lo, hi] (radians).
-struct ChainVary {
-  bool twist = true;
-  std::size_t stage = 1;
-  double lo = 0, hi = 0;
-  std::string name() const { return (twist ? "A" : "P") + std::to_string(stage); }
-};
 
 /// "A2:LO:HI" or "P1:LO:HI" (LO, HI in parse_angle's forms: "pi/3", "0.5"), for a chain of
 /// `stages` stages: A in [0, pi], LO < HI, both finite. InvalidInput("vary") otherwise.
@@ -82,17 +75,27 @@ inline ChainVary parse_chain_vary(std::string_view text, std::size_t stages) {
 }
 
 /// The events along one family (see header), ascending; `note` says why there is none when the
-/// family has none by a symmetry.
+/// family has none by a symmetry, or that one census holds over the range.
 struct ChainEvents {
   ChainVary vary;
-  std::vector<BoundaryEvent> events;  // a3: the value of the varied twist
+  std::vector<BoundaryEvent> events;  // a3: the value of the varied twist or phase
   std::string note;
+  bool certified = true;              // every event of the range is listed (else `why`)
+  std::string why;
+  double accuracy = kEventAccuracy;   // |value - true value| <= accuracy, radians (the largest over the events)
+  double uncovered = 0;               // radians of the range no one census was certified over (chain_family_events)
 };
 
-/// See header. Throws InvalidInput("vary") for a family not computed, ("twists") for a first twist
-/// the map refuses (within 1e-6 of 0 or pi), ("rates") beyond the census bound.
+/// Whether chain_events computes this family (see header): P1; P2 and A2 of a two-stage chain.
+inline bool closed_form_family(const RotationChain& chain, const ChainVary& vary) {
+  return (!vary.twist && vary.stage == 1) || (chain.size() == 2 && vary.stage == 2);
+}
+
+/// See header. Throws InvalidInput("vary") for a family not computed here (chain_family_events
+/// of census/interval/chain_family_events.hpp computes every family), ("twists") for a first
+/// twist the map refuses (within 1e-6 of 0 or pi), ("rates") beyond the census bound.
 inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& vary) {
-  ChainEvents out{vary, {}, ""};
+  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0};
   const bool two = chain.size() == 2;
   if (!vary.twist && vary.stage == 1) {
     out.note = "changing P1 turns the whole curve about z";
@@ -102,9 +105,9 @@ inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& var
     out.note = "changing P2 of a two-stage chain turns the curve about z (s shifts by the change over N2)";
     return out;
   }
-  if (!(two && vary.twist && vary.stage == 2))
-    throw InvalidInput("vary", vary.name(), "the events of this family are not computed by this version",
-                       "P1 (any chain); A2 or P2 of a two-stage chain (docs/chains.md)");
+  if (!closed_form_family(chain, vary))
+    throw InvalidInput("vary", vary.name(), "this family has no closed form",
+                       "P1 (any chain); A2 or P2 of a two-stage chain; others: chain_family_events (census/interval/chain_family_events.hpp)");
   const ChainStage& first = chain.stages()[0];
   if (first.rate.is_zero() || chain.stages()[1].rate.is_zero()) {
     out.note = "with a rate 0 only one joint turns: the curve is a circle for every A2";
@@ -127,15 +130,16 @@ inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& var
 inline void write_chain_events_text(std::ostream& out, const RotationChain& chain, const ChainEvents& e) {
   out << "chain boundaries: " << chain.size() << " stages, rates " << chain.rates_text() << ", " << e.vary.name() << " in ["
       << number_text(e.vary.lo) << ", " << number_text(e.vary.hi) << "] rad\n";
-  out << "events, ascending (" << e.vary.name() << " to " << number_text(kEventAccuracy)
+  out << "events, ascending (" << e.vary.name() << " to " << number_text(e.accuracy)
       << " rad; node points as chain classify counts them, just below -> just above):\n";
   if (e.events.empty()) out << "  none" << (e.note.empty() ? "" : ": " + e.note) << "\n";
   for (const BoundaryEvent& b : e.events)
     out << "  " << e.vary.name() << " = " << number_text(b.a3) << "  " << to_string(b.kind) << "  nodes " << b.nodes_below << " -> "
         << b.nodes_above << "  (" << b.name << ")\n";
+  if (!e.certified) out << "NOT CERTIFIED: " << e.why << "\n";
 }
 
-/// {"chain": {"twists", "rates", "phases"}, "vary": {"name", "lo", "hi"}, "accuracy", "note",
+/// {"chain": {"twists", "rates", "phases"}, "vary": {"name", "lo", "hi"}, "accuracy", "uncovered", "certified", "why", "note",
 ///  "events": [{"value", "kind", "name", "nodes_below", "nodes_above", "cusps_below", "cusps_above"}]}.
 inline void write_chain_events_json(std::ostream& out, const RotationChain& chain, const ChainEvents& e) {
   const auto list = [&](auto value) {
@@ -147,7 +151,8 @@ inline void write_chain_events_json(std::ostream& out, const RotationChain& chai
       << ", \"rates\": " << list([](const ChainStage& s) { return "\"" + s.rate.str() + "\""; })
       << ", \"phases\": " << list([](const ChainStage& s) { return number_text(s.phase); }) << "}, \"vary\": {\"name\": \""
       << e.vary.name() << "\", \"lo\": " << number_text(e.vary.lo) << ", \"hi\": " << number_text(e.vary.hi)
-      << "}, \"accuracy\": " << number_text(kEventAccuracy) << ", \"note\": \"" << e.note << "\", \"events\": [";
+      << "}, \"accuracy\": " << number_text(e.accuracy) << ", \"uncovered\": " << number_text(e.uncovered) << ", \"certified\": " << (e.certified ? "true" : "false")
+      << ", \"why\": \"" << e.why << "\", \"note\": \"" << e.note << "\", \"events\": [";
   for (std::size_t i = 0; i < e.events.size(); ++i) {
     const BoundaryEvent& b = e.events[i];
     out << (i ? ", " : "") << "{\"value\": " << number_text(b.a3) << ", \"kind\": \"" << to_string(b.kind) << "\", \"name\": \""

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -94,8 +95,9 @@ struct NearPairs {
   const ChainEnclosure* enclosure;
   BoxEvaluation evaluate(const Box2& b) const {
     BoxEvaluation e;
-    // (P(t + h) - P(t)) / h lies in the hull of P' over [t, t + h].
-    const ChainJet span = enclosure->sharp_jet(Interval(b.u.inf(), b.u.sup() + b.v.sup()));
+    // (P(t + h) - P(t)) / h lies in the hull of P' over [t, t + h] (h < 0 too: Newton's iterates).
+    const Interval end = b.u + b.v;
+    const ChainJet span = enclosure->sharp_jet(Interval(std::min(b.u.inf(), end.inf()), std::max(b.u.sup(), end.sup())));
     if (excludes_zero(span.velocity)) {
       e.cleared = true;
       return e;
@@ -188,12 +190,17 @@ struct FoundRoot {
   double u = 0, v = 0;
   Box2 unique;
   bool tangency = false;  // two branches that touch (chain_tangency.hpp), not a transversal crossing
+  Box2 enclosure;         // holds the root (for every chain of a family's enclosure)
 };
 
 /// Search state shared by every system: the found roots, the work and the budget.
 struct Search {
   std::size_t boxes = 0, undecided = 0, max_boxes = kMaxChainBoxes;
   bool out_of_budget = false;
+  double min_width = kChainMinBoxWidth;       // undecided below this width (times max(1, |s|))
+  double inflate_width = kChainInflateWidth;   // Newton and inflation below this width (times max(1, |s|))
+  double root_spread = 0;                      // a family's: how far its roots may move (inflate's least rho / 8)
+  std::size_t max_undecided = SIZE_MAX;        // a family's: more undecided boxes end the search (out_of_budget)
 };
 
 /// A box K known to hold exactly one root, narrowed by further Krawczyk steps while they shrink
@@ -219,7 +226,7 @@ Box2 contracted(const System& sys, Box2 k) {
 /// down): a root certified there joins `known` (unless one already holds it). True when `known`
 /// grew.
 template <class System>
-bool inflate(const System& sys, const Box2& b, std::vector<FoundRoot>& known) {
+bool inflate(const System& sys, const Box2& b, std::vector<FoundRoot>& known, double spread = 0) {
   double u = mid(b.u), v = mid(b.v);
   for (int it = 0; it < 8; ++it) {
     const BoxEvaluation e = sys.evaluate(Box2{Interval(u), Interval(v)});
@@ -233,8 +240,9 @@ bool inflate(const System& sys, const Box2& b, std::vector<FoundRoot>& known) {
     v -= (-j10 * ga + j00 * gb) / det;
     if (!std::isfinite(u) || !std::isfinite(v)) return false;
   }
-  if (std::fabs(u - mid(b.u)) > 4 * b.width() || std::fabs(v - mid(b.v)) > 4 * b.width()) return false;
-  for (double rho = 8 * b.width(); rho > 1e-15 * std::max(1.0, std::fabs(u)); rho /= 16) {
+  const double reach = std::max(b.width(), spread);
+  if (std::fabs(u - mid(b.u)) > 4 * reach || std::fabs(v - mid(b.v)) > 4 * reach) return false;
+  for (double rho = 8 * reach; rho > 1e-15 * std::max(1.0, std::fabs(u)); rho /= 16) {
     const Box2 x{Interval(u - rho, u + rho), Interval(v - rho, v + rho)};
     const BoxEvaluation e = sys.evaluate(x);
     const std::optional<Chart> c = chart_of(e.first, e.second);
@@ -244,7 +252,7 @@ bool inflate(const System& sys, const Box2& b, std::vector<FoundRoot>& known) {
     for (const FoundRoot& r : known)
       if (inside(k.narrowed, r.unique)) return false;  // already known: nothing new
     const Box2 root = contracted(sys, k.narrowed);
-    known.push_back({mid(root.u), mid(root.v), x});
+    known.push_back({mid(root.u), mid(root.v), x, false, root});
     return true;
   }
   return false;
@@ -277,7 +285,7 @@ void search_box(const System& sys, const Box2& start, const Drop& drop, Search& 
       if (k.verdict == Verdict::none) { split = false; break; }
       if (k.verdict == Verdict::one) {
         const Box2 root = contracted(sys, k.narrowed);
-        local.push_back({mid(root.u), mid(root.v), b});
+        local.push_back({mid(root.u), mid(root.v), b, false, root});
         split = false;
         break;
       }
@@ -287,13 +295,17 @@ void search_box(const System& sys, const Box2& start, const Drop& drop, Search& 
     }
     if (!split) continue;
     const double scale = std::max({1.0, std::fabs(b.u.inf()), std::fabs(b.v.inf())});
-    if (b.width() < kChainInflateWidth * scale && inflate(sys, b, local)) {
+    if (b.width() < work.inflate_width * scale && inflate(sys, b, local, work.root_spread)) {
       stack.push_back(b);  // looked at again: inside the new region U, or split around it
       continue;
     }
-    if (b.width() < kChainMinBoxWidth * scale) {
+    if (b.width() < work.min_width * scale) {
       ++work.undecided;
       if (undecided) undecided->push_back(b);
+      if (work.undecided > work.max_undecided) {
+        work.out_of_budget = true;
+        return;
+      }
       continue;
     }
     const bool along_u = b.u.sup() - b.u.inf() >= b.v.sup() - b.v.inf();

@@ -77,6 +77,10 @@ constexpr double kChainCuspZone = 1e-2;
 constexpr std::size_t kMaxChainArcs = 400000;
 /// Two branch parameters closer than this (times max(1, T)) are the same branch.
 constexpr double kChainParamTolerance = 1e-9;
+/// A family's census (chain_census_over) gives up on a box narrower than this times the range.
+constexpr double kChainFamilyBoxWidth = 1e-2;
+/// A family's census stops (not certified) after this many undecided boxes.
+constexpr std::size_t kChainFamilyUndecided = 64;
 
 struct ChainCensus {
   std::vector<Node> nodes;  // params: s of each branch in [0, period), ascending; nodes by first param
@@ -116,32 +120,45 @@ inline double total_rate(const RotationChain& chain) {
 /// on the tool axis, and whether that curve is -P: Rz(a) Rx(0) Rz(b) = Rz(a + b);
 /// Rz(a) Rx(pi) Rz(b) Rx(A) = Rz(a - b + pi) Rx(pi - A) Rz(pi) (the last Rz(pi) into the next
 /// phase); a last Rx(0) z = z drops the last joint, a last Rx(pi) z = -z too and negates P.
-/// Throws InvalidInput ("twists") when nothing moves the tool axis.
+/// With `varied`, that parameter is followed through the rules as the widening's signs (a varied
+/// twist is never merged: its range is not just 0 or pi); a varied phase of a dropped last joint
+/// leaves the widening all 0 (it turns the tool about itself). Throws InvalidInput ("twists")
+/// when nothing moves the tool axis.
 struct ReducedChain {
   std::vector<ChainStage> stages;
   bool negated = false;
+  ChainWidening widening;  // signs per reduced stage (offset left 0)
 };
-inline ReducedChain reduced_chain(const RotationChain& chain) {
+inline ReducedChain reduced_chain(const RotationChain& chain, const ChainVary* varied = nullptr) {
   const double pi = Constants<double>::pi();
-  ReducedChain r{chain.stages(), false};
+  const std::size_t k = chain.size();
+  ReducedChain r{chain.stages(), false, {std::vector<int>(k, 0), std::vector<int>(k, 0), Interval(0.0)}};
+  if (varied) (varied->twist ? r.widening.twist_sign : r.widening.phase_sign)[varied->stage - 1] = 1;
+  std::vector<int>& ts = r.widening.twist_sign;
+  std::vector<int>& ps = r.widening.phase_sign;
+  const auto coaxial = [&](std::size_t i) { return ts[i] == 0 && (r.stages[i].twist == 0 || r.stages[i].twist == pi); };
   for (bool changed = true; changed;) {
     changed = false;
     std::vector<ChainStage>& st = r.stages;
-    while (!st.empty() && (st.back().twist == 0 || st.back().twist == pi)) {
+    while (!st.empty() && coaxial(st.size() - 1)) {
       r.negated ^= st.back().twist == pi;
-      st.pop_back();
+      st.pop_back(), ts.pop_back(), ps.pop_back();
       changed = true;
     }
     for (std::size_t i = 0; i + 1 < st.size() && !changed; ++i) {
-      if (st[i].twist != 0 && st[i].twist != pi) continue;
+      if (!coaxial(i)) continue;
       const ChainRate a = st[i].rate, b = st[i + 1].rate;
       const bool flip = st[i].twist == pi;
       const std::int64_t sign = flip ? -1 : 1;
       st[i].rate = ChainRate(a.p() * b.q() + sign * b.p() * a.q(), a.q() * b.q());
       st[i].phase = flip ? st[i].phase - st[i + 1].phase + pi : st[i].phase + st[i + 1].phase;
       st[i].twist = flip ? pi - st[i + 1].twist : st[i + 1].twist;
+      ps[i] += static_cast<int>(sign) * ps[i + 1];
+      ts[i] = static_cast<int>(sign) * ts[i + 1];
       if (flip && i + 2 < st.size()) st[i + 2].phase += pi;
       st.erase(st.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+      ts.erase(ts.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+      ps.erase(ps.begin() + static_cast<std::ptrdiff_t>(i) + 1);
       changed = true;
     }
   }
@@ -233,6 +250,7 @@ inline std::optional<CuspZone> near_cusp(const ChainCurve<double>& curve, const 
 struct BranchPair {
   double a = 0, b = 0;
   bool tangency = false;
+  Interval a_range{0.0}, b_range{0.0};  // the two parameters enclosed (over a family too)
 };
 
 struct Findings {
@@ -264,7 +282,7 @@ inline void search_window(const std::vector<Arc>& arcs, std::size_t i, const Cha
   std::vector<FoundRoot> roots;
   search_box(sys, Box2{a.s, Interval(0.0, end - a.s.inf())}, drop, f.work, roots);
   for (const FoundRoot& r : roots)
-    if (r.v > 0) f.pairs.push_back({r.u, r.u + r.v, false});
+    if (r.v > 0) f.pairs.push_back({r.u, r.u + r.v, false, r.enclosure.u, r.enclosure.u + r.enclosure.v});
 }
 
 
@@ -385,10 +403,21 @@ inline void resolve_undecided(const ChainEnclosure& e, std::vector<Box2> boxes, 
 }
 
 /// Runs the searches: every window not cleared by its hull, every meeting pair of far arcs.
+/// `family_width` > 0 (a family's census, its range's width): its roots move by about 16 times
+/// that over the range (at most 1e-3), so Newton and inflation start at 256 times it (at most
+/// 1e-2), inflation tries boxes from 8 times the spread, boxes narrower than kChainFamilyBoxWidth
+/// times the range are undecided (chain_tangency.hpp may still decide them), and more than
+/// kChainFamilyUndecided of them end the search (not certified).
 inline Findings search_chain(const RotationChain& chain, const std::vector<Arc>& arcs, const ChainEnclosure& e, double omega, double zone,
-                             std::size_t max_boxes, std::size_t& arc_pairs) {
+                             std::size_t max_boxes, std::size_t& arc_pairs, double family_width = 0) {
   Findings f;
   f.work.max_boxes = max_boxes;
+  if (family_width > 0) {
+    f.work.min_width = std::max(kChainMinBoxWidth, kChainFamilyBoxWidth * family_width);
+    f.work.inflate_width = std::clamp(256 * family_width, kChainInflateWidth, 1e-2);
+    f.work.root_spread = std::min(16 * family_width, 1e-3);
+    f.work.max_undecided = kChainFamilyUndecided;
+  }
   const ChainCurve<double> curve(chain);
   const double period = chain.period();
   for (std::size_t i = 0; i < arcs.size() && !f.work.out_of_budget; ++i)
@@ -408,21 +437,70 @@ inline Findings search_chain(const RotationChain& chain, const std::vector<Arc>&
     if (!undecided.empty()) resolve_undecided(e, undecided, local, f.work);
     roots.insert(roots.end(), local.begin(), local.end());
   }
-  for (const FoundRoot& r : roots) f.pairs.push_back({r.u, r.v, r.tangency});
+  for (const FoundRoot& r : roots) f.pairs.push_back({r.u, r.v, r.tangency, r.enclosure.u, r.enclosure.v});
   return f;
 }
 
 }  // namespace chain_census_detail
 
-/// The certified census of the chain's curve (see header). Throws InvalidInput ("rates") when the
-/// period needs more than kMaxChainArcs arcs, ("twists") when the tool axis does not move.
-inline ChainCensus chain_census(const RotationChain& chain, std::size_t max_boxes = kMaxChainBoxes) {
-  namespace d = chain_census_detail;
-  const d::ReducedChain reduced = d::reduced_chain(chain);
+namespace chain_census_detail {
+
+/// The arcs a census of this (reduced) chain cuts its period into: T Omega / kChainArcTurn.
+inline double arcs_needed(const RotationChain& reduced) { return std::ceil(reduced.period() * total_rate(reduced) / kChainArcTurn); }
+
+/// Whether two parameter ranges meet modulo T (padded by 1e-12 max(1, T) for the reduction).
+inline bool ranges_meet(const Interval& x, const Interval& y, double period) {
+  const double pad = 1e-12 * std::max(1.0, period);
+  const double shift = period * std::round((mid(x) - mid(y)) / period);  // y's copy nearest x
+  return y.inf() + shift - pad <= x.sup() && x.inf() <= y.sup() + shift + pad;
+}
+
+/// Whether two pairs' ranges meet branch by branch, in either order: the same pair.
+inline bool same_pair(const BranchPair& x, const BranchPair& y, double period) {
+  return (ranges_meet(x.a_range, y.a_range, period) && ranges_meet(x.b_range, y.b_range, period)) ||
+         (ranges_meet(x.a_range, y.b_range, period) && ranges_meet(x.b_range, y.a_range, period));
+}
+
+/// The pairs with each found twice kept once (a family's roots found from two boxes differ by
+/// their spread over the family, more than kChainParamTolerance).
+inline std::vector<BranchPair> distinct_pairs(std::vector<BranchPair> pairs, double period) {
+  std::vector<BranchPair> out;
+  for (const BranchPair& p : pairs)
+    if (std::none_of(out.begin(), out.end(), [&](const BranchPair& q) { return same_pair(p, q, period); })) out.push_back(p);
+  return out;
+}
+
+/// Whether two different pairs have one branch parameter range in common (mod T) but not both
+/// (both: the same pair found twice): over a family, two of its nodes may then meet (three
+/// branches through one point, a triple point). A sweep over the ranges reduced to [0, T).
+inline bool pairs_may_meet(const std::vector<BranchPair>& pairs, double period) {
+  struct Range {
+    double lo, hi;
+    std::size_t pair;
+  };
+  std::vector<Range> ranges;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    for (const Interval& r : {pairs[i].a_range, pairs[i].b_range}) {
+      const double shift = period * std::floor(r.inf() / period);
+      const double lo = r.inf() - shift, hi = r.sup() - shift;
+      ranges.push_back({lo, hi, i});
+      if (hi > period) ranges.push_back({lo - period, hi - period, i});
+    }
+  std::sort(ranges.begin(), ranges.end(), [](const Range& x, const Range& y) { return x.lo < y.lo; });
+  const double pad = 1e-12 * std::max(1.0, period);
+  for (std::size_t k = 0; k < ranges.size(); ++k)
+    for (std::size_t m = k + 1; m < ranges.size() && ranges[m].lo <= ranges[k].hi + pad; ++m)
+      if (ranges[m].pair != ranges[k].pair && !same_pair(pairs[ranges[m].pair], pairs[ranges[k].pair], period)) return true;
+  return false;
+}
+
+/// The census of a reduced chain (its stages at the family's middle) with the enclosures of the
+/// whole family `r.widening` (offset set): certified only when every box was decided for all of it.
+inline ChainCensus census_of_reduced(const RotationChain& chain, const ReducedChain& reduced, std::size_t max_boxes, bool family) {
   const RotationChain curve_chain(reduced.stages);
   ChainCensus out;
-  const double omega = d::total_rate(curve_chain), period = curve_chain.period();
-  const double arcs = std::ceil(period * omega / kChainArcTurn);
+  const double omega = total_rate(curve_chain), period = curve_chain.period();
+  const double arcs = arcs_needed(curve_chain);
   if (!(arcs <= static_cast<double>(kMaxChainArcs)))
     throw InvalidInput("rates", chain.rates_text(), "the census needs " + number_text(arcs) + " arcs (period times sum |N_i| / " +
                        number_text(kChainArcTurn) + ")", "chains whose period 2 pi L / g times sum |N_i| is at most " +
@@ -430,25 +508,78 @@ inline ChainCensus chain_census(const RotationChain& chain, std::size_t max_boxe
   out.period = period;
   out.cusp_zone = kChainCuspZone / omega;
   out.arcs = std::max<std::size_t>(3, static_cast<std::size_t>(arcs));
-  d::Findings f;
+  Findings f;
   {
     const RoundingGuard upward;
-    const ChainEnclosure e(curve_chain);
-    const std::vector<d::Arc> arc_list = d::chain_arcs(e, period, out.arcs);
-    f = d::search_chain(curve_chain, arc_list, e, omega, out.cusp_zone, max_boxes, out.arc_pairs);
+    const ChainEnclosure e(curve_chain, reduced.widening);
+    const std::vector<Arc> arc_list = chain_arcs(e, period, out.arcs);
+    const double range = reduced.widening.offset.sup() - reduced.widening.offset.inf();
+    f = search_chain(curve_chain, arc_list, e, omega, out.cusp_zone, max_boxes, out.arc_pairs, family ? range : 0.0);
   }
   out.boxes = f.work.boxes;
   out.undecided = f.work.undecided;
   const ChainCurve<double> curve(curve_chain);
-  std::vector<d::BranchPair> pairs;
-  for (const d::BranchPair& p : f.pairs)
-    if (!d::inside_zone(std::min(p.a, p.b), std::max(p.a, p.b), f.cusps, out.cusp_zone, period)) pairs.push_back(p);
-  out.nodes = d::assemble_nodes(curve, pairs, period, reduced.negated, out.why);
-  out.cusps = d::assemble_cusps(curve, f.cusps, period, out.cusp_zone, reduced.negated);
-  if (f.work.out_of_budget) out.why = "the search stopped at its bound of " + std::to_string(max_boxes) + " boxes";
+  std::vector<BranchPair> pairs;
+  for (const BranchPair& p : f.pairs)
+    if (!inside_zone(std::min(p.a, p.b), std::max(p.a, p.b), f.cusps, out.cusp_zone, period)) pairs.push_back(p);
+  if (family) pairs = distinct_pairs(std::move(pairs), period);
+  out.nodes = assemble_nodes(curve, pairs, period, reduced.negated, out.why);
+  out.cusps = assemble_cusps(curve, f.cusps, period, out.cusp_zone, reduced.negated);
+  if (family && f.work.out_of_budget && f.work.boxes <= max_boxes) out.why = "boxes stayed undecided over the range";
+  else if (f.work.out_of_budget) out.why = "the search stopped at its bound of " + std::to_string(max_boxes) + " boxes";
   else if (f.work.undecided > 0) out.why = std::to_string(f.work.undecided) + " boxes stayed undecided at the resolution of double (two branches touching?)";
+  if (family && out.why.empty() && std::any_of(out.nodes.begin(), out.nodes.end(), [](const Node& n) { return n.tangency_pairs > 0; }))
+    out.why = "two branches may touch within the range";
+  if (family && out.why.empty() && pairs_may_meet(pairs, period)) out.why = "two nodes may meet within the range (a triple point)";
   out.certified = out.why.empty();
   return out;
+}
+
+}  // namespace chain_census_detail
+
+/// The certified census of the chain's curve (see header). Throws InvalidInput ("rates") when the
+/// period needs more than kMaxChainArcs arcs, ("twists") when the tool axis does not move.
+inline ChainCensus chain_census(const RotationChain& chain, std::size_t max_boxes = kMaxChainBoxes) {
+  return chain_census_detail::census_of_reduced(chain, chain_census_detail::reduced_chain(chain), max_boxes, false);
+}
+
+/// The arcs chain_census cuts the chain's period into (its cost grows with them).
+inline double chain_census_arcs(const RotationChain& chain) {
+  return chain_census_detail::arcs_needed(RotationChain(chain_census_detail::reduced_chain(chain).stages));
+}
+
+/// Whether varying `vary`'s twist or phase (at the chain's value) changes the curve: false for
+/// the phase of a last joint on the tool axis (after merging coaxial joints, reduced_chain).
+inline bool varies_curve(const RotationChain& chain, const ChainVary& vary) {
+  const ChainWidening w = chain_census_detail::reduced_chain(chain, &vary).widening;
+  const auto any = [](const std::vector<int>& v) { return std::any_of(v.begin(), v.end(), [](int x) { return x != 0; }); };
+  return any(w.twist_sign) || any(w.phase_sign);
+}
+
+/// The chain with the varied parameter set to `value` (a twist clamped to [0, pi]).
+inline RotationChain chain_at(const RotationChain& chain, const ChainVary& vary, double value) {
+  std::vector<ChainStage> stages = chain.stages();
+  ChainStage& s = stages[vary.stage - 1];
+  (vary.twist ? s.twist : s.phase) = vary.twist ? std::clamp(value, 0.0, Constants<double>::pi()) : value;
+  return RotationChain(stages);
+}
+
+/// One census for the whole family `range` (the chain's varied parameter over [range.lo,
+/// range.hi]), or not certified: when `certified`, every chain of the range has these nodes (by
+/// branch count, all transversal crossings) and cusps; the parameters reported are the middle
+/// chain's. Boxes narrower than kChainFamilyBoxWidth times the range are undecided, and more than
+/// kChainFamilyUndecided of them end the search.
+/// REQUIRES range.lo < range.hi, a twist range inside (0, pi).
+inline ChainCensus chain_census_over(const RotationChain& chain, const ChainVary& range, std::size_t max_boxes = kMaxChainBoxes) {
+  namespace d = chain_census_detail;
+  const double middle = 0.5 * (range.lo + range.hi);
+  const RotationChain at_middle = chain_at(chain, range, middle);
+  d::ReducedChain reduced = d::reduced_chain(at_middle, &range);
+  {
+    const RoundingGuard upward;
+    reduced.widening.offset = Interval((Interval(range.lo) - Interval(middle)).inf(), (Interval(range.hi) - Interval(middle)).sup());
+  }
+  return d::census_of_reduced(at_middle, reduced, max_boxes, true);
 }
 
 }  // namespace sphtroch

@@ -60,14 +60,25 @@ struct ChainJet {
   IntervalVec3 point, velocity, acceleration;
 };
 
+/// A one-parameter family around a chain: stage i's twist is twist_i + twist_sign[i] d and its
+/// phase phase_i + phase_sign[i] d, for every d in `offset` (signs -1, 0 or 1; empty: all 0).
+struct ChainWidening {
+  std::vector<int> twist_sign, phase_sign;
+  Interval offset{0.0};
+};
+
 class ChainEnclosure {
  public:
-  /// REQUIRES the rounding mode upward (a RoundingGuard held).
-  explicit ChainEnclosure(const RotationChain& chain) {
-    for (const ChainStage& s : chain.stages()) {
+  /// REQUIRES the rounding mode upward (a RoundingGuard held). With `widening`, the enclosures
+  /// hold for every chain of that family (contract above, for each d in the offset).
+  explicit ChainEnclosure(const RotationChain& chain, const ChainWidening& widening = {}) {
+    const auto sign = [](const std::vector<int>& v, std::size_t i) { return i < v.size() ? v[i] : 0; };
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      const ChainStage& s = chain.stages()[i];
+      const Interval twist = Interval(s.twist) + Interval(double(sign(widening.twist_sign, i))) * widening.offset;
       rate_.push_back(Interval(static_cast<double>(s.rate.p())) / Interval(static_cast<double>(s.rate.q())));
-      phase_.push_back(Interval(s.phase));
-      twist_.push_back(interval_sincos(Interval(s.twist)));
+      phase_.push_back(Interval(s.phase) + Interval(double(sign(widening.phase_sign, i))) * widening.offset);
+      twist_.push_back(interval_sincos(twist));
     }
   }
 

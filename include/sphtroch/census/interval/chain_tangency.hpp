@@ -113,7 +113,7 @@ inline std::optional<FoundRoot> certified_crossing(const ChainEnclosure& e, doub
     const KrawczykResult k = krawczyk(sys, x, ev, *c);
     if (k.verdict != Verdict::one) continue;
     const Box2 root = contracted(sys, k.narrowed);
-    return FoundRoot{mid(root.u), mid(root.v), x, false};
+    return FoundRoot{mid(root.u), mid(root.v), x, false, root};
   }
   return std::nullopt;
 }
@@ -177,7 +177,7 @@ inline std::optional<TangencyVerdict> resolve_tangency(const ChainEnclosure& e, 
   }
   const double t_m = partner_of(s_m);
   if (std::isnan(t_m)) return std::nullopt;
-  verdict.pairs.push_back(FoundRoot{s_m, t_m, region, true});  // they touch within rounding
+  verdict.pairs.push_back(FoundRoot{s_m, t_m, region, true, region});  // they touch within rounding
   return verdict;
 }
 
