@@ -445,7 +445,7 @@ TEST_CASE("chain boundaries (slab search): a gear train inside a longer chain ha
   }
 }
 
-TEST_CASE("chain boundaries (slab search): three stages and A1 of two, counts either side are chain classify's", "[cli][chain]") {
+TEST_CASE("chain boundaries (slab search): three stages and A1 of two with counts either side as chain classify's", "[cli][chain]") {
   TempDir dir;
   // A3 of a three-stage chain (cusp births and self-tangencies), A1 of a two-stage one; each
   // event away from the others: chain classify (the census at one value) just below and above.
