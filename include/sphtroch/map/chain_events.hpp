@@ -84,6 +84,9 @@ struct ChainEvents {
   std::string why;
   double accuracy = kEventAccuracy;   // |value - true value| <= accuracy, radians (the largest over the events)
   double uncovered = 0;               // radians of the range no one census was certified over (chain_family_events)
+  std::vector<double> accuracies;     // per event when known (chain_family_events), else `accuracy` for each
+
+  double accuracy_of(std::size_t i) const { return i < accuracies.size() ? accuracies[i] : accuracy; }
 };
 
 /// Whether chain_events computes this family (see header): P1; P2 and A2 of a two-stage chain.
@@ -95,7 +98,7 @@ inline bool closed_form_family(const RotationChain& chain, const ChainVary& vary
 /// of census/interval/chain_family_events.hpp computes every family), ("twists") for a first
 /// twist the map refuses (within 1e-6 of 0 or pi), ("rates") beyond the census bound.
 inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& vary) {
-  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0};
+  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}};
   const bool two = chain.size() == 2;
   if (!vary.twist && vary.stage == 1) {
     out.note = "changing P1 turns the whole curve about z";
@@ -140,7 +143,7 @@ inline void write_chain_events_text(std::ostream& out, const RotationChain& chai
 }
 
 /// {"chain": {"twists", "rates", "phases"}, "vary": {"name", "lo", "hi"}, "accuracy", "uncovered", "certified", "why", "note",
-///  "events": [{"value", "kind", "name", "nodes_below", "nodes_above", "cusps_below", "cusps_above"}]}.
+///  "events": [{"value", "kind", "name", "nodes_below", "nodes_above", "cusps_below", "cusps_above", "accuracy"}]}.
 inline void write_chain_events_json(std::ostream& out, const RotationChain& chain, const ChainEvents& e) {
   const auto list = [&](auto value) {
     std::string t;
@@ -157,7 +160,8 @@ inline void write_chain_events_json(std::ostream& out, const RotationChain& chai
     const BoundaryEvent& b = e.events[i];
     out << (i ? ", " : "") << "{\"value\": " << number_text(b.a3) << ", \"kind\": \"" << to_string(b.kind) << "\", \"name\": \""
         << b.name << "\", \"nodes_below\": " << b.nodes_below << ", \"nodes_above\": " << b.nodes_above
-        << ", \"cusps_below\": " << b.cusps_below << ", \"cusps_above\": " << b.cusps_above << "}";
+        << ", \"cusps_below\": " << b.cusps_below << ", \"cusps_above\": " << b.cusps_above << ", \"accuracy\": " << number_text(e.accuracy_of(i))
+        << "}";
   }
   out << "]}\n";
 }

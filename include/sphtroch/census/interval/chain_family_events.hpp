@@ -292,7 +292,7 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
 inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVary& vary) {
   namespace d = chain_family_detail;
   if (closed_form_family(chain, vary)) return chain_events(chain, vary);
-  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0};
+  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}};
   ChainVary range = vary;
   if (vary.twist) {
     range.lo = std::max(vary.lo, kChainTwistMargin);
@@ -323,7 +323,8 @@ inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVa
     for (const d::Change& c : d::merge_bands(d::changes_of(chain, range, b, out.why)))
       if (const std::optional<BoundaryEvent> e = d::event_of(chain, range, c)) {
         out.events.push_back(*e);
-        accuracy = std::max(accuracy, 0.5 * (c.hi - c.lo));
+        out.accuracies.push_back(0.5 * (c.hi - c.lo));
+        accuracy = std::max(accuracy, out.accuracies.back());
       }
   }
   if (exhausted) out.why = "the search stopped at its bound of " + std::to_string(budget) + " slab censuses";
