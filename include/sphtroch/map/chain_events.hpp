@@ -32,6 +32,7 @@
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <ostream>
@@ -57,7 +58,9 @@ inline ChainVary parse_chain_vary(std::string_view text, std::size_t stages) {
   const std::string shown(text);
   if (parts.size() != 3 || parts[0].size() < 2 || (parts[0][0] != 'A' && parts[0][0] != 'P'))
     throw InvalidInput("vary", shown, "not NAME:LO:HI", valid);
-  const std::optional<std::int64_t> stage = detail::strict_int(parts[0].substr(1));
+  const std::string digits = parts[0].substr(1);
+  const bool plain = digits[0] != '0' && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const std::optional<std::int64_t> stage = plain ? detail::strict_int(digits) : std::nullopt;
   if (!stage || *stage < 1 || static_cast<std::size_t>(*stage) > stages) throw InvalidInput("vary", shown, "no such stage", valid);
   ChainVary v;
   v.twist = parts[0][0] == 'A';

@@ -27,18 +27,20 @@
 //     the cusps differ, or the value shows one more); the same branch pairs on both sides (or a
 //     node of three branches at the value): a triple point, when the census at the middle shows
 //     three nodes within kChainTripleDistance times the bracket's width (else the bracket is no
-//     event: the censuses at its ends and at the probes agree and nothing is about to meet);
+//     event: the censuses at its ends and at the probes agree and nothing is about to meet; a
+//     bracket wider than kChainQuietWidth is then not certified: events that cancel could hide);
 //     otherwise a self-tangency.
 // Certified: outside the brackets the census is constant (ChainEvents::uncovered is the
 // brackets' total width); the counts either side of each event are certified censuses. Known
 // limit: inside a bracket, changes closer than one bisection step that cancel are not seen.
 // Twist ranges are searched within [kChainTwistMargin, pi - kChainTwistMargin]: at 0 and pi two
 // joints become coaxial and the chain is another one (its period and census jump).
-// Phase ranges are at most 2 pi long (the family repeats; InvalidInput "vary" beyond).
-// Cost: one census per slab (about 1 to 3 ms for three stages of rates of height <= 3) plus ~40
-// per bracket; at most kMaxFamilySlabs slabs, fewer for chains of more than kFamilyArcs arcs
-// (then not certified, `why` says so); chains of more than kMaxFamilyArcs arcs are refused up
-// front (InvalidInput "rates").
+// Phase ranges lie within [-4 pi, 4 pi] and are at most 2 pi long (the family repeats every 2 pi;
+// InvalidInput "vary" beyond). Widths are absolute (twists lie in [0, pi]).
+// Cost: one census per slab (about 1 to 3 ms for three stages of rates of height <= 3), each
+// stopped at kFamilyBoxesPerArc boxes per arc, plus ~40 censuses per bracket; at most
+// kFamilyWork / (arcs x stages) slabs, at most kMaxFamilySlabs (then not certified, `why` says
+// so); chains allowing fewer than kMinFamilySlabs are refused up front (InvalidInput "rates").
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_INTERVAL)
@@ -58,25 +60,34 @@
 
 namespace sphtroch {
 
-/// Slabs are halved down to this width (times max(1, |value|), radians): the brackets' least width.
+/// Slabs are halved down to this width (radians): the brackets' least width.
 constexpr double kChainEventWidth = 1e-5;
-/// Bisection inside a bracket stops at this width (times max(1, |value|), radians).
+/// Bisection inside a bracket stops at this width (radians; values are within 4 pi of 0).
 constexpr double kChainChangeWidth = 1e-12;
 /// A bracket with the same counts on both sides is probed at this many values first.
 constexpr std::size_t kChainBracketProbes = 8;
-/// Two changes closer than this (times max(1, |value|)) around a cusp are one cusp birth.
+/// Two changes closer than this (radians) around a cusp are one cusp birth.
 constexpr double kChainBandWidth = 1e-5;
 /// A bracket with the same counts on both sides is a triple point when three nodes of the census
 /// at its middle lie within this times its width (at least 1e-6) of each other.
-constexpr double kChainTripleDistance = 100;
+constexpr double kChainTripleDistance = 10;
+/// A bracket with the same counts on both sides, no change at its probes and no triple point is
+/// no event when at most this wide (radians); wider, the search is not certified (events that
+/// cancel could hide there).
+constexpr double kChainQuietWidth = 1e-4;
+/// Phase ranges lie within [-kChainPhaseBound, kChainPhaseBound] (radians).
+constexpr double kChainPhaseBound = 4 * 3.141592653589793;
 /// The widest slab is the range over this.
 constexpr std::size_t kChainFirstSlabs = 16;
-/// The most slab censuses one search computes (then not certified); fewer for a chain whose
-/// census cuts more than kFamilyArcs arcs (the budget is kMaxFamilySlabs kFamilyArcs / arcs).
+/// The work one search may do, in arcs times stages summed over its slab censuses (about 0.5 us
+/// each: 3 stages of 1257 arcs take ~2 ms a census); the slab budget is this over one census's.
+constexpr double kFamilyWork = 2.5e7;
+/// At most this many slab censuses, and chains allowing fewer than kMinFamilySlabs are refused
+/// (InvalidInput "rates").
 constexpr std::size_t kMaxFamilySlabs = 20000;
-constexpr double kFamilyArcs = 2000;
-/// Chains whose census needs more arcs than this are refused (InvalidInput "rates").
-constexpr double kMaxFamilyArcs = 40000;
+constexpr std::size_t kMinFamilySlabs = 1000;
+/// A slab census examines at most this many boxes per arc (then it fails: the slab is halved).
+constexpr std::size_t kFamilyBoxesPerArc = 50;
 /// Twist ranges are searched this far inside [0, pi] (see header).
 constexpr double kChainTwistMargin = 1e-6;
 
@@ -110,7 +121,8 @@ struct Slab {
 /// width. A sweep: a certified slab is kept and the next one tried twice as wide, a failed one
 /// is tried again half as wide (down to the event width, where it is kept as failed).
 /// `exhausted` when `budget` censuses were not enough.
-inline std::vector<Slab> search_slabs(const RotationChain& chain, const ChainVary& vary, std::size_t budget, bool& exhausted) {
+inline std::vector<Slab> search_slabs(const RotationChain& chain, const ChainVary& vary, std::size_t budget, std::size_t max_boxes,
+                                      bool& exhausted) {
   std::vector<Slab> done;
   const double widest = (vary.hi - vary.lo) / static_cast<double>(kChainFirstSlabs);
   double lo = vary.lo, width = widest;
@@ -119,12 +131,12 @@ inline std::vector<Slab> search_slabs(const RotationChain& chain, const ChainVar
       exhausted = true;
       return done;
     }
-    const double least = kChainEventWidth * std::max(1.0, std::fabs(lo));
+    const double least = kChainEventWidth;
     width = std::min(std::max(width, least), std::max(widest, least));
     const double hi = vary.hi - lo <= 1.5 * width ? vary.hi : lo + width;
     ChainVary range = vary;
     range.lo = lo, range.hi = hi;
-    const ChainCensus c = chain_census_over(chain, range);
+    const ChainCensus c = chain_census_over(chain, range, max_boxes);
     if (!c.certified && width > least) {
       width *= 0.5;
       continue;
@@ -181,7 +193,7 @@ inline void bisect_changes(const RotationChain& chain, const ChainVary& vary, do
                            const CensusCounts& ch, std::vector<Change>& out, int depth = 0) {
   while (true) {
     const double m = 0.5 * (lo + hi);
-    const bool narrow = !(lo < m && m < hi) || hi - lo <= kChainChangeWidth * std::max(1.0, std::fabs(m)) || depth > 200;
+    const bool narrow = !(lo < m && m < hi) || hi - lo <= kChainChangeWidth || depth > 200;
     const std::optional<CensusCounts> cm = narrow ? std::nullopt : fixed_counts(chain, vary, m);
     if (!cm) {
       out.push_back({lo, hi, cl, ch});
@@ -232,7 +244,7 @@ inline std::vector<Change> merge_bands(const std::vector<Change>& changes) {
   for (const Change& c : changes) {
     if (!out.empty()) {
       Change& last = out.back();
-      const bool band = c.lo - last.hi <= kChainBandWidth * std::max(1.0, std::fabs(c.lo)) && last.above == c.below &&
+      const bool band = c.lo - last.hi <= kChainBandWidth && last.above == c.below &&
                         last.above.cusps > last.below.cusps;
       if (band) {
         last.hi = c.hi, last.above = c.above;
@@ -260,8 +272,9 @@ inline bool near_triple(const ChainCensus& c, double distance) {
 }
 
 /// The event of a change: its value (the middle), kind (header) and counts. None for a bracket
-/// with the same counts on both sides whose middle shows no near triple point (no change seen).
-inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const ChainVary& vary, const Change& c) {
+/// with the same counts on both sides whose middle shows no near triple point (no change seen;
+/// `why` set when it is wider than kChainQuietWidth).
+inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const ChainVary& vary, const Change& c, std::string& why) {
   BoundaryEvent e;
   e.a3 = 0.5 * (c.lo + c.hi);
   e.a3_precise = e.a3;
@@ -273,7 +286,12 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
     e.kind = BoundaryEventKind::cusp;
     e.name = "cusp birth (P parallel to omega)";
   } else if (c.below.pairs == c.above.pairs || (at.certified && there.multiple)) {
-    if (c.below == c.above && !(at.certified && near_triple(at, std::max(1e-6, kChainTripleDistance * (c.hi - c.lo))))) return std::nullopt;
+    if (c.below == c.above && !(at.certified && near_triple(at, std::max(1e-6, kChainTripleDistance * (c.hi - c.lo))))) {
+      if (c.hi - c.lo > kChainQuietWidth)
+        why = "no census holds over a slab of [" + number_text(c.lo) + ", " + number_text(c.hi) + "] and none changes at " +
+              std::to_string(kChainBracketProbes + 1) + " values in it: events that cancel could hide there";
+      return std::nullopt;
+    }
     e.kind = BoundaryEventKind::triple_point;
     e.name = "three or more branches through one point";
   } else {
@@ -301,27 +319,30 @@ inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVa
       throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi), "the range lies within " + number_text(kChainTwistMargin) + " of 0 or pi",
                          "a twist range reaching into [" + number_text(kChainTwistMargin) + ", pi - " + number_text(kChainTwistMargin) + "]");
   }
-  if (!vary.twist && !(vary.hi - vary.lo <= 2 * Constants<double>::pi()))
-    throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi), "a phase range longer than 2 pi (the family repeats)",
-                       "a phase range HI - LO <= 2 pi");
+  if (!vary.twist && !(vary.hi - vary.lo <= 2 * Constants<double>::pi() && vary.lo >= -kChainPhaseBound && vary.hi <= kChainPhaseBound))
+    throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi),
+                       "a phase range longer than 2 pi or beyond 4 pi (the family repeats every 2 pi)",
+                       "a phase range within [-4 pi, 4 pi], HI - LO <= 2 pi");
   const ChainVary middle{vary.twist, vary.stage, 0.5 * (range.lo + range.hi), 0.5 * (range.lo + range.hi)};
   if (!varies_curve(chain_at(chain, vary, middle.lo), middle)) {
     out.note = vary.name() + " turns the tool axis about itself: the curve does not change";
     return out;
   }
   const double arcs = chain_census_arcs(chain_at(chain, vary, middle.lo));
-  if (!(arcs <= kMaxFamilyArcs))
-    throw InvalidInput("rates", chain.rates_text(), "the family search needs censuses of " + number_text(arcs) + " arcs",
-                       "chains whose period 2 pi L / g times sum |N_i| is at most " + number_text(kMaxFamilyArcs * kChainArcTurn) +
-                           " (chain classify takes up to " + number_text(kMaxChainArcs * kChainArcTurn) + ")");
-  const auto budget = static_cast<std::size_t>(static_cast<double>(kMaxFamilySlabs) * std::min(1.0, kFamilyArcs / arcs));
+  const double slabs_allowed = std::min(static_cast<double>(kMaxFamilySlabs), kFamilyWork / (arcs * static_cast<double>(chain.size())));
+  if (!(slabs_allowed >= static_cast<double>(kMinFamilySlabs)))
+    throw InvalidInput("rates", chain.rates_text(), "the family search needs censuses of " + number_text(arcs) + " arcs of " + std::to_string(chain.size()) + " stages",
+                       "chains whose arcs (period 2 pi L / g times sum |N_i| / " + number_text(kChainArcTurn) + ") times stages are at most " +
+                           number_text(kFamilyWork / static_cast<double>(kMinFamilySlabs)));
+  const auto budget = static_cast<std::size_t>(slabs_allowed);
+  const std::size_t max_boxes = std::max<std::size_t>(2000, kFamilyBoxesPerArc * static_cast<std::size_t>(arcs));
   bool exhausted = false;
-  const std::vector<d::Slab> slabs = d::search_slabs(chain, range, budget, exhausted);
+  const std::vector<d::Slab> slabs = d::search_slabs(chain, range, budget, max_boxes, exhausted);
   double accuracy = 0, uncovered = 0;
   for (const d::Bracket& b : d::brackets_of(slabs, out.why)) {
     uncovered += b.hi - b.lo;
     for (const d::Change& c : d::merge_bands(d::changes_of(chain, range, b, out.why)))
-      if (const std::optional<BoundaryEvent> e = d::event_of(chain, range, c)) {
+      if (const std::optional<BoundaryEvent> e = d::event_of(chain, range, c, out.why)) {
         out.events.push_back(*e);
         out.accuracies.push_back(0.5 * (c.hi - c.lo));
         accuracy = std::max(accuracy, out.accuracies.back());
