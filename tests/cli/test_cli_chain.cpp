@@ -375,7 +375,7 @@ TEST_CASE("chain boundaries: along A2 of a two-stage chain, counts either side a
   CHECK(counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 0,0.3,0") == counts("--twists 1,2,0.5 --rates 1,2/3,-1 --phases 2.5,0.3,0"));
   CHECK(counts("--twists 1,2 --rates 2,5 --phases 0,0") == counts("--twists 1,2 --rates 2,5 --phases 0,1.7"));
   // Bad ranges: exit 2 naming --vary.
-  for (const std::string& vary : std::vector<std::string>{"A2:0:1e-7", "P2:0:7", "X1:0:1", "A4:0:1", "A1:1:0", "A1:0:4", "A1:0", "P1:0:nan"}) {
+  for (const std::string& vary : std::vector<std::string>{"A2:0:1e-7", "P2:0:7", "P2:1000:1006", "A+2:0:1", "A02:0:1", "X1:0:1", "A4:0:1", "A1:1:0", "A1:0:4", "A1:0", "P1:0:nan"}) {
     const std::string chain = vary == "A1:1:0" || vary == "A1:0:4" || vary == "A1:0" ? "--twists 1,2 --rates 1,2" : "--twists 1,2,3 --rates 1,2,3";
     const Result r = run("chain boundaries " + chain + " --vary " + vary, dir, true);
     INFO(vary << " -> " << r.err);
@@ -477,4 +477,19 @@ TEST_CASE("chain boundaries (slab search): three stages and A1 of two with count
     CHECK(nodes_at(f.before, f.lo, f.after, f.rates, dir) == events["events"].front()["nodes_below"].get<int>());
     CHECK(nodes_at(f.before, f.hi, f.after, f.rates, dir) == events["events"].back()["nodes_above"].get<int>());
   }
+}
+
+TEST_CASE("chain boundaries (slab search): what it cannot certify exits 3 and what it cannot afford is refused", "[cli][chain]") {
+  TempDir dir;
+  // A range ending inside the band below a cusp birth (A3 ~ 1.00182) where no census holds over
+  // a slab and none changes: not an event, and not certified either (exit 3 after the report).
+  const Result quiet = run("chain boundaries --twists 1.2,0.9,0.7 --rates 1,2,-3 --vary A3:0.95:1", dir, true);
+  CHECK(quiet.status == 3);
+  CHECK(contains(quiet.out, "NOT CERTIFIED"));
+  CHECK(count_lines(quiet.err) == 1);
+  // A chain whose census cuts 38956 arcs: refused up front, naming --rates.
+  const Result costly = run("chain boundaries --twists 1,2 --rates 1,97/89 --vary A1:0.5:1.5", dir, true);
+  CHECK(costly.status == 2);
+  CHECK(costly.out.empty());
+  CHECK(contains(costly.err, "--rates"));
 }
