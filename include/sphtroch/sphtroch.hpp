@@ -116,6 +116,7 @@
 #include "sphtroch/census/interval/chain_box_search.hpp"
 #include "sphtroch/census/interval/chain_census.hpp"
 #include "sphtroch/census/interval/chain_enclosure.hpp"
+#include "sphtroch/census/interval/chain_event_roots.hpp"
 #include "sphtroch/census/interval/chain_family_events.hpp"
 #include "sphtroch/census/interval/chain_tangency.hpp"
 #include "sphtroch/synthesis/interval/boundary_enclosure.hpp"

@@ -505,7 +505,8 @@ class Chain:
         """Where the census changes as one twist or phase varies: vary "NAME:LO:HI" (A2:0:pi, P3:0:1),
         the dict `sphtroch chain boundaries --vary VARY --json` prints (chain, vary, accuracy,
         uncovered, certified, why, note, events with value, kind, name, nodes_below, nodes_above,
-        cusps_below, cusps_above). "certified" is False where the CLI exits 3. Raises
+        cusps_below, cusps_above, accuracy, and for the slab search bracket and root: certified,
+        lo, hi, params). "certified" is False where the CLI exits 3. Raises
         InvalidInput("vary") for a bad range."""
     def __eq__(self, other: object) -> bool:
         """The same chain: equal twists, rates and reduced phases (as doubles and exact rates)."""

@@ -386,6 +386,25 @@ TEST_CASE("chain boundaries: along A2 of a two-stage chain, counts either side a
   }
 }
 
+TEST_CASE("chain boundaries: A2 of two stages with a first twist of 0 or pi (coaxial joints) has no event", "[cli][chain]") {
+  TempDir dir;
+  // Rz(a) Rx(0) Rz(b) Rx(A2) z = Rz(a + b) Rx(A2) z (Rx(pi): Rz(a - b + pi) Rx(pi - A2) z): a circle
+  // for every A2, no node and no cusp (while N1 +- N2 is not 0). Expected: no event, certified.
+  for (const std::string& chain : {"--twists 0,1 --rates 1,2", "--twists pi,1 --rates 1,3", "--twists 0,1 --rates 2,-5/3"}) {
+    const Result r = run("chain boundaries " + chain + " --vary A2:0.3:2.8 --json", dir, true);
+    INFO(chain << " -> " << r.err);
+    REQUIRE(r.status == 0);
+    const auto e = nlohmann::json::parse(r.out);
+    CHECK(e["certified"] == true);
+    CHECK(e["events"].empty());
+  }
+  // N1 + N2 = 0 with coaxial joints: the tool axis does not move; refused naming --twists.
+  const Result still = run("chain boundaries --twists 0,1 --rates 1,-1 --vary A2:0.3:2.8", dir, true);
+  CHECK(still.status == 2);
+  CHECK(still.out.empty());
+  CHECK(contains(still.err, "--twists"));
+}
+
 namespace {
 
 /// The events of `chain boundaries --twists TWISTS ... --json`, required to exit 0 and be certified.
@@ -420,7 +439,8 @@ TEST_CASE("chain boundaries (slab search): a gear train inside a longer chain ha
   // Twists a2, A2, 0: the last joint turns the tool about itself, so the chain is the gear train
   // a2, n = N2 / N1 with a3 = A2, but its A2 family goes through the slab search (three stages).
   // Expected: `boundaries` (closed forms and the root function's scan, another method): the same
-  // events, kinds pitch_cone -> cusp, pole -> triple_point, values within the stated accuracy.
+  // events, kinds pitch_cone -> cusp, pole -> triple_point, each a certified root of its square
+  // system with the closed form (or the scan's value, to 1e-12) within its accuracy.
   for (const auto& [a2, rates, n] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {"1.1", "1,3,5", "3"}, {"0.8", "2,-3,1", "-3/2"}}) {
     const auto chain = nlohmann::json::parse(run("chain boundaries --twists " + a2 + ",1,0 --rates " + rates + " --vary A2:0.05:3.1 --json", dir).out);
@@ -432,13 +452,13 @@ TEST_CASE("chain boundaries (slab search): a gear train inside a longer chain ha
       if (e["a3"].get<double>() >= 0.05 && e["a3"].get<double>() <= 3.1) expected.push_back(e);
     REQUIRE(chain["events"].size() == expected.size());
     const double accuracy = chain["accuracy"].get<double>();
-    CHECK(accuracy < 1e-4);
+    CHECK(accuracy < 1e-12);
     for (std::size_t i = 0; i < expected.size(); ++i) {
       const auto& e = chain["events"][i];
       const std::string kind = expected[i]["kind"];
       CHECK(e["kind"] == (kind == "pitch_cone" ? "cusp" : kind == "pole" ? "triple_point" : "tangency"));
-      CHECK(std::fabs(e["value"].get<double>() - expected[i]["a3"].get<double>()) <= accuracy + 1e-9);
-      if (kind != "pole") CHECK(std::fabs(e["value"].get<double>() - expected[i]["a3"].get<double>()) <= 1e-9);
+      CHECK(e["root"]["certified"] == true);
+      CHECK(std::fabs(e["value"].get<double>() - expected[i]["a3"].get<double>()) <= e["accuracy"].get<double>() + 1e-12);
       CHECK(e["nodes_below"] == expected[i]["nodes_below"]);
       CHECK(e["nodes_above"] == expected[i]["nodes_above"]);
     }
@@ -464,10 +484,15 @@ TEST_CASE("chain boundaries (slab search): three stages and A1 of two with count
       for (const auto& other : events["events"])
         if (&other != &e && std::fabs(other["value"].get<double>() - v) < 1e-3) isolated = false;
       if (!isolated) continue;
-      const double beyond = std::max(1e-6, 2 * e["accuracy"].get<double>());  // outside the event's bracket
-      CHECK(e["accuracy"].get<double>() < 1e-4);
-      CHECK(nodes_at(f.before, v - beyond, f.after, f.rates, dir) == e["nodes_below"].get<int>());
-      CHECK(nodes_at(f.before, v + beyond, f.after, f.rates, dir) == e["nodes_above"].get<int>());
+      // Outside the bracket where the census changes (a cusp birth's is the band where the census
+      // reports a cusp); the value, a certified root, inside it.
+      const double below = e["bracket"][0].get<double>() - 1e-6, above = e["bracket"][1].get<double>() + 1e-6;
+      CHECK(e["root"]["certified"] == true);
+      CHECK(e["accuracy"].get<double>() < 1e-12);
+      CHECK(v >= e["bracket"][0].get<double>());
+      CHECK(v <= e["bracket"][1].get<double>());
+      CHECK(nodes_at(f.before, below, f.after, f.rates, dir) == e["nodes_below"].get<int>());
+      CHECK(nodes_at(f.before, above, f.after, f.rates, dir) == e["nodes_above"].get<int>());
     }
     // Between consecutive events the count is constant: the middles agree with the events' sides.
     for (std::size_t i = 0; i + 1 < events["events"].size(); ++i) {

@@ -100,9 +100,9 @@ def test_boundaries_are_the_cli_and_refuse_bad_ranges():
                                      "--vary", "A3:0.8:0.94", "--json"))
     assert got["certified"] and [e["kind"] for e in got["events"]] == ["cusp", "tangency"]
     for e in got["events"]:
-        beyond = max(1e-6, 2 * e["accuracy"])  # outside the event's bracket
-        for side, key in ((-beyond, "nodes_below"), (beyond, "nodes_above")):
-            counts = sphtroch.Chain(twists=[1.2, 0.9, e["value"] + side], rates=[1, 2, -3]).classify()["counts"]
+        assert e["root"]["certified"] and e["bracket"][0] <= e["value"] <= e["bracket"][1]
+        for value, key in ((e["bracket"][0] - 1e-6, "nodes_below"), (e["bracket"][1] + 1e-6, "nodes_above")):
+            counts = sphtroch.Chain(twists=[1.2, 0.9, value], rates=[1, 2, -3]).classify()["counts"]
             assert counts["nodes"] == e[key]
     for bad in ("A3:1:0", "A4:0:1", "A3:0", 3):
         with pytest.raises(sphtroch.InvalidInput) as err:

@@ -79,6 +79,16 @@ inline ChainVary parse_chain_vary(std::string_view text, std::size_t stages) {
 
 /// The events along one family (see header), ascending; `note` says why there is none when the
 /// family has none by a symmetry, or that one census holds over the range.
+/// An event of a family searched by census slabs (chain_family_events.hpp): the bracket where the
+/// census changes and, when `certified`, the event as a root of its square system
+/// (chain_event_roots.hpp): the value in [lo, hi] (radians) and the curve parameters s (t, u).
+struct EventRoot {
+  double bracket_lo = 0, bracket_hi = 0;
+  bool certified = false;
+  double lo = 0, hi = 0;
+  std::vector<double> params;
+};
+
 struct ChainEvents {
   ChainVary vary;
   std::vector<BoundaryEvent> events;  // a3: the value of the varied twist or phase
@@ -88,6 +98,7 @@ struct ChainEvents {
   double accuracy = kEventAccuracy;   // |value - true value| <= accuracy, radians (the largest over the events)
   double uncovered = 0;               // radians of the range no one census was certified over (chain_family_events)
   std::vector<double> accuracies;     // per event when known (chain_family_events), else `accuracy` for each
+  std::vector<EventRoot> roots;       // per event of chain_family_events' slab search (else empty)
 
   double accuracy_of(std::size_t i) const { return i < accuracies.size() ? accuracies[i] : accuracy; }
 };
@@ -101,7 +112,7 @@ inline bool closed_form_family(const RotationChain& chain, const ChainVary& vary
 /// of census/interval/chain_family_events.hpp computes every family), ("twists") for a first
 /// twist the map refuses (within 1e-6 of 0 or pi), ("rates") beyond the census bound.
 inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& vary) {
-  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}};
+  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}, {}};
   const bool two = chain.size() == 2;
   if (!vary.twist && vary.stage == 1) {
     out.note = "changing P1 turns the whole curve about z";
@@ -139,14 +150,31 @@ inline void write_chain_events_text(std::ostream& out, const RotationChain& chai
   out << "events, ascending (" << e.vary.name() << " to " << number_text(e.accuracy)
       << " rad; node points as chain classify counts them, just below -> just above):\n";
   if (e.events.empty()) out << "  none" << (e.note.empty() ? "" : ": " + e.note) << "\n";
-  for (const BoundaryEvent& b : e.events)
+  for (std::size_t i = 0; i < e.events.size(); ++i) {
+    const BoundaryEvent& b = e.events[i];
     out << "  " << e.vary.name() << " = " << number_text(b.a3) << "  " << to_string(b.kind) << "  nodes " << b.nodes_below << " -> "
-        << b.nodes_above << "  (" << b.name << ")\n";
+        << b.nodes_above << "  (" << b.name << ")";
+    if (i < e.roots.size()) out << (e.roots[i].certified ? "  root certified" : "  root not isolated: value to +-" + number_text(e.accuracy_of(i)));
+    out << "\n";
+  }
   if (!e.certified) out << "NOT CERTIFIED: " << e.why << "\n";
 }
 
+/// , "bracket": [lo, hi], "root": {"certified", "lo", "hi", "params"} (lo, hi, params when certified).
+inline void write_event_root_json(std::ostream& out, const EventRoot& r) {
+  out << ", \"bracket\": [" << number_text(r.bracket_lo) << ", " << number_text(r.bracket_hi) << "], \"root\": {\"certified\": "
+      << (r.certified ? "true" : "false");
+  if (r.certified) {
+    out << ", \"lo\": " << number_text(r.lo) << ", \"hi\": " << number_text(r.hi) << ", \"params\": [";
+    for (std::size_t k = 0; k < r.params.size(); ++k) out << (k ? ", " : "") << number_text(r.params[k]);
+    out << "]";
+  }
+  out << "}";
+}
+
 /// {"chain": {"twists", "rates", "phases"}, "vary": {"name", "lo", "hi"}, "accuracy", "uncovered", "certified", "why", "note",
-///  "events": [{"value", "kind", "name", "nodes_below", "nodes_above", "cusps_below", "cusps_above", "accuracy"}]}.
+///  "events": [{"value", "kind", "name", "nodes_below", "nodes_above", "cusps_below", "cusps_above", "accuracy"
+///  [, "bracket", "root" (write_event_root_json): events of the slab search]}]}.
 inline void write_chain_events_json(std::ostream& out, const RotationChain& chain, const ChainEvents& e) {
   const auto list = [&](auto value) {
     std::string t;
@@ -163,8 +191,9 @@ inline void write_chain_events_json(std::ostream& out, const RotationChain& chai
     const BoundaryEvent& b = e.events[i];
     out << (i ? ", " : "") << "{\"value\": " << number_text(b.a3) << ", \"kind\": \"" << to_string(b.kind) << "\", \"name\": \""
         << b.name << "\", \"nodes_below\": " << b.nodes_below << ", \"nodes_above\": " << b.nodes_above
-        << ", \"cusps_below\": " << b.cusps_below << ", \"cusps_above\": " << b.cusps_above << ", \"accuracy\": " << number_text(e.accuracy_of(i))
-        << "}";
+        << ", \"cusps_below\": " << b.cusps_below << ", \"cusps_above\": " << b.cusps_above << ", \"accuracy\": " << number_text(e.accuracy_of(i));
+    if (i < e.roots.size()) write_event_root_json(out, e.roots[i]);
+    out << "}";
   }
   out << "]}\n";
 }

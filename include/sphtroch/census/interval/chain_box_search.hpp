@@ -51,8 +51,6 @@ struct Box2 {
 inline bool inside(const Box2& a, const Box2& b) {
   return a.u.inf() >= b.u.inf() && a.u.sup() <= b.u.sup() && a.v.inf() >= b.v.inf() && a.v.sup() <= b.v.sup();
 }
-inline bool strictly_inside(const Interval& a, const Interval& b) { return a.inf() > b.inf() && a.sup() < b.sup(); }
-inline double mid(const Interval& x) { return 0.5 * (x.inf() + x.sup()); }
 
 /// What a system gives the search over a box: the difference vector D (P(s) - P(t), or P(t + h)
 /// - P(t)) enclosed, its two parameter derivatives enclosed, and the two points' enclosures

@@ -17,6 +17,11 @@
 // (omega x P) with omega' = sum_i N_i (W_{i-1} x Z_i) (the formulas of rotation_chain.hpp).
 // The natural extension overestimates in proportion to the width of S; `sharp_jet` intersects it
 // with the mean-value forms P(c) + P'(S)(S - c) and P'(c) + P''(S)(S - c) (first-order sharp).
+// Along a family (ChainWidening: the twists and phases move with d), `family_jet` also encloses
+// dP/dd and dP'/dd: a change of phase i turns everything after joint i about Z_i, a change of
+// twist i everything after Rx(A_i) about X_i = R_{i+1} e_x, so with eta = sum_i (phase_sign_i Z_i
+// + twist_sign_i X_i), dP/dd = eta x P, dZ_j/dd = eta_{<j} x Z_j, domega/dd = sum_j N_j eta_{<j} x
+// Z_j and dP'/dd = domega/dd x P + omega x dP/dd (eta_{<j}: the terms of stages before j).
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_INTERVAL)
@@ -60,6 +65,12 @@ struct ChainJet {
   IntervalVec3 point, velocity, acceleration;
 };
 
+/// A jet with the derivatives along the family (see header).
+struct FamilyJet {
+  ChainJet jet;
+  IntervalVec3 point_d, velocity_d;
+};
+
 /// A one-parameter family around a chain: stage i's twist is twist_i + twist_sign[i] d and its
 /// phase phase_i + phase_sign[i] d, for every d in `offset` (signs -1, 0 or 1; empty: all 0).
 struct ChainWidening {
@@ -79,20 +90,16 @@ class ChainEnclosure {
       rate_.push_back(Interval(static_cast<double>(s.rate.p())) / Interval(static_cast<double>(s.rate.q())));
       phase_.push_back(Interval(s.phase) + Interval(double(sign(widening.phase_sign, i))) * widening.offset);
       twist_.push_back(interval_sincos(twist));
+      twist_sign_.push_back(Interval(double(sign(widening.twist_sign, i))));
+      phase_sign_.push_back(Interval(double(sign(widening.phase_sign, i))));
     }
   }
 
   /// The enclosures over S (natural extension). REQUIRES rounding upward.
   ChainJet jet(const Interval& s) const {
     const std::size_t k = rate_.size();
-    std::vector<std::pair<Interval, Interval>> trig(k);
-    {
-      const RoundingGuard nearest(CGAL_FE_TONEAREST);
-      for (std::size_t i = 0; i < k; ++i) trig[i] = interval_sincos_in_nearest_mode(angle(i, s));
-    }
-    std::array<IntervalVec3, 3> r = {IntervalVec3{Interval(1), Interval(0), Interval(0)},  // columns of R
-                                     IntervalVec3{Interval(0), Interval(1), Interval(0)},
-                                     IntervalVec3{Interval(0), Interval(0), Interval(1)}};
+    const std::vector<std::pair<Interval, Interval>> trig = joint_trig(s);
+    std::array<IntervalVec3, 3> r = identity();
     std::vector<IntervalVec3> axes(k);
     for (std::size_t i = 0; i < k; ++i) {
       axes[i] = r[2];
@@ -111,6 +118,31 @@ class ChainEnclosure {
     return j;
   }
 
+  /// jet(S) with dP/dd and dP'/dd over S and the whole offset (header). REQUIRES rounding upward.
+  FamilyJet family_jet(const Interval& s) const {
+    const std::vector<std::pair<Interval, Interval>> trig = joint_trig(s);
+    std::array<IntervalVec3, 3> r = identity();
+    IntervalVec3 omega = zero(), omega_dot = zero(), omega_d = zero(), eta = zero();
+    for (std::size_t i = 0; i < rate_.size(); ++i) {
+      const IntervalVec3 axis = r[2];
+      add_scaled(omega_dot, rate_[i], cross(omega, axis));  // omega, eta here: of the stages before i
+      add_scaled(omega_d, rate_[i], cross(eta, axis));
+      add_scaled(omega, rate_[i], axis);
+      add_scaled(eta, phase_sign_[i], axis);
+      r = times_stage(r, trig[i], twist_[i]);
+      add_scaled(eta, twist_sign_[i], r[0]);  // X_i
+    }
+    FamilyJet f;
+    f.jet.point = r[2];
+    f.jet.velocity = cross(omega, r[2]);
+    const IntervalVec3 a = cross(omega_dot, r[2]), b = cross(omega, f.jet.velocity);
+    f.jet.acceleration = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+    f.point_d = cross(eta, r[2]);
+    const IntervalVec3 c = cross(omega_d, r[2]), e = cross(omega, f.point_d);
+    f.velocity_d = {c[0] + e[0], c[1] + e[1], c[2] + e[2]};
+    return f;
+  }
+
   /// jet(S) narrowed by the mean-value forms about the middle of S (see header). REQUIRES rounding upward.
   ChainJet sharp_jet(const Interval& s) const {
     ChainJet wide = jet(s);
@@ -126,6 +158,17 @@ class ChainEnclosure {
 
  private:
   Interval angle(std::size_t i, const Interval& s) const { return rate_[i] * s + phase_[i]; }
+  /// sin and cos of every joint angle over S.
+  std::vector<std::pair<Interval, Interval>> joint_trig(const Interval& s) const {
+    std::vector<std::pair<Interval, Interval>> trig(rate_.size());
+    const RoundingGuard nearest(CGAL_FE_TONEAREST);
+    for (std::size_t i = 0; i < rate_.size(); ++i) trig[i] = interval_sincos_in_nearest_mode(angle(i, s));
+    return trig;
+  }
+  static std::array<IntervalVec3, 3> identity() {  // columns of R
+    return {IntervalVec3{Interval(1), Interval(0), Interval(0)}, IntervalVec3{Interval(0), Interval(1), Interval(0)},
+            IntervalVec3{Interval(0), Interval(0), Interval(1)}};
+  }
 
   static IntervalVec3 zero() { return {Interval(0), Interval(0), Interval(0)}; }
   static void add_scaled(IntervalVec3& sum, const Interval& f, const IntervalVec3& v) {
@@ -154,7 +197,7 @@ class ChainEnclosure {
     return out;
   }
 
-  std::vector<Interval> rate_, phase_;
+  std::vector<Interval> rate_, phase_, twist_sign_, phase_sign_;
   std::vector<std::pair<Interval, Interval>> twist_;
 };
 

@@ -48,6 +48,7 @@
 #endif
 
 #include "sphtroch/census/interval/chain_census.hpp"
+#include "sphtroch/census/interval/chain_event_roots.hpp"
 #include "sphtroch/map/chain_events.hpp"
 
 #include <algorithm>
@@ -97,6 +98,7 @@ namespace chain_family_detail {
 struct CensusCounts {
   std::int64_t nodes = 0, pairs = 0, cusps = 0;
   bool multiple = false;  // a node of three or more branches
+  bool touching = false;  // a node where two branches touch (within the rounding of double)
   bool operator==(const CensusCounts& o) const { return nodes == o.nodes && pairs == o.pairs && cusps == o.cusps; }
 };
 
@@ -107,6 +109,7 @@ inline CensusCounts counts_of(const ChainCensus& c) {
   for (const Node& n : c.nodes) {
     k.pairs += static_cast<std::int64_t>(n.branches * (n.branches - 1) / 2);
     k.multiple = k.multiple || n.branches >= 3;
+    k.touching = k.touching || n.tangency_pairs > 0;
   }
   return k;
 }
@@ -237,15 +240,23 @@ inline std::vector<Change> changes_of(const RotationChain& chain, const ChainVar
   return out;
 }
 
-/// A cusp's resolution band: changes closer than kChainBandWidth, the first into a census with
-/// more cusps, are one change (the loop's node may appear inside the band).
+/// Whether counts `in` show an event in the census's resolution band (header) that `out` does
+/// not: more cusps (|P'| <= kChainCuspResolution Omega), a node of three branches (three nodes
+/// closer than the census's node tolerance are one), two branches touching within rounding.
+inline bool band_state(const CensusCounts& in, const CensusCounts& out) {
+  return in.cusps > out.cusps || (in.multiple && !out.multiple) || (in.touching && !out.touching);
+}
+
+/// An event's resolution band: changes closer than kChainBandWidth, the first into a band state
+/// (band_state), are one change (a cusp birth's loop node may appear inside its band; a triple
+/// point's three nodes are one node inside its band; two touching branches are one node).
 inline std::vector<Change> merge_bands(const std::vector<Change>& changes) {
   std::vector<Change> out;
   for (const Change& c : changes) {
     if (!out.empty()) {
       Change& last = out.back();
-      const bool band = c.lo - last.hi <= kChainBandWidth && last.above == c.below &&
-                        last.above.cusps > last.below.cusps;
+      const bool band = c.lo - last.hi <= kChainBandWidth && last.above == c.below && last.above.multiple == c.below.multiple &&
+                        last.above.touching == c.below.touching && band_state(last.above, last.below);
       if (band) {
         last.hi = c.hi, last.above = c.above;
         continue;
@@ -304,13 +315,17 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
 }  // namespace chain_family_detail
 
 /// The events of the family (see header), ascending, with `certified`, `why` and `accuracy`.
-/// Families with closed forms (map/chain_events.hpp) are answered by chain_events. Throws
+/// Families with closed forms (map/chain_events.hpp) are answered by chain_events, except A2 of
+/// a two-stage chain whose A1 lies within kChainTwistMargin of 0 or pi (the map refuses that a2;
+/// at exactly 0 or pi the joints are coaxial and the curve a circle for every A2). Throws
 /// InvalidInput as chain_census does, ("vary") for a twist range within kChainTwistMargin of
 /// 0 or pi only.
 inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVary& vary) {
   namespace d = chain_family_detail;
-  if (closed_form_family(chain, vary)) return chain_events(chain, vary);
-  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}};
+  const double first = chain.stages()[0].twist, pi = Constants<double>::pi();
+  const bool near_coaxial = std::min(first, pi - first) < kChainTwistMargin;  // the map refuses such an a2: searched
+  if (closed_form_family(chain, vary) && !(chain.size() == 2 && vary.twist && near_coaxial)) return chain_events(chain, vary);
+  ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}, {}};
   ChainVary range = vary;
   if (vary.twist) {
     range.lo = std::max(vary.lo, kChainTwistMargin);
@@ -342,9 +357,12 @@ inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVa
   for (const d::Bracket& b : d::brackets_of(slabs, out.why)) {
     uncovered += b.hi - b.lo;
     for (const d::Change& c : d::merge_bands(d::changes_of(chain, range, b, out.why)))
-      if (const std::optional<BoundaryEvent> e = d::event_of(chain, range, c, out.why)) {
+      if (std::optional<BoundaryEvent> e = d::event_of(chain, range, c, out.why)) {
+        const EventRoot root = event_root(chain, range, e->kind, c.lo, c.hi);
+        if (root.certified) e->a3 = e->a3_precise = 0.5 * (root.lo + root.hi);
         out.events.push_back(*e);
-        out.accuracies.push_back(0.5 * (c.hi - c.lo));
+        out.roots.push_back(root);
+        out.accuracies.push_back(root.certified ? root.hi - root.lo : 0.5 * (c.hi - c.lo));
         accuracy = std::max(accuracy, out.accuracies.back());
       }
   }

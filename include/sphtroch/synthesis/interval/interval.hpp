@@ -184,6 +184,10 @@ inline Interval interval_acos(const Interval& c) {
 inline bool may_vanish(const Interval& x) { return x.inf() <= 0.0 && x.sup() >= 0.0; }
 /// The midpoint of x as a point interval.
 inline Interval centre_of(const Interval& x) { return Interval(0.5 * (x.inf() + x.sup())); }
+/// The midpoint of x (a double inside x).
+inline double mid(const Interval& x) { return 0.5 * (x.inf() + x.sup()); }
+/// Whether a lies in the interior of b.
+inline bool strictly_inside(const Interval& a, const Interval& b) { return a.inf() > b.inf() && a.sup() < b.sup(); }
 
 /// The mean-value form of F over a box: F(c) + sum_k dF/dx_k(X) (x_k - c_k) (fc: F at the centre
 /// c; df: the gradient enclosed over the box X; dx: X - c). Encloses F over X.
