@@ -564,6 +564,18 @@ inline RotationChain chain_at(const RotationChain& chain, const ChainVary& vary,
   return RotationChain(stages);
 }
 
+/// The curve a family's enclosures are built on at one value: the chain at `value` with coaxial
+/// joints merged (its curve is the chain's, or its negation: equations in P = P' = 0 and P(s) =
+/// P(t) keep their roots), and the varied parameter's signs per merged stage (offset 0).
+struct FamilyCurve {
+  RotationChain curve;
+  ChainWidening signs;
+};
+inline FamilyCurve family_curve(const RotationChain& chain, const ChainVary& vary, double value) {
+  chain_census_detail::ReducedChain r = chain_census_detail::reduced_chain(chain_at(chain, vary, value), &vary);
+  return {RotationChain(r.stages), r.widening};
+}
+
 /// One census for the whole family `range` (the chain's varied parameter over [range.lo,
 /// range.hi]), or not certified: when `certified`, every chain of the range has these nodes (by
 /// branch count, all transversal crossings) and cusps; the parameters reported are the middle

@@ -6,8 +6,8 @@
 //   const sphtroch::RotationChain chain({{1.2, sphtroch::ChainRate(1), 0.0}, {0.9, sphtroch::ChainRate(2), 0.0},
 //                                        {0.7, sphtroch::ChainRate(-3), 0.0}});
 //   const sphtroch::ChainVary a3 = sphtroch::parse_chain_vary("A3:0.8:0.94", 3);
-//   const sphtroch::EventRoot r = sphtroch::event_root(chain, a3, sphtroch::BoundaryEventKind::cusp, 0.84, 0.85);
-//   r.certified;   // one root of the cusp system with its value in [r.lo, r.hi], inside [0.84, 0.85]
+//   const sphtroch::EventRoot r = sphtroch::event_root(chain, a3, sphtroch::BoundaryEventKind::cusp, 0.8212, 0.8213);
+//   r.certified;   // one root of the cusp system, its value in [r.lo, r.hi] (0.82124284860366) meeting [0.8212, 0.8213]
 //
 // The systems, in x = (curve parameters, d) with the varied value lambda = lambda0 + d (lambda0 the
 // bracket's middle) and (e1, e2) a tangent frame at the event's point P0, every point of the box
@@ -23,7 +23,9 @@
 // boxes of radius 1e-7 down to 1e-13 (times max(1, |x_i|)) about Newton's point. K(X) inside X
 // proves exactly one root in X (Krawczyk 1969; Moore's interval analysis). The root counts only
 // when its value meets the bracket [lo, hi] (where the census changes). Not certified: a start not
-// found, Newton not converging, or no box proved (a degenerate event, e.g. a cusp where P'' = 0).
+// found, Newton not converging, or no box proved: a degenerate event, whose root is singular (a
+// cusp where P'' = 0 too; at a mirror-symmetric chain, three crossings of the same two branches
+// born at once: a tangency of third order).
 // Cost: one or two censuses at single values, a scan of the period (cusp), a few dozen enclosures.
 #pragma once
 
@@ -331,15 +333,15 @@ inline EventRoot event_root(const RotationChain& chain, const ChainVary& vary, B
   EventRoot out;
   out.bracket_lo = lo, out.bracket_hi = hi;
   const double lambda0 = 0.5 * (lo + hi);
-  const chain_census_detail::ReducedChain reduced = chain_census_detail::reduced_chain(chain_at(chain, vary, lambda0), &vary);
-  const RotationChain curve(reduced.stages);
+  const FamilyCurve family = family_curve(chain, vary, lambda0);
+  const RotationChain& curve = family.curve;
   const auto keep = [&](EventRoot r) {
     r.bracket_lo = lo, r.bracket_hi = hi;
     return r;
   };
   if (kind == BoundaryEventKind::cusp) {
     for (const double s : d::slowest_points(curve)) {
-      const EventRoot r = d::root_from<2>(curve, reduced.widening, lambda0, {s}, 0.0, lo, hi);
+      const EventRoot r = d::root_from<2>(curve, family.signs, lambda0, {s}, 0.0, lo, hi);
       if (r.certified) return keep(r);
     }
     return out;
@@ -349,7 +351,7 @@ inline EventRoot event_root(const RotationChain& chain, const ChainVary& vary, B
       const ChainCensus c = chain_census(chain_at(chain, vary, side));
       const std::optional<std::array<double, 2>> st = c.certified ? d::merging_pair(c) : std::nullopt;
       if (!st) continue;
-      const EventRoot r = d::root_from<3>(curve, reduced.widening, lambda0, *st, side - lambda0, lo, hi);
+      const EventRoot r = d::root_from<3>(curve, family.signs, lambda0, *st, side - lambda0, lo, hi);
       if (r.certified) return keep(r);
     }
     return out;
@@ -359,7 +361,7 @@ inline EventRoot event_root(const RotationChain& chain, const ChainVary& vary, B
       const ChainCensus c = chain_census(chain_at(chain, vary, side));
       const std::optional<std::array<double, 3>> stu = d::meeting_triple(c);
       if (!stu) continue;
-      const EventRoot r = d::root_from<4>(curve, reduced.widening, lambda0, *stu, side - lambda0, lo, hi);
+      const EventRoot r = d::root_from<4>(curve, family.signs, lambda0, *stu, side - lambda0, lo, hi);
       if (r.certified) return keep(r);
     }
   }
