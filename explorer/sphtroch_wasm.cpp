@@ -14,6 +14,8 @@
 // A clinostat (machine/) is read by the CLI's reader (ClinostatText) and computed by the library's
 // functions that `sphtroch clinostat` runs (its train, period, mean, M(W), time to epsilon); the
 // dwell map needs HEALPix, which the module does not have.
+// A rotation chain is read by the CLI's reader (ChainText) and drawn with its census as `sphtroch
+// chain plot` draws it (chain_picture_svg, the chain census); a gear train is handed to the page.
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
 #include "sphtroch/core/curve.hpp"
@@ -24,6 +26,8 @@
 #include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
 #include "sphtroch/exact/certified_census.hpp"
+#include "sphtroch/census/interval/chain_picture.hpp"
+#include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/io/trace_output.hpp"
@@ -338,6 +342,41 @@ val plot_svg(const std::string& a2, const std::string& a3, const std::string& n,
     const sphtroch::Trajectory<double> trajectory =
         sphtroch::sample_period(sphtroch::TracerCurve<double>(census.analysed), sphtroch::plot_sample_count(census.analysed));
     return text_object(sphtroch::render_sphere_svg(trajectory, census.roots.node_points, cusps, options));
+  });
+}
+
+/// `sphtroch chain plot --twists T --rates R --phases P --markers M` (phases "": all 0) for a
+/// chain that is not a gear train: {text: its SVG, the CLI's bytes (chain_picture_svg of the chain
+/// census, classify_chain's for such a chain), nodes, cusps, certified, why}. A two-stage chain
+/// with both rates not 0 is a gear train, whose census the CLI takes from classify's (MPFR, not in
+/// the module): {train: {a2, a3, n, phase}} (gear_train_of), for the page to show as its design.
+/// The census runs here, within chain classify's bound (refused up front beyond it).
+val chain_plot(const std::string& twists, const std::string& rates, const std::string& phases, const std::string& markers) {
+  return guarded([&] {
+    sphtroch::ChainText text;
+    text.twists = twists;
+    text.rates = rates;
+    text.phases = phases;
+    const sphtroch::RotationChain chain = text.chain();
+    sphtroch::PlotOptions options;
+    options.markers = sphtroch::parse_mark_mode(markers);
+    if (const std::optional<GearTrain> t = sphtroch::gear_train_of(chain)) {
+      val train = val::object();
+      train.set("a2", sphtroch::number_text(t->a2()));
+      train.set("a3", sphtroch::number_text(t->a3()));
+      train.set("n", t->ratio().str());
+      train.set("phase", sphtroch::number_text(t->phase()));
+      val out = val::object();
+      out.set("train", train);
+      return out;
+    }
+    const sphtroch::ChainCensus c = sphtroch::chain_census(chain);
+    val out = text_object(sphtroch::chain_picture_svg(chain, c, options));
+    out.set("nodes", static_cast<double>(c.nodes.size()));
+    out.set("cusps", static_cast<double>(c.cusps.size()));
+    out.set("certified", c.certified);
+    out.set("why", c.why);
+    return out;
   });
 }
 
@@ -750,6 +789,7 @@ EMSCRIPTEN_BINDINGS(sphtroch_explorer) {
   emscripten::function("fit", &fit);
   emscripten::function("points", &points);
   emscripten::function("tolerance", &tolerance);
+  emscripten::function("chainPlot", &chain_plot);
   emscripten::function("clinostat", &clinostat);
   emscripten::function("clinostatWindow", &clinostat_window);
   emscripten::function("clinostatWindows", &clinostat_windows);

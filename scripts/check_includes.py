@@ -36,7 +36,7 @@ LAYERS = {
     "draw": ["core", "io"],                       # SVG
     "map": ["core", "io"],                        # closed-form boundaries, criteria, g(b), events
     "census": ["core", "io", "map"],              # refinement, node assembly, the root census
-    "census/interval": ["core", "io", "map", "census", "synthesis/interval"],  # the chain census: CGAL's intervals
+    "census/interval": ["core", "io", "draw", "map", "census", "synthesis/interval"],  # the chain census (CGAL's intervals) and its picture
     "exact": ["core", "io", "draw", "map", "census", "census/interval", "synthesis", "synthesis/interval"],  # CGAL: crossings, classify, scenes, synthesis reports
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
     "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this

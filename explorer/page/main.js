@@ -14,6 +14,7 @@
 //   controls.js        text fields, sliders, hash changes
 //   exports.js         trace CSV, sphere SVG, scene JSON, the command copied
 //   clinostat.js       the clinostat panel: its texts, worker (clinostat_worker.js), path and M(W)
+//   chain.js           the chain panel: its texts, worker (chain_worker.js), census and picture
 //   main.js            this: the start
 // Test contract (docs/explorer.md): data-testid nodes, crossings, tangencies, cusps, class, error,
 // one data-testid="event" per a3 event (data-a3: shortest round-trip text, data-kind); the state
@@ -35,6 +36,7 @@
     X.setupFit();
     X.setupTolerance();
     X.setupClinostat();
+    X.setupChain();
     X.update(false);
     // For tests and automation: the state's texts and the node points shown (x0 y0 z0 x1 ...).
     window.sphtrochExplorer = { state: () => Object.assign({}, X.state),
@@ -42,7 +44,9 @@
       cuspPositions: () => (X.result ? Array.from(X.result.cuspPositions) : []),
       timing: () => Object.assign({}, X.timing), project: (p) => X.project(p), lib: module,
       // The clinostat panel's gravity path shown (x0 y0 z0 x1 ...; [] when none).
-      clinostatPath: () => (X.clinostat && X.clinostat.report && X.clinostat.report.path ? Array.from(X.clinostat.report.path) : []) };
+      clinostatPath: () => (X.clinostat && X.clinostat.report && X.clinostat.report.path ? Array.from(X.clinostat.report.path) : []),
+      // The chain panel's picture as the module returned it (its SVG text; "" when none).
+      chainSvg: () => (X.chain && X.chain.value && X.chain.value.text ? X.chain.value.text : '') };
     document.body.dataset.ready = '1';
     window.requestAnimationFrame(X.animate);
   }

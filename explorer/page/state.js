@@ -14,6 +14,8 @@
 //   X.tolerance  tolerance() of the current state and half-widths (tolerance.js), or null
 // The clinostat panel's texts live in X.state too (clinostat: on | off, and the CLI's options
 // outer, inner, tilt, frame-angle, window, epsilon), in the hash only while the panel is on.
+// So do the chain panel's (chain: on | off, and `sphtroch chain`'s options twists, rates, phases),
+// in the hash only while it is on; a hash giving twists turns it on (#twists=pi/2,1&rates=1,3).
 'use strict';
 window.Explorer = {};
 {
@@ -22,12 +24,15 @@ window.Explorer = {};
   // The clinostat panel's text fields (id and data-testid clinostat-FIELD): `sphtroch clinostat`'s
   // options, the hash's keys.
   const CLINOSTAT_FIELDS = ['outer', 'inner', 'tilt', 'frame-angle', 'window', 'epsilon'];
+  // The chain panel's text fields (id and data-testid chain-FIELD): `sphtroch chain`'s options.
+  const CHAIN_FIELDS = ['twists', 'rates', 'phases'];
   const DEFAULT_STATE = { a2: 'pi/3', a3: 'pi/2', n: '2', teeth: '', phase: '0', markers: 'auto', clinostat: 'off',
-    outer: '1.33', inner: '2', tilt: '90', 'frame-angle': '90', window: '600', epsilon: '0.01' };
+    outer: '1.33', inner: '2', tilt: '90', 'frame-angle': '90', window: '600', epsilon: '0.01',
+    chain: 'off', twists: 'pi/2,1.2,0.4', rates: '1,-2/3,5/3', phases: '0,0.3,-1' };
   const $ = (id) => document.getElementById(id);
   const byTestId = (id) => document.querySelector('[data-testid="' + id + '"]');
 
-  Object.assign(X, { FIELDS, CLINOSTAT_FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
+  Object.assign(X, { FIELDS, CLINOSTAT_FIELDS, CHAIN_FIELDS, $, byTestId, lib: null, state: Object.assign({}, DEFAULT_STATE), result: null, curve: null,
     ruler: null, marks: null, view: { spin: 0.5, tilt: 1.1, zoom: 1, panX: 0, panY: 0, theta: 0 } });
 
   // ---- the URL hash and the text fields -------------------------------------------------------
@@ -44,6 +49,10 @@ window.Explorer = {};
       if (key in DEFAULT_STATE) s[key] = decode(part.slice(eq + 1));
     }
     if (s.teeth !== '' && !/[#&]n=/.test('&' + hash)) s.n = ''; // teeth given instead of n
+    if (/[#&]twists=/.test('&' + hash)) {  // a chain given: on, its rates and phases as given ("" when not)
+      if (!/[#&]chain=/.test('&' + hash)) s.chain = 'on';
+      for (const f of ['rates', 'phases']) if (!new RegExp('[#&]' + f + '=').test('&' + hash)) s[f] = '';
+    }
     return s;
   }
 
@@ -55,6 +64,7 @@ window.Explorer = {};
     parts.push('phase=' + enc(s.phase));
     if (s.markers !== DEFAULT_STATE.markers) parts.push('markers=' + enc(s.markers));  // links stay short
     if (s.clinostat === 'on') for (const f of ['clinostat'].concat(CLINOSTAT_FIELDS)) parts.push(f + '=' + enc(s[f]));
+    if (s.chain === 'on') for (const f of ['chain'].concat(CHAIN_FIELDS)) parts.push(f + '=' + enc(s[f]));
     return '#' + parts.join('&');
   }
 
@@ -68,6 +78,8 @@ window.Explorer = {};
     $('markers').value = X.state.markers;
     for (const f of CLINOSTAT_FIELDS) $('clinostat-' + f).value = X.state[f];
     $('clinostat-on').checked = X.state.clinostat === 'on';
+    for (const f of CHAIN_FIELDS) $('chain-' + f).value = X.state[f];
+    $('chain-on').checked = X.state.chain === 'on';
   }
 
   function readFields() {
@@ -76,6 +88,8 @@ window.Explorer = {};
     s.markers = $('markers').value;
     for (const f of CLINOSTAT_FIELDS) s[f] = $('clinostat-' + f).value.trim();
     s.clinostat = $('clinostat-on').checked ? 'on' : 'off';
+    for (const f of CHAIN_FIELDS) s[f] = $('chain-' + f).value.trim();
+    s.chain = $('chain-on').checked ? 'on' : 'off';
     return s;
   }
 
@@ -145,6 +159,7 @@ window.Explorer = {};
     X.drawMap();
     X.scheduleTolerance();
     X.scheduleClinostat();
+    X.scheduleChain();
     timing.total = performance.now() - start;
   }
 

@@ -721,6 +721,60 @@ async function checkClinostatRefusals(page) {
   }
 }
 
+// The chain panel: a chain given in the URL is drawn with its census, the SVG the bytes of `sphtroch
+// chain plot`, the counts chain classify --json's; a two-stage chain is offered as the page's gear
+// train (gear_train_of: a2 = A1, a3 = A2, n = N2 / N1) and "show it above" makes it the design, with
+// chain classify's node count; bad texts show the CLI's line and no picture.
+async function readChain(page) {
+  await page.waitForFunction(() => ['done', 'error'].includes(document.querySelector('[data-testid="chain-status"]').dataset.state),
+    null, { timeout: 60000 });
+  return page.evaluate(() => {
+    const cell = (id) => document.querySelector('[data-testid="chain-' + id + '"]');
+    return { svg: window.sphtrochExplorer.chainSvg(), error: cell('error').textContent, census: Object.assign({}, cell('census').dataset),
+      command: cell('command').textContent, train: Object.assign({}, cell('train').dataset), hash: window.location.hash };
+  });
+}
+
+const chainHash = (c) => hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }) + '&twists=' + encodeURIComponent(c.twists) +
+  '&rates=' + encodeURIComponent(c.rates).replace(/%2F/g, '/') + (c.phases ? '&phases=' + encodeURIComponent(c.phases) : '');
+const chainArgs = (c) => ['--twists', c.twists, '--rates', c.rates, ...(c.phases ? ['--phases', c.phases] : [])];
+
+async function checkChain(page) {
+  const fs = require('fs');
+  for (const c of [{ twists: 'pi/2,1.2,0.4', rates: '1,-2/3,5/3', phases: '0,0.3,-1' }, { twists: '1.2,0.9,0.7', rates: '1,2,-3', phases: '' },
+    { twists: '1,2,0.5,1.1', rates: '1,2/3,-1,3', phases: '0.1,0,0,2' }]) {
+    await open(page, chainHash(c));
+    const got = await readChain(page);
+    const file = path.join(outDir, 'cli_chain.svg');
+    const plot = cli(['chain', 'plot', ...chainArgs(c), '-o', file]);
+    const counts = JSON.parse(cli(['chain', 'classify', ...chainArgs(c), '--json']).stdout).counts;
+    const where = JSON.stringify(c);
+    check(plot.status === 0 && got.svg === fs.readFileSync(file, 'utf8'), where + ': the chain picture differs from sphtroch chain plot: ' + plot.stderr);
+    check(Number(got.census.nodes) === counts.nodes && Number(got.census.cusps) === counts.cusps && got.census.certified === '1',
+      where + ': the chain census ' + JSON.stringify(got.census) + ' != chain classify ' + JSON.stringify(counts));
+    check(got.error === '' && got.command.startsWith('sphtroch chain plot --twists'), where + ': ' + JSON.stringify(got).slice(0, 300));
+  }
+  // Two stages: the gear train, made the design by the button; its count is chain classify's.
+  const two = { twists: '1,2', rates: '2,-6', phases: '0.3,0.5' };
+  await open(page, chainHash(two));
+  const got = await readChain(page);
+  check(got.svg === '' && got.train.a2 === '1' && got.train.a3 === '2' && got.train.n === '-3', 'two stages: ' + JSON.stringify(got.train));
+  await page.click('#chain-use-train');
+  await page.waitForFunction(() => window.sphtrochExplorer.state().n === '-3');
+  const shown = await readPage(page);
+  const counts = JSON.parse(cli(['chain', 'classify', ...chainArgs(two), '--json']).stdout).counts;
+  check(Number(shown.nodes) === counts.nodes, 'two stages: the design shows ' + shown.nodes + ' nodes, chain classify ' + counts.nodes);
+  // Bad texts: the CLI's line, no picture.
+  for (const bad of [{ twists: '1,2', rates: '1,2,3', phases: '' }, { twists: '1,4,1', rates: '1,2,3', phases: '' },
+    { twists: '1,2,1', rates: '1,x,3', phases: '' }, { twists: '1,2,1', rates: '1,2,3', phases: '0,nan,0' }]) {
+    await open(page, chainHash(bad));
+    const r = await readChain(page);
+    const want = cli(['chain', 'classify', ...chainArgs(bad)]);
+    check(want.status === 2 && r.error === want.stderr && r.svg === '' && r.census.nodes === '',
+      'chain ' + JSON.stringify(bad) + ': page "' + r.error + '" != CLI "' + want.stderr + '"');
+  }
+}
+
 (async () => {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
   const page = await browser.newPage({ viewport: { width: 1400, height: 1100 } });
@@ -743,11 +797,12 @@ async function checkClinostatRefusals(page) {
     await checkMarkers(page);
     await checkViewFromCurve(page);
     await checkClinostat(page);
+    await checkChain(page);
   } finally {
     await browser.close();
   }
   check(consoleErrors.length === 0, 'console errors: ' + consoleErrors.join(' | '));
   for (const f of failures) console.log('FAIL ' + f);
-  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones, Fig. 3 certified, palette, map hover, markers, clinostat' : failures.length + ' failures');
+  console.log(failures.length === 0 ? 'PASS: 22 states, bad input, slider, map click, scene export, trace and plot exports, inverse design, through 3 points, tolerance, drawn, legend, cones, Fig. 3 certified, palette, map hover, markers, clinostat, chain' : failures.length + ' failures');
   process.exit(failures.length === 0 ? 0 : 1);
 })().catch((e) => { console.log('FAIL ' + (e && e.stack ? e.stack : e)); process.exit(1); });

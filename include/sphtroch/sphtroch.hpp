@@ -118,6 +118,7 @@
 #include "sphtroch/census/interval/chain_enclosure.hpp"
 #include "sphtroch/census/interval/chain_event_roots.hpp"
 #include "sphtroch/census/interval/chain_family_events.hpp"
+#include "sphtroch/census/interval/chain_picture.hpp"
 #include "sphtroch/census/interval/chain_tangency.hpp"
 #include "sphtroch/synthesis/interval/boundary_enclosure.hpp"
 #include "sphtroch/synthesis/interval/free_axis_points.hpp"

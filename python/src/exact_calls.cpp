@@ -50,10 +50,7 @@ std::string chain_boundaries_json_text(const RotationChain& chain, const std::st
 }
 
 std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options) {
-  const ChainCensus c = classify_chain(chain);
-  const ChainCurve<double> curve(chain);
-  const std::size_t n = chain_plot_sample_count(chain);
-  return chain_plot_svg(chain, sample(curve, UniformSampling<double>{curve.period(), n, n, true}), c, options);
+  return chain_picture_svg(chain, classify_chain(chain), options);
 }
 
 std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,

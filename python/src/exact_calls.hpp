@@ -59,7 +59,7 @@ std::string chain_classification_json_text(const RotationChain& chain);
 std::string chain_classification_report_text(const RotationChain& chain);
 /// Chain.boundaries(vary): `sphtroch chain boundaries --vary VARY --json` (chain_family_events).
 std::string chain_boundaries_json_text(const RotationChain& chain, const std::string& vary);
-/// Chain.svg(): `sphtroch chain plot`'s SVG (chain_plot_svg of the chain_plot_sample_count samples).
+/// Chain.svg(): `sphtroch chain plot`'s SVG (chain_picture_svg of classify_chain's census).
 std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options);
 
 /// Python's classify_roots(): the root-count classification (Reading{literal}) as

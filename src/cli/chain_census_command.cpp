@@ -1,7 +1,7 @@
 // sphtroch chain classify | nodes | plot | boundaries — the certified census of a rotation chain's curve
 // (exact/chain_classification.hpp): its nodes and cusps, as text or JSON
 // (exact/chain_census_output.hpp), or as the nodes table of `sphtroch nodes` (io/node_csv.hpp,
-// the t columns are the motor parameter s), or drawn on the sphere (chain_plot_svg). Exit 3 after
+// the t columns are the motor parameter s), or drawn on the sphere (chain_picture_svg). Exit 3 after
 // the output when it is not certified.
 // The census is classify_chain's (exact/chain_classification.hpp): for k = 2 the gear train's,
 // checked by the chain census; for rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s,
@@ -71,10 +71,7 @@ void run_chain_plot(const ChainCensusOptions& o) {
   const RotationChain chain = o.chain.chain();
   const PlotOptions options = o.plot.options();  // checked before the work
   const ChainCensus c = census_of(o.chain, chain);
-  const ChainCurve<double> curve(chain);
-  const std::size_t n = chain_plot_sample_count(chain);
-  const std::string svg = chain_plot_svg(chain, sample(curve, UniformSampling<double>{curve.period(), n, n, true}), c, options);
-  const std::string bytes = picture_bytes(svg, o.output);
+  const std::string bytes = picture_bytes(chain_picture_svg(chain, c, options), o.output);
   write_output(o.output, [&](std::ostream& out) { out << bytes; });
   check_chain_certified(c);
 }

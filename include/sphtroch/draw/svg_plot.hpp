@@ -92,6 +92,10 @@ constexpr double kSilhouetteTolerance = 64 * 2.220446049250313e-16;
 namespace detail {
 /// Axes are drawn from the centre to this multiple of the radius.
 constexpr double kAxisReach = 1.22;
+/// The length of a picture vector, sqrt(dx^2 + dy^2): correctly rounded IEEE operations only, the
+/// same bits natively and in the explorer (the C libraries' hypot differ in the last bit, which
+/// can flip a choice of the Douglas-Peucker simplification). Pixel sizes: no overflow.
+inline double screen_length(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
 }  // namespace detail
 
 /// Samples of the trajectory drawn by `sphtroch plot` (and the analysis object's plot stage):
@@ -273,8 +277,8 @@ inline PlotLabels parse_plot_labels(std::string_view text, const std::string& fi
 
 inline SphereView SphereView::looking_from(double azimuth, double elevation, double cx, double cy, double radius) {
   SphereView v;
-  const double ca = std::cos(azimuth), sa = std::sin(azimuth);
-  const double ce = std::cos(elevation), se = std::sin(elevation);
+  const SinCos<double> a = sin_cos(azimuth), e = sin_cos(elevation);  // portable_trig.hpp: the explorer's bits too
+  const double ca = a.cos, sa = a.sin, ce = e.cos, se = e.sin;
   v.view = Vector3d(ce * ca, ce * sa, se);
   v.right = Vector3d(-sa, ca, 0.0);          // Z x view, normalised (horizontal)
   v.up = Vector3d(-se * ca, -se * sa, ce);   // view x right
@@ -335,7 +339,7 @@ inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint
   // Outward from the centre, bent towards the upper right so that a mark on an axis (a pole,
   // the centre) does not put its label on the axis line.
   double dx = at.x - layout.sphere.cx, dy = at.y - layout.sphere.cy;
-  const double len = std::hypot(dx, dy);
+  const double len = detail::screen_length(dx, dy);
   if (len > 1e-9 * layout.sphere.radius) {
     dx /= len;
     dy /= len;
@@ -344,7 +348,7 @@ inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint
   }
   dx += std::sqrt(0.5);
   dy -= std::sqrt(0.5);
-  const double len2 = std::hypot(dx, dy);
+  const double len2 = detail::screen_length(dx, dy);
   if (len2 > 1e-3) {
     dx /= len2;
     dy /= len2;
@@ -453,7 +457,7 @@ inline double segment_distance(const ScreenPoint& p, const ScreenPoint& a, const
   const double len2 = ux * ux + uy * uy;
   double t = len2 > 0 ? ((p.x - a.x) * ux + (p.y - a.y) * uy) / len2 : 0.0;
   t = std::min(1.0, std::max(0.0, t));
-  return std::hypot(p.x - (a.x + t * ux), p.y - (a.y + t * uy));
+  return screen_length(p.x - (a.x + t * ux), p.y - (a.y + t * uy));
 }
 
 /// Douglas-Peucker: which vertices to keep so that the kept polyline stays within `tol` of
@@ -774,7 +778,7 @@ class SphereCanvas {
     const Vector3d e = Vector3d::Unit(k);
     const ScreenPoint tip = cam_.project(kAxisReach * e);
     const double dx = tip.x - cam_.cx, dy = tip.y - cam_.cy;
-    const double len = std::hypot(dx, dy);
+    const double len = detail::screen_length(dx, dy);
     SvgPath& d = e.dot(cam_.view) >= 0 ? solid : dashed;
     d.move_to(cam_.cx, cam_.cy);
     d.line_to(tip.x, tip.y);

@@ -1,14 +1,11 @@
 // sphtroch/exact/chain_census_output.hpp — the chain census (census/interval/chain_census.hpp) as
-// JSON, as text and as a picture, for `sphtroch chain classify|plot` (and every front end that
-// reports a chain).
+// JSON and as text, for `sphtroch chain classify` (and every front end that reports a chain); the
+// picture is census/interval/chain_picture.hpp's.
 //
 //   const sphtroch::RotationChain chain({{1.0, sphtroch::ChainRate(1), 0.0}, {2.0, sphtroch::ChainRate(2, 3), 0.0}});
 //   const sphtroch::ChainCensus c = sphtroch::chain_census(chain);
 //   nlohmann::json j = sphtroch::chain_census_json(chain, c);   // the schema below
 //   std::string t = sphtroch::chain_census_text(chain, c);      // for people
-//   const sphtroch::ChainCurve<double> curve(chain);
-//   const std::size_t n = sphtroch::chain_plot_sample_count(chain);
-//   std::string svg = sphtroch::chain_plot_svg(chain, sphtroch::sample(curve, sphtroch::UniformSampling<double>{curve.period(), n, n, true}), c);
 //
 // JSON: "chain" {"twists", "rates" (exact, "p/q"), "phases" (as reduced), "period" (2 pi L / g),
 // "curve_period" (the census's: shorter when coaxial joints make the curve repeat)}; "class"
@@ -25,6 +22,7 @@
 #endif
 
 #include "sphtroch/census/interval/chain_census.hpp"
+#include "sphtroch/census/interval/chain_picture.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
 #include "sphtroch/exact/classification_output.hpp"
@@ -92,35 +90,6 @@ inline std::string chain_census_text(const RotationChain& chain, const ChainCens
     out << "  C" << ++id << "  (" << number_text(k.position.x()) << ", " << number_text(k.position.y()) << ", "
         << number_text(k.position.z()) << ")  s = " << number_text(k.param) << '\n';
   return out.str();
-}
-
-/// The caption of `chain plot`: "twists A1,..,Ak, rates N1,..,Nk[, phases ..] — N node(s)
-/// (C crossing, T tangency), K cusp(s)", the twists and phases as shortest round-trip doubles,
-/// the phases shown when one is not 0; " — NOT CERTIFIED: why" when the census is not certified.
-inline std::string chain_plot_caption(const RotationChain& chain, const ChainCensus& c) {
-  std::string twists, phases;
-  bool any_phase = false;
-  for (const ChainStage& s : chain.stages()) {
-    twists += (twists.empty() ? "" : ",") + number_text(s.twist);
-    phases += (phases.empty() ? "" : ",") + number_text(s.phase);
-    any_phase = any_phase || s.phase != 0.0;
-  }
-  std::size_t crossings = 0;
-  for (const Node& n : c.nodes) crossings += n.kind == NodeKind::crossing ? 1 : 0;
-  std::string caption = "twists " + twists + ", rates " + chain.rates_text() + (any_phase ? ", phases " + phases : "") + " — " +
-                        std::to_string(c.nodes.size()) + " node(s)";
-  if (!c.nodes.empty())
-    caption += " (" + std::to_string(crossings) + " crossing, " + std::to_string(c.nodes.size() - crossings) + " tangency)";
-  caption += ", " + std::to_string(c.cusps.size()) + " cusp(s)";
-  return c.certified ? caption : caption + " — NOT CERTIFIED: " + c.why;
-}
-
-/// `chain plot`: the sphere picture (draw/svg_plot.hpp) of `trajectory` (the chain's curve) with
-/// the census's nodes and cusps and chain_plot_caption, drawn with `options` (its caption replaced).
-inline std::string chain_plot_svg(const RotationChain& chain, const Trajectory<double>& trajectory, const ChainCensus& c,
-                                  PlotOptions options = {}) {
-  options.caption = chain_plot_caption(chain, c);
-  return render_sphere_svg(trajectory, c.nodes, c.cusps, options);
 }
 
 }  // namespace sphtroch

@@ -33,6 +33,8 @@
 // Certified: outside the brackets the census is constant (ChainEvents::uncovered is the
 // brackets' total width); the counts either side of each event are certified censuses. Known
 // limit: inside a bracket, changes closer than one bisection step that cancel are not seen.
+// A range end whose census shows a band state (a cusp, a node of three branches, two branches
+// touching) lies at an event or within its resolution band: not certified (move the end).
 // Twist ranges are searched within [kChainTwistMargin, pi - kChainTwistMargin]: at 0 and pi two
 // joints become coaxial and the chain is another one (its period and census jump).
 // Phase ranges lie within [-4 pi, 4 pi] and are at most 2 pi long (the family repeats every 2 pi;
@@ -312,6 +314,19 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
   return e;
 }
 
+/// `why` when the census at a range end shows an event's band state (band_state: a cusp, a node
+/// of three branches, two branches touching): the end lies at an event or within its resolution
+/// band, where the census at one value does not give the counts on either side of it.
+inline void check_range_end(const RotationChain& chain, const ChainVary& vary, double end, std::string& why) {
+  const ChainCensus c = chain_census(chain_at(chain, vary, end));
+  const CensusCounts k = counts_of(c);
+  if (!c.certified || !band_state(k, CensusCounts{})) return;
+  const std::string what = k.cusps > 0 ? "a cusp (|P'| <= " + number_text(kChainCuspResolution) + " sum |N_i|)"
+                           : k.multiple ? "a node of three or more branches" : "two branches touching";
+  why = "the range ends at an event or within its resolution band: the census at " + vary.name() + " = " + number_text(end) +
+        " shows " + what + "; move that end";
+}
+
 }  // namespace chain_family_detail
 
 /// The events of the family (see header), ascending, with `certified`, `why` and `accuracy`.
@@ -366,6 +381,7 @@ inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVa
         accuracy = std::max(accuracy, out.accuracies.back());
       }
   }
+  for (const double end : {range.lo, range.hi}) d::check_range_end(chain, range, end, out.why);
   if (exhausted) out.why = "the search stopped at its bound of " + std::to_string(budget) + " slab censuses";
   out.accuracy = out.events.empty() ? kChainChangeWidth : accuracy;
   out.uncovered = uncovered;
