@@ -522,6 +522,18 @@ TEST_CASE("chain boundaries (slab search): what it cannot certify exits 3 and wh
   CHECK(quiet.status == 3);
   CHECK(contains(quiet.out, "NOT CERTIFIED"));
   CHECK(count_lines(quiet.err) == 1);
+  // Range ends inside the band of the cusp birth at A3 ~ 0.8212428 (where chain classify reports a
+  // cusp) or at the self-tangency at A3 ~ 0.93774398878320 (two branches touching): the census at
+  // that end gives the counts of neither side; exit 3 naming the band, with or without events.
+  for (const std::string& vary : {"A3:0.8212430293:0.8212430294", "A3:0.8212427:0.8212429", "A3:0.8212430293:0.85"}) {
+    const std::string end = vary.substr(3, vary.find(':', 3) - 3);
+    const auto at = nlohmann::json::parse(run("chain classify --twists 1.2,0.9," + end + " --rates 1,2,-3 --json", dir).out);
+    CHECK(at["counts"]["cusps"].get<int>() >= 1);
+    const Result r = run("chain boundaries --twists 1.2,0.9,0.7 --rates 1,2,-3 --vary " + vary, dir, true);
+    INFO(vary << " -> " << r.err);
+    CHECK(r.status == 3);
+    CHECK(contains(r.err, "resolution band"));
+  }
   // A chain whose census cuts 38956 arcs: refused up front, naming --rates.
   const Result costly = run("chain boundaries --twists 1,2 --rates 1,97/89 --vary A1:0.5:1.5", dir, true);
   CHECK(costly.status == 2);
