@@ -20,9 +20,10 @@
 //     at single values (chain_census) inside it are bisected to kChainChangeWidth; a middle whose
 //     census is not certified stops the bisection (the change is known to that width), a middle
 //     with counts of neither side is a second change (both halves are searched). With the same
-//     counts on both sides, kChainBracketProbes values are probed first. Two changes within
-//     kChainBandWidth whose middle shows a cusp neither side shows are one cusp birth (the
-//     census reports a cusp where |P'| <= kChainCuspResolution Omega, a band around the birth).
+//     counts on both sides, kChainBracketProbes values are probed first. Changes within
+//     kChainBandWidth, the first into a band state (merge_bands), are one event: the census
+//     reports a cusp where |P'| <= kChainCuspResolution Omega (a band around a cusp birth), one
+//     node of three branches around a triple point, one touching node at a self-tangency.
 //  3. Kinds, from the counts and the census at the event's value: a cusp (P parallel to omega:
 //     the cusps differ, or the value shows one more); the same branch pairs on both sides (or a
 //     node of three branches at the value): a triple point, when the census at the middle shows
@@ -30,6 +31,8 @@
 //     event: the censuses at its ends and at the probes agree and nothing is about to meet; a
 //     bracket wider than kChainQuietWidth is then not certified: events that cancel could hide);
 //     otherwise a self-tangency.
+//  4. Roots: each event certified as the root of its square system (chain_event_roots.hpp); its
+//     value is then the root's (ChainEvents::roots; else the bracket's middle).
 // Certified: outside the brackets the census is constant (ChainEvents::uncovered is the
 // brackets' total width); the counts either side of each event are certified censuses. Known
 // limit: inside a bracket, changes closer than one bisection step that cancel are not seen.
