@@ -2,7 +2,7 @@
 // phases: the CLI's options and texts), its certified census and picture computed by the module in
 // a worker (chain_worker.js: classify_chain and chain_picture_svg, the bytes of `sphtroch chain
 // plot`), shown with the census line and the equivalent command. A change while the worker runs
-// ends it and starts another. Sets X.chain: {key, value (the module's object or {error}), done}
+// ends it and starts another (state.js's panelWorker). Sets X.chain: {key, value (the module's object or {error}), done}
 // of the texts shown, or null while the panel is off.
 // A two-stage chain with both rates not 0 is a gear train: the module gives its a2, a3, n, phase,
 // shown with a button that makes it the page's design (its census is the train's, as the CLI's).
@@ -14,8 +14,7 @@
 {
   const X = window.Explorer;
   const { $, byTestId } = X;
-  const DELAY_MS = 120;  // typing starts one job when it rests, not one per key
-  let worker = null, busy = false, job = 0, timer = null;
+  const jobs = X.panelWorker('chain', receive);
   X.chain = null;
 
   const textsOf = (s) => ({ twists: s.twists, rates: s.rates, phases: s.phases, markers: s.markers });
@@ -33,43 +32,22 @@
     $('chain-panel').hidden = !on;
     const key = JSON.stringify(textsOf(X.state));
     if (on && X.chain && X.chain.key === key) return;
-    if (timer) clearTimeout(timer);
-    ++job;  // an answer for other texts is dropped
     X.chain = on ? { key, value: null, done: false } : null;
-    if (!on) {
-      if (worker) worker.terminate();
-      worker = null;
-      busy = false;
-      return;
-    }
+    if (!on) return jobs.stop();
     setStatus('computing', 'computing …');
     render();
-    timer = setTimeout(startJob, DELAY_MS);
+    jobs.run({ texts: textsOf(X.state) });
   }
 
-  function startJob() {
-    timer = null;
-    if (busy) { worker.terminate(); worker = null; }  // a census cannot be interrupted otherwise
-    if (!worker) {
-      worker = X.newWorker();
-      worker.onmessage = receive;
-    }
-    busy = true;
-    worker.postMessage({ job: 'chain', id: job, texts: textsOf(X.state) });
-  }
-
-  function receive(ev) {
-    const { id, value } = ev.data;
-    busy = false;
-    if (id !== job || !X.chain) return;
+  // The newest job's answer (chain_worker.js): its value, then 'done'.
+  function receive({ part, value }) {
+    if (part !== 'value' || !X.chain) return;
     X.chain.value = value;
     X.chain.done = true;
     render();
     setStatus(value.error ? 'error' : 'done', value.error ? 'refused' : 'done');
   }
 
-  // A word of a shell command: as is when safe, else in single quotes.
-  const shellWord = (w) => (/^[A-Za-z0-9_.,:/+=-]+$/.test(w) ? w : "'" + w.replace(/'/g, "'\\''") + "'");
 
   function renderTrain(t) {
     const cell = byTestId('chain-train');
@@ -95,7 +73,7 @@
     const census = byTestId('chain-census');
     census.textContent = ok ? v.nodes + ' node(s), ' + v.cusps + ' cusp(s), ' + (v.certified ? 'certified' : 'NOT CERTIFIED: ' + v.why) : '';
     Object.assign(census.dataset, ok ? { nodes: v.nodes, cusps: v.cusps, certified: v.certified ? '1' : '0' } : { nodes: '', cusps: '', certified: '' });
-    const s = X.state, words = ['sphtroch chain plot --twists', shellWord(s.twists), '--rates', shellWord(s.rates)];
+    const s = X.state, shellWord = X.shellWord, words = ['sphtroch chain plot --twists', shellWord(s.twists), '--rates', shellWord(s.rates)];
     if (s.phases !== '') words.push('--phases', shellWord(s.phases));
     if (s.markers !== 'auto') words.push('--markers', s.markers);
     byTestId('chain-command').textContent = ok ? words.concat(['-o', 'chain.svg']).join(' ') : '';

@@ -2,7 +2,8 @@
 // before it; see bundle_worker.js): for a message {job: 'chain', id, texts} (twists, rates,
 // phases: the options of `sphtroch chain`; markers: `--markers`), the module's chainPlot() (the
 // chain's certified census and `sphtroch chain plot`'s SVG, or {error}: the CLI's line) posted as
-// {id, value}. The module is instantiated once per worker, at its first job.
+// {id, part: 'value', value}, then {id, part: 'done'}. The module is instantiated once per
+// worker, at its first job.
 'use strict';
 let chainModule = null;
 
@@ -10,5 +11,8 @@ self.addEventListener('message', (ev) => {
   if (ev.data.job !== 'chain') return;
   const { id, texts } = ev.data;
   if (!chainModule) chainModule = createSphtroch();
-  chainModule.then((lib) => self.postMessage({ id, value: lib.chainPlot(texts.twists, texts.rates, texts.phases, texts.markers) }));
+  chainModule.then((lib) => {
+    self.postMessage({ id, part: 'value', value: lib.chainPlot(texts.twists, texts.rates, texts.phases, texts.markers) });
+    self.postMessage({ id, part: 'done' });
+  });
 });

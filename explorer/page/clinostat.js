@@ -13,9 +13,8 @@
 {
   const X = window.Explorer;
   const { $, byTestId } = X;
-  const DELAY_MS = 120;  // typing starts one job when it rests, not one per key
   const view = { spin: 0.6, tilt: 0.35, zoom: 1, panX: 0, panY: 0 };
-  let worker = null, busy = false, job = 0, timer = null;
+  const jobs = X.panelWorker('clinostat', receive);
   X.clinostat = null;
 
   const textsOf = (s) => Object.fromEntries(X.CLINOSTAT_FIELDS.map((f) => [f, s[f]]));
@@ -33,35 +32,16 @@
     $('clinostat-panel').hidden = !on;
     const key = JSON.stringify(textsOf(X.state));
     if (on && X.clinostat && X.clinostat.key === key) return;
-    if (timer) clearTimeout(timer);
-    ++job;  // an answer for other texts is dropped
     X.clinostat = on ? { key, report: null, window: null, epsilon: null, windows: null, done: false } : null;
-    if (!on) {
-      if (worker) worker.terminate();
-      worker = null;
-      busy = false;
-      return;
-    }
+    if (!on) return jobs.stop();
     setStatus('computing', 'computing …');
     render();
-    timer = setTimeout(startJob, DELAY_MS);
+    jobs.run({ texts: textsOf(X.state) });
   }
 
-  function startJob() {
-    timer = null;
-    if (busy) { worker.terminate(); worker = null; }  // a search cannot be interrupted otherwise
-    if (!worker) {
-      worker = X.newWorker();
-      worker.onmessage = receive;
-    }
-    busy = true;
-    worker.postMessage({ job: 'clinostat', id: job, texts: textsOf(X.state) });
-  }
-
-  function receive(ev) {
-    const { id, part, value } = ev.data;
-    if (part === 'done') busy = false;
-    if (id !== job || !X.clinostat) return;
+  // The newest job's answers (clinostat_worker.js).
+  function receive({ part, value }) {
+    if (!X.clinostat) return;
     if (part === 'done') X.clinostat.done = true;
     else X.clinostat[part] = value;
     render();

@@ -164,5 +164,5 @@
     return words.join(' ');
   }
 
-  Object.assign(X, { fmt, renderReadouts, commandLine, renderClinostatReadouts, clinostatError });
+  Object.assign(X, { fmt, renderReadouts, commandLine, shellWord, renderClinostatReadouts, clinostatError });
 }

@@ -100,6 +100,42 @@ window.Explorer = {};
     return new Worker(URL.createObjectURL(new Blob([SPHTROCH_WORKER_SOURCE], { type: 'text/javascript' })));
   }
 
+  // A panel's job in a worker of its own (clinostat.js, chain.js): run(message) posts {job, id,
+  // ...message} once typing rests (DELAY_MS), ending a worker still busy with an older job (a
+  // search cannot be interrupted otherwise); onAnswer gets the messages of the newest job only,
+  // which is over at its {part: 'done'}. stop() drops every job and ends the worker.
+  function panelWorker(job, onAnswer) {
+    const DELAY_MS = 120;  // typing starts one job when it rests, not one per key
+    let worker = null, busy = false, id = 0, timer = null;
+    function start(message) {
+      timer = null;
+      if (busy) { worker.terminate(); worker = null; }
+      if (!worker) {
+        worker = newWorker();
+        worker.onmessage = (ev) => {
+          if (ev.data.part === 'done') busy = false;
+          if (ev.data.id === id) onAnswer(ev.data);
+        };
+      }
+      busy = true;
+      worker.postMessage(Object.assign({ job, id }, message));
+    }
+    return {
+      run(message) {
+        if (timer) clearTimeout(timer);
+        ++id;  // an answer for an older message is dropped
+        timer = setTimeout(() => start(message), DELAY_MS);
+      },
+      stop() {
+        if (timer) clearTimeout(timer);
+        timer = null;
+        ++id;
+        if (worker) worker.terminate();
+        worker = null;
+        busy = false;
+      } };
+  }
+
   // Samples of the drawn curve (and of the trace CSV export).
   function samplesFor(r) {
     return Math.min(200000, Math.max(2000, 600 * r.q * Math.min(40, Math.abs(r.p) + r.q)));
@@ -169,5 +205,5 @@ window.Explorer = {};
     $('phase-slider').value = X.result.phase;
   }
 
-  Object.assign(X, { readHash, writeHash, fillFields, readFields, newWorker, samplesFor, update, timing });
+  Object.assign(X, { readHash, writeHash, fillFields, readFields, newWorker, panelWorker, samplesFor, update, timing });
 }

@@ -7,6 +7,8 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
+#include "chain_cusp_support.hpp"
+
 #include "sphtroch/census/interval/chain_census.hpp"
 #include "sphtroch/census/root_census.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
@@ -105,17 +107,7 @@ TEST_CASE("chain census: a cusp built at a chosen s0 is reported there within 1e
     std::vector<ChainStage> st = {{twist(rng), ChainRate(1), phase(rng)}, {twist(rng), random_rate(rng, 3, false), phase(rng)},
                                   {1.0, random_rate(rng, 3, false), 0.0}};
     const double s0 = where(rng);
-    // omega(s0) does not depend on the last twist or phase: aim the tool axis along it.
-    const ChainCurve<double> probe{RotationChain(st)};
-    const std::vector<Vector3d> axes = probe.joint_axes(s0);
-    Vector3d omega = Vector3d::Zero();
-    for (std::size_t i = 0; i < 3; ++i) omega += st[i].rate.value() * axes[i];
-    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
-    for (std::size_t i = 0; i < 2; ++i)
-      r = r * Eigen::AngleAxisd(st[i].rate.value() * s0 + st[i].phase, Vector3d::UnitZ()) * Eigen::AngleAxisd(st[i].twist, Vector3d::UnitX());
-    const Vector3d u = r.transpose() * omega.normalized();  // wanted: Rz(theta3) Rx(A3) z = u
-    st[2].twist = std::acos(std::clamp(u.z(), -1.0, 1.0));
-    st[2].phase = std::atan2(u.x(), -u.y()) - st[2].rate.value() * s0;
+    st = sphtroch_test::with_cusp_at(st, s0);  // omega(s0) does not depend on the last twist or phase
     const RotationChain chain(st);
     const ChainCensus c = chain_census(chain);
     INFO("trial " << trial << " s0 " << s0 << " rates " << chain.rates_text());

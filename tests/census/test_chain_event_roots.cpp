@@ -7,6 +7,7 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 
+#include "chain_cusp_support.hpp"
 #include "sphtroch/census/interval/chain_event_roots.hpp"
 #include "sphtroch/census/interval/chain_family_events.hpp"
 
@@ -86,8 +87,8 @@ TEST_CASE("chain event roots: family_jet encloses the difference quotients of P 
 }
 
 TEST_CASE("chain event roots: a cusp built at a chosen s0 and last twist is certified there", "[chain_census]") {
-  // As the chain census's test: P(s0) aimed along omega(s0) by the last twist and phase (omega(s0)
-  // does not depend on them). With that phase fixed, the family A3 has a cusp at A3* = that twist,
+  // As the chain census's test: P(s0) aimed along omega(s0) by the last twist and phase
+  // (chain_cusp_support.hpp). With that phase fixed, the family A3 has a cusp at A3* = that twist,
   // at s0.
   std::mt19937_64 rng(7745);
   std::uniform_real_distribution<double> twist(0.2, 2.9), phase(-3.0, 3.0), where(0.1, 6.0);
@@ -97,16 +98,7 @@ TEST_CASE("chain event roots: a cusp built at a chosen s0 and last twist is cert
     std::vector<ChainStage> st = {{twist(rng), ChainRate(1), phase(rng)}, {twist(rng), ChainRate(1 + static_cast<int>(rng() % 3)), phase(rng)},
                                   {1.0, ChainRate(last_rates[rng() % 5]), 0.0}};
     const double s0 = where(rng);
-    const ChainCurve<double> probe{RotationChain(st)};
-    const std::vector<Vector3d> axes = probe.joint_axes(s0);
-    Vector3d omega = Vector3d::Zero();
-    for (std::size_t i = 0; i < 3; ++i) omega += st[i].rate.value() * axes[i];
-    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
-    for (std::size_t i = 0; i < 2; ++i)
-      r = r * Eigen::AngleAxisd(st[i].rate.value() * s0 + st[i].phase, Vector3d::UnitZ()) * Eigen::AngleAxisd(st[i].twist, Vector3d::UnitX());
-    const Vector3d u = r.transpose() * omega.normalized();
-    st[2].twist = std::acos(std::clamp(u.z(), -1.0, 1.0));
-    st[2].phase = std::atan2(u.x(), -u.y()) - st[2].rate.value() * s0;
+    st = sphtroch_test::with_cusp_at(st, s0);
     if (st[2].twist < 0.05 || st[2].twist > 3.09) continue;
     const RotationChain chain(st);
     const ChainVary a3{true, 3, st[2].twist - 1e-3, st[2].twist + 1e-3};
