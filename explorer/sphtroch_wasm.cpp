@@ -764,6 +764,7 @@ val clinostat_epsilon(const std::string& outer, const std::string& inner, const 
     out.set("resolutionS", r.resolution_s);
     out.set("firstS", or_null(r.first_s));
     out.set("staysBelowFromS", or_null(r.stays_below_from_s));
+    out.set("aboveS", or_null(r.above_s));
     out.set("reason", r.reason);
     out.set("certified", r.certified);
     return out;

@@ -360,7 +360,9 @@ async function checkThroughPoints(page) {
 // is the largest half-width free of boundaries); the margin's square is drawn about the cross.
 async function checkTolerance(page) {
   const states = [{ a2: '1', a3: '2', n: '5/2', phase: '0' }, { a2: '1.1', a3: '0.9', n: '2', phase: '0.4' },
-    { a2: '0.3', a3: '1.2', n: '-1', phase: '0' }, { a2: '0.7', a3: '2.5', n: '13/5', phase: '0' }];
+    { a2: '0.3', a3: '1.2', n: '-1', phase: '0' }, { a2: '0.7', a3: '2.5', n: '13/5', phase: '0' },
+    { a2: 'pi/2', a3: 'pi/2', n: '1', phase: '0' }, { a2: '1.5', a3: '1.5', n: '1', phase: '0' },  // the report's Fig. 3; n = +-1
+    { a2: 'pi/2', a3: 'pi/2', n: '-1/2', phase: '0' }, { a2: '1.2', a3: '1.2', n: '-1', phase: '0' }];
   const readTolerance = () => page.evaluate(() => {
     const m = document.querySelector('[data-testid="margin"]'), t = document.querySelector('[data-testid="tolerance"]');
     return { lower: m.dataset.lower, upper: m.dataset.upper, verdict: t.dataset.verdict, text: t.textContent };
@@ -379,11 +381,13 @@ async function checkTolerance(page) {
     const want = JSON.parse(cli(['tolerance', ...trainArgs(s), '--tol-a2', '0.1deg', '--tol-a3', '0.1deg', '--json']).stdout);
     check(got.verdict === want.topology, where + ': page ' + got.verdict + ' != CLI ' + want.topology + ' (' + got.text + ')');
     const lower = Number(got.lower), upper = Number(got.upper);
+    check(want.margin.converged, where + ': the CLI margin did not converge');
     check(lower > 0 && Math.max(lower, want.margin.lower) <= Math.min(upper, want.margin.upper) * (1 + 1e-12),
       where + ': page margin [' + got.lower + ', ' + got.upper + '] and CLI [' + want.margin.lower + ', ' + want.margin.upper + '] do not overlap');
     const wide = String(1.01 * upper);
-    if (Number(s.a2) - 1.01 * upper > 1e-6 && Number(s.a2) + 1.01 * upper < Math.PI - 1e-6 &&
-        Number(s.a3) - 1.01 * upper > 1e-6 && Number(s.a3) + 1.01 * upper < Math.PI - 1e-6) {
+    const radians = (t) => (t === 'pi/2' ? Math.PI / 2 : Number(t));
+    const [a2, a3] = [radians(s.a2), radians(s.a3)];
+    if (a2 - 1.01 * upper > 1e-6 && a2 + 1.01 * upper < Math.PI - 1e-6 && a3 - 1.01 * upper > 1e-6 && a3 + 1.01 * upper < Math.PI - 1e-6) {
       const beyond = await setBox(wide, wide);
       check(beyond.verdict === 'changes' || beyond.verdict === 'undecided', where + ': a box of half-width 1.01 x upper ' + beyond.verdict);
     }

@@ -5,7 +5,8 @@
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
 //     gear train, window means, the worst window mean, the time to epsilon).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
-//   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains as URDF).
+//   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains read
+//     from URDF; io/urdf_writer.hpp writes them without it).
 //   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds census/interval/
 //     (the certified census of rotation chains) and synthesis/interval/:
 //     interval arithmetic, certified root isolation, precision points (fixed frame, free axis),
@@ -59,6 +60,8 @@
 #include "sphtroch/io/ratio_set.hpp"
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/train_text.hpp"
+#include "sphtroch/io/urdf_writer.hpp"
+#include "sphtroch/io/xml_shape.hpp"
 #if defined(SPHTROCH_HAVE_URDF)
 #include "sphtroch/io/urdf_chain.hpp"
 #endif

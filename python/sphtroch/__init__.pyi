@@ -217,6 +217,7 @@ class TimeToEpsilon(TypedDict):
     resolution_s: float
     first_s: Optional[float]
     stays_below_from_s: Optional[float]
+    above_s: Optional[float]
     reason: str
     certified: bool
 
@@ -634,9 +635,10 @@ class Clinostat:
         """How long to average before the mean is below epsilon whenever the experiment starts, as
         `sphtroch clinostat --epsilon E --resolution S --json`: windows W = S, 2S, ...;
         {"epsilon", "resolution_s", "first_s" (the shortest W with M(W) <= epsilon),
-        "stays_below_from_s" (the shortest W from which every longer one is below: M is not
-        monotone), "reason" (why both are None, or why not certified), "certified"}. epsilon:
-        (0, 1e9) units of g0; resolution: (0, 1e6] s. Raises InvalidInput: "epsilon",
+        "stays_below_from_s" (a multiple of S from which every longer window, of any real
+        length, is below: M is not monotone), "above_s" (a length above epsilon within 2 S below
+        it, or None), "reason" (why both are None, or why not certified), "certified"}. epsilon:
+        [1e-12, 1e9] units of g0; resolution: (0, 1e6] s. Raises InvalidInput: "epsilon",
         "resolution" (also when the search would cover more than 10**6 windows), "outer"."""
     def coverage(self, duration: Real, nside: Count = 8, start: Real = 0.0) -> npt.NDArray[np.float64]:
         """Seconds g_s spends in each cell of the HEALPix grid of nside (RING order: healpy draws

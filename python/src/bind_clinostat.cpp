@@ -19,9 +19,6 @@
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
-#if defined(SPHTROCH_HAVE_HEALPIX)
-#include "sphtroch/machine/dwell_map.hpp"
-#endif
 
 #include <pybind11/numpy.h>
 
@@ -173,6 +170,7 @@ py::dict time_to(const Machine& self, py::handle epsilon, py::handle resolution)
   d["resolution_s"] = r;
   d["first_s"] = or_none(t.first_s);
   d["stays_below_from_s"] = or_none(t.stays_below_from_s);
+  d["above_s"] = or_none(t.above_s);
   d["reason"] = t.reason;
   d["certified"] = t.certified;
   return d;
@@ -191,49 +189,36 @@ DwellRequest dwell_request(py::handle duration, py::handle nside_arg, py::handle
   if ((nside & (nside - 1)) != 0) throw InvalidInput("nside", std::to_string(nside), "not a power of two", "1, 2, 4, ..., 1024");
   q.nside = static_cast<int>(nside);
   q.start = time_arg(start, "start");
-#if !defined(SPHTROCH_HAVE_HEALPIX)
-  throw InvalidInput("coverage", number_text(q.duration), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)",
-                     "coverage in a build with HEALPix");
-#endif
   return q;
 }
 
-#if defined(SPHTROCH_HAVE_HEALPIX)
-DwellMap dwell(const Machine& self, const DwellRequest& q) {
-  py::gil_scoped_release release;
-  return dwell_map(self.machine, q.start, q.duration, q.nside);
+/// The dwell map from sphtroch._sphtroch_healpix (healpix_module.cpp), imported here on first use
+/// so that `import sphtroch` loads no HEALPix: its dict, or InvalidInput as dwell_map refuses.
+py::dict dwell(const Machine& self, const DwellRequest& q) {
+  const ClinostatSettings& s = self.machine.settings();
+  const py::object dwell_map = py::module_::import("sphtroch._sphtroch_healpix").attr("dwell_map");
+  py::dict d = dwell_map(s.outer.num(), s.outer.den(), s.inner.num(), s.inner.den(), s.tilt_deg, s.frame_angle_deg, s.phase_outer_deg,
+                         s.phase_inner_deg, s.offset_m.x(), s.offset_m.y(), s.offset_m.z(), q.start, q.duration, q.nside);
+  if (d.contains("error")) {
+    const py::tuple e = d["error"];
+    throw InvalidInput(e[0].cast<std::string>(), e[1].cast<std::string>(), e[2].cast<std::string>(), e[3].cast<std::string>());
+  }
+  return d;
 }
 
-py::array_t<double> coverage(const Machine& self, py::handle duration, py::handle nside, py::handle start) {
-  const DwellRequest q = dwell_request(duration, nside, start);
-  auto cells = std::make_unique<std::vector<double>>(dwell(self, q).dwell_s);
-  const std::vector<double>& v = *cells;
-  const py::capsule owner = capsule_of(std::move(cells));
-  return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data(), owner);
+py::object coverage(const Machine& self, py::handle duration, py::handle nside, py::handle start) {
+  return dwell(self, dwell_request(duration, nside, start))["dwell_s"];
 }
 
 py::dict coverage_summary(const Machine& self, py::handle duration, py::handle nside, py::handle start) {
-  const DwellMap m = dwell(self, dwell_request(duration, nside, start));
+  const py::dict m = dwell(self, dwell_request(duration, nside, start));
   py::dict d;
-  d["start_s"] = m.start_s;
-  d["duration_s"] = m.duration_s;
-  d["nside"] = m.nside;
-  d["fraction"] = m.visited_fraction;
-  d["dwell_cv"] = m.dwell_cv;
-  d["bound_s"] = m.bound_s;
+  for (const char* key : {"start_s", "duration_s", "nside"}) d[key] = m[key];
+  d["fraction"] = m["fraction"];
+  d["dwell_cv"] = m["dwell_cv"];
+  d["bound_s"] = m["bound_s"];
   return d;
 }
-#else
-py::array_t<double> coverage(const Machine&, py::handle duration, py::handle nside, py::handle start) {
-  dwell_request(duration, nside, start);  // throws: no HEALPix
-  return py::array_t<double>(0);
-}
-
-py::dict coverage_summary(const Machine&, py::handle duration, py::handle nside, py::handle start) {
-  dwell_request(duration, nside, start);  // throws: no HEALPix
-  return py::dict();
-}
-#endif
 
 py::object train_map(const Machine& self) {
   if (!self.train.train) return py::none();

@@ -82,7 +82,7 @@ void run_plot(const AnalysisOptions& o) {
   const std::string svg =
       plot_svg(o.train, a.analysed(), a.plot_trajectory(), a.nodes(), a.cusps(), &a.certificate(), options);
   const std::string bytes = picture_bytes(svg, o.output);  // PNG for FILE.png
-  write_output(o.output, [&](std::ostream& out) { out << bytes; });
+  write_output(o.output, [&](std::ostream& out) { out << bytes; }, "--output", kPictureOutputs);
   check_certified(a.certificate());
 }
 

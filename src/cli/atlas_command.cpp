@@ -111,7 +111,7 @@ void write_atlas_outputs(const std::string& csv, const std::string& svg_path, co
                          const std::function<void(std::ostream&)>& write_summary) {
   StagedOutputs outputs;
   if (!csv.empty()) outputs.stage(csv, "--output", write_csv);
-  if (!svg_path.empty()) outputs.stage(svg_path, "--svg", [&](std::ostream& out) { out << svg; });
+  if (!svg_path.empty()) outputs.stage(svg_path, "--svg", [&](std::ostream& out) { out << svg; }, kPictureOutputs);
   outputs.commit();
   if (csv == "-") {
     write_summary(std::cerr);
@@ -222,7 +222,8 @@ void run_merge(const MergeOptions& o) {
     StagedOutputs outputs;
     if (o.output.empty() || o.output == "-") pass(nullptr);  // every check before stdout sees a byte
     if (!o.output.empty()) outputs.stage(o.output, "--output", [&](std::ostream& out) { pass(&out); });
-    if (!o.svg.empty()) outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << picture_bytes(write_svg_text(spec, all, o.degrees), o.svg); });
+    if (!o.svg.empty())
+      outputs.stage(o.svg, "--svg", [&](std::ostream& out) { out << picture_bytes(write_svg_text(spec, all, o.degrees), o.svg); }, kPictureOutputs);
     outputs.commit();
     auto write_summary = [&](std::ostream& out) {
       write_atlas_summary(out, spec, summary, listed, AtlasRun{AtlasRows{0, spec.grid}, std::nullopt, std::nullopt, 1});

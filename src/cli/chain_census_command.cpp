@@ -72,7 +72,7 @@ void run_chain_plot(const ChainCensusOptions& o) {
   const PlotOptions options = o.plot.options();  // checked before the work
   const ChainCensus c = census_of(o.chain, chain);
   const std::string bytes = picture_bytes(chain_picture_svg(chain, c, options), o.output);
-  write_output(o.output, [&](std::ostream& out) { out << bytes; });
+  write_output(o.output, [&](std::ostream& out) { out << bytes; }, "--output", kPictureOutputs);
   check_chain_certified(c);
 }
 
@@ -139,8 +139,9 @@ void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Act
     add_output_option(*cmd, b->output, "the events");
     cmd->footer("Closed forms: P1 of any chain and P2 of a two-stage chain (no event: the curve turns about z);\n"
                 "A2 of a two-stage chain (the gear train's boundaries: pitch cones, poles, self-tangencies).\n"
-                "Every other family: one certified census per slab of the range, failed slabs halved to 1e-9:\n"
-                "cusp births, self-tangencies and triple points within the stated accuracy (docs/chains.md).\n"
+                "Every other family: one certified census per slab of the range, failed slabs halved to " + number_text(kChainEventWidth) + " rad,\n"
+                "then bisected with the census at single values: cusp births, self-tangencies and triple points\n"
+                "within the stated accuracy (docs/chains.md).\n"
                 "Exit 3, after the report, when not certified.\n"
                 "Example: sphtroch chain boundaries --twists pi/2,1 --rates 1,3 --vary A2:0:pi");
     actions.emplace_back(cmd, [b] { run_chain_boundaries(*b); });

@@ -3,13 +3,15 @@
 // parameter s), .npy, DXF or OBJ. For k = 2 with rates 1,n and phases 0,theta_p the bytes are
 // those of `sphtroch trace --a2 A1 --a3 A2 --n n --phase theta_p` (ChainCurve computes the same
 // bits as TracerCurve, and the default sample count is the same). export writes a URDF
-// (io/urdf_chain.hpp). classify, nodes, plot and boundaries need the census: chain_census_command.cpp.
+// (io/urdf_writer.hpp); --urdf is read through the URDF plugin (urdf_input.hpp). classify, nodes, plot and boundaries need the census: chain_census_command.cpp.
 #include "cli_common.hpp"
+#include "urdf_input.hpp"
 
 #include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/trace_output.hpp"
+#include "sphtroch/io/urdf_writer.hpp"
 
 #include <cmath>
 
@@ -32,6 +34,7 @@ TraceFormat chain_format(const ChainOptions& o) {
   if (f == "npy" || (f.empty() && ends("npy"))) return TraceFormat::npy;
   if (f == "dxf" || (f.empty() && ends("dxf"))) return TraceFormat::dxf;
   if (f == "obj" || (f.empty() && ends("obj"))) return TraceFormat::obj;
+  if (f.empty()) check_output_suffix(o.output, "output", {"csv", "txt", "text", "npy", "dxf", "obj"});  // .step, .stl: refused
   if (f.empty() || f == "csv") return TraceFormat::csv;
   throw InvalidInput("format", f, "not a format of chain trace", "csv, npy, dxf (3-D polyline), obj (polyline)");
 }
@@ -63,22 +66,19 @@ struct ChainExportOptions {
   std::string urdf, name;
 };
 
-/// chain export --urdf FILE: the chain as a URDF (io/urdf_chain.hpp), joint_1.. with <mimic>.
+/// chain export --urdf FILE: the chain as a URDF (io/urdf_writer.hpp), joint_1.. with <mimic>.
 void run_chain_export(const ChainExportOptions& o) {
   const RotationChain chain = o.chain.chain();
-#if defined(SPHTROCH_HAVE_URDF)
   const std::string xml = chain_to_urdf(chain, o.name.empty() ? "sphtroch_chain" : o.name);
   OutputFile out = OutputFile::open(o.urdf, "--urdf");
   out.write(xml);
   out.commit();
-#else
-  throw InvalidInput("urdf", o.urdf, "this build has no urdfdom", "a build with sphtroch::urdf (Debian's liburdfdom-dev)");
-#endif
 }
 
 }  // namespace
 
 void add_chain_options(CLI::App& cmd, ChainText& chain) {
+  chain.urdf_reader = &urdf_chain_by_plugin;  // urdfdom opened only when --urdf is read
   cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)");
   cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)");
   cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");

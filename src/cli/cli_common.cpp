@@ -123,7 +123,44 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
   }
 }
 
-void write_output(const std::string& path, const std::function<void(std::ostream&)>& write, const std::string& field) {
+const std::vector<std::string> kTextOutputs = {"txt", "text", "csv", "tsv", "json", "svg"};
+const std::vector<std::string> kPictureOutputs = {"svg", "png"};
+
+namespace {
+
+/// Suffixes that name a format: data, CAD, picture and document formats a user may expect a
+/// command to write by name.
+const std::vector<std::string> kNamedFormats = {
+    "txt", "text", "csv", "tsv", "json", "jsonl", "yaml", "yml", "xml", "html", "htm", "md", "svg", "png", "jpg", "jpeg", "gif",
+    "bmp", "tif", "tiff", "webp", "pdf", "eps", "ps", "npy", "npz", "mat", "h5", "hdf5", "fits", "parquet", "xls", "xlsx", "dxf",
+    "obj", "stl", "ply", "off", "vtk", "vtp", "step", "stp", "iges", "igs", "3mf", "gltf", "glb", "urdf", "xyz"};
+
+std::string lower_suffix(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = name.find_last_of('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == name.size()) return "";
+  std::string ext = name.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace
+
+void check_output_suffix(const std::string& path, const std::string& field, const std::vector<std::string>& writes) {
+  if (path.empty() || path == "-") return;
+  const std::string ext = lower_suffix(path);
+  if (ext.empty() || std::find(kNamedFormats.begin(), kNamedFormats.end(), ext) == kNamedFormats.end()) return;
+  if (std::find(writes.begin(), writes.end(), ext) != writes.end()) return;
+  std::string valid;
+  for (const std::string& w : writes) valid += (valid.empty() ? "FILE." : ", FILE.") + w;
+  throw InvalidInput(field, path, "this command does not write ." + ext + " (the suffix names the format)",
+                     valid + ", or a name without such a suffix");
+}
+
+void write_output(const std::string& path, const std::function<void(std::ostream&)>& write, const std::string& field,
+                  const std::vector<std::string>& writes) {
+  check_output_suffix(path, field, writes);
   OutputFile file = OutputFile::open(path, field);
   {
     OutputStream out(file);
@@ -153,7 +190,8 @@ OutputFile& StagedOutputs::open(const std::string& path, const std::string& fiel
 }
 
 void StagedOutputs::stage(const std::string& path, const std::string& field,
-                          const std::function<void(std::ostream&)>& write) {
+                          const std::function<void(std::ostream&)>& write, const std::vector<std::string>& writes) {
+  check_output_suffix(path, field, writes);
   OutputFile& file = open(path, field);
   {
     OutputStream out(file);

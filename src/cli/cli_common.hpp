@@ -80,17 +80,31 @@ struct PlotFlags {
 /// in any case): SVG bytes in a .png are a file no viewer opens. Other names pass.
 void check_svg_name(const std::string& path, const std::string& field);
 
+/// The formats of text outputs (reports, tables, JSON, SVG): an output named with one of these
+/// suffixes, or with none, or with one that names no format, gets the command's text.
+extern const std::vector<std::string> kTextOutputs;
+/// The formats of pictures: SVG, or PNG rendered from it (png_output.hpp).
+extern const std::vector<std::string> kPictureOutputs;
+
+/// Refuses (InvalidInput naming `field`, exit 2, before any file is opened) an
+/// output whose suffix (any case, of the file name) names a format (a list of data, CAD and picture
+/// formats: .stl, .step, .png, .npy, .pdf, ...) that is not among `writes`: a command writes the
+/// format its suffix names or refuses it, never another one silently.
+void check_output_suffix(const std::string& path, const std::string& field, const std::vector<std::string>& writes);
+
 /// Writes text produced by `write` to stdout (path empty or "-"), or to `path` (see
-/// OutputFile: a file appears complete or not at all). `field` names the option in errors.
+/// OutputFile: a file appears complete or not at all). `field` names the option in errors;
+/// `writes` the formats its suffix may name (check_output_suffix, checked first).
 /// Validate before calling: on stdout the bytes go out as they are written.
 void write_output(const std::string& path, const std::function<void(std::ostream&)>& write,
-                  const std::string& field = "--output");
+                  const std::string& field = "--output", const std::vector<std::string>& writes = kTextOutputs);
 
 /// Several outputs that appear together or not at all (commit_together): stage() writes each;
 /// commit() puts them all in place; the destructor removes every temporary not committed.
 class StagedOutputs {
  public:
-  void stage(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write);
+  void stage(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write,
+             const std::vector<std::string>& writes = kTextOutputs);
   /// The file of a stage, for writers that stream into it directly.
   OutputFile& open(const std::string& path, const std::string& field);
   void commit();

@@ -1,8 +1,9 @@
 // sphtroch clinostat — a two-axis clinostat or random positioning machine: its gravity path as a
 // gear train, the mean over a period, the worst window mean, the time to epsilon, the dwell map;
 // or (--trace) the gravity seen by the sample as CSV t,gx,gy,gz or .npy. Eigen (+ HEALPix for
-// --coverage); the library's machine/ layer does the work (docs/clinostat.md).
+// --coverage, opened on demand: dwell_input.hpp); the library's machine/ layer does the work (docs/clinostat.md).
 #include "cli_common.hpp"
+#include "dwell_input.hpp"
 #include "png_output.hpp"
 
 #include "sphtroch/io/npy.hpp"
@@ -10,10 +11,8 @@
 #include "sphtroch/machine/clinostat_plot.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
+#include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
-#if defined(SPHTROCH_HAVE_HEALPIX)
-#include "sphtroch/machine/dwell_map.hpp"
-#endif
 
 #include <nlohmann/json.hpp>
 
@@ -88,9 +87,7 @@ struct Report {
   const GravitySeries* series = nullptr;
   std::optional<WorstWindowMean> worst;
   std::optional<TimeToEpsilon> time_to;
-#if defined(SPHTROCH_HAVE_HEALPIX)
   std::optional<DwellMap> dwell;
-#endif
   bool effective = false;
 };
 
@@ -108,14 +105,13 @@ nlohmann::json report_json(const Report& r, const Request& q) {
     const auto or_null = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
     out["time_to_epsilon"] = {{"epsilon", r.time_to->epsilon}, {"resolution_s", q.resolution},
                               {"first_s", or_null(r.time_to->first_s)}, {"stays_below_from_s", or_null(r.time_to->stays_below_from_s)},
+                              {"above_s", or_null(r.time_to->above_s)},
                               {"reason", r.time_to->reason}, {"certified", r.time_to->certified}};
   }
-#if defined(SPHTROCH_HAVE_HEALPIX)
   if (r.dwell)
     out["coverage"] = {{"start_s", r.dwell->start_s}, {"duration_s", r.dwell->duration_s}, {"nside", r.dwell->nside},
                        {"order", "RING"}, {"fraction", r.dwell->visited_fraction}, {"dwell_cv", r.dwell->dwell_cv},
                        {"bound_s", r.dwell->bound_s}, {"dwell_s", r.dwell->dwell_s}};
-#endif
   return out;
 }
 
@@ -152,39 +148,39 @@ void write_report_text(std::ostream& out, const Clinostat& m, const Report& r, c
     out << "time to epsilon = " << number_text(r.time_to->epsilon) << " g0 (windows in steps of " << number_text(q.resolution) << " s): ";
     if (r.time_to->first_s)
       out << "the first window below is " << number_text(*r.time_to->first_s) << " s; every window from "
-          << number_text(*r.time_to->stays_below_from_s) << " s on is below\n";
+          << number_text(*r.time_to->stays_below_from_s) << " s on, of any length, is below"
+          << (r.time_to->above_s ? " (one of " + number_text(*r.time_to->above_s) + " s is above)" : std::string()) << "\n";
     else
       out << (r.time_to->certified ? "none: " : "NOT CERTIFIED: ") << r.time_to->reason << "\n";
   }
-#if defined(SPHTROCH_HAVE_HEALPIX)
   if (r.dwell)
     out << "coverage over [" << number_text(r.dwell->start_s) << ", " << number_text(r.dwell->start_s + r.dwell->duration_s)
         << "] s on " << r.dwell->dwell_s.size() << " HEALPix cells (nside " << r.dwell->nside << "): " << number_text(100 * r.dwell->visited_fraction)
         << "% visited, dwell coefficient of variation " << number_text(r.dwell->dwell_cv) << "; each cell's time within "
         << number_text(r.dwell->bound_s) << " s (--json gives the dwell per cell)\n";
-#endif
 }
 
 /// --plot: the dwell map of the report's coverage (or of one period, at most an hour) and M(W)
-/// at 100 windows up to 1.25 times the time to epsilon (or three periods, at most two hours).
+/// at 100 windows up to 1.25 times the time to epsilon (or three periods, at most two hours), by
+/// window_curve (searched, or the torus bound when 100 searches would cost more than
+/// kMaxCurvePieces: the picture's cost is bounded whatever the period).
 std::string plot_svg(const Clinostat& m, const GravitySeries& series, const Report& r, const Request& q) {
   ClinostatPlot plot;
   const ClinostatSettings& s = m.settings();
   plot.title = "clinostat " + s.outer.str() + " / " + s.inner.str() + " rpm, tilt " + number_text(s.tilt_deg) + " deg, frame angle " +
                number_text(s.frame_angle_deg) + " deg";
   const double period = series.period_s().value_or(60.0);
-#if defined(SPHTROCH_HAVE_HEALPIX)
-  const DwellMap dwell = r.dwell ? *r.dwell : dwell_map(m, q.start, std::min(period, 3600.0), q.nside);
-  plot.cells = cell_outlines(dwell.nside);
-  plot.dwell_s = dwell.dwell_s;
-  plot.title += "; dwell over " + number_text(dwell.duration_s) + " s";
-#endif
+  if (r.dwell || std::string(healpix_plugin_state()) == "yes") {  // the dwell panel: in a build with HEALPix
+    const DwellMap dwell = r.dwell ? *r.dwell : dwell_map_by_plugin(m.settings(), q.start, std::min(period, 3600.0), q.nside);
+    plot.cells = cell_outlines_by_plugin(dwell.nside);
+    plot.dwell_s = dwell.dwell_s;
+    plot.title += "; dwell over " + number_text(dwell.duration_s) + " s";
+  }
   plot.epsilon = q.epsilon;
   const double longest = r.time_to && r.time_to->stays_below_from_s ? 1.25 * *r.time_to->stays_below_from_s : std::min(3 * period, 7200.0);
-  for (int k = 1; k <= 100; ++k) {
-    const WorstWindowMean w = worst_window_mean(series, longest * k / 100, 1e-6);
-    plot.windows.push_back({w.window_s, w.lower, w.upper});
-  }
+  const WindowCurve curve = window_curve(series, longest, 100);
+  for (const WorstWindowMean& w : curve.points) plot.windows.push_back({w.window_s, w.lower, w.upper});
+  if (curve.torus) plot.window_note = "the period is too long to search: the upper bound over every frame angle";
   return clinostat_plot_svg(plot);
 }
 
@@ -206,9 +202,8 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
   if (!o.plot.empty()) check_plot_request(o.plot, q);
   if (!o.start.empty() && !q.coverage && o.plot.empty())
     throw UsageError{"--start = " + o.start + ": only with --coverage, --plot or --trace; valid: --coverage S --start T"};
-#if !defined(SPHTROCH_HAVE_HEALPIX)
-  if (q.coverage) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
-#endif
+  if (q.coverage && std::string(healpix_plugin_state()) == "no")
+    throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
   Report r;
   r.effective = m.has_offset();
   const GravitySeries series = r.effective ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);
@@ -217,12 +212,10 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
   if (q.window || q.epsilon) worst_window_mean_cost(series);  // refuse a period too long up front
   if (q.window) r.worst = worst_window_mean(series, *q.window);
   if (q.epsilon) r.time_to = time_to_epsilon(series, *q.epsilon, q.resolution);
-#if defined(SPHTROCH_HAVE_HEALPIX)
-  if (q.coverage) r.dwell = dwell_map(m, q.start, *q.coverage, q.nside);
-#endif
+  if (q.coverage) r.dwell = dwell_map_by_plugin(m.settings(), q.start, *q.coverage, q.nside);
   std::vector<std::string> written;
   if (!o.plot.empty()) {
-    write_output(o.plot, [&](std::ostream& out) { out << picture_bytes(plot_svg(m, series, r, q), o.plot); }, "--plot");
+    write_output(o.plot, [&](std::ostream& out) { out << picture_bytes(plot_svg(m, series, r, q), o.plot); }, "--plot", kPictureOutputs);
     written.push_back(o.plot);
   }
   write_stdout_after_outputs(written, [&](std::ostream& out) {
@@ -244,7 +237,10 @@ void run_trace(const ClinostatOptions& o, const Clinostat& m) {
   const double duration = parse_positive(o.duration, "duration", Clinostat::kMaxTime, "seconds in (0, 1e12]");
   const double start = parse_time(o.start, "start");
   const std::size_t n = o.samples.empty() ? 1001 : parse_count(o.samples, "samples", 2, kMaxSamples);
-  const bool npy = o.output.size() >= 4 && o.output.compare(o.output.size() - 4, 4, ".npy") == 0;
+  check_output_suffix(o.output, "output", {"csv", "txt", "text", "npy"});
+  std::string lower = o.output;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool npy = lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".npy") == 0;
   const bool effective = m.has_offset();
   OutputFile out = OutputFile::open(o.output, "--output");
   if (npy) out.write(npy_header(n, 4));

@@ -7,6 +7,7 @@
 // ranked_output() ranks them and writes the whole; `merge` rebuilds the rows from the parts and
 // calls the same function, so a merged run equals the unsharded one byte for byte.
 #include "cli_common.hpp"
+#include "dwell_input.hpp"
 #include "shard_parts.hpp"
 
 #include "sphtroch/core/parallel_for.hpp"
@@ -53,7 +54,8 @@ DesignRequest read_design_request(const DesignOptions& o) {
   r.outer = parse_speed_range(o.outer, o.step, "outer");
   r.inner = parse_speed_range(o.inner, o.step, "inner");
   r.window_s = parse_design_number(o.window, "window", 1e9, "seconds in (0, 1e9]");
-  r.epsilon = parse_design_number(o.epsilon, "epsilon", 1e9, "0 < epsilon <= 1e9 (units of g0)");
+  r.epsilon = parse_design_number(o.epsilon, "epsilon", 1e9, "1e-12 <= epsilon <= 1e9 (units of g0)");
+  if (r.epsilon < kMinEpsilon) throw InvalidInput("epsilon", o.epsilon, "below the rounding of the mean over a period", "1e-12 <= epsilon <= 1e9 (units of g0)");
   if (!o.resolution.empty()) r.resolution_s = parse_design_number(o.resolution, "resolution", 1e6, "seconds in (0, 1e6]");
   if (!o.coverage.empty()) r.coverage_s = parse_design_number(o.coverage, "coverage", 1e12, "seconds in (0, 1e12]");
   if (!o.nside.empty()) {
@@ -62,9 +64,9 @@ DesignRequest read_design_request(const DesignOptions& o) {
     r.nside = static_cast<int>(parse_count(o.nside, "nside", 1, kMaxDesignNside));
     if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 64");
   }
-#if !defined(SPHTROCH_HAVE_HEALPIX)
-  if (r.coverage_s) throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
-#endif
+  r.dwell = &dwell_map_by_plugin;  // HEALPix opened only when a coverage is asked
+  if (r.coverage_s && std::string(healpix_plugin_state()) == "no")
+    throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
   if (!o.teeth.empty()) r.teeth = parse_tooth_range(o.teeth, "teeth");
   if (!o.tilt.empty()) r.tilt_deg = parse_degrees(o.tilt, "tilt", "[0, 180] degrees");
   if (!o.frame_angle.empty()) r.frame_angle_deg = parse_degrees(o.frame_angle, "frame-angle", "[0, 180] degrees");
@@ -208,6 +210,19 @@ void finish_run(const nlohmann::json& run, const std::string& output, bool json,
                             " pair(s) not certified (refused or past the work bound; their rows say why), the ranking leaves them last"};
 }
 
+/// InvalidInput (exit 2) when every row was refused for the same option of the request (--window,
+/// --epsilon, --resolution, --coverage, --nside): the option, not the grid, is out of range.
+void refuse_option_every_pair_refuses(const DesignOptions& o, const std::vector<std::string>& refused_by,
+                                      const std::vector<nlohmann::json>& rows) {
+  const std::vector<std::pair<std::string, const std::string*>> options = {
+      {"window", &o.window}, {"epsilon", &o.epsilon}, {"resolution", &o.resolution}, {"coverage", &o.coverage}, {"nside", &o.nside}};
+  if (refused_by.empty() || std::any_of(refused_by.begin(), refused_by.end(), [&](const std::string& f) { return f != refused_by[0]; })) return;
+  for (const auto& [field, text] : options)
+    if (refused_by[0] == field)
+      throw InvalidInput(field, *text, "every pair of the grid refuses it: " + rows[0].at("reason").get<std::string>(),
+                         "a value the machines of the grid accept (the reason names the bound)");
+}
+
 void run_design(const DesignOptions& o) {
   const DesignRequest r = read_design_request(o);
   const std::vector<DesignPair> all = design_pairs(r);
@@ -222,7 +237,13 @@ void run_design(const DesignOptions& o) {
   const auto [begin, end] = shard ? shard_range(all.size(), *shard) : std::pair<std::size_t, std::size_t>{0, all.size()};
   const std::size_t top = o.top.empty() ? 20 : parse_count(o.top, "top", 1, kMaxDesignPairs);
   std::vector<nlohmann::json> rows(end - begin);
-  parallel_for(rows.size(), parse_threads(o.threads), [&](std::size_t k) { rows[k] = row_json(evaluate_pair(r, all[begin + k])); });
+  std::vector<std::string> refused_by(rows.size());  // the option a row's refusal names ("" for none)
+  parallel_for(rows.size(), parse_threads(o.threads), [&](std::size_t k) {
+    const DesignRow row = evaluate_pair(r, all[begin + k]);
+    refused_by[k] = row.refused_field;
+    rows[k] = row_json(row);
+  });
+  refuse_option_every_pair_refuses(o, refused_by, rows);
   if (!shard) return finish_run(ranked_output(request_json(r), rows), o.output, o.json, top);
   nlohmann::json part = {{"request", request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
   write_output(o.output, [&](std::ostream& out) { out << signed_part(part.dump(2) + "\n"); });
@@ -243,10 +264,36 @@ struct DesignPart {
 
 const std::string kDesignPart = "the JSON of sphtroch clinostat design ... --shard I/K --json";
 
+/// Refuses (InvalidInput "shard") a row whose period or mean over a period is not the machine's
+/// (computed again: a 25-point transform, no search).
+void check_cheap_numbers(const nlohmann::json& row, const DesignRequest& r, const DesignPair& pair, const std::string& where) {
+  ClinostatSettings s;
+  s.outer = pair.outer;
+  s.inner = pair.inner;
+  s.tilt_deg = r.tilt_deg;
+  s.frame_angle_deg = r.frame_angle_deg;
+  std::optional<GravitySeries> series;
+  try {
+    series.emplace(GravitySeries::of_gravity(Clinostat(s)));
+  } catch (const InvalidInput&) {
+    return;  // a pair the run refused: its row says so
+  }
+  const std::optional<double> period = series->period_s();
+  if (row.at("period_s").is_null() != !period || (period && row.at("period_s").get<double>() != *period))
+    throw InvalidInput("shard", where + "\"period_s\" " + brief_json(row.at("period_s")), "not the machine's period",
+                       period ? number_text(*period) : "null");
+  if (row.at("mean_over_period").get<double>() != series->period_mean().norm())
+    throw InvalidInput("shard", where + "\"mean_over_period\" " + brief_json(row.at("mean_over_period")), "not the machine's mean over a period",
+                       number_text(series->period_mean().norm()));
+}
+
 /// Refuses (InvalidInput "shard") a row that is not laid out as the run writes it for `pair`:
-/// its members, the pair's speeds and teeth, every number finite and in range. (The digest shows
-/// an edit of its bytes; the numbers are the run's.)
-void check_design_row(const nlohmann::json& row, const DesignPair& pair, bool coverage_asked, const std::string& where) {
+/// its members, the pair's speeds and teeth, every number finite and in range, its period and mean
+/// over a period the machine's (check_cheap_numbers). The digest shows an edit of the part's bytes
+/// but is no signature: an edit of the searched numbers (M(W), the times, the coverage) with the
+/// digest computed again is not seen.
+void check_design_row(const nlohmann::json& row, const DesignRequest& r, const DesignPair& pair, const std::string& where) {
+  const bool coverage_asked = r.coverage_s.has_value();
   std::vector<std::string> names = {"outer", "inner", "n", "period_s", "mean_over_period", "worst_window_mean", "first_s",
                                     "stays_below_from_s", "coverage", "dwell_cv", "certified", "reason"};
   if (pair.teeth) names.push_back("teeth");
@@ -287,6 +334,7 @@ void check_design_row(const nlohmann::json& row, const DesignPair& pair, bool co
   if (!row.at("reason").is_string()) throw InvalidInput("shard", where + "\"reason\" " + brief_json(row.at("reason")), "not text", "a reason");
   if (certified && (worst.is_null() || row.at("first_s").is_null() != row.at("stays_below_from_s").is_null()))
     throw InvalidInput("shard", where + "\"certified\" true", "without the numbers a certified row has", "M(W), and first_s and stays_below_from_s both or neither");
+  check_cheap_numbers(row, r, pair, where);
 }
 
 DesignPart read_design_part(const std::string& path, const std::string& text) {
@@ -306,7 +354,7 @@ DesignPart read_design_part(const std::string& path, const std::string& text) {
     if (!rows.is_array() || rows.size() != end - begin)
       throw InvalidInput("shard", "\"rows\"", "not one row per pair of the part", std::to_string(end - begin) + " rows");
     for (std::size_t k = 0; k < rows.size(); ++k) {
-      check_design_row(rows[k], all[begin + k], r.coverage_s.has_value(), "row " + std::to_string(k + 1) + ": ");
+      check_design_row(rows[k], r, all[begin + k], "row " + std::to_string(k + 1) + ": ");
       p.rows.push_back(rows[k]);
     }
     check_part_digest(path, text, j.at("digest").get<std::string>(), kDesignPart + " (unedited)");

@@ -6,7 +6,9 @@
 // killed by SIGPIPE (shell status 141) when the reader of stdout goes away; 1 only for an
 // internal error (a bug).
 #include "cli_common.hpp"
+#include "dwell_input.hpp"
 #include "png_output.hpp"
+#include "urdf_input.hpp"
 #ifdef SPHTROCH_HAVE_STEP
 #include "step_output.hpp"
 #endif
@@ -135,11 +137,12 @@ void check_no_empty_values(const CLI::App& app) {
                              " --help (leave the option out for its default)"};
 }
 
-/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|missing|no, png yes|missing|no)": the
-/// optional components this build has: analysis (CGAL: classify, nodes, plot, scene, synth
-/// points/fit), step (OpenCASCADE: trace -o FILE.step) and png (librsvg: plot -o FILE.png, atlas
-/// --svg FILE.png); "missing": built with it, but its plugin file is not where the tool looks
-/// (plugin_loader.hpp), so that format is refused.
+/// "sphtroch X.Y.Z (components: analysis yes|no, step yes|missing|no, png yes|missing|no, urdf
+/// yes|missing|no, healpix yes|missing|no)": the optional components this build has: analysis
+/// (CGAL: classify, nodes, plot, scene, synth points/fit), step (OpenCASCADE: trace -o
+/// FILE.step), png (librsvg: plot -o FILE.png, atlas --svg FILE.png), urdf (urdfdom: chain
+/// --urdf) and healpix (HEALPix: clinostat --coverage); "missing": built with it, but its plugin
+/// file is not where the tool looks (plugin_loader.hpp), so that option is refused.
 std::string version_text() {
 #ifdef SPHTROCH_HAVE_ANALYSIS
   const char* analysis = "yes";
@@ -153,7 +156,7 @@ std::string version_text() {
 #endif
   const char* png = sphtroch::cli::png_plugin_state();
   return std::string("sphtroch ") + SPHTROCH_VERSION_STRING + " (components: analysis " + analysis + ", step " + step +
-         ", png " + png + ")";
+         ", png " + png + ", urdf " + sphtroch::cli::urdf_plugin_state() + ", healpix " + sphtroch::cli::healpix_plugin_state() + ")";
 }
 
 }  // namespace

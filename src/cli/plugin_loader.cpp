@@ -28,10 +28,10 @@ namespace sphtroch::cli {
 
 namespace {
 
-/// "<output>: STEP is written by the plugin P (OpenCASCADE), which <why>; valid: ...".
+/// "<output>: STEP is written by the plugin P (OpenCASCADE), which <why>; valid: ..." (the verb the plugin's).
 UsageError unavailable(const OutputPlugin& plugin, const std::string& path, const std::string& output,
                        const std::string& why) {
-  return UsageError{output + ": " + plugin.format + " is written by the plugin " + path + " (" + plugin.library +
+  return UsageError{output + ": " + plugin.format + " is " + plugin.verb + " by the plugin " + path + " (" + plugin.library +
                     "), which " + why + "; valid: the tool installed with its plugins (cmake --install), or " +
                     plugin.alternative};
 }

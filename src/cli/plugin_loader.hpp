@@ -19,6 +19,7 @@ struct OutputPlugin {
   const char* format;       // "STEP"
   const char* library;      // "OpenCASCADE"
   const char* alternative;  // the valid alternatives a refusal names
+  const char* verb = "written";  // what the plugin does with the format: "written", "read", "computed"
 };
 
 /// The directory the plugins are looked up in (absolute; see the header). Throws UsageError if

@@ -51,12 +51,14 @@ std::string lower_case(std::string s) {
 
 
 /// --format, or by the output's suffix (any case): .npy, .dxf, .obj (.step, .stp: STEP, or
-/// refused in a build without it); everything else CSV.
+/// refused in a build without it); .csv, .txt or a suffix that names no format: CSV; another
+/// format's suffix (.stl, .json, ...) is refused.
 TraceFormat trace_format(const TraceOptions& o) {
   if (!o.format.empty()) return format_named(lower_case(o.format), "format", o.format);
   const std::string lower = lower_case(o.output);
   for (const char* ext : {"npy", "dxf", "obj", "step", "stp"})
     if (ends_with(lower, std::string(".") + ext)) return format_named(ext, "output", o.output);
+  check_output_suffix(o.output, "output", {"csv", "txt", "text"});  // .stl, .json, ...: refused, not CSV in disguise
   return TraceFormat::csv;
 }
 

@@ -540,3 +540,48 @@ TEST_CASE("chain boundaries (slab search): what it cannot certify exits 3 and wh
   CHECK(costly.out.empty());
   CHECK(contains(costly.err, "--rates"));
 }
+
+TEST_CASE("-o writes the format its suffix names or refuses it: chain trace, trace, clinostat --trace", "[cli][chain]") {
+  TempDir dir;
+  for (const std::string& args : {std::string("chain trace --twists 1,2,0.5 --rates 1,2,-1 -o wrist.step"),
+                                  std::string("chain trace --twists 1,2,0.5 --rates 1,2,-1 -o wrist.STL"),
+                                  std::string("trace --a2 1 --a3 2 --n 2 -o path.stl"), std::string("trace --a2 1 --a3 2 --n 2 -o path.json"),
+                                  std::string("clinostat --outer 1 --inner 2 --trace --duration 10 -o g.png"),
+                                  std::string("classify --a2 1 --a3 2 --n 2 -o report.npy"),
+                                  std::string("chain classify --twists 1,2,0.5 --rates 1,2,-1 -o report.pdf")}) {
+    const Result r = run(args, dir, true);
+    INFO(args << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "output"));
+    CHECK(dir.entries().empty());
+  }
+  // What the suffix names is written: CSV for .csv and for a name without a format's suffix.
+  CHECK(run("chain trace --twists 1,2,0.5 --rates 1,2,-1 --samples 10 -o wrist.csv", dir, true).status == 0);
+  CHECK(slurp(dir.path / "wrist.csv").rfind("t,x,y,z\n", 0) == 0);
+  CHECK(run("chain trace --twists 1,2,0.5 --rates 1,2,-1 --samples 10 -o wrist.out", dir, true).status == 0);
+  CHECK(slurp(dir.path / "wrist.out").rfind("t,x,y,z\n", 0) == 0);
+}
+
+TEST_CASE("chain: the near-coaxial chain of the hostile run has its 25 distinct crossings, certified", "[cli][chain]") {
+  // twists 1, 1e-8, 1 with rates 1, 2, 3: 25 crossings at least 7.3e-9 apart near the pole. The
+  // count is the exact crossings of a polyline of the same chain with a middle twist of 1e-5
+  // (test_chain_census: no event between), written here as the test's own expectation.
+  TempDir dir;
+  const Result r = run("chain classify --twists 1,1e-8,1 --rates 1,2,3 --json", dir);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"].get<bool>());
+  CHECK(j["counts"]["nodes"].get<int>() == 25);
+  for (const auto& n : j["nodes"]) CHECK(n["branches"].get<int>() == 2);
+}
+
+TEST_CASE("chain boundaries: a phase range beyond [-4 pi, 4 pi] is refused for every family, closed forms too", "[cli][chain]") {
+  TempDir dir;
+  const Result r = run("chain boundaries --twists 1,2 --rates 1,3 --vary P1:-100:100", dir);
+  CHECK(r.status == 2);
+  CHECK(r.out.empty());
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "--vary"));
+}

@@ -10,6 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -161,4 +164,75 @@ TEST_CASE("clinostat: bad input is refused with one line naming the option, noth
     CHECK(contains(r.err, option));
     CHECK(dir.entries().empty());
   }
+}
+
+TEST_CASE("clinostat: the time to epsilon holds for every window length, not only the grid (60 rpm, one axis)", "[cli][clinostat]") {
+  // M(W) = |sin(pi W)| / (pi W) for gravity turning once a second in a great circle: every grid
+  // window (whole seconds) averages to 0, yet M(31.5 s) = 1 / (31.5 pi) > 0.01.
+  TempDir dir;
+  const Result r = run("clinostat --outer 60 --inner 0 --epsilon 0.01 --json", dir);
+  REQUIRE(r.status == 0);
+  const nlohmann::json t = nlohmann::json::parse(r.out)["time_to_epsilon"];
+  const double stays = t["stays_below_from_s"].get<double>();
+  const auto m = [](double w) { return std::fabs(std::sin(3.141592653589793 * w)) / (3.141592653589793 * w); };
+  CHECK(stays > 31.5);
+  for (double w = stays; w < stays + 100; w += 0.0071) CHECK(m(w) <= 0.01);
+  REQUIRE(t["above_s"].is_number());
+  CHECK(m(t["above_s"].get<double>()) > 0.01);
+  CHECK(t["above_s"].get<double>() >= stays - 2);
+}
+
+TEST_CASE("clinostat: numbers and refusals as typed (leading zeros, epsilon below rounding, a still gravity)", "[cli][clinostat]") {
+  TempDir dir;
+  const Result zeros = run("clinostat --outer 00001 --inner 2", dir);  // 00001 is 1 rpm
+  CHECK(zeros.status == 0);
+  CHECK(contains(zeros.out, "outer 1 rpm"));
+  const Result tiny = run("clinostat --outer 1 --inner 2 --epsilon 1e-16", dir);  // refused (2), not "not certified" (3)
+  CHECK(tiny.status == 2);
+  CHECK(tiny.out.empty());
+  CHECK(count_lines(tiny.err) == 1);
+  CHECK(contains(tiny.err, "epsilon"));
+  const Result design = run("clinostat design --outer 1:2 --inner 1:2 --step 0.5 --window 600 --epsilon 0.01 --resolution 1e-300", dir);
+  CHECK(design.status == 2);  // every pair refuses the option: the option is out of range
+  CHECK(design.out.empty());
+  CHECK(count_lines(design.err) == 1);
+  CHECK(contains(design.err, "resolution"));
+}
+
+TEST_CASE("clinostat --plot of a machine with a very long period is bounded (the torus bound) and says so", "[cli][clinostat]") {
+  TempDir dir;
+  const Result r = run("clinostat --outer 1.00001 --inner 1 --plot long.svg", dir, true);  // period 6e6 s
+  REQUIRE(r.status == 0);
+  const std::string svg = slurp(dir.path / "long.svg");
+  CHECK(contains(svg, "the period is too long to search"));
+}
+
+TEST_CASE("clinostat design merge: a row whose period or mean over a period was edited is refused", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string args = "clinostat design --outer 1:2 --inner 1:2 --step 1 --window 600 --epsilon 0.01 --json";
+  REQUIRE(run(args + " --shard 1/2 -o p1.json", dir, true).status == 0);
+  REQUIRE(run(args + " --shard 2/2 -o p2.json", dir, true).status == 0);
+  REQUIRE(run("clinostat merge p1.json p2.json -o whole.json", dir, true).status == 0);
+  // Edit the 1/1 rpm row's mean, then compute the digest again as the part's own rule says:
+  // FNV-1a 64 of the bytes with the digest's 16 digits written as 0.
+  nlohmann::json part = nlohmann::json::parse(slurp(dir.path / "p1.json"));
+  std::string text = slurp(dir.path / "p1.json");
+  const std::string digest = part["digest"].get<std::string>();
+  const std::string zero(16, '0');
+  const auto at_mean = text.find("\"mean_over_period\": ");
+  REQUIRE(at_mean != std::string::npos);
+  const auto end = text.find_first_of(",\n", at_mean);
+  text.replace(at_mean, end - at_mean, "\"mean_over_period\": 0.25");
+  text.replace(text.find(digest), 16, zero);
+  std::uint64_t h = 14695981039346656037ull;
+  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  text.replace(text.find(zero), 16, hex);
+  std::ofstream(dir.path / "p1.json", std::ios::binary) << text;
+  const Result merged = run("clinostat merge p1.json p2.json -o edited.json", dir, true);
+  INFO(merged.err);
+  CHECK(merged.status == 2);
+  CHECK(contains(merged.err, "mean over a period"));
+  CHECK(!fs::exists(dir.path / "edited.json"));
 }

@@ -3,7 +3,7 @@
 // quadrature (8 nodes per piece of at most 0.5 s, long double) of an independent rotation model
 // (Eigen AngleAxis products in long double); the mean over a period from its closed form
 // -cos(psi) cos(beta) v (no resonance); M(W) against a dense scan of start times; the time to
-// epsilon at W and W - resolution.
+// epsilon against a closed form (one axis) and a dense scan in W and the start between grid points.
 #include "catch2/catch.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #include "test_support.hpp"
@@ -198,7 +198,9 @@ TEST_CASE("time to epsilon near a resonance (0.999 / 1 rpm): certified, below at
   const auto side = [&](double w) { return compare_worst_window_mean(g, w, 0.01); };
   CHECK(side(*t.first_s) == WindowSide::below);
   CHECK(side(*t.first_s - 1) == WindowSide::above);
-  CHECK(side(*t.stays_below_from_s - 1) == WindowSide::above);
+  REQUIRE(t.above_s);  // a length above epsilon within two resolutions below stays
+  CHECK(side(*t.above_s) == WindowSide::above);
+  CHECK(*t.above_s >= *t.stays_below_from_s - 2);
   for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 5000; w += 499) CHECK(side(w) == WindowSide::below);
   // The beat alone: M(W) ~ |sinc(W_beat W / 2)| / 2 drops below 0.01 near W_beat W / 2 = pi (W = 60000 s).
   CHECK(*t.first_s > 50000);
@@ -216,7 +218,11 @@ TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted fra
       CHECK(worst_window_mean(g, *t.first_s).upper <= eps);
       if (*t.first_s > 1) CHECK(worst_window_mean(g, *t.first_s - 1).lower > eps);
       CHECK(*t.stays_below_from_s >= *t.first_s);
-      if (*t.stays_below_from_s > *t.first_s) CHECK(worst_window_mean(g, *t.stays_below_from_s - 1).lower > eps);
+      if (*t.stays_below_from_s > *t.first_s) {
+        REQUIRE(t.above_s);
+        CHECK(worst_window_mean(g, *t.above_s).lower > eps);
+        CHECK(*t.above_s >= *t.stays_below_from_s - 2);
+      }
       for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 200; w += 7) CHECK(worst_window_mean(g, w).upper <= eps);
     }
   }
@@ -228,4 +234,66 @@ TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted fra
   CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.0, 1.0); }).field() == "epsilon");
   CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.01, -1.0); }).field() == "resolution");
   CHECK(test::expect_invalid([&] { worst_window_mean(tilted, 0.0); }).field() == "window");
+}
+
+TEST_CASE("time to epsilon holds for every real window length: one axis at 60 rpm, whose period divides the resolution", "[window_mean]") {
+  // Gravity turns in a great circle at w = 2 pi rad/s: |mean over W| = |sin(w W / 2)| / (w W / 2)
+  // for every start, so M(W) = |sin(pi W)| / (pi W). Every grid W (whole periods) has M = 0,
+  // yet W = 31.5 s has M = 1 / (31.5 pi) > 0.01. The last W with M > 0.01 from that formula, by
+  // a scan down from 40 s and bisection in long double.
+  ClinostatSettings s;
+  s.outer = Rpm(60);
+  s.inner = Rpm(0);
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+  const long double pi = 3.141592653589793238462643383279502884L;
+  const auto m = [&](long double w) { return std::fabs(std::sin(pi * w)) / (pi * w); };
+  long double hi = 40, lo = 40;
+  while (m(lo) <= 0.01L) lo -= 1e-3L;
+  for (int it = 0; it < 100; ++it) {
+    const long double mid = (lo + hi) / 2;
+    (m(mid) > 0.01L ? lo : hi) = mid;
+  }
+  const double threshold = static_cast<double>(hi);  // ~31.55 s
+  REQUIRE(threshold > 31.5);
+  REQUIRE(threshold < 31.6);
+  const TimeToEpsilon t = time_to_epsilon(g, 0.01, 1.0);
+  REQUIRE(t.certified);
+  REQUIRE(t.stays_below_from_s);
+  CHECK(*t.stays_below_from_s >= threshold);
+  CHECK(*t.stays_below_from_s <= threshold + 2);
+  REQUIRE(t.above_s);
+  CHECK(m(*t.above_s) > 0.01L);
+  CHECK(*t.above_s >= *t.stays_below_from_s - 2);
+  // the claim, off the grid: every W from stays on (steps of 0.013 s over 200 s) is below
+  for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 200; w += 0.013) CHECK(m(w) <= 0.01L);
+  // a finer resolution gives the threshold to within it
+  const TimeToEpsilon fine = time_to_epsilon(g, 0.01, 0.01);
+  REQUIRE(fine.stays_below_from_s);
+  CHECK(*fine.stays_below_from_s >= threshold);
+  CHECK(*fine.stays_below_from_s <= threshold + 0.02);
+}
+
+TEST_CASE("time to epsilon holds for every real window length: 60 / 120 rpm, against a dense scan in W and the start", "[window_mean]") {
+  ClinostatSettings s;
+  s.outer = Rpm(60);
+  s.inner = Rpm(120);
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+  REQUIRE(g.period_s());
+  REQUIRE(*g.period_s() == 1.0);  // every grid window of 1 s steps is a whole number of periods
+  const double eps = 0.01;
+  // M(W) from below: the largest |window mean| over 400 starts in one period (window_mean is the
+  // closed form checked against quadrature above).
+  const auto scan = [&](double w) {
+    double best = 0;
+    for (int k = 0; k < 400; ++k) best = std::max(best, g.window_mean(k / 400.0, w).norm());
+    return best;
+  };
+  const TimeToEpsilon t = time_to_epsilon(g, eps, 1.0);
+  REQUIRE(t.certified);
+  REQUIRE(t.stays_below_from_s);
+  CHECK(*t.stays_below_from_s > 1);  // not the grid's answer (every whole second averages to 0)
+  for (double w = *t.stays_below_from_s; w < *t.stays_below_from_s + 60; w += 0.0137) CHECK(scan(w) <= eps);
+  double above = 0;  // the scan finds a window above epsilon within two resolutions below stays
+  for (double w = *t.stays_below_from_s - 2; w < *t.stays_below_from_s; w += 0.001) above = std::max(above, scan(w));
+  CHECK(above > eps);
 }

@@ -85,22 +85,25 @@ def test_an_existing_build_for_this_interpreter_is_reused(tmp_path):
 
 
 def run_the_notebook_from_the_venv(venv, tmp_path, env):
-    """As docs/python.md says: the venv's interpreter registered as the notebook kernel
-    (ipykernel install --sys-prefix), then examples/design_study.ipynb run by that kernel with no
-    PYTHONPATH, so `import sphtroch` there can only come from the venv."""
+    """As docs/python.md says: the venv's interpreter registered as the kernel "sphtroch" in the
+    user's Jupyter data directory (ipykernel install --user --name sphtroch; here JUPYTER_DATA_DIR
+    is a temporary directory, so nothing is written to the real home), then
+    examples/design_study.ipynb run through that kernel by Debian's /usr/bin/python3 (as Debian's
+    Jupyter runs it) with no PYTHONPATH, so `import sphtroch` there can only come from the venv."""
     python = str(venv / "bin" / "python")
-    run([python, "-m", "ipykernel", "install", "--sys-prefix"], tmp_path, env)
+    jupyter_env = dict(env, JUPYTER_DATA_DIR=str(tmp_path / "jupyter-data"))
+    run([python, "-m", "ipykernel", "install", "--user", "--name", "sphtroch"], tmp_path, jupyter_env)
     notebook = SOURCE / "examples" / "design_study.ipynb"
     script = (
         "import sys, nbformat, jupyter_client.kernelspec as ks\n"
         "from nbclient import NotebookClient\n"
-        "spec = ks.KernelSpecManager().get_kernel_spec('python3')\n"
-        "assert spec.argv[0].startswith(sys.prefix), spec.argv\n"
+        "spec = ks.KernelSpecManager().get_kernel_spec('sphtroch')\n"
+        "assert spec.argv[0] == r'%s', spec.argv\n"
         "nb = nbformat.read(r'%s', as_version=4)\n"
-        "NotebookClient(nb, timeout=300, kernel_name='python3', resources={'metadata': {'path': r'%s'}}).execute()\n"
+        "NotebookClient(nb, timeout=300, kernel_name='sphtroch', resources={'metadata': {'path': r'%s'}}).execute()\n"
         "errors = [o for c in nb.cells for o in c.get('outputs', []) if o.get('output_type') == 'error']\n"
         "assert not errors, errors\n"
-        "print(sum(1 for c in nb.cells if c.cell_type == 'code'))\n" % (notebook, tmp_path)
+        "print(sum(1 for c in nb.cells if c.cell_type == 'code'))\n" % (python, notebook, tmp_path)
     )
-    out = run([python, "-c", script], tmp_path, env)
+    out = run(["/usr/bin/python3", "-c", script], tmp_path, jupyter_env)
     assert int(out.strip()) > 0

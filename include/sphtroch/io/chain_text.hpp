@@ -12,7 +12,9 @@
 // different lengths are refused naming the shorter or longer one.
 // Or from a robot description: urdf (a file, - for stdin, at most kMaxUrdfBytes), from and to
 // (links), axis (the tool axis in the to link's frame, "X,Y,Z", default "0,0,1"), read by
-// io/urdf_chain.hpp when the build has urdfdom (SPHTROCH_HAVE_URDF), else refused naming "urdf".
+// `urdf_reader`: io/urdf_chain.hpp's chain_from_urdf when the build has urdfdom
+// (SPHTROCH_HAVE_URDF), or a front end's own (the tool's opens urdfdom only when it reads one);
+// none: refused naming "urdf".
 // One source only: twists/rates/phases with urdf, or from/to/axis without it, are refused.
 #pragma once
 
@@ -66,9 +68,24 @@ inline ChainRate parse_chain_rate(std::string_view text, const std::string& fiel
 /// The largest URDF file read (a robot description is kilobytes; this bounds the parser's memory).
 constexpr std::size_t kMaxUrdfBytes = std::size_t{16} << 20;
 
+/// The chain of a URDF document between two links with a tool axis (chain_from_urdf's contract).
+using UrdfChainReader = RotationChain (*)(const std::string& xml, const std::string& from, const std::string& to, const Vector3d& axis);
+
+/// chain_from_urdf when this build has urdfdom, else none.
+inline UrdfChainReader built_in_urdf_reader() {
+#if defined(SPHTROCH_HAVE_URDF)
+  return [](const std::string& xml, const std::string& from, const std::string& to, const Vector3d& axis) {
+    return chain_from_urdf(xml, from, to, axis);
+  };
+#else
+  return nullptr;
+#endif
+}
+
 struct ChainText {
   std::string twists, rates, phases;  ///< comma-separated; phases "" = all 0
   std::string urdf, from, to, axis;   ///< a URDF file, its links, the tool axis "X,Y,Z" ("" = 0,0,1)
+  UrdfChainReader urdf_reader = built_in_urdf_reader();  ///< reads `urdf`; none: refused naming "urdf"
 
   RotationChain chain() const {
     if (!urdf.empty()) return urdf_chain();
@@ -111,12 +128,9 @@ struct ChainText {
       if (!value->empty()) throw InvalidInput(field, *value, "given with --urdf", "either --urdf FILE or --twists/--rates/--phases");
     if (from.empty()) throw InvalidInput("from", "", "missing", "--from LINK: the link the chain starts at");
     if (to.empty()) throw InvalidInput("to", "", "missing", "--to LINK: the link that carries the tool axis");
-#if defined(SPHTROCH_HAVE_URDF)
+    if (!urdf_reader) throw InvalidInput("urdf", urdf, "this build has no urdfdom", "a build with sphtroch::urdf (Debian's liburdfdom-dev)");
     const std::string xml = read_whole_input(urdf, "urdf", kMaxUrdfBytes);
-    return chain_from_urdf(xml, from, to, tool_axis());
-#else
-    throw InvalidInput("urdf", urdf, "this build has no urdfdom", "a build with sphtroch::urdf (Debian's liburdfdom-dev)");
-#endif
+    return urdf_reader(xml, from, to, tool_axis());
   }
 
   Vector3d tool_axis() const {

@@ -1,5 +1,5 @@
 // sphtroch/io/urdf_chain.hpp — a gear-coupled rotation chain (core/rotation_chain.hpp) read from
-// and written as a URDF robot description, through urdfdom's parser.
+// a URDF robot description, through urdfdom's parser (written as one: io/urdf_writer.hpp).
 // Needs the sphtroch::urdf component (Debian's liburdfdom-dev; defines SPHTROCH_HAVE_URDF).
 //
 //   const sphtroch::RotationChain chain({{1.0, sphtroch::ChainRate(1), 0.0}, {0.5, sphtroch::ChainRate(-2, 3), 0.3}});
@@ -33,23 +33,14 @@
 // Refused, with InvalidInput naming the joint or link and saying why (field "urdf", or "from",
 // "to", "axis" for the arguments): a document urdfdom cannot parse, a missing link, to_link not
 // below from_link, no revolute or continuous joint on the path, a prismatic, planar or floating
-// joint, a zero axis, an axis line that misses the common centre (by more than kUrdfCentreTolerance
-// times the chain's size), a joint driven by another motor than joint 1's (two independent
-// joints), a mimic of a missing or non-revolute joint, a mimic cycle, a multiplier that is no
+// joint, a zero axis, a joint origin that is not finite, an axis line that misses the common
+// centre (by more than kUrdfCentreTolerance m plus the rounding of the lengths composed), a
+// joint driven by another motor than joint 1's (two independent joints), a mimic of a missing or non-revolute joint, a mimic cycle, a multiplier that is no
 // fraction, rates the chain refuses (RotationChain's contract), a zero or non-finite tool axis.
 // Nothing aborts; urdfdom's own log (console_bridge) is silenced while it parses.
 //
-// Writing (chain_to_urdf): links base_link, link_1 .. link_k, tool; joint_i (continuous, axis z)
-// from link_{i-1} (base_link for i = 1) to link_i, origin rpy (A_{i-1}, 0, 0) (identity for i =
-// 1); a fixed joint tool_joint from link_k to tool, origin rpy (A_k, 0, 0): the tool axis is the
-// tool link's z. The motor is the first joint with a nonzero rate N_m; every other joint mimics
-// it with multiplier N_i / N_m and offset P_i - (N_i / N_m) P_m, so that the motor's angle is
-// u = N_m s + P_m. Numbers are written as the shortest decimals that read back as the same
-// doubles (number_text: at most 17 significant digits), the XML by hand (urdfdom 3.0's exporter
-// writes 6 significant digits). Round trip: read_urdf_chain(chain_to_urdf(c), "base_link", "tool", z) gives rates
-// N_i / N_m exactly (the motor's 1), twists within a few ulp, phases P_i - (N_i / N_m) P_m, and a
-// curve whose point at u = N_m s + P_m is c's point at s (the parameter is defined up to such a
-// change: compare chains by their curves and by their rates' ratios); base_rotation is I.
+// Writing: io/urdf_writer.hpp (chain_to_urdf, no urdfdom). The shape check before urdfdom parses:
+// io/xml_shape.hpp.
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_URDF)
@@ -60,23 +51,30 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/io/urdf_writer.hpp"
+#include "sphtroch/io/xml_shape.hpp"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sphtroch {
 
-/// Axis lines may miss the common centre by this many times the chain's size (the largest
-/// distance of a joint origin from from_link's origin or from joint 1's origin; metres).
+/// Axis lines may miss the common centre by this many metres, plus the rounding of the distances
+/// composed to place them (kUrdfCentreRounding times the sum of the origins' lengths along the
+/// path): a joint far out along its own axis (which the rotation does not see) widens the
+/// tolerance only by the rounding its coordinates bring, not in proportion to its distance.
 constexpr double kUrdfCentreTolerance = 1e-9;
+constexpr double kUrdfCentreRounding = 64 * std::numeric_limits<double>::epsilon();
 /// A mimic multiplier is the fraction p/q, |p|, q <= kUrdfMaxDenominator, within this relative distance.
 constexpr double kUrdfMultiplierTolerance = 1e-12;
 constexpr std::int64_t kUrdfMaxDenominator = 1000000;
@@ -97,10 +95,7 @@ inline UrdfChain read_urdf_chain(const std::string& urdf_xml, const std::string&
 /// read_urdf_chain(...).chain.
 inline RotationChain chain_from_urdf(const std::string& urdf_xml, const std::string& from_link, const std::string& to_link,
                                      const Vector3<double>& tool_axis);
-/// The chain as a URDF document (layout above). REQUIRES a nonempty robot_name; the ratios
-/// N_i / N_m in lowest terms p/q with |p| q < 0.9999e12 (so that the reader recovers them
-/// exactly). Throws InvalidInput naming "robot name" or "rates" otherwise.
-inline std::string chain_to_urdf(const RotationChain& chain, const std::string& robot_name);
+
 
 // Implementation details follow.
 namespace urdf_chain_detail {
@@ -113,33 +108,6 @@ inline InvalidInput joint_error(const std::string& joint, const std::string& pro
 
 const char* const kValidJoint = "revolute or continuous joints (and fixed ones) whose axis lines meet at one point, one motor";
 const char* const kValidMimic = "a mimic of the motor (or of a joint that mimics it) with a multiplier p/q, |p|, q <= 1e6";
-
-/// Robot descriptions nest a few levels and carry a few attributes per element; deeper or wider
-/// documents are refused before urdfdom's recursive parser sees them (a deep one overflows its
-/// stack, a wide one takes quadratic time).
-constexpr std::size_t kMaxUrdfDepth = 64, kMaxUrdfAttributes = 64;
-
-/// InvalidInput when an element of xml nests deeper than kMaxUrdfDepth or has more than
-/// kMaxUrdfAttributes attributes (counted as '=' inside a tag: an overestimate, on the safe side).
-inline void check_xml_shape(const std::string& xml) {
-  const std::string valid = "a URDF document nesting at most 64 elements, each with at most 64 attributes";
-  std::size_t depth = 0, attributes = 0;
-  bool in_tag = false;
-  for (std::size_t i = 0; i < xml.size(); ++i) {
-    const char c = xml[i];
-    if (!in_tag && c == '<') {
-      in_tag = true, attributes = 0;
-      const char next = i + 1 < xml.size() ? xml[i + 1] : '\0';
-      if (next == '/') depth = depth > 0 ? depth - 1 : 0;
-      else if (next != '?' && next != '!' && ++depth > kMaxUrdfDepth) throw InvalidInput("urdf", "the document", "elements nest deeper than 64", valid);
-    } else if (in_tag && c == '=' && ++attributes > kMaxUrdfAttributes) {
-      throw InvalidInput("urdf", "the document", "an element has more than 64 attributes", valid);
-    } else if (in_tag && c == '>') {
-      in_tag = false;
-      if (i > 0 && xml[i - 1] == '/' && depth > 0) --depth;
-    }
-  }
-}
 
 /// The chain of the stages read, its refusals (RotationChain's contract) naming "urdf": the
 /// user gave a file, not --twists or --rates.
@@ -154,7 +122,7 @@ inline RotationChain checked_chain(const std::vector<ChainStage>& stages) {
 /// The model urdfdom parses from xml; InvalidInput when it cannot.
 inline urdf::ModelInterfaceSharedPtr parse_model(const std::string& xml) {
   const std::string valid = "a URDF document (<robot name=...> with links and joints)";
-  check_xml_shape(xml);
+  check_xml_shape(xml, "urdf", "a URDF document");
   urdf::ModelInterfaceSharedPtr model;
   // urdfdom logs its parse errors through console_bridge on stderr: quiet while it parses, so
   // that a refusal is the one line of InvalidInput (the caller's log level is restored).
@@ -308,6 +276,7 @@ struct PathGeometry {
   std::vector<Vector3d> axes;         ///< each joint's unit axis in its own frame
   std::vector<Vector3d> origins_base; ///< each joint's origin in from_link's frame, all angles 0 (metres)
   std::vector<Vector3d> axes_base;    ///< each joint's unit axis in from_link's frame, all angles 0
+  std::vector<double> reach;          ///< the sum of the origins' lengths composed up to each joint (metres)
 };
 
 /// joint's unit axis; InvalidInput for a joint that is not revolute, continuous or fixed, or a zero axis.
@@ -326,9 +295,16 @@ inline PathGeometry path_geometry(const std::vector<urdf::JointConstSharedPtr>& 
   PathGeometry g;
   Matrix3d pending = Matrix3d::Identity(), base_r = Matrix3d::Identity();  // base_r, base_t: the current frame in from_link's
   Vector3d base_t = Vector3d::Zero();
+  double reach = 0;
   for (const urdf::JointConstSharedPtr& joint : path) {
     const Matrix3d r = rotation_of(joint->parent_to_joint_origin_transform);
-    base_t += base_r * position_of(joint->parent_to_joint_origin_transform);
+    const Vector3d position = position_of(joint->parent_to_joint_origin_transform);
+    const double length = position.cwiseAbs().sum();
+    if (!std::isfinite(length) || !std::isfinite(reach + length))
+      throw joint_error(joint->name, "its origin xyz is not finite or too far (the lengths along the path overflow)",
+                        "joint origins with finite coordinates (metres)");
+    reach += length;
+    base_t += base_r * position;
     base_r = base_r * r;
     pending = pending * r;
     if (joint->type == urdf::Joint::FIXED) continue;
@@ -338,6 +314,7 @@ inline PathGeometry path_geometry(const std::vector<urdf::JointConstSharedPtr>& 
     g.axes.push_back(axis);
     g.origins_base.push_back(base_t);
     g.axes_base.push_back(base_r * axis);
+    g.reach.push_back(reach);
     pending = Matrix3d::Identity();
   }
   g.fixed.push_back(pending);
@@ -349,25 +326,27 @@ inline double line_distance(const Vector3d& c, const Vector3d& o, const Vector3d
 
 /// The point where every axis line meets (all angles 0; the joints turn about it, so it stays
 /// put). Reference: joint 1's line and the line most oblique to it (their nearest point on joint
-/// 1's line); every line within kUrdfCentreTolerance * size of it, or InvalidInput naming the
-/// first joint whose line is not.
+/// 1's line); every line within kUrdfCentreTolerance m of it, plus the rounding of the lengths
+/// composed (kUrdfCentreRounding times the reach of both joints and the centre's distance), or
+/// InvalidInput naming the first joint whose line is not.
 inline Vector3d common_centre(const PathGeometry& g) {
   const std::vector<Vector3d>& o = g.origins_base;
   const std::vector<Vector3d>& d = g.axes_base;
-  double size = 0;
-  for (const Vector3d& p : o) size = std::max({size, p.norm(), (p - o[0]).norm()});
-  const double tolerance = kUrdfCentreTolerance * size;
   std::size_t other = 0;
   for (std::size_t i = 1; i < d.size(); ++i)
     if (d[0].cross(d[i]).norm() > d[0].cross(d[other]).norm()) other = i;
   Vector3d centre = o[0];
+  double centre_reach = g.reach[0];
   if (other != 0 && d[0].cross(d[other]).norm() > 1e-9) {
     const Vector3d n = d[0].cross(d[other]);  // nearest point of line 0 to line `other`: o0 + t d0
-    centre = o[0] + ((o[other] - o[0]).cross(d[other]).dot(n) / n.squaredNorm()) * d[0];
+    const double t = (o[other] - o[0]).cross(d[other]).dot(n) / n.squaredNorm();
+    centre = o[0] + t * d[0];
+    centre_reach = (g.reach[0] + g.reach[other]) / n.norm();  // t's rounding grows as the lines turn parallel
   }
   for (std::size_t i = 0; i < o.size(); ++i) {
     const double miss = line_distance(centre, o[i], d[i]);
-    if (miss > tolerance)
+    const double tolerance = kUrdfCentreTolerance + kUrdfCentreRounding * (centre_reach + g.reach[i] + centre.norm());
+    if (!(miss <= tolerance))
       throw joint_error(g.joints[i]->name,
                         "its axis line passes " + number_text(miss) + " m from the point where the axis lines of joints " +
                             quoted(g.joints[0]->name) + " and " + quoted(g.joints[other]->name) + " meet (tolerance " + number_text(tolerance) + " m)",
@@ -443,44 +422,6 @@ inline std::vector<ChainStage> chain_stages(const PathGeometry& g, const std::ve
   return stages;
 }
 
-/// A value for an XML attribute in double quotes.
-inline std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else if (c == '\'') out += "&apos;";
-    else out += c;
-  }
-  return out;
-}
-
-/// N_i / N_m in lowest terms, refused unless the reader recovers it exactly (|p| q < 0.9999e12:
-/// then every other fraction with q' <= 1e6 is more than 1e-12 relative away from it).
-inline ChainRate rate_ratio(const ChainRate& n, const ChainRate& motor, std::size_t stage) {
-  const std::string shown = n.str() + " / " + motor.str() + " (stage " + std::to_string(stage + 1) + ")";
-  const char* valid = "rates whose ratios to the motor's are p/q with |p|, q <= 1e6 and |p| q < 0.9999e12";
-  ChainRate r;
-  try {
-    r = ChainRate(n.p() * motor.q(), n.q() * motor.p());
-  } catch (const InvalidInput&) {
-    throw InvalidInput("rates", shown, "the ratio to the motor's rate has a term beyond 1e6", valid);
-  }
-  if (std::fabs(static_cast<double>(r.p())) * static_cast<double>(r.q()) >= 0.9999e12)
-    throw InvalidInput("rates", shown, "the ratio to the motor's rate could not be recovered exactly from its decimal", valid);
-  return r;
-}
-
-/// One <joint> element of chain_to_urdf's layout.
-inline std::string joint_xml(std::size_t i, double twist_before, const std::string& mimic) {
-  const std::string parent = i == 0 ? "base_link" : "link_" + std::to_string(i);
-  return "  <joint name=\"joint_" + std::to_string(i + 1) + "\" type=\"continuous\">\n    <parent link=\"" + parent +
-         "\"/>\n    <child link=\"link_" + std::to_string(i + 1) + "\"/>\n    <origin xyz=\"0 0 0\" rpy=\"" + number_text(twist_before) +
-         " 0 0\"/>\n    <axis xyz=\"0 0 1\"/>\n" + mimic + "  </joint>\n";
-}
-
 }  // namespace urdf_chain_detail
 
 inline UrdfChain read_urdf_chain(const std::string& urdf_xml, const std::string& from_link, const std::string& to_link,
@@ -503,30 +444,6 @@ inline UrdfChain read_urdf_chain(const std::string& urdf_xml, const std::string&
 inline RotationChain chain_from_urdf(const std::string& urdf_xml, const std::string& from_link, const std::string& to_link,
                                      const Vector3<double>& tool_axis) {
   return read_urdf_chain(urdf_xml, from_link, to_link, tool_axis).chain;
-}
-
-inline std::string chain_to_urdf(const RotationChain& chain, const std::string& robot_name) {
-  namespace d = urdf_chain_detail;
-  if (robot_name.empty()) throw InvalidInput("robot name", "\"\"", "empty", "a nonempty name");
-  const std::vector<ChainStage>& stages = chain.stages();
-  std::size_t m = 0;
-  while (stages[m].rate.is_zero()) ++m;  // RotationChain: some rate is not 0
-  std::string xml = "<?xml version=\"1.0\"?>\n<robot name=\"" + d::xml_escaped(robot_name) + "\">\n  <link name=\"base_link\"/>\n";
-  for (std::size_t i = 0; i < stages.size(); ++i) xml += "  <link name=\"link_" + std::to_string(i + 1) + "\"/>\n";
-  xml += "  <link name=\"tool\"/>\n";
-  for (std::size_t i = 0; i < stages.size(); ++i) {
-    std::string mimic;
-    if (i != m) {
-      const ChainRate r = d::rate_ratio(stages[i].rate, stages[m].rate, i);
-      const double offset = stages[i].phase - r.value() * stages[m].phase;
-      mimic = "    <mimic joint=\"joint_" + std::to_string(m + 1) + "\" multiplier=\"" + number_text(r.value()) + "\" offset=\"" +
-              number_text(offset) + "\"/>\n";
-    }
-    xml += d::joint_xml(i, i == 0 ? 0.0 : stages[i - 1].twist, mimic);
-  }
-  xml += "  <joint name=\"tool_joint\" type=\"fixed\">\n    <parent link=\"link_" + std::to_string(stages.size()) +
-         "\"/>\n    <child link=\"tool\"/>\n    <origin xyz=\"0 0 0\" rpy=\"" + number_text(stages.back().twist) + " 0 0\"/>\n  </joint>\n";
-  return xml + "</robot>\n";
 }
 
 }  // namespace sphtroch

@@ -30,6 +30,7 @@
 #pragma once
 
 #include "sphtroch/core/teeth.hpp"
+#include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #if defined(SPHTROCH_HAVE_HEALPIX)
 #include "sphtroch/machine/dwell_map.hpp"
@@ -51,6 +52,20 @@ struct SpeedRange {
   Rpm lo, hi, step{1};
 };
 
+/// A dwell map of a machine over [start, start + duration] at nside (dwell_map's contract).
+using DwellMapFunction = DwellMap (*)(const ClinostatSettings& machine, double start_s, double duration_s, int nside);
+
+/// dwell_map (machine/dwell_map.hpp) when this build has HEALPix, else none.
+inline DwellMapFunction built_in_dwell_map() {
+#if defined(SPHTROCH_HAVE_HEALPIX)
+  return [](const ClinostatSettings& machine, double start_s, double duration_s, int nside) {
+    return dwell_map(Clinostat(machine), start_s, duration_s, nside);
+  };
+#else
+  return nullptr;
+#endif
+}
+
 struct DesignRequest {
   SpeedRange outer, inner;
   double tilt_deg = 90, frame_angle_deg = 90;
@@ -60,6 +75,7 @@ struct DesignRequest {
   std::optional<double> coverage_s;  ///< the duration of the dwell map, when asked
   int nside = 8;
   std::optional<ToothRange> teeth;   ///< a gear-driven machine: n must be a ratio of tooth counts
+  DwellMapFunction dwell = built_in_dwell_map();  ///< computes the coverage (a front end may open HEALPix on demand)
 };
 
 struct DesignPair {
@@ -76,6 +92,7 @@ struct DesignRow {
   std::optional<TimeToEpsilon> time_to;
   std::optional<double> coverage, dwell_cv, coverage_bound_s;
   std::string refused;                  ///< why the pair was not computed ("" when it was)
+  std::string refused_field;            ///< the InvalidInput's field of that refusal ("outer", "resolution", ...)
   bool decided() const { return refused.empty() && worst && worst->certified && time_to && time_to->certified; }
 };
 
@@ -155,16 +172,18 @@ inline DesignRow evaluate_pair(const DesignRequest& r, const DesignPair& pair) {
     row.period_mean = series.period_mean().norm();
     row.worst = worst_window_mean(series, r.window_s);
     row.time_to = time_to_epsilon(series, r.epsilon, r.resolution_s, kDesignWorkPerPair);
-#if defined(SPHTROCH_HAVE_HEALPIX)
     if (r.coverage_s) {
-      const DwellMap d = dwell_map(machine, 0, *r.coverage_s, r.nside);
+      if (!r.dwell)
+        throw InvalidInput("coverage", number_text(*r.coverage_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)",
+                           "coverage in a build with HEALPix");
+      const DwellMap d = r.dwell(s, 0, *r.coverage_s, r.nside);
       row.coverage = d.visited_fraction;
       row.dwell_cv = d.dwell_cv;
       row.coverage_bound_s = d.bound_s;
     }
-#endif
   } catch (const InvalidInput& e) {
     row.refused = e.field() + " = " + e.value() + ": " + e.problem();
+    row.refused_field = e.field();
   }
   return row;
 }

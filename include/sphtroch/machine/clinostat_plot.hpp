@@ -34,6 +34,7 @@ struct ClinostatPlot {
     double window_s, lower, upper;
   };
   std::vector<Window> windows;               ///< M(W) at increasing W; may be empty
+  std::string window_note;                   ///< drawn under the M(W) panel's heading when not empty
   std::optional<double> epsilon;
 };
 
@@ -92,6 +93,7 @@ inline void draw_dwell_map(SvgWriter& svg, const ClinostatPlot& p, double x0, do
 inline void draw_window_curve(SvgWriter& svg, const ClinostatPlot& p, double x0, double y0, double w, double h) {
   svg.rect(x0, y0, w, h, "fill:none;stroke:#444;stroke-width:1");
   svg.text(x0 + w / 2, y0 - 10, "M(W): the worst mean over a window of W seconds (g0)", "font:13px sans-serif", "middle");
+  if (!p.window_note.empty()) svg.text(x0 + w / 2, y0 + 14, p.window_note, "font:11px sans-serif;fill:#555", "middle");
   if (p.windows.empty()) return;
   const double w_max = p.windows.back().window_s, w_min = p.windows.front().window_s;
   double low = 1;

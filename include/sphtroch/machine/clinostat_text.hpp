@@ -15,6 +15,7 @@
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/machine/clinostat.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -49,9 +50,10 @@ inline Rpm parse_rpm(std::string_view text, const std::string& field) {
     for (const char c : part)
       if (c < '0' || c > '9') throw bad("not a number");
   if (fraction.size() > 6) throw bad("more than 6 decimal places");
-  if (whole.size() > 4) throw bad("too fast");
+  const std::string_view digits = whole.substr(std::min(whole.find_first_not_of('0'), whole.size()));  // 00001 is 1
+  if (digits.size() > 4) throw bad("too fast");
   std::int64_t num = 0, den = 1;
-  for (const char c : whole) num = num * 10 + (c - '0');
+  for (const char c : digits) num = num * 10 + (c - '0');
   for (const char c : fraction) {
     num = num * 10 + (c - '0');
     den *= 10;

@@ -24,6 +24,7 @@
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/machine/clinostat.hpp"
+#include "sphtroch/machine/gravity_series.hpp"
 
 #include <optional>
 #include <string>
@@ -76,7 +77,8 @@ inline ClinostatTrain clinostat_train(const Clinostat& m) {
   out.theta2_at_0 = -std::fmod(s.phase_inner_deg, 360.0) * (pi / 180.0) + 0.0;  // + 0.0: 0, not -0
   out.theta2_rate = -s.inner.radians_per_second();
   const double a2 = s.frame_angle_deg * (pi / 180.0), a3 = pi - s.tilt_deg * (pi / 180.0);
-  if (s.outer.is_zero() || s.inner.is_zero()) out.reason = "a single-axis machine (one speed is 0): the path is a circle";
+  if (!GravitySeries::of_gravity(m).period_s()) out.reason = "the gravity does not move in the sample (the turning axis is vertical): the path is a point";
+  else if (s.outer.is_zero() || s.inner.is_zero()) out.reason = "a single-axis machine (one speed is 0): the path is a circle";
   else if (m.axes_parallel()) out.reason = "the axes are parallel (frame angle 0 or 180 degrees): the path is a circle";
   else if (!m.turns_with_outer()) out.reason = "the outer axis is vertical (tilt 0 or 180 degrees): the path is a circle";
   else if (!carrier_twist_in_range(a2)) out.reason = "the frame angle is within 1e-6 rad of 0 or 180 degrees";

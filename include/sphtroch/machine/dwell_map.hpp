@@ -38,6 +38,7 @@
 #error "sphtroch/machine/dwell_map.hpp needs the sphtroch::healpix component (libhealpix-cxx-dev)"
 #endif
 
+#include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/gravity_series.hpp"
 
 #include <healpix_base.h>
@@ -48,20 +49,6 @@
 
 namespace sphtroch {
 
-struct DwellMap {
-  int nside = 8;
-  double start_s = 0, duration_s = 0;
-  std::vector<double> dwell_s;  ///< seconds per cell, RING order, 12 nside^2 values
-  double bound_s = 0;           ///< |dwell_s[i] - true time in cell i| <= bound_s for every i
-  std::size_t visited = 0;      ///< cells with time > 0
-  double visited_fraction = 0;  ///< visited / cells
-  double dwell_cv = 0;          ///< coefficient of variation of dwell_s over all cells
-};
-
-constexpr double kMaxDwellSteps = 2e6;      // first-level steps of one walk
-constexpr double kDwellQueryBudget = 2e7;   // query_disc calls shared by a walk's first-level steps
-constexpr int kMaxDwellCarry = 65536;       // the most a step may borrow from the steps before it
-constexpr int kMaxNside = 1024;
 
 namespace detail {
 

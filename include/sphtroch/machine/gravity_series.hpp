@@ -27,6 +27,7 @@
 
 #include "sphtroch/machine/clinostat.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <cstdlib>
 #include <limits>
@@ -161,10 +162,44 @@ class GravitySeries {
           const SinCos<double> th = sin_cos(j * m.outer_angle(0) + l * m.inner_angle(0));
           constant_ += h.a * th.cos + h.b * th.sin;  // a resonance: constant in time
         } else {
-          terms_.push_back(h);
+          add_term(fold_still_frame(h, m));
         }
       }
+    if (std::all_of(terms_.begin(), terms_.end(), [&](const GravityHarmonic& h) { return h.amplitude <= kRoundingZero; })) {
+      terms_.clear();  // nothing moves: the mean is the gravity itself, exactly
+      constant_ = (effective ? m.effective_gravity(0.0) : m.gravity(0.0)) + Vector3d::Zero();  // + 0: no -0
+    }
     set_period();
+  }
+
+  /// A term of a machine with one frame still (speed 0) written in the turning frame's angle
+  /// alone: a cos(th' + d) + b sin(th' + d) = (a cos d + b sin d) cos th' + (b cos d - a sin d)
+  /// sin th', d the still frame's part of th (its angle is constant); a negative multiple of the
+  /// turning angle flips b. Terms of both frames turning are returned as they are.
+  static GravityHarmonic fold_still_frame(GravityHarmonic h, const Clinostat& m) {
+    const bool outer_still = m.settings().outer.is_zero(), inner_still = m.settings().inner.is_zero();
+    if (!(outer_still && h.j != 0) && !(inner_still && h.l != 0)) return h;
+    const SinCos<double> d = sin_cos(outer_still ? h.j * m.outer_angle(0) : h.l * m.inner_angle(0));
+    const Vector3d a = h.a * d.cos + h.b * d.sin, b = h.b * d.cos - h.a * d.sin;
+    const int sign = outer_still && h.l < 0 ? -1 : 1;
+    h.a = a, h.b = sign * b;
+    if (outer_still) h.j = 0, h.l = std::abs(h.l);
+    else h.l = 0;
+    h.frequency = Rpm::frequency(h.j, m.settings().outer, h.l, m.settings().inner);
+    h.omega = 2 * Constants<double>::pi() * h.frequency.value() / 60;
+    h.amplitude = semi_major_axis(h.a, h.b);
+    return h;
+  }
+
+  /// Adds a term, or merges it into the term of the same (j, l) (a still frame's folded terms).
+  void add_term(const GravityHarmonic& h) {
+    for (GravityHarmonic& t : terms_)
+      if (t.j == h.j && t.l == h.l) {
+        t.a += h.a, t.b += h.b;
+        t.amplitude = semi_major_axis(t.a, t.b);
+        return;
+      }
+    terms_.push_back(h);
   }
 
   /// Whether harmonic (j, l) can be non-zero, from the typed angles (header).

@@ -7,24 +7,34 @@
 //   const sphtroch::GravitySeries g = sphtroch::GravitySeries::of_gravity(sphtroch::Clinostat(s));
 //   const sphtroch::TimeToEpsilon t = sphtroch::time_to_epsilon(g, 0.01, 1.0);
 //   t.first_s;              // the shortest window W (a multiple of 1 s) with M(W) <= 0.01
-//   t.stays_below_from_s;   // the shortest W from which every longer window (on the grid) is below
+//   t.stays_below_from_s;   // a multiple of 1 s from which every longer window (any length) is below
 //
-// Windows are the multiples of the resolution r: W = r, 2r, ... M(W) (worst_window_mean.hpp) is
-// not monotone in W, hence the two answers. Both are decided by certified comparisons and a proof
-// of the tail:
+// Two answers, because M(W) (worst_window_mean.hpp) is not monotone in W:
+// - first_s: the shortest window on the grid W = r, 2r, ... (r the resolution) with M(W) <= epsilon.
+// - stays_below_from_s: a multiple of r from which EVERY window, of any real length W, is below
+//   epsilon (not only the grid's: a machine whose periods divide r is below at every grid point
+//   and far above in between). above_s, when found, is a length certified above epsilon within
+//   2 r below it, so the true threshold lies in [above_s, stays_below_from_s].
+// Both are decided by certified comparisons and a proof of the tail:
 // - M(W) >= |c| for every W (c the mean over a period: the mean over start times of the window
 //   means is c), so when |c| > epsilon no window qualifies: both empty, with the reason (and when
 //   |c| is within rounding of epsilon the answer is not certified, and says so).
 // - |mean(t0, W) - c| <= sum_k A_k |sinc(W_k W / 2)| <= (sum_k 2 A_k / |W_k|) / W = C / W, so every
-//   W >= C / (epsilon - |c|) is below: the grid is searched up to there, downwards for the last W
-//   above epsilon. A cheap bound settles most windows without a search: TorusGramBound
-//   (worst_window_mean.hpp), which is never above |c| + sum_k A_k |sinc(W_k W / 2)|.
-// Between grid points M can exceed its values at the grid by at most (1 + |c| + sum A_k) r / W
-// (|d/dW (W mean)| <= |f|); the answers are stated for the grid.
-// Cost: one comparison per grid window up to the first below epsilon, and one per window above
-// the cheap bound (TorusGramBound) while going down from C / (epsilon - |c|); bounded up front by kMaxWindows, and
-// while running by kMaxTimeToEpsilonWork evaluations (then not certified, and it says so: speeds
-// near a resonance, whose slow beat puts many windows within a hair of epsilon).
+//   W >= C / (epsilon - |c|) is below.
+// - Between lengths: for a fixed start, W' mean(t0, W') differs from W mean(t0, W) by at most
+//   |W' - W| G (G >= sup |g(t)|), so M(W') <= (W M(W) + h G) / (W - h) for |W' - W| <= h: one
+//   comparison of M(w) with tau = epsilon - h (epsilon + G) / w covers [w - h, w + h]. The
+//   search walks down from the tail with h growing after each covered piece and halving after a
+//   failed one; a failed piece is compared with epsilon itself (above: above_s), and the walk
+//   stops at an above point or when h < r / 1024 (then eight lengths within r below are tried
+//   for an above point).
+// A cheap bound settles most comparisons without a search: TorusGramBound (worst_window_mean.hpp),
+// which is never above |c| + sum_k A_k |sinc(W_k W / 2)|.
+// Cost: one comparison per grid window up to the first below epsilon, and about
+// 2 (G + epsilon) / (epsilon - M) ln(tail / stays) comparisons for the walk (most by the cheap
+// bound); bounded up front by kMaxWindows, and while running by kMaxTimeToEpsilonWork
+// evaluations (then not certified, and it says so: speeds near a resonance, whose slow beat puts
+// many windows within a hair of epsilon).
 #pragma once
 
 #include "sphtroch/machine/worst_window_mean.hpp"
@@ -38,24 +48,85 @@ namespace sphtroch {
 struct TimeToEpsilon {
   double epsilon = 0, resolution_s = 0;
   std::optional<double> first_s;             ///< the smallest grid W with M(W) <= epsilon
-  std::optional<double> stays_below_from_s;  ///< the smallest grid W with M(W') <= epsilon for all grid W' >= W
+  std::optional<double> stays_below_from_s;  ///< a grid W with M(W') <= epsilon for every real W' >= W (certified)
+  std::optional<double> above_s;             ///< a length with M > epsilon (certified) in [stays - 2 r, stays), when found
   std::string reason;                        ///< why both are empty, or why not certified
   bool certified = true;                     ///< false: a comparison was undecided (reason says where)
   double tail_s = 0;                         ///< C / (epsilon - |c|): every W beyond is proven below
 };
 
+/// The smallest epsilon (g0): the mean over a period is known to ~1e-14, so a smaller bound could
+/// not be told from it.
+constexpr double kMinEpsilon = 1e-12;
 /// The largest number of grid windows searched (the tail bound over the resolution).
 constexpr double kMaxWindows = 1e7;
 /// The largest number of evaluations of the window mean the search spends (~10 s); beyond, the
 /// answer is not certified and says so (near-resonant speeds with a small epsilon).
 constexpr double kMaxTimeToEpsilonWork = 3e7;
 
-/// Throws InvalidInput("epsilon") unless 0 < epsilon <= 1e9, ("resolution") unless 0 < r <= 1e6 s,
+namespace detail {
+
+/// sup_t |g(t)| bounded: the unit vectors' 1, else the torus bound with every sinc 1.
+inline double gravity_bound(const GravitySeries& g, const TorusGramBound& torus) {
+  return std::min(g.norm_bound(), torus.upper(0.0));
+}
+
+/// The walk of the header down from the tail: `covered` (every real W >= it is below epsilon,
+/// certified), `above` (a length certified above epsilon, 0 when none found) and `out_of_work`
+/// (the work bound ended it: nothing certified below the tail).
+struct DownwardWalk {
+  double covered = 0, above = 0;
+  bool out_of_work = false;
+};
+inline DownwardWalk walk_down(const GravitySeries& g, const TorusGramBound& torus, double epsilon, double resolution_s, double tail_s,
+                              double max_work, double& work, double& hint) {
+  const double big_g = gravity_bound(g, torus);
+  DownwardWalk walk;
+  walk.covered = tail_s;
+  const double finest = resolution_s / 1024;
+  double h = resolution_s, lowest = 0;
+  while (walk.covered - lowest > finest && walk.covered > finest) {
+    h = std::min(h, (walk.covered - lowest) / 2);
+    const double w = walk.covered - h;                       // covers [w - h, w + h] when below tau
+    const double tau = (epsilon * (w - h) - h * big_g) / w * (1 - 1e-13);
+    WindowSide side = WindowSide::undecided;
+    if (tau > 0 && torus.upper(w) <= tau) side = WindowSide::below;
+    else if (tau > 0 && work <= max_work) side = compare_worst_window_mean(g, w, tau, &hint, &work);
+    if (work > max_work) {
+      walk.out_of_work = true;
+      return walk;
+    }
+    if (side == WindowSide::below) {
+      walk.covered = std::max(lowest, w - h);
+      h *= 2;
+      continue;
+    }
+    if (compare_worst_window_mean(g, w, epsilon, &hint, &work) == WindowSide::above) {
+      walk.above = std::max(walk.above, w);
+      lowest = w;
+    }
+    h /= 2;
+    if (h < finest) break;
+  }
+  // Stuck short of an above point (M within ~finest (G + epsilon) / W of epsilon): one within a
+  // resolution below, if the search finds one, bounds the threshold from below.
+  for (int k = 1; k <= 8 && walk.above < walk.covered - resolution_s && work <= max_work; ++k) {
+    const double w = walk.covered - resolution_s * k / 8;
+    if (w > 0 && compare_worst_window_mean(g, w, epsilon, &hint, &work) == WindowSide::above) walk.above = w;
+  }
+  return walk;
+}
+
+}  // namespace detail
+
+/// Throws InvalidInput("epsilon") unless 1e-12 <= epsilon <= 1e9, ("resolution") unless 0 < r <= 1e6 s,
 /// and ("resolution") when the tail C / (epsilon - |c|) holds more than kMaxWindows grid windows.
 /// `max_work`: the evaluations the search may spend (default kMaxTimeToEpsilonWork).
 inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, double resolution_s,
                                      double max_work = kMaxTimeToEpsilonWork) {
-  if (!(epsilon > 0 && epsilon <= 1e9)) throw InvalidInput("epsilon", number_text(epsilon), "not a bound in range", "0 < epsilon <= 1e9 (units of g0)");
+  if (!(epsilon >= kMinEpsilon && epsilon <= 1e9))
+    throw InvalidInput("epsilon", number_text(epsilon), "not a bound in range",
+                       "1e-12 <= epsilon <= 1e9 (units of g0; the mean over a period is known to ~1e-14)");
   if (!(resolution_s > 0 && resolution_s <= 1e6))
     throw InvalidInput("resolution", number_text(resolution_s), "not a positive step", "0 < resolution <= 1e6 seconds");
   TimeToEpsilon out;
@@ -112,16 +183,12 @@ inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, dou
   }
   first = std::min(first, std::max(1.0, last));  // at the tail's grid point the cheap bound holds
   out.first_s = first * resolution_s;
-  double stays = first;
-  for (double k = last; k > first; --k) {
-    const WindowSide s = side(k);
-    if (s == WindowSide::undecided) return undecided(k);
-    if (s == WindowSide::above) {
-      stays = k + 1;
-      break;
-    }
-  }
+  const detail::DownwardWalk walk = detail::walk_down(g, torus_bound, epsilon, resolution_s, out.tail_s, max_work, work, hint);
+  if (walk.out_of_work) return undecided(walk.covered / resolution_s);
+  double stays = std::max(first, std::ceil(walk.covered / resolution_s));
+  if (stays * resolution_s < walk.covered) stays += 1;  // the division's rounding
   out.stays_below_from_s = stays * resolution_s;
+  if (walk.above > 0 && walk.above >= out.stays_below_from_s.value() - 2 * resolution_s) out.above_s = walk.above;
   return out;
 }
 

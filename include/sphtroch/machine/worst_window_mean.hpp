@@ -216,15 +216,19 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   return out;
 }
 
-/// True when sup |F| <= epsilon is proven over the whole torus of frame angles, F(x, y) = c +
-/// sum_k s_k (a_k cos(j x + l y) + b_k sin(j x + l y)): the window mean at any start lies on it,
-/// so M(W) <= epsilon follows, at a cost independent of the period. A box of half-widths (hx, hy)
-/// about (x, y) is bounded by the largest |F + F_x dx + F_y dy| over its corners (convex in d)
-/// plus sum_k |s_k| A_k (|j| hx + |l| hy)^2 / 2 (the second derivative along d) and rounding.
-/// False when some |F| > epsilon is found or after kMaxTorusBoxes boxes (then the caller searches
-/// the path itself).
+/// sup |F| over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k cos(j x + l y) +
+/// b_k sin(j x + l y)), bracketed: the window mean at any start lies on it, so M(W) <= upper, at a
+/// cost independent of the period (lower bounds sup |F|, not M(W): the path may miss the torus'
+/// highest point). A box of half-widths (hx, hy) about (x, y) is bounded by the largest |F + F_x
+/// dx + F_y dy| over its corners (convex in d) plus sum_k |s_k| A_k (|j| hx + |l| hy)^2 / 2 (the
+/// second derivative along d) and rounding. Best first; stop(lower, upper) ends it early, else
+/// it ends at kMaxTorusBoxes boxes.
 constexpr int kMaxTorusBoxes = 4096;
-inline bool torus_below(const GravitySeries& g, double w, double epsilon, double* work = nullptr) {
+struct TorusBracket {
+  double lower = 0, upper = 0;
+};
+template <typename Stop>
+TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* work = nullptr) {
   struct Term {
     int j, l;
     double s;
@@ -244,6 +248,7 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon, double
     bool operator<(const Box& o) const { return upper < o.upper; }
   };
   std::priority_queue<Box> boxes;
+  TorusBracket out;
   const auto add = [&](double x, double y, double half) {
     if (work) *work += 1;
     Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
@@ -262,23 +267,29 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon, double
     for (const double sx : {-half, half})
       for (const double sy : {-half, half}) corner = std::max(corner, (f + fx * sx + fy * sy).norm());
     boxes.push({x, y, half, corner + curvature + rounding});
-    return f.norm() - rounding;
+    out.lower = std::max(out.lower, f.norm() - rounding);
   };
   const double pi = Constants<double>::pi();
   const int n = 4;
   for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b)
-      if (add((2 * a + 1) * pi / n, (2 * b + 1) * pi / n, pi / n) > epsilon) return false;
-  for (int count = n * n; count < kMaxTorusBoxes; count += 4) {
+    for (int b = 0; b < n; ++b) add((2 * a + 1) * pi / n, (2 * b + 1) * pi / n, pi / n);
+  for (int count = n * n;; count += 4) {
+    out.upper = std::max(out.lower, boxes.top().upper);
+    if (count >= kMaxTorusBoxes || stop(out.lower, out.upper)) return out;
     const Box top = boxes.top();
-    if (top.upper <= epsilon) return true;
     boxes.pop();
     const double q = top.half / 2;
     for (const double dx : {-q, q})
-      for (const double dy : {-q, q})
-        if (add(top.x + dx, top.y + dy, q) > epsilon) return false;
+      for (const double dy : {-q, q}) add(top.x + dx, top.y + dy, q);
   }
-  return boxes.top().upper <= epsilon;
+}
+
+/// True when sup |F| <= epsilon is proven over the whole torus (torus_bracket): M(W) <= epsilon
+/// follows. False when some |F| > epsilon is found or after kMaxTorusBoxes boxes (then the
+/// caller searches the path itself).
+inline bool torus_below(const GravitySeries& g, double w, double epsilon, double* work = nullptr) {
+  const TorusBracket b = torus_bracket(g, w, [epsilon](double lower, double upper) { return lower > epsilon || upper <= epsilon; }, work);
+  return b.upper <= epsilon;
 }
 
 }  // namespace detail
@@ -308,6 +319,39 @@ inline WindowSide compare_worst_window_mean(const GravitySeries& g, double windo
   if (m.lower > epsilon) return WindowSide::above;
   if (m.upper <= epsilon) return WindowSide::below;
   return WindowSide::undecided;
+}
+
+/// M(W) at `count` windows W = longest k / count, k = 1 .. count: each bracketed by the search
+/// over one period (width 1e-6) when the count times worst_window_mean_cost stays within
+/// kMaxCurvePieces (~15 s), else by the bound over every frame angle (torus_bracket: `upper`
+/// bounds M(W), `lower` is the torus' and not M's; `torus` says so): its cost does not grow with
+/// the period, at most count kMaxTorusBoxes evaluations.
+constexpr double kMaxCurvePieces = 2e7;
+struct WindowCurve {
+  std::vector<WorstWindowMean> points;
+  bool torus = false;
+};
+inline WindowCurve window_curve(const GravitySeries& g, double longest, int count) {
+  WindowCurve out;
+  double cost = kMaxWindowPieces;
+  try {
+    cost = worst_window_mean_cost(g);
+  } catch (const InvalidInput&) {  // a period too long for the search: the torus bound
+  }
+  out.torus = cost * count > kMaxCurvePieces;
+  for (int k = 1; k <= count; ++k) {
+    const double w = longest * k / count;
+    if (!out.torus) {
+      out.points.push_back(worst_window_mean(g, w, 1e-6));
+      continue;
+    }
+    const detail::TorusBracket b = detail::torus_bracket(g, w, [](double lower, double upper) { return upper - lower <= 1e-6; });
+    WorstWindowMean m;
+    m.window_s = w, m.lower = b.lower, m.upper = std::min(b.upper, g.norm_bound());
+    m.certified = false;
+    out.points.push_back(m);
+  }
+  return out;
 }
 
 }  // namespace sphtroch

@@ -202,16 +202,18 @@ struct Search {
 };
 
 /// A box K known to hold exactly one root, narrowed by further Krawczyk steps while they shrink
-/// it (each keeps the root): its middle is the reported root.
+/// it by a tenth at least (each keeps the root; from a wide box the first steps may shrink it
+/// slowly before the quadratic ones): its middle is the reported root, the box its enclosure
+/// (a few ulp wide, which the node assembly relies on to tell close branches apart).
 template <class System>
 Box2 contracted(const System& sys, Box2 k) {
-  for (int it = 0; it < 12; ++it) {
+  for (int it = 0; it < 40; ++it) {
     const BoxEvaluation e = sys.evaluate(k);
     const std::optional<Chart> c = chart_of(e.first, e.second);
     if (!c || c->apart) break;
     const KrawczykResult next = krawczyk(sys, k, e, *c);
     const Box2 n = next.verdict == Verdict::undecided || next.verdict == Verdict::one ? next.narrowed : k;
-    if (!(n.width() < 0.5 * k.width())) {
+    if (!(n.width() < 0.9 * k.width())) {
       if (n.width() <= k.width()) k = n;
       break;
     }

@@ -33,9 +33,13 @@
 //    U where it is the only one, and boxes inside U are dropped.
 //  - Boxes left undecided (two branches nearly parallel where they meet) are resolved by
 //    chain_tangency.hpp: none, two crossings, or a tangency within the rounding of double.
-// Nodes are assembled from the branch pairs (params equal within kChainParamTolerance); a point
-// with m branches must show m (m - 1) / 2 pairs. Every pair isolated by Krawczyk is a transversal
-// crossing; a node whose pairs all touch is a tangency. Boxes still undecided: not certified.
+// Nodes are assembled from the branch pairs: two parameters are one branch when their certified
+// enclosures overlap (Krawczyk's, a few ulp wide), distinct however close when they do not. A
+// point with m branches must show m (m - 1) / 2 pairs, and a node of three or more branches is
+// not certified: its pairs' roots agreeing to rounding does not prove one point (a triple point
+// is not generic; m (m - 1) / 2 crossings closer than double resolves look the same). Every pair
+// isolated by Krawczyk is a transversal crossing; a node whose pairs all touch is a tangency.
+// Boxes still undecided: not certified.
 // Cost: O(arcs + candidate arc pairs + boxes); arcs are refused beyond kMaxChainArcs (InvalidInput
 // naming "rates"), boxes stop at max_boxes (then not certified).
 #pragma once
@@ -75,8 +79,6 @@ constexpr double kChainCuspResolution = 1e-7;
 constexpr double kChainCuspZone = 1e-2;
 /// The census refuses chains needing more arcs than this (period T times Omega / kChainArcTurn).
 constexpr std::size_t kMaxChainArcs = 400000;
-/// Two branch parameters closer than this (times max(1, T)) are the same branch.
-constexpr double kChainParamTolerance = 1e-9;
 /// A family's census (chain_census_over) gives up on a box narrower than this times the range.
 constexpr double kChainFamilyBoxWidth = 1e-2;
 /// A family's census stops (not certified) after this many undecided boxes.
@@ -87,6 +89,8 @@ struct ChainCensus {
   std::vector<Cusp> cusps;  // param: s in [0, period); speed |P'| there (<= kChainCuspResolution Omega)
   bool certified = true;
   std::string why;          // what is left when not certified
+  bool multiple_unproved = false;  // a node of three or more branches whose pairs agree to rounding: a triple point
+                                   // or crossings closer than double tells (not certified; chain boundaries' events)
   std::string method = "interval branch and bound with the Krawczyk test (census/interval/chain_census.hpp)";
   double period = 0;        // 2 pi L / g
   double cusp_zone = 0;     // kChainCuspZone / Omega: half-width in s of each cusp's unresolved region
@@ -287,18 +291,35 @@ inline void search_window(const std::vector<Arc>& arcs, std::size_t i, const Cha
 
 
 
-/// Parameters within tol of each other (circularly, mod T) as one branch: the cluster index of each.
-inline std::vector<std::size_t> branch_clusters(const std::vector<double>& params, double tol, double period) {
+/// A branch parameter reduced to [0, T) with its enclosure shifted alike (padded by the reduction's
+/// rounding, 4 ulp of max(1, T)).
+struct BranchParam {
+  double value = 0, lo = 0, hi = 0;
+};
+inline BranchParam reduced_branch(double value, const Interval& enclosure, double period) {
+  const double r = reduce_param(value, period), shift = value - r;
+  const double pad = 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, period);
+  return {r, std::min(enclosure.inf(), value) - shift - pad, std::max(enclosure.sup(), value) - shift + pad};
+}
+
+/// Parameters whose enclosures overlap (circularly, mod T) as one branch: the cluster index of
+/// each. Enclosures that are disjoint are distinct branches, however close (the certified
+/// enclosures of Krawczyk's roots are a few ulp wide); overlapping ones cannot be told apart.
+inline std::vector<std::size_t> branch_clusters(const std::vector<BranchParam>& params, double period) {
   const std::size_t n = params.size();
   std::vector<std::size_t> order(n), cluster(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return params[a] < params[b]; });
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return params[a].lo < params[b].lo; });
   std::size_t current = 0;
+  double reach = -std::numeric_limits<double>::infinity();  // the largest hi of the current cluster
   for (std::size_t k = 0; k < n; ++k) {
-    if (k > 0 && params[order[k]] - params[order[k - 1]] > tol) ++current;
+    const BranchParam& p = params[order[k]];
+    if (k > 0 && p.lo > reach) ++current, reach = -std::numeric_limits<double>::infinity();
+    reach = std::max(reach, p.hi);
     cluster[order[k]] = current;
   }
-  if (n > 1 && params[order[0]] + period - params[order[n - 1]] <= tol)  // the wrap: last cluster is the first
+  const bool wraps = current > 0 && reach >= params[order[0]].lo + period;
+  if (wraps && current > 0)  // the wrap: the last cluster is the first
     for (std::size_t k = 0; k < n; ++k)
       if (cluster[k] == current) cluster[k] = 0;
   return cluster;
@@ -314,9 +335,9 @@ inline double tangent_angle(const Vector3d& a, const Vector3d& b) {
 /// point of m branches must have m (m - 1) / 2 pairs (else `why` is set).
 inline std::vector<Node> assemble_nodes(const ChainCurve<double>& curve, const std::vector<BranchPair>& pairs, double period,
                                         bool negated, std::string& why) {
-  std::vector<double> params;
-  for (const BranchPair& p : pairs) params.push_back(reduce_param(p.a, period)), params.push_back(reduce_param(p.b, period));
-  const std::vector<std::size_t> cluster = branch_clusters(params, kChainParamTolerance * std::max(1.0, period), period);
+  std::vector<BranchParam> params;
+  for (const BranchPair& p : pairs) params.push_back(reduced_branch(p.a, p.a_range, period)), params.push_back(reduced_branch(p.b, p.b_range, period));
+  const std::vector<std::size_t> cluster = branch_clusters(params, period);
   std::size_t clusters = 0;
   for (const std::size_t c : cluster) clusters = std::max(clusters, c + 1);
   std::vector<std::size_t> parent(clusters);
@@ -332,7 +353,7 @@ inline std::vector<Node> assemble_nodes(const ChainCurve<double>& curve, const s
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());  // the same pair found twice
   std::vector<double> value(clusters, 0.0);
-  for (std::size_t k = 0; k < params.size(); ++k) value[cluster[k]] = params[k];
+  for (std::size_t k = 0; k < params.size(); ++k) value[cluster[k]] = params[k].value;
   std::vector<Node> nodes;
   std::vector<std::size_t> node_of(clusters, SIZE_MAX);
   for (const auto& [a, b, touching] : edges) {
@@ -349,6 +370,8 @@ inline std::vector<Node> assemble_nodes(const ChainCurve<double>& curve, const s
     n.branches = n.params.size();
     n.kind = n.crossing_pairs > 0 ? NodeKind::crossing : NodeKind::tangency;
     if (n.crossing_pairs + n.tangency_pairs != n.branches * (n.branches - 1) / 2) why = "a node's branches do not all meet pairwise";
+    else if (n.branches > 2 && why.empty())  // pairwise roots a few ulp apart: one point, or crossings closer than double tells
+      why = "a node of " + std::to_string(n.branches) + " branches is not proved one point (its pairs' roots agree to the rounding of double)";
     Vector3d sum = Vector3d::Zero();
     for (const double p : n.params) sum += curve.point(p);
     n.position = (negated ? -1.0 : 1.0) * sum.normalized();
@@ -462,7 +485,7 @@ inline bool same_pair(const BranchPair& x, const BranchPair& y, double period) {
 }
 
 /// The pairs with each found twice kept once (a family's roots found from two boxes differ by
-/// their spread over the family, more than kChainParamTolerance).
+/// their spread over the family, wider than a point's enclosure).
 inline std::vector<BranchPair> distinct_pairs(std::vector<BranchPair> pairs, double period) {
   std::vector<BranchPair> out;
   for (const BranchPair& p : pairs)
@@ -532,6 +555,7 @@ inline ChainCensus census_of_reduced(const RotationChain& chain, const ReducedCh
     out.why = "two branches may touch within the range";
   if (family && out.why.empty() && pairs_may_meet(pairs, period)) out.why = "two nodes may meet within the range (a triple point)";
   out.certified = out.why.empty();
+  out.multiple_unproved = !out.certified && out.why.find("is not proved one point") != std::string::npos;
   return out;
 }
 

@@ -298,11 +298,12 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
   e.cusps_below = c.below.cusps, e.cusps_above = c.above.cusps;
   const ChainCensus at = chain_census(chain_at(chain, vary, e.a3));
   const CensusCounts there = counts_of(at);
+  const bool seen = at.certified || at.multiple_unproved;  // its nodes are known (a multiple one to rounding)
   if (c.below.cusps != c.above.cusps || (at.certified && there.cusps > std::max(c.below.cusps, c.above.cusps))) {
     e.kind = BoundaryEventKind::cusp;
     e.name = "cusp birth (P parallel to omega)";
-  } else if (c.below.pairs == c.above.pairs || (at.certified && there.multiple)) {
-    if (c.below == c.above && !(at.certified && near_triple(at, std::max(1e-6, kChainTripleDistance * (c.hi - c.lo))))) {
+  } else if (c.below.pairs == c.above.pairs || (seen && there.multiple)) {
+    if (c.below == c.above && !(seen && near_triple(at, std::max(1e-6, kChainTripleDistance * (c.hi - c.lo))))) {
       if (c.hi - c.lo > kChainQuietWidth)
         why = "no census holds over a slab of [" + number_text(c.lo) + ", " + number_text(c.hi) + "] and none changes at " +
               std::to_string(kChainBracketProbes + 1) + " values in it: events that cancel could hide there";
@@ -337,11 +338,15 @@ inline void check_range_end(const RotationChain& chain, const ChainVary& vary, d
 /// a two-stage chain whose A1 lies within kChainTwistMargin of 0 or pi (the map refuses that a2;
 /// at exactly 0 or pi the joints are coaxial and the curve a circle for every A2). Throws
 /// InvalidInput as chain_census does, ("vary") for a twist range within kChainTwistMargin of
-/// 0 or pi only.
+/// 0 or pi only, or a phase range beyond [-4 pi, 4 pi] or longer than 2 pi (every family).
 inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVary& vary) {
   namespace d = chain_family_detail;
   const double first = chain.stages()[0].twist, pi = Constants<double>::pi();
   const bool near_coaxial = std::min(first, pi - first) < kChainTwistMargin;  // the map refuses such an a2: searched
+  if (!vary.twist && !(vary.hi - vary.lo <= 2 * Constants<double>::pi() && vary.lo >= -kChainPhaseBound && vary.hi <= kChainPhaseBound))
+    throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi),
+                       "a phase range longer than 2 pi or beyond 4 pi (the family repeats every 2 pi)",
+                       "a phase range within [-4 pi, 4 pi], HI - LO <= 2 pi");
   if (closed_form_family(chain, vary) && !(chain.size() == 2 && vary.twist && near_coaxial)) return chain_events(chain, vary);
   ChainEvents out{vary, {}, "", true, "", kEventAccuracy, 0.0, {}, {}};
   ChainVary range = vary;
@@ -352,10 +357,6 @@ inline ChainEvents chain_family_events(const RotationChain& chain, const ChainVa
       throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi), "the range lies within " + number_text(kChainTwistMargin) + " of 0 or pi",
                          "a twist range reaching into [" + number_text(kChainTwistMargin) + ", pi - " + number_text(kChainTwistMargin) + "]");
   }
-  if (!vary.twist && !(vary.hi - vary.lo <= 2 * Constants<double>::pi() && vary.lo >= -kChainPhaseBound && vary.hi <= kChainPhaseBound))
-    throw InvalidInput("vary", vary.name() + ":" + number_text(vary.lo) + ":" + number_text(vary.hi),
-                       "a phase range longer than 2 pi or beyond 4 pi (the family repeats every 2 pi)",
-                       "a phase range within [-4 pi, 4 pi], HI - LO <= 2 pi");
   const ChainVary middle{vary.twist, vary.stage, 0.5 * (range.lo + range.hi), 0.5 * (range.lo + range.hi)};
   if (!varies_curve(chain_at(chain, vary, middle.lo), middle)) {
     out.note = vary.name() + " turns the tool axis about itself: the curve does not change";

@@ -262,9 +262,12 @@ inline StationaryValue stationary_value(const BoxTrig& t, const Ratio& n, int la
   s.exists = disc.inf() > 0 && c->inf() > -1 && c->sup() < 1;
   const Interval b = interval_acos(*c);
   const Interval pi = pi_interval();
-  s.open_lo = (std::min(-p, 0.0) + q * Interval(b.inf()) / pi).inf();
-  const double b_share = b.sup() >= 3.141592653589793 ? 1.0 : (Interval(b.sup()) / pi).sup();  // b/pi <= 1
-  s.open_hi = (std::max(-p, 0.0) + q * Interval(b_share)).sup();
+  // At the ends (b = 0, b/pi = 1) the bounds are integers, taken exactly: an interval kernel that
+  // steps every result outward (CGAL_ALWAYS_ROUND_TO_NEAREST, the WebAssembly build) would move
+  // them off the integer and let an excluded value back in.
+  s.open_lo = b.inf() <= 0 ? std::min(-p, 0.0) : (std::min(-p, 0.0) + q * Interval(b.inf()) / pi).inf();
+  s.open_hi = b.sup() >= 3.141592653589793 ? std::max(-p, 0.0) + q  // b/pi <= 1
+                                           : (std::max(-p, 0.0) + q * (Interval(b.sup()) / pi)).sup();
   const Interval b_mid(0.5 * (b.inf() + b.sup()));
   const auto g_mid = g_over(b_mid, t, p, q);
   const auto slope = dg_db_over(b, t, p, q);
