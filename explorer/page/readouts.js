@@ -151,7 +151,7 @@
     const t = X.lib.numberText, data = { first: e.firstS === null ? '' : t(e.firstS),
       stays: e.staysBelowFromS === null ? '' : t(e.staysBelowFromS), certified: e.certified ? '1' : '0' };
     const text = e.firstS !== null ? 'the first window below ' + t(e.epsilon) + ' g0 is ' + t(e.firstS) + ' s; every window from ' +
-      t(e.staysBelowFromS) + ' s on is below (windows in steps of 1 s; certified)'
+      t(e.staysBelowFromS) + ' s on, of any length, is below (first: windows in steps of 1 s; certified)'
       : (e.certified ? 'none: ' : 'NOT CERTIFIED: ') + e.reason;
     setCell('time', text, data);
   }

@@ -107,6 +107,7 @@
 #include "sphtroch/machine/clinostat_plot.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
+#include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/rpm.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"

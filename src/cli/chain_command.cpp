@@ -13,6 +13,7 @@
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/io/urdf_writer.hpp"
 
+#include <cctype>
 #include <cmath>
 
 namespace sphtroch::cli {
@@ -26,9 +27,11 @@ struct ChainOptions {
 };
 
 TraceFormat chain_format(const ChainOptions& o) {
+  std::string lower = o.output;  // suffixes in any case, as trace reads them
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const auto ends = [&](const char* ext) {
     const std::string e = std::string(".") + ext;
-    return o.output.size() >= e.size() && o.output.compare(o.output.size() - e.size(), e.size(), e) == 0;
+    return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0;
   };
   const std::string f = o.format;
   if (f == "npy" || (f.empty() && ends("npy"))) return TraceFormat::npy;

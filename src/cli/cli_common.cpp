@@ -147,8 +147,9 @@ std::string lower_suffix(const std::string& path) {
 
 }  // namespace
 
-void check_output_suffix(const std::string& path, const std::string& field, const std::vector<std::string>& writes) {
-  if (path.empty() || path == "-") return;
+void check_output_suffix(const std::string& path, const std::string& option, const std::vector<std::string>& writes) {
+  if (path.empty() || path == "-" || writes.empty()) return;  // empty: the caller checks its formats itself
+  const std::string field = option.rfind("--", 0) == 0 ? option.substr(2) : option;  // InvalidInput's field has no "--"
   const std::string ext = lower_suffix(path);
   if (ext.empty() || std::find(kNamedFormats.begin(), kNamedFormats.end(), ext) == kNamedFormats.end()) return;
   if (std::find(writes.begin(), writes.end(), ext) != writes.end()) return;

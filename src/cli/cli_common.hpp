@@ -89,7 +89,8 @@ extern const std::vector<std::string> kPictureOutputs;
 /// Refuses (InvalidInput naming `field`, exit 2, before any file is opened) an
 /// output whose suffix (any case, of the file name) names a format (a list of data, CAD and picture
 /// formats: .stl, .step, .png, .npy, .pdf, ...) that is not among `writes`: a command writes the
-/// format its suffix names or refuses it, never another one silently.
+/// format its suffix names or refuses it, never another one silently. Empty `writes`: no check
+/// (a caller that validates its outputs' formats itself, as a scene does).
 void check_output_suffix(const std::string& path, const std::string& field, const std::vector<std::string>& writes);
 
 /// Writes text produced by `write` to stdout (path empty or "-"), or to `path` (see

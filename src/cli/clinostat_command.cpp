@@ -202,8 +202,7 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
   if (!o.plot.empty()) check_plot_request(o.plot, q);
   if (!o.start.empty() && !q.coverage && o.plot.empty())
     throw UsageError{"--start = " + o.start + ": only with --coverage, --plot or --trace; valid: --coverage S --start T"};
-  if (q.coverage && std::string(healpix_plugin_state()) == "no")
-    throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
+  if (q.coverage) require_dwell_maps("coverage", o.coverage);  // refused now, not after the other numbers
   Report r;
   r.effective = m.has_offset();
   const GravitySeries series = r.effective ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);

@@ -65,8 +65,7 @@ DesignRequest read_design_request(const DesignOptions& o) {
     if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 64");
   }
   r.dwell = &dwell_map_by_plugin;  // HEALPix opened only when a coverage is asked
-  if (r.coverage_s && std::string(healpix_plugin_state()) == "no")
-    throw InvalidInput("coverage", o.coverage, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
+  if (r.coverage_s) require_dwell_maps("coverage", o.coverage);  // refused now, not by every pair
   if (!o.teeth.empty()) r.teeth = parse_tooth_range(o.teeth, "teeth");
   if (!o.tilt.empty()) r.tilt_deg = parse_degrees(o.tilt, "tilt", "[0, 180] degrees");
   if (!o.frame_angle.empty()) r.frame_angle_deg = parse_degrees(o.frame_angle, "frame-angle", "[0, 180] degrees");
@@ -210,16 +209,21 @@ void finish_run(const nlohmann::json& run, const std::string& output, bool json,
                             " pair(s) not certified (refused or past the work bound; their rows say why), the ranking leaves them last"};
 }
 
-/// InvalidInput (exit 2) when every row was refused for the same option of the request (--window,
+/// InvalidInput (exit 2) when every pair that searches (all but those whose mean over a period is
+/// above epsilon, marked "-") was refused for the same option of the request (--window,
 /// --epsilon, --resolution, --coverage, --nside): the option, not the grid, is out of range.
 void refuse_option_every_pair_refuses(const DesignOptions& o, const std::vector<std::string>& refused_by,
                                       const std::vector<nlohmann::json>& rows) {
   const std::vector<std::pair<std::string, const std::string*>> options = {
       {"window", &o.window}, {"epsilon", &o.epsilon}, {"resolution", &o.resolution}, {"coverage", &o.coverage}, {"nside", &o.nside}};
-  if (refused_by.empty() || std::any_of(refused_by.begin(), refused_by.end(), [&](const std::string& f) { return f != refused_by[0]; })) return;
+  std::size_t first = 0;
+  while (first < refused_by.size() && refused_by[first] == "-") ++first;
+  if (first == refused_by.size()) return;
+  for (const std::string& f : refused_by)
+    if (f != "-" && f != refused_by[first]) return;
   for (const auto& [field, text] : options)
-    if (refused_by[0] == field)
-      throw InvalidInput(field, *text, "every pair of the grid refuses it: " + rows[0].at("reason").get<std::string>(),
+    if (refused_by[first] == field)
+      throw InvalidInput(field, *text, "every pair of the grid that searches refuses it: " + rows[first].at("reason").get<std::string>(),
                          "a value the machines of the grid accept (the reason names the bound)");
 }
 
@@ -240,7 +244,8 @@ void run_design(const DesignOptions& o) {
   std::vector<std::string> refused_by(rows.size());  // the option a row's refusal names ("" for none)
   parallel_for(rows.size(), parse_threads(o.threads), [&](std::size_t k) {
     const DesignRow row = evaluate_pair(r, all[begin + k]);
-    refused_by[k] = row.refused_field;
+    // A pair whose mean over a period is above epsilon never searches: neutral ("-").
+    refused_by[k] = row.refused.empty() && row.time_to && !row.time_to->first_s && row.time_to->certified ? "-" : row.refused_field;
     rows[k] = row_json(row);
   });
   refuse_option_every_pair_refuses(o, refused_by, rows);

@@ -63,8 +63,14 @@ std::vector<std::vector<Vector3d>> cell_outlines_by_plugin(int nside, int steps)
   return cells;
 }
 
+void require_dwell_maps(const std::string& option, const std::string&) { require_output_plugin(kHealpixPlugin, "--" + option); }
+
 const char* healpix_plugin_state() noexcept { return output_plugin_state(kHealpixPlugin); }
 #else
+void require_dwell_maps(const std::string& option, const std::string& value) {
+  throw InvalidInput(option, value, "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--" + option + " in a build with HEALPix");
+}
+
 DwellMap dwell_map_by_plugin(const ClinostatSettings&, double, double duration_s, int) {
   throw InvalidInput("coverage", number_text(duration_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
 }

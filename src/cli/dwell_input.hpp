@@ -8,6 +8,7 @@
 #include "sphtroch/machine/clinostat.hpp"
 #include "sphtroch/machine/dwell_map_result.hpp"
 
+#include <string>
 #include <vector>
 
 namespace sphtroch::cli {
@@ -19,6 +20,10 @@ DwellMap dwell_map_by_plugin(const ClinostatSettings& machine, double start_s, d
 
 /// cell_outlines' contract (machine/dwell_map.hpp) through the plugin.
 std::vector<std::vector<Vector3d>> cell_outlines_by_plugin(int nside, int steps = 4);
+
+/// Refuses up front, before any work: InvalidInput(option) in a build without HEALPix, UsageError
+/// when its plugin is missing or cannot be opened (it is opened now, as a dwell map would).
+void require_dwell_maps(const std::string& option, const std::string& value);
 
 /// For --version: "yes" (the plugin file present), "missing", or "no" (a build without HEALPix).
 const char* healpix_plugin_state() noexcept;

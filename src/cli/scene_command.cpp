@@ -90,7 +90,7 @@ void run_scene(const SceneOptions& o) {
     const Analysis a(st.train, st.settings);
     for (const SceneEffect& e : st.effects) {
       a.request(e.effect);
-      outputs.stage(e.path, e.field, [&](std::ostream& out) { write_scene_effect(out, st, a, e); });
+      outputs.stage(e.path, e.field, [&](std::ostream& out) { write_scene_effect(out, st, a, e); }, {});  // read_scene checked it
     }
     if (std::string why = scene_uncertified(st, a); !why.empty()) uncertified.push_back(std::move(why));
     if (o.json) trains.push_back(scene_explanation_json(st, a));

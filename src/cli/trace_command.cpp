@@ -58,7 +58,7 @@ TraceFormat trace_format(const TraceOptions& o) {
   const std::string lower = lower_case(o.output);
   for (const char* ext : {"npy", "dxf", "obj", "step", "stp"})
     if (ends_with(lower, std::string(".") + ext)) return format_named(ext, "output", o.output);
-  check_output_suffix(o.output, "output", {"csv", "txt", "text"});  // .stl, .json, ...: refused, not CSV in disguise
+  check_output_suffix(o.output, "output", {"csv", "txt", "text", "npy", "dxf", "obj", "step", "stp"});  // .stl, .json: refused
   return TraceFormat::csv;
 }
 

@@ -127,9 +127,9 @@ with tempfile.TemporaryDirectory(dir=WORK) as d:
         format_loads(["atlas", "--n", "2", "--grid", "4", "--svg", "a.png"], d, "a.png", r"/librsvg[^/]*$")
         missing_plugin(["atlas", "--n", "2", "--grid", "4", "--svg", "b.png"], d, "b.png", "sphtroch_png.so")
     if "healpix yes" in version:
-        format_loads(["clinostat", "--outer", "1.33", "--inner", "2", "--coverage", "60", "--json", "-o", "c.json"], d, "c.json",
+        format_loads(["clinostat", "--outer", "1.33", "--inner", "2", "--coverage", "60", "--plot", "c.svg"], d, "c.svg",
                      r"/libhealpix_cxx[^/]*$")
-        missing_plugin(["clinostat", "--outer", "1.33", "--inner", "2", "--coverage", "60", "--json", "-o", "e.json"], d, "e.json",
+        missing_plugin(["clinostat", "--outer", "1.33", "--inner", "2", "--coverage", "60", "--plot", "e.svg"], d, "e.svg",
                        "sphtroch_healpix.so")
     if "urdf yes" in version:
         with open(os.path.join(d, "w.urdf"), "w") as f:

@@ -541,7 +541,7 @@ TEST_CASE("chain boundaries (slab search): what it cannot certify exits 3 and wh
   CHECK(contains(costly.err, "--rates"));
 }
 
-TEST_CASE("-o writes the format its suffix names or refuses it: chain trace, trace, clinostat --trace", "[cli][chain]") {
+TEST_CASE("output suffixes: -o writes the format its suffix names or refuses it (chain trace and trace and clinostat --trace)", "[cli][chain]") {
   TempDir dir;
   for (const std::string& args : {std::string("chain trace --twists 1,2,0.5 --rates 1,2,-1 -o wrist.step"),
                                   std::string("chain trace --twists 1,2,0.5 --rates 1,2,-1 -o wrist.STL"),
@@ -584,4 +584,20 @@ TEST_CASE("chain boundaries: a phase range beyond [-4 pi, 4 pi] is refused for e
   CHECK(r.out.empty());
   CHECK(count_lines(r.err) == 1);
   CHECK(contains(r.err, "--vary"));
+}
+
+TEST_CASE("classify and chain classify refuse up front a carrier twist near 0 with a large denominator, naming the cost", "[cli][chain]") {
+  // a2 = 0.01, n = 1/1908: the curve winds 1909 times within 0.02 rad of one circle, ~1e9 close
+  // edge pairs for the polyline census (it ran for more than five minutes).
+  TempDir dir;
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"classify --a2 0.01 --a3 1 --n 1/1908", "--a2"}, {"chain classify --twists 0.01,1 --rates 1,1/1908", "--twists"}}) {
+    const Result r = run(args, dir);
+    INFO(args << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, option));
+    CHECK(contains(r.err, "1909 times"));
+  }
 }

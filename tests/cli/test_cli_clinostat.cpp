@@ -119,9 +119,18 @@ TEST_CASE("clinostat: tilted frames never average out, and the report says why",
     CHECK(json::parse(r2.out)["train"].is_null());
     CHECK(contains(json::parse(r2.out)["train_note"].get<std::string>(), "no gear train"));
   }
-  const Result single = run("clinostat --outer 0 --inner 2.5 --json", dir);
+  // The inner axis vertical and the outer frame still: the gravity never moves in the sample, so
+  // there is no period and the mean is the gravity itself, a unit vector exactly.
+  const Result still = run("clinostat --outer 0 --inner 2.5 --json", dir);
+  REQUIRE(still.status == 0);
+  const json s = json::parse(still.out);
+  CHECK(s["train"].is_null());
+  CHECK(contains(s["train_note"].get<std::string>(), "does not move"));
+  CHECK(s["period_s"].is_null());
+  CHECK(std::hypot(s["mean_over_period"][0].get<double>(), s["mean_over_period"][1].get<double>(), s["mean_over_period"][2].get<double>()) == 1.0);
+  // One speed 0 with the turning axis horizontal: a circle, the period the turning frame's.
+  const Result single = run("clinostat --outer 2.5 --inner 0 --json", dir);
   REQUIRE(single.status == 0);
-  CHECK(json::parse(single.out)["train"].is_null());
   CHECK(json::parse(single.out)["period_s"] == 24.0);
 }
 

@@ -191,3 +191,32 @@ TEST_CASE("census stage 6: branch pairs are reduced, ordered and placed at the m
   CHECK((pairs[0].position - Vector3d(0, 1, 0)).norm() < 1e-15);  // Eq. 25
   CHECK(work.points_evaluated == 2);
 }
+
+TEST_CASE("census cost: the close-pair estimate is within a small factor of the pairs the search visits (small twists x large denominators)", "[census][cost]") {
+  // The searches' cost beyond N log N is the pairs of edges closer than a quarter chord that the
+  // box search visits (counted here by the visitor); the estimate must follow it within a factor
+  // (measured 0.7 .. 5.2), so that the bound it enforces bounds the work.
+  for (const double a2 : {0.02, 0.1, 0.6})
+    for (const Ratio n : {Ratio(1, 60), Ratio(1, 240), Ratio(13, 5), Ratio(101, 40)}) {
+      const GearTrain t(a2, 1.0, n);
+      PolylineWork work;
+      const census::SampledPolyline poly = census::sample_polyline(t, census_sample_count(t), work, 0);
+      double longest = 0;
+      for (std::size_t e = 0; e + 1 < poly.size(); ++e) longest = std::max(longest, (poly.points[e + 1] - poly.points[e]).norm());
+      double visits = 0;
+      visit_close_edge_pairs(poly.points, true, kNearMissChordFraction * longest, [&](std::size_t, std::size_t) { return ++visits, true; });
+      const double estimate = census::close_pair_estimate(poly.points);
+      CAPTURE(a2, n.str(), estimate, visits);
+      CHECK(visits <= 8 * estimate + 1000);
+      CHECK(estimate <= 4 * visits + 1000);
+    }
+}
+
+TEST_CASE("census cost: a carrier twist near 0 with a large denominator is refused up front, naming a2 and the cost", "[census][cost]") {
+  const InvalidInput e = test::expect_invalid([] { polyline_census(GearTrain(0.01, 1.0, Ratio(1, 1908))); });
+  CHECK(e.field() == "a2");
+  CHECK(e.problem().find("1909 times") != std::string::npos);
+  const GearTrain dense(0.7, 2.5, Ratio(13, 5));  // 169 nodes: an ordinary dense curve passes
+  PolylineWork work;
+  CHECK_NOTHROW(census::check_close_pairs(dense, census::sample_polyline(dense, census_sample_count(dense), work, 0).points));
+}

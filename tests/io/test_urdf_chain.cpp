@@ -291,6 +291,20 @@ TEST_CASE("urdf chain: the shape check follows XML's quoting, so nesting and att
   const InvalidInput w = refusal(wide);
   CHECK(w.field() == "urdf");
   CHECK(w.problem().find("attributes") != std::string::npos);
+  // TinyXML's own reading: "<1 x='>" is an unknown node that ends at its first '>' (no quoting),
+  // so the <a> after it nest; a declaration reads its quoted values, so a '>' in one is refused;
+  // a malformed UTF-8 lead byte swallows what follows it in TinyXML: refused.
+  std::string unknown = wrist_urdf();
+  std::string nest;
+  for (int k = 0; k < 50000; ++k) nest += "<a>";
+  unknown.insert(at, "<1 x='>" + nest);
+  CHECK(refusal(unknown).problem().find("nest") != std::string::npos);
+  std::string declared = wrist_urdf();
+  declared.insert(at, "<?xml version='></a>'?>");
+  CHECK(refusal(declared).problem().find("declaration") != std::string::npos);
+  std::string bytes = wrist_urdf();
+  bytes.insert(at, "\xE0</a>");
+  CHECK(refusal(bytes).problem().find("UTF-8") != std::string::npos);
 }
 
 TEST_CASE("urdf chain: comments, CDATA and declarations hold no elements or attributes (a xacro-generated layout is read)") {

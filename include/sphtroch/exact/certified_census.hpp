@@ -32,6 +32,7 @@
 #include "sphtroch/census/polyline_census_result.hpp"
 #include "sphtroch/census/root_census.hpp"
 
+#include <cmath>
 #include <string>
 
 namespace sphtroch {
@@ -77,6 +78,14 @@ inline CertifiedCensus certified_census(const GearTrain& train, const PolylineCe
     if (escalated_samples(base, s.escalation + 1) > kMaxEscalatedSamples) {
       cert.stopped = "a further run would take " + std::to_string(escalated_samples(base, s.escalation + 1)) +
                      " uniform samples, beyond the escalation bound " + std::to_string(kMaxEscalatedSamples);
+      return out;
+    }
+    PolylineWork sampling;  // the next run's polyline, for its cost (polyline_census would refuse it)
+    const double pairs = census::close_pair_estimate(
+        census::sample_polyline(train, escalated_samples(base, s.escalation + 1), sampling, s.escalation + 1).points);
+    if (pairs > census::kMaxCloseVertexPairs) {
+      cert.stopped = "a further run would compare ~" + number_text(std::round(pairs)) + " pairs of close edges, beyond the bound " +
+                     number_text(census::kMaxCloseVertexPairs);
       return out;
     }
     ++s.escalation;

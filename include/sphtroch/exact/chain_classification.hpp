@@ -43,9 +43,11 @@ inline RotationChain analysed_chain(const RotationChain& chain, const GearTrain&
 /// The k = 2 census from the gear train's censuses, checked by the chain census (see top).
 inline ChainCensus train_census(const RotationChain& chain, const GearTrain& train) {
   const Analysis a(train);
+  (void)a.nodes();  // the train's censuses first: what they refuse (their cost) is refused before the check runs
   const ChainCensus check = chain_census(analysed_chain(chain, a.analysed()), kMaxChainBoxes / 10);
   const auto to_s = [&](double theta2) { return reduce_param(chain_param_of_theta2(chain, theta2), check.period); };
   ChainCensus c = check;
+  c.multiple_unproved = false;  // the train's census decides multiple nodes (the report's criteria)
   c.method = "the gear train's root and polyline censuses (classify), checked by the chain census";
   c.nodes = a.nodes();
   for (Node& n : c.nodes) {
@@ -67,10 +69,18 @@ inline ChainCensus train_census(const RotationChain& chain, const GearTrain& tra
 }  // namespace chain_classification_detail
 
 /// The chain's certified census (see top). Throws InvalidInput("rates") when the chain census
-/// refuses the chain up front (too many arcs).
+/// refuses the chain up front (too many arcs), ("twists") or ("rates") for what the gear
+/// train's censuses refuse (a first twist near 0 with a large denominator: their cost).
 inline ChainCensus classify_chain(const RotationChain& chain) {
   const std::optional<GearTrain> train = gear_train_of(chain);
-  return train ? chain_classification_detail::train_census(chain, *train) : chain_census(chain);
+  if (!train) return chain_census(chain);
+  try {
+    return chain_classification_detail::train_census(chain, *train);
+  } catch (const InvalidInput& e) {  // the train's refusals (a2: its first twist; n: its rates) named as the chain's options
+    if (e.field() == "a2") throw InvalidInput("twists", chain.twists_text(), e.problem(), "a larger first twist, or rates whose ratio has a smaller denominator");
+    if (e.field() == "n") throw InvalidInput("rates", chain.rates_text(), e.problem(), e.valid_range());
+    throw;
+  }
 }
 
 }  // namespace sphtroch

@@ -40,6 +40,7 @@
 #include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/census/node_assembly.hpp"
 #include "sphtroch/core/parameters.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
@@ -52,6 +53,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -246,6 +248,53 @@ inline bool near_contact(const std::vector<EdgePair>& contacts, std::size_t m, s
       if (std::binary_search(contacts.begin(), contacts.end(), std::make_pair(a, b))) return true;
     }
   return false;
+}
+
+/// The most close vertex pairs (close_pair_estimate) a census polyline may have: beyond, the
+/// crossing and near-miss searches (O(N log N + K) in the K pairs of edges closer than a chord;
+/// K is 1 to 6 times the estimate, ~40 ns a pair) would run for minutes or hours, so the train is
+/// refused up front. At the bound one search visits ~1e8 pairs (~4 s).
+constexpr double kMaxCloseVertexPairs = 2e7;
+
+/// An estimate of K, the pairs of the polyline's vertices closer than its longest chord, the
+/// searches' cost beyond N log N: the vertices hashed into cubes of that side, sum over the cubes
+/// of c (c - 1) / 2 (pairs across neighbouring cubes are not counted: within a small factor of
+/// K). O(N log N). A curve that winds many times within a thin band (a carrier twist near 0 with
+/// a large denominator: n = 1/1908, a2 = 0.01 winds 1909 times within 0.02 rad) has K ~ N times
+/// its windings.
+inline double close_pair_estimate(const std::vector<Vector3d>& points) {
+  const std::size_t m = points.size();
+  double side = 0;
+  for (std::size_t e = 0; e < m; ++e) side = std::max(side, (points[(e + 1) % m] - points[e]).norm());
+  if (!(side > 0)) return 0;
+  std::vector<std::uint64_t> keys(m);
+  for (std::size_t e = 0; e < m; ++e) {
+    std::uint64_t key = 0;
+    for (int c = 0; c < 3; ++c) key = key * 1048576 + static_cast<std::uint64_t>(std::floor((points[e][c] + 1.5) / side)) % 1048576;
+    keys[e] = key;
+  }
+  std::sort(keys.begin(), keys.end());
+  double pairs = 0;
+  for (std::size_t a = 0; a < m;) {
+    std::size_t b = a;
+    while (b < m && keys[b] == keys[a]) ++b;
+    const double c = static_cast<double>(b - a);
+    pairs += c * (c - 1) / 2;
+    a = b;
+  }
+  return pairs;
+}
+
+/// InvalidInput("a2") when the polyline's close_pair_estimate exceeds kMaxCloseVertexPairs,
+/// naming the estimate and what makes it (the curve's windings near one circle).
+inline void check_close_pairs(const GearTrain& train, const std::vector<Vector3d>& points) {
+  const double k = close_pair_estimate(points);
+  if (k > kMaxCloseVertexPairs)
+    throw InvalidInput("a2", number_text(train.a2()),
+                       "with n = " + train.ratio().str() + " the curve winds " + std::to_string(train.ratio().abs_p() + train.ratio().q()) +
+                           " times close to itself: the census would compare ~" + number_text(std::round(k)) + " pairs of close edges (at most " +
+                           number_text(kMaxCloseVertexPairs) + ")",
+                       "a larger carrier twist a2 or a ratio with a smaller denominator");
 }
 
 /// Stage 2b. Near misses: edge pairs (i < j) of different branches (more than
@@ -597,6 +646,7 @@ inline PolylineCensus polyline_census(const GearTrain& train, const PolylineCens
   out.escalation = settings.escalation;
   const census::SampledPolyline poly = census::sample_polyline(train, n, out.work, settings.escalation);
   out.samples = poly.size();
+  census::check_close_pairs(train, poly.points);  // refused before the searches whose cost it bounds
   const double h = train.period() / static_cast<double>(n);
 
   const std::vector<census::EdgePair> contacts = census::exact_contacts(poly, out);
