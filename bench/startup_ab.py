@@ -3,8 +3,8 @@
 work, so that loading the executable and its shared libraries is what is timed: `--version`,
 `trace` of 10 samples, `classify` of the report's Fig. 5(f), `chain trace` of 10 samples. The two
 builds run in turn (A B A B ..., REPS pairs after a warm-up pair); each process is timed by the
-parent (time.perf_counter around spawn and os.wait4) and os.wait4's rusage gives its cpu time and
-peak RSS. Per command: the medians of A's and B's wall time (ms), cpu time (ms) and peak RSS (MiB),
+parent (time.perf_counter around spawn and os.wait4), os.wait4's rusage gives its cpu time, and a
+second run under /usr/bin/time its peak RSS. Per command: the medians of A's and B's wall time (ms), cpu time (ms) and peak RSS (MiB),
 and the median of the pair-by-pair wall ratios A/B. Writes data/bench/i_startup_ab.csv.
 
   BASELINE=/tmp/old/build/bin/sphtroch python3 bench/startup_ab.py     # A = build/bin/sphtroch
@@ -28,14 +28,17 @@ CASES = [("version", ["--version"]), ("trace", ["trace", "--a2", "1", "--a3", "2
 
 
 def one(exe, args):
-    """(wall ms, cpu ms, peak RSS MiB) of one run."""
+    """(wall ms, cpu ms, peak RSS MiB) of one run: wall and cpu time of the process itself, its
+    peak RSS from a second run under /usr/bin/time (a child's own rusage counts the parent's pages
+    it was forked with)."""
     start = time.perf_counter()
     p = subprocess.Popen([exe, *args], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     _, status, usage = os.wait4(p.pid, 0)
     wall = (time.perf_counter() - start) * 1e3
     if os.waitstatus_to_exitcode(status) != 0:
         sys.exit(f"bench/startup_ab.py: {exe} {' '.join(args)} failed")
-    return wall, (usage.ru_utime + usage.ru_stime) * 1e3, usage.ru_maxrss / 1024
+    timed = subprocess.run(["/usr/bin/time", "-f", "%M", exe, *args], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    return wall, (usage.ru_utime + usage.ru_stime) * 1e3, int(timed.stderr.strip().splitlines()[-1]) / 1024
 
 
 def main():
