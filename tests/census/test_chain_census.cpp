@@ -166,7 +166,7 @@ TEST_CASE("chain census: at a2 = pi/2, n = 3, a3 = atan(3 sqrt 3) three pairs of
   CHECK(above.nodes.size() == 9);
 }
 
-TEST_CASE("chain census: near-coaxial chains (a twist of 1e-6 ... 1e-12) keep their close crossings apart or are not certified", "[chain_census]") {
+TEST_CASE("chain census: near-coaxial chains (a middle twist of 1e-6 to 1e-12) keep their close crossings apart or are not certified", "[chain_census]") {
   // A middle twist d -> 0 merges joints 2 and 3 into a gear train through the pole: its crossings
   // gather there, ~d apart, but no event happens as d shrinks, so the count of branch pairs stays
   // that of d = 1e-5, counted by the exact crossings of a 400,000-sample polyline (its chords sag
@@ -177,12 +177,12 @@ TEST_CASE("chain census: near-coaxial chains (a twist of 1e-6 ... 1e-12) keep th
     ChainRate r1, r2, r3;
   };
   for (const Family& f : {Family{1.0, 1.0, ChainRate(1), ChainRate(2), ChainRate(3)}, Family{0.7, 1.3, ChainRate(1), ChainRate(-2), ChainRate(3)},
-                          Family{1.1, 0.9, ChainRate(2), ChainRate(1), ChainRate(1)}}) {
+                          Family{0.8, 0.8, ChainRate(1), ChainRate(2), ChainRate(2)}}) {  // a1 = a3: through the pole
     const auto chain_of = [&](double d) { return RotationChain({{f.a1, f.r1, 0.0}, {d, f.r2, 0.3}, {f.a3, f.r3, 0.0}}); };
     const std::size_t expected = polyline_crossings(chain_of(1e-5), 400000);
     CAPTURE(f.a1, f.a3, expected);
     std::size_t certified = 0;
-    for (const double d : {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-12}) {
+    for (const double d : {1e-6, 1e-8, 1e-10, 1e-12}) {
       const ChainCensus c = chain_census(chain_of(d));
       CAPTURE(d, c.why, branch_pairs(c), c.nodes.size());
       if (!c.certified) continue;
@@ -190,7 +190,7 @@ TEST_CASE("chain census: near-coaxial chains (a twist of 1e-6 ... 1e-12) keep th
       CHECK(branch_pairs(c) == expected);
       CHECK(c.nodes.size() == expected);  // every node of two branches: a multiple one is never certified
     }
-    CHECK(certified >= 2);  // the census is not merely silent: it separates the wider ones
+    CHECK(certified >= 3);  // the census is not merely silent: it separates them
   }
 }
 
