@@ -150,10 +150,12 @@ TEST_CASE("chain census: a tool axis that does not move, or a period too long, i
 
 TEST_CASE("chain census: at a2 = pi/2, n = 3, a3 = atan(3 sqrt 3) three pairs of branches touch: 3 crossings and 3 tangencies", "[chain_census]") {
   // Independent closed form (test_root_classification.cpp): the three pairs touch on the mirror
-  // planes there; just below 3 nodes, just above 9.
+  // planes there; just below 3 nodes, just above 9. At the edge the census lists the touching
+  // pairs but does not certify them: within rounding a touch may be two crossings.
   const double edge = std::atan(3 * std::sqrt(3.0)), h = Constants<double>::pi() / 2;
   const ChainCensus c = chain_census(RotationChain({{h, ChainRate(1), 0.0}, {edge, ChainRate(3), 0.0}}));
-  REQUIRE(c.certified);
+  CHECK_FALSE(c.certified);
+  CHECK(c.touching_unproved);
   std::size_t tangencies = 0;
   for (const Node& n : c.nodes) tangencies += n.kind == NodeKind::tangency ? 1 : 0;
   CHECK(c.nodes.size() == 6);
@@ -169,17 +171,21 @@ TEST_CASE("chain census: at a2 = pi/2, n = 3, a3 = atan(3 sqrt 3) three pairs of
 TEST_CASE("chain census: near-coaxial chains (a middle twist of 1e-6 to 1e-12) keep their close crossings apart or are not certified", "[chain_census]") {
   // A middle twist d -> 0 merges joints 2 and 3 into a gear train through the pole: its crossings
   // gather there, ~d apart, but no event happens as d shrinks, so the count of branch pairs stays
-  // that of d = 1e-5, counted by the exact crossings of a 400,000-sample polyline (its chords sag
-  // ~1e-9, far below the crossings' spacing). A certified census must give that count with
-  // every node of two branches; it may instead say it is not certified.
+  // that of d = 1e-5, counted by the exact crossings of a 2,000,000-sample polyline (its chords
+  // sag ~4e-11, far below the crossings' spacing and gaps; 400,000 samples miss the last
+  // family's two crossings near the pole). A certified census must give that count with
+  // every node of two branches; it may instead say it is not certified (the last family's two
+  // crossings near the pole come within rounding of a touch below d ~ 1e-7: 4 crossings, where a
+  // touch "within rounding" would have said 3 nodes).
   struct Family {
     double a1, a3;
     ChainRate r1, r2, r3;
   };
   for (const Family& f : {Family{1.0, 1.0, ChainRate(1), ChainRate(2), ChainRate(3)}, Family{0.7, 1.3, ChainRate(1), ChainRate(-2), ChainRate(3)},
-                          Family{0.8, 0.8, ChainRate(1), ChainRate(2), ChainRate(2)}}) {  // a1 = a3: through the pole
+                          Family{0.8, 0.8, ChainRate(1), ChainRate(2), ChainRate(2)},  // a1 = a3: through the pole
+                          Family{1.2, 1.2, ChainRate(1), ChainRate(-1), ChainRate(3)}}) {  // two crossings that near a touch
     const auto chain_of = [&](double d) { return RotationChain({{f.a1, f.r1, 0.0}, {d, f.r2, 0.3}, {f.a3, f.r3, 0.0}}); };
-    const std::size_t expected = polyline_crossings(chain_of(1e-5), 400000);
+    const std::size_t expected = polyline_crossings(chain_of(1e-5), 2000000);
     CAPTURE(f.a1, f.a3, expected);
     std::size_t certified = 0;
     for (const double d : {1e-6, 1e-8, 1e-10, 1e-12}) {
@@ -190,7 +196,7 @@ TEST_CASE("chain census: near-coaxial chains (a middle twist of 1e-6 to 1e-12) k
       CHECK(branch_pairs(c) == expected);
       CHECK(c.nodes.size() == expected);  // every node of two branches: a multiple one is never certified
     }
-    CHECK(certified >= 3);  // the census is not merely silent: it separates them
+    CHECK(certified >= 1);  // the census is not merely silent: it separates the wider ones
   }
 }
 

@@ -47,7 +47,7 @@ inline ChainCensus train_census(const RotationChain& chain, const GearTrain& tra
   const ChainCensus check = chain_census(analysed_chain(chain, a.analysed()), kMaxChainBoxes / 10);
   const auto to_s = [&](double theta2) { return reduce_param(chain_param_of_theta2(chain, theta2), check.period); };
   ChainCensus c = check;
-  c.multiple_unproved = false;  // the train's census decides multiple nodes (the report's criteria)
+  c.multiple_unproved = c.touching_unproved = false;  // the train's census decides them (the report's criteria)
   c.method = "the gear train's root and polyline censuses (classify), checked by the chain census";
   c.nodes = a.nodes();
   for (Node& n : c.nodes) {

@@ -38,8 +38,10 @@
 // point with m branches must show m (m - 1) / 2 pairs, and a node of three or more branches is
 // not certified: its pairs' roots agreeing to rounding does not prove one point (a triple point
 // is not generic; m (m - 1) / 2 crossings closer than double resolves look the same). Every pair
-// isolated by Krawczyk is a transversal crossing; a node whose pairs all touch is a tangency.
-// Boxes still undecided: not certified.
+// isolated by Krawczyk is a transversal crossing; a node whose pairs all touch is a tangency,
+// listed but not certified either (two branches touching within the rounding of double may be
+// two crossings closer than double resolves: near-coaxial chains make them). Boxes still
+// undecided: not certified.
 // Cost: O(arcs + candidate arc pairs + boxes); arcs are refused beyond kMaxChainArcs (InvalidInput
 // naming "rates"), boxes stop at max_boxes (then not certified).
 #pragma once
@@ -84,6 +86,10 @@ constexpr double kChainFamilyBoxWidth = 1e-2;
 /// A family's census stops (not certified) after this many undecided boxes.
 constexpr std::size_t kChainFamilyUndecided = 64;
 
+/// Why a census whose branches touch within rounding (chain_tangency.hpp) is not certified.
+inline const char* const kTouchWithinRounding =
+    "two branches touch within the rounding of double: one tangency, or two crossings closer than double resolves";
+
 struct ChainCensus {
   std::vector<Node> nodes;  // params: s of each branch in [0, period), ascending; nodes by first param
   std::vector<Cusp> cusps;  // param: s in [0, period); speed |P'| there (<= kChainCuspResolution Omega)
@@ -91,6 +97,8 @@ struct ChainCensus {
   std::string why;          // what is left when not certified
   bool multiple_unproved = false;  // a node of three or more branches whose pairs agree to rounding: a triple point
                                    // or crossings closer than double tells (not certified; chain boundaries' events)
+  bool touching_unproved = false;  // two branches touch within the rounding of double: a tangency, or two crossings
+                                   // closer than double tells (not certified; chain boundaries' events)
   std::string method = "interval branch and bound with the Krawczyk test (census/interval/chain_census.hpp)";
   double period = 0;        // 2 pi L / g
   double cusp_zone = 0;     // kChainCuspZone / Omega: half-width in s of each cusp's unresolved region
@@ -554,8 +562,11 @@ inline ChainCensus census_of_reduced(const RotationChain& chain, const ReducedCh
   if (family && out.why.empty() && std::any_of(out.nodes.begin(), out.nodes.end(), [](const Node& n) { return n.tangency_pairs > 0; }))
     out.why = "two branches may touch within the range";
   if (family && out.why.empty() && pairs_may_meet(pairs, period)) out.why = "two nodes may meet within the range (a triple point)";
+  if (!family && out.why.empty() && std::any_of(out.nodes.begin(), out.nodes.end(), [](const Node& n) { return n.tangency_pairs > 0; }))
+    out.why = kTouchWithinRounding;  // its nodes are listed (kind tangency); their count is not proved
   out.certified = out.why.empty();
   out.multiple_unproved = !out.certified && out.why.find("is not proved one point") != std::string::npos;
+  out.touching_unproved = !out.certified && out.why == kTouchWithinRounding;
   return out;
 }
 

@@ -298,7 +298,7 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
   e.cusps_below = c.below.cusps, e.cusps_above = c.above.cusps;
   const ChainCensus at = chain_census(chain_at(chain, vary, e.a3));
   const CensusCounts there = counts_of(at);
-  const bool seen = at.certified || at.multiple_unproved;  // its nodes are known (a multiple one to rounding)
+  const bool seen = at.certified || at.multiple_unproved || at.touching_unproved;  // its nodes are known (to rounding)
   if (c.below.cusps != c.above.cusps || (at.certified && there.cusps > std::max(c.below.cusps, c.above.cusps))) {
     e.kind = BoundaryEventKind::cusp;
     e.name = "cusp birth (P parallel to omega)";
@@ -324,7 +324,7 @@ inline std::optional<BoundaryEvent> event_of(const RotationChain& chain, const C
 inline void check_range_end(const RotationChain& chain, const ChainVary& vary, double end, std::string& why) {
   const ChainCensus c = chain_census(chain_at(chain, vary, end));
   const CensusCounts k = counts_of(c);
-  if (!c.certified || !band_state(k, CensusCounts{})) return;
+  if (!(c.certified || c.multiple_unproved || c.touching_unproved) || !band_state(k, CensusCounts{})) return;
   const std::string what = k.cusps > 0 ? "a cusp (|P'| <= " + number_text(kChainCuspResolution) + " sum |N_i|)"
                            : k.multiple ? "a node of three or more branches" : "two branches touching";
   why = "the range ends at an event or within its resolution band: the census at " + vary.name() + " = " + number_text(end) +
