@@ -43,8 +43,11 @@ inline RotationChain analysed_chain(const RotationChain& chain, const GearTrain&
 /// The k = 2 census from the gear train's censuses, checked by the chain census (see top).
 inline ChainCensus train_census(const RotationChain& chain, const GearTrain& train) {
   const Analysis a(train);
-  (void)a.nodes();  // the train's censuses first: what they refuse (their cost) is refused before the check runs
-  const ChainCensus check = chain_census(analysed_chain(chain, a.analysed()), kMaxChainBoxes / 10);
+  const RotationChain analysed = analysed_chain(chain, a.analysed());
+  if (!(chain_census_arcs(analysed) <= static_cast<double>(kMaxChainArcs)))
+    (void)chain_census(analysed);  // refused up front (InvalidInput "rates"), before either census works
+  (void)a.nodes();  // the train's censuses next: what they refuse (their cost) is refused before the check runs
+  const ChainCensus check = chain_census(analysed, kMaxChainBoxes / 10);
   const auto to_s = [&](double theta2) { return reduce_param(chain_param_of_theta2(chain, theta2), check.period); };
   ChainCensus c = check;
   c.multiple_unproved = c.touching_unproved = false;  // the train's census decides them (the report's criteria)

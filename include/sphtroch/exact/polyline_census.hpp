@@ -285,12 +285,14 @@ inline double close_pair_estimate(const std::vector<Vector3d>& points) {
   return pairs;
 }
 
-/// InvalidInput("a2") when the polyline's close_pair_estimate exceeds kMaxCloseVertexPairs,
-/// naming the estimate and what makes it (the curve's windings near one circle).
+/// InvalidInput when the polyline's close_pair_estimate exceeds kMaxCloseVertexPairs, naming the
+/// estimate and what makes it (the curve's windings near one circle): "a2" when the carrier twist
+/// is below 0.1 (the windings lie in a band ~2 a2 wide), else "n" (many windings).
 inline void check_close_pairs(const GearTrain& train, const std::vector<Vector3d>& points) {
   const double k = close_pair_estimate(points);
+  const bool thin = std::min(train.a2(), Constants<double>::pi() - train.a2()) < 0.1;
   if (k > kMaxCloseVertexPairs)
-    throw InvalidInput("a2", number_text(train.a2()),
+    throw InvalidInput(thin ? "a2" : "n", thin ? number_text(train.a2()) : train.ratio().str(),
                        "with n = " + train.ratio().str() + " the curve winds " + std::to_string(train.ratio().abs_p() + train.ratio().q()) +
                            " times close to itself: the census would compare ~" + number_text(std::round(k)) + " pairs of close edges (at most " +
                            number_text(kMaxCloseVertexPairs) + ")",
