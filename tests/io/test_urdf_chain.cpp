@@ -253,21 +253,38 @@ TEST_CASE("urdf chain: refusals name the joint or link and say why") {
   SECTION("a zero tool axis") { CHECK(refusal(wrist_urdf(), "base_link", "flange", Eigen::Vector3d::Zero()).field() == "axis"); }
 }
 
+namespace {
+
+/// The wrist description with `text` right after its <robot ...> opening tag.
+std::string inside_robot(const std::string& text) {
+  std::string xml = wrist_urdf();
+  xml.insert(xml.find('>', xml.find("<robot")) + 1, text);
+  return xml;
+}
+
+/// 50,000 elements opened by `open` (e.g. "<a>") nested, each closed by </a>.
+std::string nested(const std::string& open) {
+  std::string opens, closes;
+  for (int k = 0; k < 50000; ++k) opens += open, closes += "</a>";
+  return inside_robot(opens + closes);
+}
+
+/// The <robot> element with 100,000 attributes a<k>=<value>.
+std::string wide(const std::string& value) {
+  std::string xml = wrist_urdf(), attributes;
+  for (int k = 0; k < 100000; ++k) attributes += " a" + std::to_string(k) + "=" + value;
+  xml.insert(xml.find("<robot") + 6, attributes);
+  return xml;
+}
+
+}  // namespace
+
 TEST_CASE("urdf chain: documents nesting deeper than 64 elements or with an element of more than 64 attributes are refused before urdfdom") {
   // 50,000 nested elements overflow urdfdom's recursive parser; 100,000 attributes take it minutes.
-  std::string deep = wrist_urdf();
-  const std::size_t at = deep.find('>', deep.find("<robot")) + 1;
-  std::string open, close;
-  for (int k = 0; k < 50000; ++k) open += "<a>", close += "</a>";
-  deep.insert(at, open + close);
-  const InvalidInput d = refusal(deep);
+  const InvalidInput d = refusal(nested("<a>"));
   CHECK(d.field() == "urdf");
   CHECK(d.problem().find("nest") != std::string::npos);
-  std::string wide = wrist_urdf();
-  std::string attributes;
-  for (int k = 0; k < 100000; ++k) attributes += " a" + std::to_string(k) + "=\"1\"";
-  wide.insert(wide.find("<robot") + 6, attributes);
-  const InvalidInput w = refusal(wide);
+  const InvalidInput w = refusal(wide("\"1\""));
   CHECK(w.field() == "urdf");
   CHECK(w.problem().find("attributes") != std::string::npos);
   // A legal document is as deep as 64 and as wide as 64.
@@ -276,35 +293,20 @@ TEST_CASE("urdf chain: documents nesting deeper than 64 elements or with an elem
 
 TEST_CASE("urdf chain: the shape check follows XML's quoting, so nesting and attributes hidden in quoted values are refused") {
   // '>' and "/>" inside a quoted attribute value are text: each <a x="/>"> opens an element.
-  std::string deep = wrist_urdf();
-  const std::size_t at = deep.find('>', deep.find("<robot")) + 1;
-  std::string open, close;
-  for (int k = 0; k < 50000; ++k) open += "<a x=\"/>\">", close += "</a>";
-  deep.insert(at, open + close);
-  const InvalidInput d = refusal(deep);
+  const InvalidInput d = refusal(nested("<a x=\"/>\">"));
   CHECK(d.field() == "urdf");
   CHECK(d.problem().find("nest") != std::string::npos);
-  std::string wide = wrist_urdf();
-  std::string attributes;
-  for (int k = 0; k < 100000; ++k) attributes += " a" + std::to_string(k) + "=\">\"";
-  wide.insert(wide.find("<robot") + 6, attributes);
-  const InvalidInput w = refusal(wide);
+  const InvalidInput w = refusal(wide("\">\""));
   CHECK(w.field() == "urdf");
   CHECK(w.problem().find("attributes") != std::string::npos);
   // TinyXML's own reading: "<1 x='>" is an unknown node that ends at its first '>' (no quoting),
   // so the <a> after it nest; a declaration reads its quoted values, so a '>' in one is refused;
   // a malformed UTF-8 lead byte swallows what follows it in TinyXML: refused.
-  std::string unknown = wrist_urdf();
-  std::string nest;
-  for (int k = 0; k < 50000; ++k) nest += "<a>";
-  unknown.insert(at, "<1 x='>" + nest);
-  CHECK(refusal(unknown).problem().find("nest") != std::string::npos);
-  std::string declared = wrist_urdf();
-  declared.insert(at, "<?xml version='></a>'?>");
-  CHECK(refusal(declared).problem().find("declaration") != std::string::npos);
-  std::string bytes = wrist_urdf();
-  bytes.insert(at, "\xE0</a>");
-  CHECK(refusal(bytes).problem().find("UTF-8") != std::string::npos);
+  std::string opens;
+  for (int k = 0; k < 50000; ++k) opens += "<a>";
+  CHECK(refusal(inside_robot("<1 x='>" + opens)).problem().find("nest") != std::string::npos);
+  CHECK(refusal(inside_robot("<?xml version='></a>'?>")).problem().find("declaration") != std::string::npos);
+  CHECK(refusal(inside_robot("\xE0</a>")).problem().find("UTF-8") != std::string::npos);
 }
 
 TEST_CASE("urdf chain: comments, CDATA and declarations hold no elements or attributes (a xacro-generated layout is read)") {
