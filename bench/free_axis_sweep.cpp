@@ -1,4 +1,4 @@
-// sphtroch_free_axis_sweep — precision points with the sun axis free (synthesis/interval/free_axis_points.hpp)
+// sphtroch_free_axis_sweep — precision points with the sun axis free (synthesis/free_axis_points.hpp)
 // on random problems: the success rate (hidden train among the solutions), how many lists are
 // certified complete, the number of trains, and the time per problem (median, 90th percentile, max).
 //
@@ -7,7 +7,7 @@
 // A problem: n = p/q with 1 <= |p|, q <= T (both signs), a2, a3 in [0.15, pi - 0.15], any phase,
 // five carrier angles uniform over a period, the curve turned by a uniformly random rotation.
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/synthesis/interval/free_axis_points.hpp"
+#include "sphtroch/synthesis/free_axis_points.hpp"
 
 #include <algorithm>
 #include <chrono>

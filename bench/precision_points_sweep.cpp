@@ -1,4 +1,4 @@
-// sphtroch_points_sweep — precision points (synthesis/interval/precision_points.hpp) on random problems: the
+// sphtroch_points_sweep — precision points (synthesis/precision_points.hpp) on random problems: the
 // success rate (hidden train among the solutions), how many lists are certified complete, and the
 // time per problem (median, 90th percentile, max), one core.
 //
@@ -7,7 +7,7 @@
 // A problem: n = p/q with 1 <= |p|, q <= T (both signs), a2, a3 in [0.15, pi - 0.15], any phase,
 // three carrier angles uniform over a period; one in eight has its first point at a z-extreme.
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/synthesis/interval/precision_points.hpp"
+#include "sphtroch/synthesis/precision_points.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The lists the docs keep about the tree, compared with the tree, so that they cannot drift.
 
-    python3 scripts/check_doc_lists.py ROOT      (ctest docs:lists)
+    python3 scripts/check_doc_lists.py [ROOT]    (ctest docs:lists; ROOT defaults to this script's repository)
 
 - CMake targets: the `add_library(sphtroch::X ALIAS ...)` of ROOT/CMakeLists.txt, the rows
   "| `sphtroch::X` |" of README.md's and docs/library.md's target tables, and the count word of
@@ -12,7 +12,18 @@
   list gives it.
 - Umbrella: include/sphtroch/sphtroch.hpp includes every header under include/sphtroch/ but
   itself and exact_implementation.hpp (separate mode's one definition file); its opening comment
-  and README.md's target table name every layer folder ("core/", ...).
+  names every top-level layer folder ("core/", ...).
+- Folders: the folders README.md's target table names (backquoted "core/", "chain/",
+  ... in its "| `sphtroch::X` |" rows) and the folders under include/sphtroch/ that hold a header
+  (at any depth; nested ones too, "a/b/"), both ways.
+- Binding files: the bind_*.cpp files named in the opening comment of python/src/bindings.hpp and
+  the python/src/bind_*.cpp files, both ways; where the comment says "<N> topic files (...)", N is
+  the number of bind_*.cpp names in that parenthesis.
+- Test executables: the test executables declared under tests/ (the <name> of every
+  `sphtroch_add_test(<name> ...)` and every `add_executable(test_...)` in tests/**/CMakeLists.txt
+  and *.cmake, tests/third_party aside; comments ignored) and the backquoted `test_...` names of
+  docs/library.md's `tests/` layout paragraph, both ways; the QUICK ones and the `test_...`
+  names of its "- The edit-compile-test loop:" bullet, both ways.
 Prints one line per disagreement; exit 1 if any, 0 otherwise, 2 on bad arguments.
 """
 import pathlib
@@ -68,7 +79,7 @@ def check_guarded(root, library, problems):
             problems.append(f"docs/library.md: {h} is listed under {listed[h]}, its #error says: {guarded[h][:100]}")
 
 
-def check_umbrella(root, readme, problems):
+def check_umbrella(root, problems):
     include = root / "include" / "sphtroch"
     umbrella = (include / "sphtroch.hpp").read_text(encoding="utf-8")
     included = set(re.findall(r'^#include "sphtroch/([\w/]+\.hpp)"', umbrella, flags=re.M))
@@ -77,25 +88,112 @@ def check_umbrella(root, readme, problems):
         if rel not in NOT_IN_UMBRELLA and rel not in included:
             problems.append(f"include/sphtroch/sphtroch.hpp: does not include sphtroch/{rel}")
     comment = "\n".join(l for l in umbrella.splitlines() if l.startswith("//"))
-    table = "\n".join(l for l in readme.splitlines() if l.startswith("| `sphtroch::"))
-    for folder in sorted(p.name for p in include.iterdir() if p.is_dir()):
+    for folder in sorted(p.name for p in include.iterdir() if p.is_dir() and any(p.rglob("*.hpp"))):
         if f"{folder}/" not in comment:
             problems.append(f"include/sphtroch/sphtroch.hpp: its opening comment does not name {folder}/")
-        if f"`{folder}/`" not in table:
-            problems.append(f"README.md: the target table does not name `{folder}/`")
+
+
+def check_readme_folders(root, readme, problems):
+    """README.md's target table against the folders of include/sphtroch/ that hold a header."""
+    include = root / "include" / "sphtroch"
+    present = {p.relative_to(include).as_posix() + "/" for p in include.rglob("*")
+               if p.is_dir() and any(p.rglob("*.hpp"))}
+    table = "\n".join(l for l in readme.splitlines() if l.startswith("| `sphtroch::"))
+    named = set(re.findall(r"`((?:[\w-]+/)+)`", table))
+    for folder in sorted(present - named):
+        problems.append(f"README.md: the target table does not name `{folder}` (include/sphtroch/{folder} exists)")
+    for folder in sorted(named - present):
+        problems.append(f"README.md: the target table names `{folder}`, which include/sphtroch/ does not have")
+
+
+def opening_comment(path):
+    """The text of a file's opening // comment, the markers stripped, its lines joined by spaces."""
+    lines = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if not line.startswith("//"):
+            break
+        lines.append(line[2:].strip())
+    return " ".join(lines)
+
+
+def check_bindings(root, problems):
+    """The binding files named in python/src/bindings.hpp's opening comment against python/src/bind_*.cpp."""
+    src = root / "python" / "src"
+    comment = opening_comment(src / "bindings.hpp")
+    named = set(re.findall(r"\b(bind_\w+\.cpp)\b", comment))
+    present = {p.name for p in src.glob("bind_*.cpp")}
+    for f in sorted(present - named):
+        problems.append(f"python/src/bindings.hpp: its opening comment does not name {f} (python/src/ has it)")
+    for f in sorted(named - present):
+        problems.append(f"python/src/bindings.hpp: its opening comment names {f}, which python/src/ does not have")
+    m = re.search(r"\b(\w+) topic files? \(([^)]*)\)", comment)
+    if m:
+        topics = re.findall(r"\bbind_\w+\.cpp\b", m.group(2))
+        want = COUNT_WORDS.get(len(topics), str(len(topics)))
+        if m.group(1).lower() != want.lower():
+            problems.append(f"python/src/bindings.hpp: its opening comment says '{m.group(1)} topic files' "
+                            f"and lists {len(topics)}")
+
+
+CMAKE_COMMENT = re.compile(r'("(?:[^"\\]|\\.)*")|#.*')
+
+
+def declared_tests(root):
+    """{name: (quick, file)} of the test executables declared in tests/'s CMake files."""
+    tests = root / "tests"
+    found = {}
+    files = sorted(set(tests.rglob("CMakeLists.txt")) | set(tests.rglob("*.cmake")))
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.startswith("tests/third_party/"):
+            continue
+        text = CMAKE_COMMENT.sub(lambda m: m.group(1) or "", f.read_text(encoding="utf-8"))
+        for name, quick in re.findall(r"\bsphtroch_add_test\(\s*(\w+)(\s+QUICK\b)?", text):
+            found[name] = (bool(quick), rel)
+        for name in re.findall(r"\badd_executable\(\s*(test_\w+)", text):
+            found.setdefault(name, (False, rel))
+    return found
+
+
+def compare_tests(where, listed, declared, problems, what):
+    for name in sorted(set(declared) - listed):
+        problems.append(f"docs/library.md: {where} does not name {name} ({declared[name]} declares it{what})")
+    for name in sorted(listed - set(declared)):
+        problems.append(f"docs/library.md: {where} names {name}, which tests/ does not declare{what}")
+
+
+def check_tests(root, library, problems):
+    """docs/library.md's lists of test executables against those tests/ declares."""
+    declared = declared_tests(root)
+    layout = re.search(r"^`tests/` (.*?) ·\s*$", library, flags=re.M | re.S)
+    if not layout:
+        problems.append("docs/library.md: no `tests/` paragraph (\"`tests/` ... ·\") in the layout")
+    else:
+        listed = set(re.findall(r"`(test_\w+)`", layout.group(1)))
+        compare_tests("the `tests/` layout", listed, {n: f for n, (_, f) in declared.items()}, problems, "")
+    loop = re.search(r"^- The edit-compile-test loop:(.*?)(?=^- |^#|\Z)", library, flags=re.M | re.S)
+    if not loop:
+        problems.append("docs/library.md: no \"- The edit-compile-test loop:\" bullet under Tests")
+    else:
+        listed = set(re.findall(r"`(test_\w+)`", loop.group(1)))
+        quick = {n: f for n, (q, f) in declared.items() if q}
+        compare_tests("the quick loop's list", listed, quick, problems, " with QUICK")
 
 
 def main(argv):
-    if len(argv) != 2 or not pathlib.Path(argv[1]).is_dir():
-        print("usage: check_doc_lists.py ROOT", file=sys.stderr)
+    if len(argv) > 2 or len(argv) == 2 and not pathlib.Path(argv[1]).is_dir():
+        print("usage: check_doc_lists.py [ROOT]", file=sys.stderr)
         return 2
-    root = pathlib.Path(argv[1])
+    root = pathlib.Path(argv[1]) if len(argv) == 2 else pathlib.Path(__file__).resolve().parent.parent
     readme = (root / "README.md").read_text(encoding="utf-8")
     library = (root / "docs" / "library.md").read_text(encoding="utf-8")
     problems = []
     check_targets(root, readme, library, problems)
     check_guarded(root, library, problems)
-    check_umbrella(root, readme, problems)
+    check_umbrella(root, problems)
+    check_readme_folders(root, readme, problems)
+    check_bindings(root, problems)
+    check_tests(root, library, problems)
     for p in problems:
         print("check_doc_lists:", p)
     print(f"check_doc_lists: {len(problems)} problems")

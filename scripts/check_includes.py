@@ -3,10 +3,11 @@
 
 0. Folders are layers (docs/design.md, "Layers"): a header in folder F may include only headers
    of the folders LAYERS[F] allows; the entry headers at the top may include anything. A layer
-   may have sub-layers, one folder deeper (synthesis/interval/): a header's layer is its folder
-   path, and a sub-layer names what it may include like any other layer (its parent included).
-   CGAL and nlohmann-json are included only under exact/, except CGAL's interval type (CGAL
-   headers only) under synthesis/interval/ and census/interval/; OpenCASCADE only under cad/, HEALPix only in machine/dwell_map.hpp (the
+   may have sub-layers, one folder deeper: a header's layer is its folder path, and a sub-layer
+   names what it may include like any other layer (its parent included). CGAL is included only
+   under exact/, except CGAL's interval type (CGAL headers only), which only
+   interval/interval.hpp includes; nlohmann-json (header-only) from io/ upward, not in core/ or
+   interval/; OpenCASCADE only under cad/, HEALPix only in machine/dwell_map.hpp (the
    folder says what a header costs).
 
 1. No cycle: the headers must form a stack (every arrow points down). A cycle means some arrow
@@ -32,21 +33,26 @@ SHARED_DETAIL = {
 # Which folders a header of each folder may include (a folder always includes its own).
 LAYERS = {
     "core": [],                                   # types, errors, the train, the curve, sampling
+    "interval": ["core"],                         # the interval number (CGAL's Interval_nt), 3-vectors, the Krawczyk step, root isolation
     "io": ["core"],                               # numbers as text, parsing, files, formats
     "draw": ["core", "io"],                       # SVG
     "map": ["core", "io"],                        # closed-form boundaries, criteria, g(b), events
     "census": ["core", "io", "map"],              # refinement, node assembly, the root census
-    "census/interval": ["core", "io", "draw", "map", "census", "synthesis/interval"],  # the chain census (CGAL's intervals) and its picture
-    "exact": ["core", "io", "draw", "map", "census", "census/interval", "synthesis", "synthesis/interval"],  # CGAL: crossings, classify, scenes, synthesis reports
+    "chain": ["core", "interval", "io", "draw", "map", "census"],  # rotation chains: the certified census, events along a family, the picture
+    "tolerance": ["core", "interval", "io", "map", "census"],      # how far a train is from a topology change; node enclosures over a box
+    "synthesis": ["core", "interval", "io", "map", "census"],      # the inverse question: which train draws this
+    "exact": ["core", "interval", "io", "draw", "map", "census", "chain", "tolerance", "synthesis"],  # CGAL: crossings, classify, scenes, reports
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
-    "synthesis": ["core", "io", "map", "census"],  # the inverse question: which train draws this
-    "synthesis/interval": ["core", "io", "map", "census", "synthesis"],  # its certified part: CGAL's intervals
     "cad": ["core", "io"],                        # OpenCASCADE: the path as a STEP B-spline
     "machine": ["core", "io", "draw"],            # clinostats: gravity path, window means, dwell (HEALPix)
 }
 TOP_LEVEL_MAX = 8
-HEAVY = re.compile(r'^\s*#\s*include\s+<(CGAL|nlohmann)/', re.M)
-# What synthesis/interval/ may include of CGAL: the interval number type (headers only, no GMP).
+HEAVY = re.compile(r'^\s*#\s*include\s+<CGAL/', re.M)
+# nlohmann-json (header-only, like Eigen) writes every JSON from io/ upward; not in core/ or interval/.
+JSON = re.compile(r'^\s*#\s*include\s+<nlohmann/', re.M)
+NO_JSON = ("core", "interval")
+# The one header that includes CGAL's interval number type (headers only, no GMP).
+INTERVAL_NUMBER = "interval/interval.hpp"
 INTERVAL_ONLY = re.compile(r'^\s*#\s*include\s+<(?!CGAL/Interval_nt\.h>)(CGAL|nlohmann)/', re.M)
 # GMP or MPFR, directly or through mpreal / Eigen's MPRealSupport: exact/ only.
 MULTIPRECISION = re.compile(r'^\s*#\s*include\s+<(gmp\.h|gmpxx\.h|mpfr\.h|mpreal\.h|unsupported/Eigen/MPRealSupport)>', re.M)
@@ -81,11 +87,13 @@ for h in headers:
         if f and folder(d) != f and folder(d) not in LAYERS[f]:
             problems.append(f"{h}: includes sphtroch/{d}, but {f}/ may include only "
                             + ", ".join(x + "/" for x in [f] + LAYERS[f]))
-    if f in ("synthesis/interval", "census/interval"):
+    if h == INTERVAL_NUMBER:
         if INTERVAL_ONLY.search(text[h]):
             problems.append(f"{h}: includes more of CGAL than <CGAL/Interval_nt.h>, or nlohmann-json")
     elif f != "exact" and f and HEAVY.search(text[h]):
-        problems.append(f"{h}: includes CGAL or nlohmann-json outside exact/ (and CGAL's intervals outside synthesis/interval/)")
+        problems.append(f"{h}: includes CGAL outside exact/ (CGAL's intervals: only {INTERVAL_NUMBER})")
+    if (f in NO_JSON or not f) and JSON.search(text[h]):
+        problems.append(f"{h}: includes nlohmann-json in {f or 'the top'}/ (JSON is written from io/ upward)")
     if f != "exact" and MULTIPRECISION.search(text[h]):
         problems.append(f"{h}: includes GMP or MPFR outside exact/")
     if f != "cad" and OPENCASCADE.search(text[h]):

@@ -1,9 +1,11 @@
 // chain.js — the chain panel: a rotation chain as `sphtroch chain` takes it (twists, rates,
 // phases: the CLI's options and texts), its certified census and picture computed by the module in
-// a worker (chain_worker.js: classify_chain and chain_picture_svg, the bytes of `sphtroch chain
+// a worker (chain_worker.js: the chain census and chain_picture_svg, the bytes of `sphtroch chain
 // plot`), shown with the census line and the equivalent command. A change while the worker runs
-// ends it and starts another (state.js's panelWorker). Sets X.chain: {key, value (the module's object or {error}), done}
-// of the texts shown, or null while the panel is off.
+// ends it and starts another (state.js's panelWorker). Sets X.chain: {key, value, done} of the
+// texts shown, or null while the panel is off; value is the module's object ({text: the SVG,
+// census: the object `sphtroch chain classify --json` prints, JSON.parse of the module's text},
+// {train} or {error}).
 // A two-stage chain with both rates not 0 is a gear train: the module gives its a2, a3, n, phase,
 // shown with a button that makes it the page's design (its census is the train's, as the CLI's).
 // Test contract: data-testid="chain-on" (the panel's box), chain-FIELD (the texts), chain-status
@@ -39,15 +41,15 @@
     jobs.run({ texts: textsOf(X.state) });
   }
 
-  // The newest job's answer (chain_worker.js): its value, then 'done'.
+  // The newest job's answer (chain_worker.js): its value (the census as the library's JSON text),
+  // then 'done'.
   function receive({ part, value }) {
     if (part !== 'value' || !X.chain) return;
-    X.chain.value = value;
+    X.chain.value = value.json ? { text: value.text, census: JSON.parse(value.json) } : value;
     X.chain.done = true;
     render();
     setStatus(value.error ? 'error' : 'done', value.error ? 'refused' : 'done');
   }
-
 
   function renderTrain(t) {
     const cell = byTestId('chain-train');
@@ -71,8 +73,11 @@
     renderTrain(v && v.train ? v.train : null);
     byTestId('chain-error').textContent = v && v.error ? v.error : '';
     const census = byTestId('chain-census');
-    census.textContent = ok ? v.nodes + ' node(s), ' + v.cusps + ' cusp(s), ' + (v.certified ? 'certified' : 'NOT CERTIFIED: ' + v.why) : '';
-    Object.assign(census.dataset, ok ? { nodes: v.nodes, cusps: v.cusps, certified: v.certified ? '1' : '0' } : { nodes: '', cusps: '', certified: '' });
+    const k = ok ? v.census : null;  // the object of `sphtroch chain classify --json`
+    census.textContent = k ? k.counts.nodes + ' node(s), ' + k.counts.cusps + ' cusp(s), class ' + k.class + ', ' +
+      (k.certified ? 'certified' : 'NOT CERTIFIED: ' + k.certificate.why) : '';
+    Object.assign(census.dataset, k ? { nodes: k.counts.nodes, cusps: k.counts.cusps, certified: k.certified ? '1' : '0' }
+      : { nodes: '', cusps: '', certified: '' });
     const s = X.state, shellWord = X.shellWord, words = ['sphtroch chain plot --twists', shellWord(s.twists), '--rates', shellWord(s.rates)];
     if (s.phases !== '') words.push('--phases', shellWord(s.phases));
     if (s.markers !== 'auto') words.push('--markers', s.markers);

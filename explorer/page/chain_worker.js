@@ -1,9 +1,9 @@
 // chain_worker.js — the chain panel's job in the page's worker (run from a Blob with sphtroch.js
 // before it; see bundle_worker.js): for a message {job: 'chain', id, texts} (twists, rates,
-// phases: the options of `sphtroch chain`; markers: `--markers`), the module's chainPlot() (the
-// chain's certified census and `sphtroch chain plot`'s SVG, or {error}: the CLI's line) posted as
-// {id, part: 'value', value}, then {id, part: 'done'}. The module is instantiated once per
-// worker, at its first job.
+// phases: the options of `sphtroch chain`; markers: `--markers`), the module's chainPlot() ({text:
+// `sphtroch chain plot`'s SVG, json: the JSON text of `sphtroch chain classify --json`}, {train} for
+// a gear train, or {error}: the CLI's line) posted as {id, part: 'value', value}, then {id, part:
+// 'done'}. The module is instantiated once per worker, at its first job.
 'use strict';
 let chainModule = null;
 

@@ -1,12 +1,14 @@
 // clinostat.js — the clinostat panel: a two-axis clinostat or random positioning machine as
 // `sphtroch clinostat` takes it (outer and inner rpm, tilt, frame angle, the window W and epsilon:
 // the CLI's options and texts), computed by the module in a worker (clinostat_worker.js: the
-// library's clinostat code through the CLI's reader), shown as readouts (readouts.js), the gravity
-// path on a sphere of its own (sphere.js's drawPathSphere; drag to turn) and M(W) against W with
-// epsilon dashed. A change while the worker runs ends it and starts another. Sets X.clinostat:
-// {key, report, window, epsilon, windows, done} of the texts shown (each the module's object or
-// {error}), or null while the panel is off. The dwell map needs HEALPix, which the module does
-// not have: readouts.js shows the command that draws it.
+// library's report through the CLI's reader), shown as readouts (readouts.js), the gravity path on
+// a sphere of its own (sphere.js's drawPathSphere; drag to turn) and M(W) against W with epsilon
+// dashed (the library's curve of `--plot`). A change while the worker runs ends it and starts
+// another. Sets X.clinostat: {key, report, path, windows, done} of the texts shown, or null while
+// the panel is off: report is the object `sphtroch clinostat --json` prints (JSON.parse of the
+// module's text; first without the window and epsilon, then with them), path and windows the
+// module's objects; each may be {error}. The dwell map needs HEALPix, which the module does not
+// have: readouts.js shows the command that draws it.
 // Test contract: data-testid="clinostat-on" (the panel's box), clinostat-FIELD (the texts),
 // clinostat-status (data-state: computing | done | error), the readouts of readouts.js.
 'use strict';
@@ -32,18 +34,18 @@
     $('clinostat-panel').hidden = !on;
     const key = JSON.stringify(textsOf(X.state));
     if (on && X.clinostat && X.clinostat.key === key) return;
-    X.clinostat = on ? { key, report: null, window: null, epsilon: null, windows: null, done: false } : null;
+    X.clinostat = on ? { key, report: null, path: null, windows: null, done: false } : null;
     if (!on) return jobs.stop();
     setStatus('computing', 'computing …');
     render();
     jobs.run({ texts: textsOf(X.state) });
   }
 
-  // The newest job's answers (clinostat_worker.js).
+  // The newest job's answers (clinostat_worker.js); a report is the library's JSON text.
   function receive({ part, value }) {
     if (!X.clinostat) return;
     if (part === 'done') X.clinostat.done = true;
-    else X.clinostat[part] = value;
+    else X.clinostat[part] = part === 'report' && !value.error ? JSON.parse(value.json) : value;
     render();
     if (part === 'done') {
       const error = X.clinostatError(X.clinostat);
@@ -59,17 +61,19 @@
 
   function drawPath() {
     const c = X.clinostat;
-    X.drawPathSphere($('clinostat-sphere'), view, c && c.report && !c.report.error ? c.report.path : null);
+    X.drawPathSphere($('clinostat-sphere'), view, c && c.path && !c.path.error ? c.path.path : null);
   }
 
-  // M(W) (the upper ends of the brackets) against W, M on a logarithmic scale, epsilon dashed.
+  // M(W) (the upper ends of the brackets) against W, M on a logarithmic scale, epsilon dashed; the
+  // library's note under it when the curve is the bound over every frame angle.
   function drawWindows() {
     const svg = $('clinostat-mw'), c = X.clinostat;
     svg.textContent = '';
     const w = c && c.windows && !c.windows.error ? c.windows : null;
+    $('clinostat-mw-note').textContent = w ? w.note : '';
     if (!w) return;
     const width = Number(svg.getAttribute('width')), height = Number(svg.getAttribute('height'));
-    const epsilon = c.epsilon && !c.epsilon.error ? c.epsilon.epsilon : null;
+    const epsilon = w.epsilon;
     const top = Math.max(...w.upper, epsilon || 0);
     if (!(top > 0)) return;
     let floor = Math.max(top * 1e-6, Math.min(...Array.from(w.upper).filter((v) => v > 0), epsilon || Infinity));

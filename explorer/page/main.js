@@ -44,9 +44,13 @@
       cuspPositions: () => (X.result ? Array.from(X.result.cuspPositions) : []),
       timing: () => Object.assign({}, X.timing), project: (p) => X.project(p), lib: module,
       // The clinostat panel's gravity path shown (x0 y0 z0 x1 ...; [] when none).
-      clinostatPath: () => (X.clinostat && X.clinostat.report && X.clinostat.report.path ? Array.from(X.clinostat.report.path) : []),
+      clinostatPath: () => (X.clinostat && X.clinostat.path && X.clinostat.path.path ? Array.from(X.clinostat.path.path) : []),
+      // The clinostat panel's report shown: the object of `sphtroch clinostat --json` (null when none).
+      clinostatReport: () => (X.clinostat && X.clinostat.report && !X.clinostat.report.error ? X.clinostat.report : null),
       // The chain panel's picture as the module returned it (its SVG text; "" when none).
-      chainSvg: () => (X.chain && X.chain.value && X.chain.value.text ? X.chain.value.text : '') };
+      chainSvg: () => (X.chain && X.chain.value && X.chain.value.text ? X.chain.value.text : ''),
+      // The chain panel's census shown: the object of `sphtroch chain classify --json` (null when none).
+      chainCensus: () => (X.chain && X.chain.value && X.chain.value.census ? X.chain.value.census : null) };
     document.body.dataset.ready = '1';
     window.requestAnimationFrame(X.animate);
   }

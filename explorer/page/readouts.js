@@ -3,8 +3,9 @@
 // ruler, the report's criteria, the equivalent `sphtroch classify` command and the list of node
 // points and cusps.
 // And the clinostat panel's readouts (X.clinostat, clinostat.js): the CLI's one line when refused;
-// else the train, period, mean over a period, M(W), time to epsilon (the CLI's numbers, in its
-// shortest texts), the equivalent `sphtroch clinostat` command and the one that draws the dwell map.
+// else the members of the report of `sphtroch clinostat --json` (the train, period, mean over a
+// period, M(W), time to epsilon, in the CLI's shortest texts), the equivalent `sphtroch clinostat`
+// command and the one that draws the dwell map.
 'use strict';
 {
   const X = window.Explorer;
@@ -90,17 +91,18 @@
   }
 
   // ---- the clinostat panel ------------------------------------------------------------------
-  // Test contract: data-testid clinostat-error (the CLI's line or empty), clinostat-train (data-n,
-  // data-a2, data-a3, data-phase), clinostat-period (data-value), clinostat-mean (data-x, data-y,
-  // data-z), clinostat-worst (M(W): data-lower, data-upper, data-start, data-certified: 1 | 0),
-  // clinostat-time (to epsilon: data-first, data-stays, "" for none; data-certified), clinostat-command,
-  // clinostat-coverage; numbers as shortest round-trip texts.
+  // The report is the object of `sphtroch clinostat --json` (X.clinostat.report: its members, in
+  // its names and units). Test contract: data-testid clinostat-error (the CLI's line or empty),
+  // clinostat-train (data-n, data-a2, data-a3, data-phase), clinostat-period (data-value),
+  // clinostat-mean (data-x, data-y, data-z), clinostat-worst (M(W): data-lower, data-upper,
+  // data-start, data-certified: 1 | 0), clinostat-time (to epsilon: data-first, data-stays, "" for
+  // none; data-certified), clinostat-command, clinostat-coverage; numbers as shortest round-trip texts.
   const CLINOSTAT_CELLS = ['train', 'period', 'mean', 'worst', 'time', 'command', 'coverage'];
   const good = (v) => v && !v.error;
 
-  // The first refusal in the CLI's order (the machine, --window, --epsilon, the M(W) curve), or "".
+  // The first refusal (the report's, read in the CLI's order, then the pictures'), or "".
   function clinostatError(c) {
-    for (const part of ['report', 'window', 'epsilon', 'windows']) if (c && c[part] && c[part].error) return c[part].error;
+    for (const part of ['report', 'path', 'windows']) if (c && c[part] && c[part].error) return c[part].error;
     return '';
   }
 
@@ -122,45 +124,49 @@
       setCell('train', 'n = ' + r.train.n + ', a2 = ' + deg(r.train.a2) + ' deg, a3 = ' + deg(r.train.a3) + ' deg, phase = ' +
         t(r.train.phase) + ' rad', { n: r.train.n, a2: t(r.train.a2), a3: t(r.train.a3), phase: t(r.train.phase) });
     } else {
-      setCell('train', r.trainNote);
+      setCell('train', r.train_note);
     }
-    setCell('period', r.periodS === null ? 'none (the gravity does not move in the sample)'
-      : t(r.periodS) + ' s (' + t(r.periodS / 60) + ' min)', { value: r.periodS === null ? '' : t(r.periodS) });
-    const m = r.meanOverPeriod;
-    setCell('mean', '(' + Array.from(m, (v) => t(v)).join(', ') + ') g0, |mean| = ' + t(r.meanNorm) + ' g0',
+    setCell('period', r.period_s === null ? 'none (the gravity does not move in the sample)'
+      : t(r.period_s) + ' s (' + t(r.period_s / 60) + ' min)', { value: r.period_s === null ? '' : t(r.period_s) });
+    const m = r.mean_over_period;
+    setCell('mean', '(' + m.map((v) => t(v)).join(', ') + ') g0, |mean| = ' + t(Math.hypot(...m)) + ' g0',
       { x: t(m[0]), y: t(m[1]), z: t(m[2]) });
-    renderWindowReadout(c.window);
-    renderEpsilonReadout(c.epsilon);
-    setCell('command', clinostatCommand(r, ['--window', X.state.window], ['--epsilon', X.state.epsilon]));
-    const coverage = r.periodS === null ? 60 : Math.min(r.periodS, 86400);
-    setCell('coverage', clinostatCommand(r, ['--coverage', t(coverage)], ['--plot', 'clinostat.svg']));
+    renderWindowReadout(r.worst_window_mean);
+    renderEpsilonReadout(r.time_to_epsilon);
+    setCell('command', clinostatCommand(['--window', X.state.window], ['--epsilon', X.state.epsilon]));
+    setCell('coverage', clinostatCommand(['--plot', 'clinostat.svg']));
   }
 
+  const certifiedText = (w) => (w.certified ? ' (certified)' : ' (NOT CERTIFIED)');
+
+  // M(W): the report's worst_window_mean (absent until the worker's second report).
   function renderWindowReadout(w) {
     if (X.state.window === '') return setCell('worst', 'no window given');
     if (!w) return setCell('worst', 'computing …');
     const t = X.lib.numberText;
-    setCell('worst', 'M(' + t(w.windowS) + ' s) in [' + t(w.lower) + ', ' + t(w.upper) + '] g0, reached by the window starting at ' +
-      t(w.startS) + ' s' + (w.certified ? ' (certified)' : ' (NOT CERTIFIED: the bracket is wider than 1e-9)'),
-    { lower: t(w.lower), upper: t(w.upper), start: t(w.startS), certified: w.certified ? '1' : '0' });
+    setCell('worst', 'M(' + t(w.window_s) + ' s) in [' + t(w.lower) + ', ' + t(w.upper) + '] g0, reached by the window starting at ' +
+      t(w.start_s) + ' s' + certifiedText(w),
+    { lower: t(w.lower), upper: t(w.upper), start: t(w.start_s), certified: w.certified ? '1' : '0' });
   }
 
+  // The time to epsilon: the report's time_to_epsilon (absent until the worker's second report).
   function renderEpsilonReadout(e) {
     if (X.state.epsilon === '') return setCell('time', 'no epsilon given');
     if (!e) return setCell('time', 'computing …');
-    const t = X.lib.numberText, data = { first: e.firstS === null ? '' : t(e.firstS),
-      stays: e.staysBelowFromS === null ? '' : t(e.staysBelowFromS), certified: e.certified ? '1' : '0' };
-    const text = e.firstS !== null ? 'the first window below ' + t(e.epsilon) + ' g0 is ' + t(e.firstS) + ' s; every window from ' +
-      t(e.staysBelowFromS) + ' s on, of any length, is below (first: windows in steps of 1 s; certified)'
+    const t = X.lib.numberText, data = { first: e.first_s === null ? '' : t(e.first_s),
+      stays: e.stays_below_from_s === null ? '' : t(e.stays_below_from_s), certified: e.certified ? '1' : '0' };
+    const text = e.first_s !== null ? 'the first window below ' + t(e.epsilon) + ' g0 is ' + t(e.first_s) + ' s; every window from ' +
+      t(e.stays_below_from_s) + ' s on, of any length, is below' + (e.above_s === null ? '' : ' (one of ' + t(e.above_s) + ' s is above)') +
+      '; windows in steps of ' + t(e.resolution_s) + ' s' + certifiedText(e)
       : (e.certified ? 'none: ' : 'NOT CERTIFIED: ') + e.reason;
     setCell('time', text, data);
   }
 
-  // `sphtroch clinostat` for the machine shown and the option pairs given (those with a text).
-  function clinostatCommand(r, ...options) {
-    const s = X.state, words = ['sphtroch clinostat --outer', shellWord(r.outer), '--inner', shellWord(r.inner), '--tilt',
-      shellWord(s.tilt || '90'), '--frame-angle', shellWord(s['frame-angle'] || '90')];
-    for (const [option, value] of options) if (value !== '') words.push(option, shellWord(value));
+  // `sphtroch clinostat` for the machine's texts and the option pairs given (those with a text).
+  function clinostatCommand(...options) {
+    const s = X.state, words = ['sphtroch clinostat'];
+    for (const [option, value] of [['--outer', s.outer], ['--inner', s.inner], ['--tilt', s.tilt], ['--frame-angle', s['frame-angle']],
+      ...options]) if (value !== '') words.push(option, shellWord(value));
     return words.join(' ');
   }
 

@@ -19,9 +19,13 @@
 //    count: `sphtroch classify` at the cell's centre), the design not moved;
 //  - markers: n = 133/200 (26,602 nodes) opens with them hidden and said so, cones off, the path
 //    drawn; "all" draws them (and goes into the hash); Fig. 3 draws its node.
-//  - the clinostat panel: its train, period, mean, M(W) (bit for bit) and time to epsilon equal
-//    `sphtroch clinostat ... --json`, its gravity path equals `--trace`, the URL state round-trips,
-//    bad texts show the CLI's line and no number, "show its train above" makes it the design.
+//  - the clinostat panel: on six machines its report is the object `sphtroch clinostat ... --json`
+//    prints (deep equality, the same doubles) and its readouts show it, its gravity path equals
+//    `--trace`, the URL state round-trips, bad texts show the CLI's line and no number, "show its
+//    train above" makes it the design;
+//  - the chain panel: its picture is the bytes of `sphtroch chain plot`, its census the object of
+//    `sphtroch chain classify --json` (node and cusp numbers within 1e-12), a two-stage chain is
+//    offered as the design, bad texts show the CLI's line.
 // Exit status 0 when every check holds; each failure is printed.
 'use strict';
 const path = require('path');
@@ -616,14 +620,31 @@ async function checkMarkers(page) {
   check(fig3.note === '' && fig3.cones && (await redPixels(page)) > 10, 'Fig. 3: its node is not drawn: ' + JSON.stringify(fig3));
 }
 
+// Where the object `got` differs from `want` (JSON values: the same members, arrays of the same
+// length, the same strings, booleans and nulls, numbers the same double (Object.is: -0 is not 0),
+// or within tolerance(path) of each other where that is not 0): "path: got != want" lines.
+function differences(got, want, tolerance, where = '', out = []) {
+  const kind = (v) => (v === null ? 'null' : Array.isArray(v) ? 'array' : typeof v);
+  if (kind(got) !== kind(want)) out.push(where + ': ' + JSON.stringify(got) + ' != ' + JSON.stringify(want));
+  else if (kind(got) === 'number') {
+    if (!Object.is(got, want) && !(Math.abs(got - want) <= tolerance(where))) out.push(where + ': ' + got + ' != ' + want);
+  } else if (kind(got) === 'object' || kind(got) === 'array') {
+    for (const k of new Set([...Object.keys(got), ...Object.keys(want)]))
+      differences(got[k], want[k], tolerance, where + '.' + k, out);
+  } else if (got !== want) out.push(where + ': ' + JSON.stringify(got) + ' != ' + JSON.stringify(want));
+  return out;
+}
+
 // The clinostat panel (clinostat.js) for the state `s` (the CLI's option texts): waits until the
-// worker is done and reads its readouts' data attributes, error line and hash.
+// worker is done and reads its report (the object the page shows), its readouts' data attributes,
+// error line and hash.
 async function readClinostat(page) {
   await page.waitForFunction(() => ['done', 'error'].includes(document.querySelector('[data-testid="clinostat-status"]').dataset.state),
     null, { timeout: 30000 });
   return page.evaluate(() => {
     const cell = (id) => document.querySelector('[data-testid="clinostat-' + id + '"]');
-    const out = { error: cell('error').textContent, hash: window.location.hash, path: window.sphtrochExplorer.clinostatPath() };
+    const out = { error: cell('error').textContent, hash: window.location.hash, path: window.sphtrochExplorer.clinostatPath(),
+      report: window.sphtrochExplorer.clinostatReport() };
     for (const id of ['train', 'period', 'mean', 'worst', 'time']) out[id] = Object.assign({ text: cell(id).textContent }, cell(id).dataset);
     out.command = cell('command').textContent;
     out.coverage = cell('coverage').textContent;
@@ -632,34 +653,34 @@ async function readClinostat(page) {
 }
 
 const CLINOSTAT_DEFAULTS = { outer: '1.33', inner: '2', tilt: '90', 'frame-angle': '90', window: '600', epsilon: '0.01' };
+// Machines whose report the page must give as `sphtroch clinostat ... --json` does, member for
+// member: a fraction and a negative speed, a tilt, a frame angle, the CLI's defaults (empty tilt),
+// a single-axis machine, a mean above epsilon (no time to epsilon), epsilon without a window.
+const CLINOSTAT_MACHINES = [
+  { outer: '4/3', inner: '-2.5', tilt: '60', 'frame-angle': '75', window: '90', epsilon: '0.1' },
+  { outer: '3', inner: '0', tilt: '80', 'frame-angle': '90', window: '60', epsilon: '0.5' },
+  { outer: '-1', inner: '2.5', tilt: '', 'frame-angle': '60', window: '120', epsilon: '0.05' },
+  { outer: '5/7', inner: '1', tilt: '30', 'frame-angle': '90', window: '300', epsilon: '0.2' },
+  { outer: '2', inner: '-3/4', tilt: '45', 'frame-angle': '', window: '', epsilon: '0.3' }];
 const clinostatHash = (s) => hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }) + '&clinostat=on' +
   Object.keys(CLINOSTAT_DEFAULTS).map((k) => '&' + k + '=' + encodeURIComponent(s[k]).replace(/%2F/g, '/')).join('');
-const clinostatArgs = (s) => ['clinostat', '--outer', s.outer, '--inner', s.inner, '--tilt', s.tilt, '--frame-angle', s['frame-angle'],
-  '--window', s.window, '--epsilon', s.epsilon];
+// `sphtroch clinostat` with the options given (an empty text is left out: the CLI's default).
+const clinostatArgs = (s) => ['clinostat', ...Object.keys(CLINOSTAT_DEFAULTS).filter((k) => s[k] !== '').flatMap((k) => ['--' + k, s[k]])];
 
-// The panel's numbers against `sphtroch clinostat --json` of the same texts (the page shows the
-// module's shortest round-trip texts): within `tolerance` (0: the same double) for the numbers of
-// the gravity's series (mean, M(W) bracket), exactly for the rest; the start of a window reaching
-// M(W)'s lower end (any such start will do: equal maxima) the CLI's when tolerance is 0, else in
-// [0, period). And the gravity path against --trace, within 1e-14.
-function compareClinostat(got, s, where, tolerance) {
+// The panel against `sphtroch clinostat --json` of the same texts: the report the page shows is
+// the CLI's object, every number the same double (deep equality); the readouts show its members
+// (their data attributes, shortest round-trip texts, read back to the same doubles); the gravity
+// path is within 1e-14 of --trace at the same times.
+function compareClinostat(got, s, where) {
   const run = cli([...clinostatArgs(s), '--json']);
   check(run.status === 0 && got.error === '', where + ': the CLI exited ' + run.status + ' (' + run.stderr + '), the page says "' + got.error + '"');
   if (run.status !== 0) return;
-  const want = JSON.parse(run.stdout), w = want.worst_window_mean, e = want.time_to_epsilon, t = want.train;
-  const same = (a, b) => (b === null ? a === '' : a !== '' && Math.abs(Number(a) - b) <= tolerance);
-  const exact = (a, b) => (b === null ? a === '' : a !== '' && Number(a) === b);
-  const start = tolerance === 0 ? exact(got.worst.start, w.start_s) : Number(got.worst.start) >= 0 && Number(got.worst.start) < want.period_s;
-  const pairs = [['n', got.train.n, t.n], ['a2', exact(got.train.a2, t.a2), true], ['a3', exact(got.train.a3, t.a3), true],
-    ['phase', exact(got.train.phase, t.phase), true], ['period', exact(got.period.value, want.period_s), true],
-    ['mean', ['x', 'y', 'z'].every((k, i) => same(got.mean[k], want.mean_over_period[i])), true],
-    ['M(W) bracket', same(got.worst.lower, w.lower) && same(got.worst.upper, w.upper) && start, true],
-    ['M(W) certified', got.worst.certified, w.certified ? '1' : '0'],
-    ['time to epsilon', exact(got.time.first, e.first_s) && exact(got.time.stays, e.stays_below_from_s), true],
-    ['epsilon certified', got.time.certified, e.certified ? '1' : '0']];
-  for (const [what, a, b] of pairs) check(a === b, where + ': ' + what + ' ' + a + ' != CLI ' + b + ' (' + JSON.stringify(got).slice(0, 400) + ')');
+  const want = JSON.parse(run.stdout);
+  const diff = got.report ? differences(got.report, want, () => 0, 'report') : ['no report shown'];
+  check(diff.length === 0, where + ': the page\'s report is not the CLI\'s: ' + diff.slice(0, 6).join('; '));
+  if (got.report) checkClinostatReadouts(got, got.report, s, where);
   const samples = got.path.length / 3;
-  const rows = cli(['clinostat', '--outer', s.outer, '--inner', s.inner, '--tilt', s.tilt, '--frame-angle', s['frame-angle'], '--trace',
+  const rows = want.period_s === null ? [] : cli([...clinostatArgs(Object.assign({}, s, { window: '', epsilon: '' })), '--trace',
     '--duration', String(want.period_s), '--samples', String(samples + 1)]).stdout.trim().split('\n').slice(1);
   let worst = rows.length === samples + 1 ? 0 : Infinity;
   for (let k = 0; k < samples && worst < Infinity; ++k) {
@@ -669,14 +690,30 @@ function compareClinostat(got, s, where, tolerance) {
   check(samples >= 360 && worst <= 1e-14, where + ': the gravity path (' + samples + ' points) is ' + worst + ' from sphtroch clinostat --trace');
 }
 
+// The readouts show the report `r` (their data attributes: shortest round-trip texts of its
+// members, read back to the same doubles; "no window given" and "no epsilon given" without them).
+function checkClinostatReadouts(got, r, s, where) {
+  const w = r.worst_window_mean, e = r.time_to_epsilon, t = r.train;
+  const exact = (a, b) => (b === null || b === undefined ? a === '' || a === undefined : a !== '' && Number(a) === b);
+  const shown = [['train', t ? ['n', 'a2', 'a3', 'phase'].every((k) => (k === 'n' ? got.train.n === t.n : exact(got.train[k], t[k])))
+    : got.train.text === r.train_note], ['period', exact(got.period.value, r.period_s)],
+  ['mean', ['x', 'y', 'z'].every((k, i) => exact(got.mean[k], r.mean_over_period[i]))],
+  ['M(W)', w ? exact(got.worst.lower, w.lower) && exact(got.worst.upper, w.upper) && exact(got.worst.start, w.start_s) &&
+    got.worst.certified === (w.certified ? '1' : '0') : s.window === '' && got.worst.text === 'no window given'],
+  ['time to epsilon', e ? exact(got.time.first, e.first_s) && exact(got.time.stays, e.stays_below_from_s) &&
+    got.time.certified === (e.certified ? '1' : '0') : s.epsilon === '' && got.time.text === 'no epsilon given']];
+  const { path, ...readouts } = got;
+  for (const [what, ok] of shown) check(ok, where + ': the readout ' + what + ' does not show the report: ' + JSON.stringify(readouts).slice(0, 600));
+}
+
 // The clinostat panel: `sphtroch clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01
-// --json`'s numbers (M(W) bit for bit) and a tilted, frame-angled machine whose mean over a period
-// is above epsilon (no time to epsilon);
-// the hash round-trips (a typed text goes into it, and opening it gives that panel); bad texts show
-// the CLI's line and no number; "show its train above" makes the train the design; the path drawn.
+// --json`'s object from the URL, the path drawn; the machines of CLINOSTAT_MACHINES, the first
+// typed (its texts go into the hash, and a new load of that hash gives them back), the others
+// opened from the URL, each the CLI's object; bad texts show the CLI's line and no number; "show
+// its train above" makes the train the design; closing the panel takes it out of the hash.
 async function checkClinostat(page) {
   await open(page, clinostatHash(CLINOSTAT_DEFAULTS));
-  compareClinostat(await readClinostat(page), CLINOSTAT_DEFAULTS, 'clinostat 1.33/2', 0);
+  compareClinostat(await readClinostat(page), CLINOSTAT_DEFAULTS, 'clinostat 1.33/2');
   const dark = await page.evaluate(() => {
     const c = document.querySelector('[data-testid="clinostat-sphere"]'), d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     let k = 0;
@@ -684,20 +721,23 @@ async function checkClinostat(page) {
     return k;
   });
   check(dark > 2000, 'clinostat: the gravity path is not drawn (' + dark + ' dark pixels)');
-  const tilted = { outer: '4/3', inner: '-2.5', tilt: '60', 'frame-angle': '75', window: '90', epsilon: '0.1' };
-  await page.fill('[data-testid="clinostat-outer"]', tilted.outer);
-  for (const k of ['inner', 'tilt', 'frame-angle', 'window', 'epsilon']) await page.fill('[data-testid="clinostat-' + k + '"]', tilted[k]);
-  const typed = await readClinostat(page);
-  check(decodeURIComponent(typed.hash) === decodeURIComponent(clinostatHash(tilted)), 'clinostat: the hash ' + typed.hash + ' != ' + clinostatHash(tilted));
+  const typed = CLINOSTAT_MACHINES[0];
+  for (const k of Object.keys(CLINOSTAT_DEFAULTS)) await page.fill('[data-testid="clinostat-' + k + '"]', typed[k]);
+  const shownTyped = await readClinostat(page);
+  check(decodeURIComponent(shownTyped.hash) === decodeURIComponent(clinostatHash(typed)),
+    'clinostat: the hash ' + shownTyped.hash + ' != ' + clinostatHash(typed));
+  compareClinostat(shownTyped, typed, 'clinostat typed ' + JSON.stringify(typed));
   await page.goto('about:blank');  // a new page load from the hash, not a change of the hash
-  await open(page, typed.hash);
+  await open(page, shownTyped.hash);
   const reopened = await readClinostat(page);
   const fields = await page.evaluate(() => window.sphtrochExplorer.state());
-  check(Object.keys(tilted).every((k) => fields[k] === tilted[k]) && fields.clinostat === 'on',
+  check(Object.keys(typed).every((k) => fields[k] === typed[k]) && fields.clinostat === 'on',
     'clinostat: the hash did not give back the texts: ' + JSON.stringify(fields));
-  // The module's series of a tilted machine differs from the CLI's in the last bits (its C
-  // library's sin and cos in the series' transform, musl's, round differently from glibc's).
-  compareClinostat(reopened, tilted, 'clinostat ' + JSON.stringify(tilted), 1e-15);
+  compareClinostat(reopened, typed, 'clinostat reopened ' + JSON.stringify(typed));
+  for (const s of CLINOSTAT_MACHINES.slice(1)) {
+    await open(page, clinostatHash(s));
+    compareClinostat(await readClinostat(page), s, 'clinostat ' + JSON.stringify(s));
+  }
   await checkClinostatRefusals(page);
   await open(page, clinostatHash(CLINOSTAT_DEFAULTS));
   const shown = await readClinostat(page);
@@ -720,13 +760,17 @@ async function checkClinostatRefusals(page) {
     const got = await readClinostat(page);
     const want = cli(clinostatArgs(s));
     check(want.status === 2 && got.error === want.stderr, 'clinostat ' + field + ' = ' + value + ': page "' + got.error + '" != CLI "' + want.stderr + '"');
-    check(['train', 'period', 'mean', 'worst', 'time'].every((id) => got[id].text === '') && got.command === '',
+    check(['train', 'period', 'mean', 'worst', 'time'].every((id) => got[id].text === '') && got.command === '' && got.report === null,
       'clinostat ' + field + ' = ' + value + ': a number is still shown: ' + JSON.stringify(got).slice(0, 300));
   }
 }
 
 // The chain panel: a chain given in the URL is drawn with its census, the SVG the bytes of `sphtroch
-// chain plot`, the counts chain classify --json's; a two-stage chain is offered as the page's gear
+// chain plot`, the census object `chain classify --json`'s: the same members, counts, class,
+// certificate and strings; the node and cusp numbers within 1e-12 (the certified engine's boxes
+// are rounded outward by an ulp to nearest in the module, in directed rounding natively, so a node
+// refined to the same box width may land a few ulp apart: measured 1.8e-14), every other number
+// the same double; a two-stage chain is offered as the page's gear
 // train (gear_train_of: a2 = A1, a3 = A2, n = N2 / N1) and "show it above" makes it the design, with
 // chain classify's node count; bad texts show the CLI's line and no picture.
 async function readChain(page) {
@@ -735,13 +779,15 @@ async function readChain(page) {
   return page.evaluate(() => {
     const cell = (id) => document.querySelector('[data-testid="chain-' + id + '"]');
     return { svg: window.sphtrochExplorer.chainSvg(), error: cell('error').textContent, census: Object.assign({}, cell('census').dataset),
-      command: cell('command').textContent, train: Object.assign({}, cell('train').dataset), hash: window.location.hash };
+      object: window.sphtrochExplorer.chainCensus(), command: cell('command').textContent, train: Object.assign({}, cell('train').dataset),
+      hash: window.location.hash };
   });
 }
 
 const chainHash = (c) => hashOf({ a2: 'pi/3', a3: 'pi/2', n: '2', phase: '0' }) + '&twists=' + encodeURIComponent(c.twists) +
   '&rates=' + encodeURIComponent(c.rates).replace(/%2F/g, '/') + (c.phases ? '&phases=' + encodeURIComponent(c.phases) : '');
 const chainArgs = (c) => ['--twists', c.twists, '--rates', c.rates, ...(c.phases ? ['--phases', c.phases] : [])];
+const chainTolerance = (where) => (/^census\.(nodes|cusps)\./.test(where) ? 1e-12 : 0);
 
 async function checkChain(page) {
   const fs = require('fs');
@@ -751,9 +797,11 @@ async function checkChain(page) {
     const got = await readChain(page);
     const file = path.join(outDir, 'cli_chain.svg');
     const plot = cli(['chain', 'plot', ...chainArgs(c), '-o', file]);
-    const counts = JSON.parse(cli(['chain', 'classify', ...chainArgs(c), '--json']).stdout).counts;
+    const want = JSON.parse(cli(['chain', 'classify', ...chainArgs(c), '--json']).stdout), counts = want.counts;
     const where = JSON.stringify(c);
     check(plot.status === 0 && got.svg === fs.readFileSync(file, 'utf8'), where + ': the chain picture differs from sphtroch chain plot: ' + plot.stderr);
+    const diff = got.object ? differences(got.object, want, chainTolerance, 'census') : ['no census shown'];
+    check(diff.length === 0, where + ': the page\'s census is not chain classify --json\'s: ' + diff.slice(0, 6).join('; '));
     check(Number(got.census.nodes) === counts.nodes && Number(got.census.cusps) === counts.cusps && got.census.certified === '1',
       where + ': the chain census ' + JSON.stringify(got.census) + ' != chain classify ' + JSON.stringify(counts));
     check(got.error === '' && got.command.startsWith('sphtroch chain plot --twists'), where + ': ' + JSON.stringify(got).slice(0, 300));
@@ -774,7 +822,7 @@ async function checkChain(page) {
     await open(page, chainHash(bad));
     const r = await readChain(page);
     const want = cli(['chain', 'classify', ...chainArgs(bad)]);
-    check(want.status === 2 && r.error === want.stderr && r.svg === '' && r.census.nodes === '',
+    check(want.status === 2 && r.error === want.stderr && r.svg === '' && r.census.nodes === '' && r.object === null,
       'chain ' + JSON.stringify(bad) + ': page "' + r.error + '" != CLI "' + want.stderr + '"');
   }
 }

@@ -1,16 +1,18 @@
 // sphtroch/sphtroch.hpp — umbrella header: every header the linked CMake components provide, by layer.
-//   sphtroch::sphtroch (Eigen only): core/ (the train, the curve, sampling), io/ (numbers, parsing,
+//   sphtroch::sphtroch (Eigen, nlohmann-json; header-only): core/ (the train, the curve, sampling), io/ (numbers, parsing,
 //     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
-//     gear train, window means, the worst window mean, the time to epsilon).
+//     gear train, window means, the worst window mean, the time to epsilon, the report and its JSON).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
 //   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains read
 //     from URDF; io/urdf_writer.hpp writes them without it).
-//   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds census/interval/
-//     (the certified census of rotation chains) and synthesis/interval/:
-//     interval arithmetic, certified root isolation, precision points (fixed frame, free axis),
-//     the certified topology margin, box topology and node enclosures of a tolerance box.
+//   sphtroch::interval (CGAL's headers only; defines SPHTROCH_HAVE_INTERVAL): adds interval/ (interval
+//     arithmetic, interval 3-vectors, the one Krawczyk step, certified root isolation), chain/ (the
+//     certified census of rotation chains and its events along a family; chain/chain_events.hpp, the
+//     events' types and closed forms, is Eigen only), tolerance/ (the certified topology margin,
+//     box topology and node enclosures of a tolerance box) and synthesis/'s precision points
+//     (fixed frame, free axis).
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
 //     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
 //     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
@@ -18,7 +20,8 @@
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (exact/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
-// classify()'s declaration and its result types (exact/classification.hpp), no synthesis/interval/, and parses no CGAL
+// classify()'s declaration and its result types (exact/classification.hpp), no interval/, chain/, tolerance/
+// or precision points, and parses no CGAL
 // header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
 #pragma once
 
@@ -74,7 +77,6 @@
 
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/boundary_events_output.hpp"
-#include "sphtroch/map/chain_events.hpp"
 #include "sphtroch/map/boundary_snap.hpp"
 #include "sphtroch/map/closed_form_boundaries.hpp"
 #include "sphtroch/map/criteria.hpp"
@@ -83,12 +85,15 @@
 #include "sphtroch/map/root_function.hpp"
 
 #include "sphtroch/census/node_assembly.hpp"
+#include "sphtroch/census/node_json.hpp"
 #include "sphtroch/census/node_sets.hpp"
 #include "sphtroch/census/polyline_census_result.hpp"
 #include "sphtroch/census/refinement.hpp"
 #include "sphtroch/census/root_census.hpp"
 #include "sphtroch/census/root_classification.hpp"
 #include "sphtroch/census/tangency_refinement.hpp"
+
+#include "sphtroch/chain/chain_events.hpp"  // Eigen only; the rest of chain/ needs sphtroch::interval
 
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/atlas/atlas_boundary_check.hpp"
@@ -105,6 +110,7 @@
 #include "sphtroch/machine/clinostat.hpp"
 #include "sphtroch/machine/clinostat_design.hpp"
 #include "sphtroch/machine/clinostat_plot.hpp"
+#include "sphtroch/machine/clinostat_report.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
 #include "sphtroch/machine/dwell_map_result.hpp"
@@ -117,21 +123,25 @@
 #endif
 
 #if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
-#include "sphtroch/census/interval/chain_box_search.hpp"
-#include "sphtroch/census/interval/chain_census.hpp"
-#include "sphtroch/census/interval/chain_enclosure.hpp"
-#include "sphtroch/census/interval/chain_event_roots.hpp"
-#include "sphtroch/census/interval/chain_family_events.hpp"
-#include "sphtroch/census/interval/chain_picture.hpp"
-#include "sphtroch/census/interval/chain_tangency.hpp"
-#include "sphtroch/synthesis/interval/boundary_enclosure.hpp"
-#include "sphtroch/synthesis/interval/free_axis_points.hpp"
-#include "sphtroch/synthesis/interval/interval.hpp"
-#include "sphtroch/synthesis/interval/node_tolerance.hpp"
-#include "sphtroch/synthesis/interval/precision_points.hpp"
-#include "sphtroch/synthesis/interval/root_isolation.hpp"
-#include "sphtroch/synthesis/interval/tolerance_box.hpp"
-#include "sphtroch/synthesis/interval/topology_margin.hpp"
+#include "sphtroch/interval/interval.hpp"
+#include "sphtroch/interval/interval_vector.hpp"
+#include "sphtroch/interval/krawczyk.hpp"
+#include "sphtroch/interval/root_isolation.hpp"
+#include "sphtroch/chain/chain_box_search.hpp"
+#include "sphtroch/chain/chain_census.hpp"
+#include "sphtroch/chain/chain_census_output.hpp"
+#include "sphtroch/chain/chain_enclosure.hpp"
+#include "sphtroch/chain/chain_event_roots.hpp"
+#include "sphtroch/chain/chain_family_events.hpp"
+#include "sphtroch/chain/chain_picture.hpp"
+#include "sphtroch/chain/chain_tangency.hpp"
+#include "sphtroch/tolerance/boundary_enclosure.hpp"
+#include "sphtroch/tolerance/node_tolerance.hpp"
+#include "sphtroch/tolerance/tolerance_box.hpp"
+#include "sphtroch/tolerance/tolerance_report.hpp"
+#include "sphtroch/tolerance/topology_margin.hpp"
+#include "sphtroch/synthesis/free_axis_points.hpp"
+#include "sphtroch/synthesis/precision_points.hpp"
 #endif
 
 #if defined(SPHTROCH_HAVE_EXACT)
@@ -140,7 +150,6 @@
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/arc_predicates.hpp"
 #include "sphtroch/exact/certified_census.hpp"
-#include "sphtroch/exact/chain_census_output.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"

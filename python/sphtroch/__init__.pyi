@@ -231,6 +231,38 @@ class CoverageSummary(TypedDict):
     dwell_cv: float
     bound_s: float
 
+class ClinostatReportTrain(TypedDict):
+    """ClinostatReport's "train": the train (n as "p/q", a2, a3, phase in radians) and its map."""
+    n: str
+    a2: float
+    a3: float
+    phase: float
+    theta2_at_0: float
+    theta2_rate: float
+    rotation: List[List[float]]
+
+class ClinostatCoverage(TypedDict):
+    """ClinostatReport's "coverage": CoverageSummary with "order" ("RING") and "dwell_s" (a list)."""
+    start_s: float
+    duration_s: float
+    nside: int
+    order: str
+    fraction: float
+    dwell_cv: float
+    bound_s: float
+    dwell_s: List[float]
+
+class ClinostatReport(TypedDict):
+    """Clinostat.report(): the object `sphtroch clinostat --json` prints (docs/clinostat.md)."""
+    train: Optional[ClinostatReportTrain]
+    train_note: NotRequired[str]
+    averaged: str
+    period_s: Optional[float]
+    mean_over_period: List[float]
+    worst_window_mean: NotRequired[WorstWindowMean]
+    time_to_epsilon: NotRequired[TimeToEpsilon]
+    coverage: NotRequired[ClinostatCoverage]
+
 class ChainInfo(TypedDict):
     twists: List[float]
     rates: List[str]
@@ -651,6 +683,15 @@ class Clinostat:
         "duration_s", "nside", "fraction" (share of cells visited), "dwell_cv" (coefficient of
         variation of the dwell over all cells; 0 = uniform), "bound_s" (every cell's time is within
         it)}."""
+    def report(self, *, window: Optional[Real] = None, epsilon: Optional[Real] = None, resolution: Optional[Real] = None,
+               coverage: Optional[Real] = None, nside: Count = 8, start: Real = 0.0) -> ClinostatReport:
+        """The whole report as the object `sphtroch clinostat --outer O --inner I ... --window W
+        --epsilon E --resolution S --coverage D --nside K --start T --json` prints, member for member
+        and double for double (machine/clinostat_report.hpp writes it for both): "train" (or None
+        and "train_note"), "averaged", "period_s", "mean_over_period", and with window
+        "worst_window_mean", with epsilon "time_to_epsilon", with coverage "coverage" (HEALPix).
+        Ranges as worst_window_mean(), time_to() (resolution only with epsilon; default 1 s) and
+        coverage(). Raises InvalidInput as those do, naming the CLI's options."""
     def _repr_svg_(self) -> Optional[str]:
         """Jupyter's picture: the train's (GearTrain._repr_svg_), or None without a train (Jupyter
         then shows the repr)."""

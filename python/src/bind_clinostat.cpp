@@ -16,6 +16,7 @@
 #include "bindings.hpp"
 
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/machine/clinostat_report.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
@@ -220,6 +221,48 @@ py::dict coverage_summary(const Machine& self, py::handle duration, py::handle n
   return d;
 }
 
+/// The dwell map of the healpix module's dict (dwell()) as the library's DwellMap.
+DwellMap dwell_map_of(const py::dict& d) {
+  DwellMap m;
+  m.start_s = d["start_s"].cast<double>();
+  m.duration_s = d["duration_s"].cast<double>();
+  m.nside = d["nside"].cast<int>();
+  m.bound_s = d["bound_s"].cast<double>();
+  m.visited = d["visited"].cast<std::size_t>();
+  m.visited_fraction = d["fraction"].cast<double>();
+  m.dwell_cv = d["dwell_cv"].cast<double>();
+  const auto dwell_s = d["dwell_s"].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+  m.dwell_s.assign(dwell_s.data(), dwell_s.data() + dwell_s.size());
+  return m;
+}
+
+/// Clinostat.report(...): machine/clinostat_report.hpp's JSON object, the one `sphtroch clinostat
+/// --json` prints, read by Python's json module (so the dict is that object, member for member).
+py::object report(const Machine& self, py::handle window, py::handle epsilon, py::handle resolution, py::handle coverage,
+                  py::handle nside, py::handle start) {
+  ClinostatRequest q;
+  if (!window.is_none()) q.window = positive_arg(window, "window", 1e9, "seconds in (0, 1e9]");
+  if (!epsilon.is_none()) q.epsilon = positive_arg(epsilon, "epsilon", 1e9, "a bound in units of g0, > 0");
+  if (!resolution.is_none()) {
+    if (!q.epsilon) throw InvalidInput("resolution", repr_of(resolution), "only with epsilon", "epsilon=E, resolution=S");
+    q.resolution = positive_arg(resolution, "resolution", 1e6, "seconds in (0, 1e6]");
+  }
+  std::optional<DwellMap> map;
+  if (!coverage.is_none()) {
+    const DwellRequest d = dwell_request(coverage, nside, start);
+    q.coverage = d.duration;
+    q.nside = d.nside;
+    q.start = d.start;
+    map = dwell_map_of(dwell(self, d));
+  }
+  std::string text;
+  {
+    py::gil_scoped_release release;
+    text = clinostat_report_json(clinostat_report(self.machine, q, std::move(map))).dump();
+  }
+  return py::module_::import("json").attr("loads")(text);
+}
+
 py::object train_map(const Machine& self) {
   if (!self.train.train) return py::none();
   py::array_t<double> rotation(std::vector<py::ssize_t>{3, 3});
@@ -278,6 +321,9 @@ void bind_clinostat(py::module_& m) {
       .def("coverage", checked(&coverage), py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0, doc("Clinostat.coverage"))
       .def("coverage_summary", checked(&coverage_summary), py::arg("duration"), py::arg("nside") = 8, py::arg("start") = 0.0,
            doc("Clinostat.coverage_summary"))
+      .def("report", checked(&report), py::kw_only(), py::arg("window") = py::none(), py::arg("epsilon") = py::none(),
+           py::arg("resolution") = py::none(), py::arg("coverage") = py::none(), py::arg("nside") = 8, py::arg("start") = 0.0,
+           doc("Clinostat.report"))
       .def("_repr_svg_", checked(+[](M c) -> py::object {
         return c.gear_train ? py::cast(*c.gear_train).attr("_repr_svg_")() : py::object(py::none());
       }), doc("Clinostat._repr_svg_"))

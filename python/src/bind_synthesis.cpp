@@ -1,6 +1,6 @@
 // python/src/bind_synthesis.cpp — the inverse question (bindings.hpp): sphtroch.identify(t, P), the
 // train of a timed trace (synthesis/identify.hpp), sphtroch.synth_points(P, n=...), every train
-// through three points (synthesis/interval/precision_points.hpp), and sphtroch.fit(P, n=..., nodes=..., cusps=...),
+// through three points (synthesis/precision_points.hpp), and sphtroch.fit(P, n=..., nodes=..., cusps=...),
 // ranked trains nearest a path (synthesis/path_fit.hpp); NumPy in, a dict out, the GIL released.
 #include "bindings.hpp"
 #include "exact_calls.hpp"

@@ -1,7 +1,7 @@
 // python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
 // the argument converters (arguments.cpp), the exception classes (bind_errors.cpp) and one bind_*
-// function per topic (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp, bind_synthesis.cpp,
-// bind_clinostat.cpp), called by module.cpp.
+// function in each of six topic files (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp,
+// bind_synthesis.cpp, bind_clinostat.cpp, bind_chain.cpp), called by module.cpp.
 // The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
 //
 // Decisions

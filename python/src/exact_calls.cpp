@@ -1,12 +1,14 @@
-// python/src/exact_calls.cpp — see exact_calls.hpp. The module's one CGAL translation unit of its
-// own (the other is the CLI's analysis_commands.cpp, compiled in for its printers).
+// python/src/exact_calls.cpp — see exact_calls.hpp. The module's one translation unit that
+// includes exact/ (CGAL): classify, crossings, tolerance, the inverse design's reports and the
+// chain's census all go through here, so the CGAL parse is paid once.
 #include "exact_calls.hpp"
 
 #include "sphtroch/exact/classification_output.hpp"
 
 #include "sphtroch/exact/analysis.hpp"
-#include "sphtroch/census/interval/chain_family_events.hpp"
-#include "sphtroch/exact/chain_census_output.hpp"
+#include "sphtroch/chain/chain_family_events.hpp"
+#include "sphtroch/chain/chain_census_output.hpp"
+#include "sphtroch/chain/chain_picture.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
 #include "sphtroch/exact/path_fit_output.hpp"
 #include "sphtroch/exact/precision_points_output.hpp"

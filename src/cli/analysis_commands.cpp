@@ -1,5 +1,6 @@
-// sphtroch classify | nodes | plot | crossings | tolerance — the node census and its reports. One of the two
-// CLI translation units that include CGAL (through analysis.hpp; the other is scene_command.cpp).
+// sphtroch classify | nodes | plot | crossings | tolerance — the node census and its reports. One of
+// the five CLI translation units that include CGAL through exact/analysis.hpp (with scene_command.cpp,
+// chain_census_command.cpp, synth_points_command.cpp and synth_fit_command.cpp).
 // Every format is the library's (sphtroch/exact/classification_output.hpp, node_csv.hpp), shared with `sphtroch scene`.
 #include "cli_common.hpp"
 #include "png_output.hpp"

@@ -1,18 +1,19 @@
 // sphtroch chain classify | nodes | plot | boundaries — the certified census of a rotation chain's curve
 // (exact/chain_classification.hpp): its nodes and cusps, as text or JSON
-// (exact/chain_census_output.hpp), or as the nodes table of `sphtroch nodes` (io/node_csv.hpp,
+// (chain/chain_census_output.hpp), or as the nodes table of `sphtroch nodes` (io/node_csv.hpp,
 // the t columns are the motor parameter s), or drawn on the sphere (chain_picture_svg). Exit 3 after
 // the output when it is not certified.
 // The census is classify_chain's (exact/chain_classification.hpp): for k = 2 the gear train's,
 // checked by the chain census; for rates 1,n and phases 0,theta_p the table is `sphtroch nodes`'s,
 // byte for byte. boundaries: where the census changes as one twist or phase varies
-// (census/interval/chain_family_events.hpp); exit 3 after the report when not certified.
+// (chain/chain_family_events.hpp); exit 3 after the report when not certified.
 #include "cli_common.hpp"
 #include "png_output.hpp"
 
-#include "sphtroch/census/interval/chain_family_events.hpp"
+#include "sphtroch/chain/chain_family_events.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
-#include "sphtroch/exact/chain_census_output.hpp"
+#include "sphtroch/chain/chain_census_output.hpp"
+#include "sphtroch/chain/chain_picture.hpp"
 #include "sphtroch/io/chain_text.hpp"
 #include "sphtroch/io/node_csv.hpp"
 

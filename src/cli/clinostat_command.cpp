@@ -1,7 +1,8 @@
 // sphtroch clinostat — a two-axis clinostat or random positioning machine: its gravity path as a
 // gear train, the mean over a period, the worst window mean, the time to epsilon, the dwell map;
 // or (--trace) the gravity seen by the sample as CSV t,gx,gy,gz or .npy. Eigen (+ HEALPix for
-// --coverage, opened on demand: dwell_input.hpp); the library's machine/ layer does the work (docs/clinostat.md).
+// --coverage, opened on demand: dwell_input.hpp); the library's machine/ layer does the work and
+// writes the report (machine/clinostat_report.hpp; docs/clinostat.md).
 #include "cli_common.hpp"
 #include "dwell_input.hpp"
 #include "png_output.hpp"
@@ -9,12 +10,8 @@
 #include "sphtroch/io/npy.hpp"
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/machine/clinostat_plot.hpp"
+#include "sphtroch/machine/clinostat_report.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
-#include "sphtroch/machine/clinostat_train.hpp"
-#include "sphtroch/machine/dwell_map_result.hpp"
-#include "sphtroch/machine/time_to_epsilon.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -47,14 +44,8 @@ double parse_time(const std::string& text, const std::string& field) {
 }
 
 /// What the report computes, read and checked before any of it runs.
-struct Request {
-  std::optional<double> window, epsilon, coverage;
-  double resolution = 1, start = 0;
-  int nside = 8;
-};
-
-Request read_request(const ClinostatOptions& o) {
-  Request r;
+ClinostatRequest read_request(const ClinostatOptions& o) {
+  ClinostatRequest r;
   if (!o.window.empty()) r.window = parse_positive(o.window, "window", 1e9, "seconds in (0, 1e9]");
   if (!o.epsilon.empty()) r.epsilon = parse_positive(o.epsilon, "epsilon", 1e9, "a bound in units of g0, > 0");
   if (!o.resolution.empty()) {
@@ -71,122 +62,19 @@ Request read_request(const ClinostatOptions& o) {
   return r;
 }
 
-nlohmann::json vector_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
-
-nlohmann::json train_json(const ClinostatTrain& ct) {
-  if (!ct.train) return nullptr;
-  nlohmann::json rows = nlohmann::json::array();
-  for (int i = 0; i < 3; ++i) rows.push_back(vector_json(ct.rotation.row(i).transpose()));
-  return {{"n", ct.train->ratio().str()}, {"a2", ct.train->a2()}, {"a3", ct.train->a3()}, {"phase", ct.train->phase()},
-          {"theta2_at_0", ct.theta2_at_0}, {"theta2_rate", ct.theta2_rate}, {"rotation", rows}};
-}
-
-/// The report's numbers, computed once for the text and the JSON.
-struct Report {
-  ClinostatTrain train;
-  const GravitySeries* series = nullptr;
-  std::optional<WorstWindowMean> worst;
-  std::optional<TimeToEpsilon> time_to;
-  std::optional<DwellMap> dwell;
-  bool effective = false;
-};
-
-nlohmann::json report_json(const Report& r, const Request& q) {
-  nlohmann::json out;
-  out["train"] = train_json(r.train);
-  if (!r.train.train) out["train_note"] = r.train.reason;
-  out["averaged"] = r.effective ? "effective gravity at the offset" : "gravity";
-  out["period_s"] = r.series->period_s() ? nlohmann::json(*r.series->period_s()) : nlohmann::json(nullptr);
-  out["mean_over_period"] = vector_json(r.series->period_mean());
-  if (r.worst)
-    out["worst_window_mean"] = {{"window_s", r.worst->window_s}, {"lower", r.worst->lower}, {"upper", r.worst->upper},
-                                {"start_s", r.worst->start_s}, {"certified", r.worst->certified}};
-  if (r.time_to) {
-    const auto or_null = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-    out["time_to_epsilon"] = {{"epsilon", r.time_to->epsilon}, {"resolution_s", q.resolution},
-                              {"first_s", or_null(r.time_to->first_s)}, {"stays_below_from_s", or_null(r.time_to->stays_below_from_s)},
-                              {"above_s", or_null(r.time_to->above_s)},
-                              {"reason", r.time_to->reason}, {"certified", r.time_to->certified}};
-  }
-  if (r.dwell)
-    out["coverage"] = {{"start_s", r.dwell->start_s}, {"duration_s", r.dwell->duration_s}, {"nside", r.dwell->nside},
-                       {"order", "RING"}, {"fraction", r.dwell->visited_fraction}, {"dwell_cv", r.dwell->dwell_cv},
-                       {"bound_s", r.dwell->bound_s}, {"dwell_s", r.dwell->dwell_s}};
-  return out;
-}
-
-std::string degrees(double radians) { return number_text(radians * 180 / Constants<double>::pi()); }
-
-void write_report_text(std::ostream& out, const Clinostat& m, const Report& r, const Request& q) {
-  const ClinostatSettings& s = m.settings();
-  out << "clinostat: outer " << s.outer.str() << " rpm, inner " << s.inner.str() << " rpm, tilt " << number_text(s.tilt_deg)
-      << " deg, frame angle " << number_text(s.frame_angle_deg) << " deg\n";
-  if (r.train.train) {
-    const GearTrain& t = *r.train.train;
-    out << "gravity path: the spherical trochoid of the gear train n = " << t.ratio().str() << ", a2 = " << degrees(t.a2())
-        << " deg, a3 = " << degrees(t.a3()) << " deg, phase = " << number_text(t.phase()) << " rad\n"
-        << "  traced by: sphtroch trace --a2 " << number_text(t.a2()) << " --a3 " << number_text(t.a3()) << " --n "
-        << t.ratio().str() << " --phase " << number_text(t.phase()) << "\n"
-        << "  g_s(t) = rotation * P(theta2), theta2 = " << number_text(r.train.theta2_at_0)
-        << (r.train.theta2_rate < 0 ? " - " : " + ") << number_text(std::fabs(r.train.theta2_rate)) << " t rad (t in s; --json gives the rotation)\n";
-  } else {
-    out << "gravity path: " << r.train.reason << "\n";
-  }
-  if (r.series->period_s())
-    out << "period: " << number_text(*r.series->period_s()) << " s (" << number_text(*r.series->period_s() / 60)
-        << " min): both frames back at their start\n";
-  else
-    out << "period: none (the gravity does not move in the sample)\n";
-  const Vector3d c = r.series->period_mean();
-  out << "mean " << (r.effective ? "effective gravity" : "gravity") << " over a period: (" << number_text(c.x()) << ", "
-      << number_text(c.y()) << ", " << number_text(c.z()) << ") g0, |mean| = " << number_text(c.norm()) << " g0\n";
-  if (r.worst)
-    out << "worst window mean, W = " << number_text(r.worst->window_s) << " s: M(W) in [" << number_text(r.worst->lower) << ", "
-        << number_text(r.worst->upper) << "] g0, reached by the window starting at " << number_text(r.worst->start_s) << " s"
-        << (r.worst->certified ? "" : " (NOT CERTIFIED: the bracket is wider than 1e-9)") << "\n";
-  if (r.time_to) {
-    out << "time to epsilon = " << number_text(r.time_to->epsilon) << " g0 (windows in steps of " << number_text(q.resolution) << " s): ";
-    if (r.time_to->first_s)
-      out << "the first window below is " << number_text(*r.time_to->first_s) << " s; every window from "
-          << number_text(*r.time_to->stays_below_from_s) << " s on, of any length, is below"
-          << (r.time_to->above_s ? " (one of " + number_text(*r.time_to->above_s) + " s is above)" : std::string()) << "\n";
-    else
-      out << (r.time_to->certified ? "none: " : "NOT CERTIFIED: ") << r.time_to->reason << "\n";
-  }
-  if (r.dwell)
-    out << "coverage over [" << number_text(r.dwell->start_s) << ", " << number_text(r.dwell->start_s + r.dwell->duration_s)
-        << "] s on " << r.dwell->dwell_s.size() << " HEALPix cells (nside " << r.dwell->nside << "): " << number_text(100 * r.dwell->visited_fraction)
-        << "% visited, dwell coefficient of variation " << number_text(r.dwell->dwell_cv) << "; each cell's time within "
-        << number_text(r.dwell->bound_s) << " s (--json gives the dwell per cell)\n";
-}
-
-/// --plot: the dwell map of the report's coverage (or of one period, at most an hour) and M(W)
-/// at 100 windows up to 1.25 times the time to epsilon (or three periods, at most two hours), by
-/// window_curve (searched, or the torus bound when 100 searches would cost more than
-/// kMaxCurvePieces: the picture's cost is bounded whatever the period).
-std::string plot_svg(const Clinostat& m, const GravitySeries& series, const Report& r, const Request& q) {
-  ClinostatPlot plot;
-  const ClinostatSettings& s = m.settings();
-  plot.title = "clinostat " + s.outer.str() + " / " + s.inner.str() + " rpm, tilt " + number_text(s.tilt_deg) + " deg, frame angle " +
-               number_text(s.frame_angle_deg) + " deg";
-  const double period = series.period_s().value_or(60.0);
-  if (r.dwell || std::string(healpix_plugin_state()) == "yes") {  // the dwell panel: in a build with HEALPix
-    const DwellMap dwell = r.dwell ? *r.dwell : dwell_map_by_plugin(m.settings(), q.start, std::min(period, 3600.0), q.nside);
-    plot.cells = cell_outlines_by_plugin(dwell.nside);
-    plot.dwell_s = dwell.dwell_s;
-    plot.title += "; dwell over " + number_text(dwell.duration_s) + " s";
-  }
-  plot.epsilon = q.epsilon;
-  const double longest = r.time_to && r.time_to->stays_below_from_s ? 1.25 * *r.time_to->stays_below_from_s : std::min(3 * period, 7200.0);
-  const WindowCurve curve = window_curve(series, longest, 100);
-  for (const WorstWindowMean& w : curve.points) plot.windows.push_back({w.window_s, w.lower, w.upper});
-  if (curve.torus) plot.window_note = "the period is too long to search: the upper bound over every frame angle";
-  return clinostat_plot_svg(plot);
+/// --plot: the library's composition (clinostat_report.hpp) with the dwell map of the report's
+/// coverage, or of clinostat_plot_dwell_s, in a build with HEALPix (the plugin).
+std::string plot_svg(const ClinostatReport& r) {
+  std::optional<DwellMap> dwell = r.dwell;
+  if (!dwell && std::string(healpix_plugin_state()) == "yes")
+    dwell = dwell_map_by_plugin(r.settings, r.request.start, clinostat_plot_dwell_s(r), r.request.nside);
+  return clinostat_plot_svg(clinostat_report_plot(r, dwell ? &*dwell : nullptr, dwell ? cell_outlines_by_plugin(dwell->nside)
+                                                                                        : std::vector<std::vector<Vector3d>>{}));
 }
 
 /// --plot's file: FILE.svg or FILE.png (any case), not standard output; its map at most nside 32
 /// (12,288 cells drawn; the SVG grows as the cells).
-void check_plot_request(const std::string& plot, const Request& q) {
+void check_plot_request(const std::string& plot, const ClinostatRequest& q) {
   std::string lower = plot;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const auto ends = [&](const char* e) { return lower.size() > 4 && lower.compare(lower.size() - 4, 4, e) == 0; };
@@ -198,32 +86,23 @@ void check_plot_request(const std::string& plot, const Request& q) {
 }
 
 void run_report(const ClinostatOptions& o, const Clinostat& m) {
-  const Request q = read_request(o);
+  const ClinostatRequest q = read_request(o);
   if (!o.plot.empty()) check_plot_request(o.plot, q);
   if (!o.start.empty() && !q.coverage && o.plot.empty())
     throw UsageError{"--start = " + o.start + ": only with --coverage, --plot or --trace; valid: --coverage S --start T"};
   if (q.coverage) require_dwell_maps("coverage", o.coverage);  // refused now, not after the other numbers
-  Report r;
-  r.effective = m.has_offset();
-  const GravitySeries series = r.effective ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);
-  r.series = &series;
-  r.train = clinostat_train(m);
-  if (q.window || q.epsilon) worst_window_mean_cost(series);  // refuse a period too long up front
-  if (q.window) r.worst = worst_window_mean(series, *q.window);
-  if (q.epsilon) r.time_to = time_to_epsilon(series, *q.epsilon, q.resolution);
+  ClinostatReport r = clinostat_report(m, q);
   if (q.coverage) r.dwell = dwell_map_by_plugin(m.settings(), q.start, *q.coverage, q.nside);
   std::vector<std::string> written;
   if (!o.plot.empty()) {
-    write_output(o.plot, [&](std::ostream& out) { out << picture_bytes(plot_svg(m, series, r, q), o.plot); }, "--plot", kPictureOutputs);
+    write_output(o.plot, [&](std::ostream& out) { out << picture_bytes(plot_svg(r), o.plot); }, "--plot", kPictureOutputs);
     written.push_back(o.plot);
   }
   write_stdout_after_outputs(written, [&](std::ostream& out) {
-    if (o.json) out << report_json(r, q).dump(2) << "\n";
-    else write_report_text(out, m, r, q);
+    if (o.json) out << clinostat_report_json(r).dump(2) << "\n";
+    else write_clinostat_report_text(out, r);
   });
-  if ((r.worst && !r.worst->certified) || (r.time_to && !r.time_to->certified))
-    throw UncertifiedResult{"clinostat: " + std::string(r.worst && !r.worst->certified ? "the worst window mean's bracket is wider than 1e-9"
-                                                                                        : r.time_to->reason)};
+  if (!clinostat_report_certified(r)) throw UncertifiedResult{"clinostat: " + clinostat_report_uncertified(r)};
 }
 
 /// --trace: N samples over [start, start + duration], both ends included; CSV or .npy (by -o).

@@ -1,4 +1,4 @@
-// sphtroch synth points — every train through three precision points (synthesis/interval/precision_points.hpp),
+// sphtroch synth points — every train through three precision points (synthesis/precision_points.hpp),
 // each with its census (classify). Parsing and printing only. CGAL: a separate translation unit.
 #include "cli_common.hpp"
 #include "synth_ratios.hpp"

@@ -567,7 +567,7 @@ TEST_CASE("output suffixes: -o writes the format its suffix names or refuses it 
 TEST_CASE("chain: the near-coaxial chain of the hostile run has its 25 distinct crossings, certified", "[cli][chain]") {
   // twists 1, 1e-8, 1 with rates 1, 2, 3: 25 crossings at least 7.3e-9 apart near the pole. The
   // count is the exact crossings of a polyline of the same chain with a middle twist of 1e-5
-  // (test_chain_census: no event between), written here as the test's own expectation.
+  // (test_chain: no event between), written here as the test's own expectation.
   TempDir dir;
   const Result r = run("chain classify --twists 1,1e-8,1 --rates 1,2,3 --json", dir);
   REQUIRE(r.status == 0);

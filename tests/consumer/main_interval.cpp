@@ -1,7 +1,7 @@
 // A consumer of COMPONENTS interval (sphtroch::interval: CGAL's headers, no GMP or MPFR; configured
 // with CGAL's CMake package hidden): the certified precision points through three points of a
 // known train find that train, and the list is certified complete.
-#include <sphtroch/synthesis/interval/precision_points.hpp>
+#include <sphtroch/synthesis/precision_points.hpp>
 
 #include <cmath>
 #include <cstdio>

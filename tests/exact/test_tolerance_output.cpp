@@ -1,4 +1,4 @@
-// Tests of exact/tolerance_output.hpp and synthesis/interval/node_tolerance.hpp. Expected values:
+// Tests of exact/tolerance_output.hpp and tolerance/node_tolerance.hpp. Expected values:
 // classify() (certified) of trains drawn inside the box — every node of the nominal train has a
 // node of theirs within its proved max_displacement; central differences of classify() for the
 // sensitivities; the phase's rotation about Z (P(s; phase + d) = Rz(-d/n) P(s + d/n; phase)).

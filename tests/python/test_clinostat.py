@@ -203,6 +203,31 @@ def test_the_numbers_are_the_clis(case):
     assert cli["coverage"] == c.coverage_summary(duration, nside=nside, start=start)
 
 
+@pytest.mark.parametrize("case", CLI_CASES, ids=["1.33/2", "4/3,-2.5 tilted", "offset", "single axis", "resonance"])
+def test_the_report_is_the_clis_json_object(case):
+    """Clinostat.report() is `sphtroch clinostat --json`'s object itself: the same members, the same
+    doubles, with and without the options (the two front ends share no code above the library)."""
+    options, (args, kwargs), window, epsilon, resolution, duration, nside, start = case
+    c = sphtroch.Clinostat(*args, **kwargs)
+    assert c.report() == cli_json("clinostat", *options, "--json")
+    assert c.report(window=window) == cli_json("clinostat", *options, "--window", str(window), "--json")
+    full = cli_json("clinostat", *options, "--window", str(window), "--epsilon", str(epsilon), "--resolution", str(resolution),
+                    "--coverage", str(duration), "--nside", str(nside), f"--start={start}", "--json")
+    got = c.report(window=window, epsilon=epsilon, resolution=resolution, coverage=duration, nside=nside, start=start)
+    assert got == full
+    assert set(got) == {"train", "averaged", "period_s", "mean_over_period", "worst_window_mean", "time_to_epsilon",
+                        "coverage"} | ({"train_note"} if got["train"] is None else set())
+
+
+def test_the_report_refuses_as_the_cli_does():
+    c = sphtroch.Clinostat(1.33, 2)
+    for kwargs, field in (({"window": 0}, "window"), ({"epsilon": -1}, "epsilon"), ({"resolution": 2}, "resolution"),
+                          ({"coverage": 600, "nside": 3}, "nside")):
+        with pytest.raises(sphtroch.InvalidInput) as e:
+            c.report(**kwargs)
+        assert e.value.field == field
+
+
 def test_the_averages_follow_the_offset():
     centre, off = sphtroch.Clinostat(1.33, 2), sphtroch.Clinostat(1.33, 2, offset=(0.5, 0, 0))
     t = np.linspace(0, 100, 51)

@@ -82,7 +82,7 @@ struct ChainStage {
 };
 
 /// One twist (A) or phase (P) of stage `stage` (1-based) varied over [lo, hi] (radians): a
-/// one-parameter family of chains (`chain boundaries --vary`, map/chain_events.hpp).
+/// one-parameter family of chains (`chain boundaries --vary`, chain/chain_events.hpp).
 struct ChainVary {
   bool twist = true;
   std::size_t stage = 1;

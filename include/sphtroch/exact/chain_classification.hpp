@@ -3,7 +3,7 @@
 // A k = 2 chain with both rates not 0 is the gear train gear_train_of(chain)
 // (core/rotation_chain.hpp): its nodes and cusps are the train's (Analysis: `sphtroch classify`'s
 // root and polyline censuses, tangencies included), their parameters mapped to s in [0, period).
-// The chain census (census/interval/chain_census.hpp) of the train Analysis analyses (twists
+// The chain census (chain/chain_census.hpp) of the train Analysis analyses (twists
 // snapped onto a boundary within 1e-10, as classify reads them) runs beside them as a third
 // census, with a tenth of the box budget (a check: a tangency's boxes may stay undecided); a
 // certified chain census that disagrees leaves the answer not certified.
@@ -19,7 +19,7 @@
 #error "sphtroch/exact/chain_classification.hpp needs CGAL: link the CMake target sphtroch::exact"
 #endif
 
-#include "sphtroch/census/interval/chain_census.hpp"
+#include "sphtroch/chain/chain_census.hpp"
 #include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/exact/analysis.hpp"
 

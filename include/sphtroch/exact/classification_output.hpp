@@ -38,6 +38,7 @@
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/census/node_assembly.hpp"
+#include "sphtroch/census/node_json.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
@@ -117,8 +118,6 @@ inline std::string vec_text(const Vector3d& v) {
   return "(" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + ")";
 }
 
-inline nlohmann::json vec_json(const Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
-
 inline double longitude(const Vector3d& p) { return std::atan2(p.y(), p.x()); }
 inline double latitude(const Vector3d& p) { return std::asin(std::clamp(p.z(), -1.0, 1.0)); }
 
@@ -129,30 +128,6 @@ inline nlohmann::json inputs_json(const TrainText& text, const Classification& c
                       {"phase", in.phase_given()}, {"phase_reduced", in.phase()}, {"literal", c.literal}};
   if (!text.teeth.empty()) j["teeth"] = parse_teeth(text.teeth, "teeth").str();  // as given: 39:15, not 13:5
   return j;
-}
-
-inline nlohmann::json nodes_json(const std::vector<Node>& nodes) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const Node& n : nodes)
-    out.push_back({{"id", "N" + std::to_string(out.size() + 1)},  // the plot's label, the CSV's id
-                   {"position", vec_json(n.position)},
-                   {"longitude", longitude(n.position)},
-                   {"latitude", latitude(n.position)},
-                   {"params", n.params},
-                   {"branches", n.branches},
-                   {"kind", to_string(n.kind)},
-                   {"angle", n.angle},
-                   {"crossing_pairs", n.crossing_pairs},
-                   {"tangency_pairs", n.tangency_pairs}});
-  return out;
-}
-
-inline nlohmann::json cusps_json(const std::vector<Cusp>& cusps) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const Cusp& k : cusps)
-    out.push_back({{"id", "C" + std::to_string(out.size() + 1)}, {"position", vec_json(k.position)}, {"param", k.param},
-                   {"speed", k.speed}});
-  return out;
 }
 
 inline nlohmann::json boundaries_json(const Classification& c) {
@@ -168,7 +143,7 @@ inline nlohmann::json boundaries_json(const Classification& c) {
 inline nlohmann::json symmetry_json(const Symmetry& s) {
   nlohmann::json planes = nlohmann::json::array();
   for (const auto& p : s.planes)
-    planes.push_back({{"normal", vec_json(p.normal)}, {"azimuth", p.azimuth}, {"param_offset", p.param_offset}});
+    planes.push_back({{"normal", vector3_json(p.normal)}, {"azimuth", p.azimuth}, {"param_offset", p.param_offset}});
   return {{"rotation_order", s.rotation_order}, {"mirror_planes", planes}};
 }
 
@@ -378,8 +353,8 @@ inline void text_tolerances_and_work(std::ostream& out, const Classification& c)
 inline nlohmann::json z_extremes_json(const ZExtremes& z) {
   using nlohmann::json;
   json zmax = json::array(), zmin = json::array();
-  for (const auto& p : z.maxima) zmax.push_back({{"param", p.param}, {"position", report_detail::vec_json(p.position)}});
-  for (const auto& p : z.minima) zmin.push_back({{"param", p.param}, {"position", report_detail::vec_json(p.position)}});
+  for (const auto& p : z.maxima) zmax.push_back({{"param", p.param}, {"position", vector3_json(p.position)}});
+  for (const auto& p : z.minima) zmin.push_back({{"param", p.param}, {"position", vector3_json(p.position)}});
   return {{"z_max", z.z_max}, {"z_min", z.z_min}, {"maxima", zmax}, {"minima", zmin}};
 }
 
@@ -395,12 +370,10 @@ inline nlohmann::json root_classification_json(const RootClassification& c) {
           {"analytic_nodes", c.analytic_nodes ? nlohmann::json(*c.analytic_nodes) : nlohmann::json(nullptr)},
           {"analytic_cusps", c.analytic_cusps},
           {"agrees_with_report", c.agrees_with_report()},
-          {"node_points", report_detail::nodes_json(c.node_points)}};
+          {"node_points", node_list_json(c.node_points)}};
 }
 
 /// Nodes and cusps in the schema of classify --json's "nodes" and "cusps" (every census's report uses it).
-inline nlohmann::json node_list_json(const std::vector<Node>& nodes) { return report_detail::nodes_json(nodes); }
-inline nlohmann::json cusp_list_json(const std::vector<Cusp>& cusps) { return report_detail::cusps_json(cusps); }
 
 inline nlohmann::json classification_json(const TrainText& text, const Classification& c) {
   namespace d = report_detail;
@@ -414,8 +387,8 @@ inline nlohmann::json classification_json(const TrainText& text, const Classific
   j["certificate"] = d::certificate_json(c);
   j["counts"] = {{"nodes", c.nodes.size()}, {"cusps", c.cusps.size()}, {"crossings", c.crossings},
                  {"tangencies", c.tangencies}};
-  j["nodes"] = d::nodes_json(c.nodes);
-  j["cusps"] = d::cusps_json(c.cusps);
+  j["nodes"] = node_list_json(c.nodes);
+  j["cusps"] = cusp_list_json(c.cusps);
   j["cusp_within_resolution"] = c.cusp_within_resolution;
   j["boundaries"] = d::boundaries_json(c);
   j["z_extremes"] = z_extremes_json(c.z);
@@ -428,7 +401,7 @@ inline nlohmann::json classification_json(const TrainText& text, const Classific
   j["margin"] = topology_margin_json(topology_margin(c.snapped.train));
   j["dwell_points"] = nlohmann::json::array();
   for (const DwellPoint& p : c.dwell_points)
-    j["dwell_points"].push_back({{"param", p.param}, {"position", d::vec_json(p.position)}, {"speed", p.speed}});
+    j["dwell_points"].push_back({{"param", p.param}, {"position", vector3_json(p.position)}, {"speed", p.speed}});
   j["symmetry"] = d::symmetry_json(c.symmetry_planes);
   j["analytic"] = d::analytic_json(c.analytic);
   j["censuses"] = d::censuses_json(c);

@@ -34,7 +34,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/synthesis/interval/topology_margin.hpp"
+#include "sphtroch/tolerance/topology_margin.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <nlohmann/json.hpp>

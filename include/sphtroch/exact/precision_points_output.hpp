@@ -28,9 +28,9 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/synthesis/interval/free_axis_points.hpp"
-#include "sphtroch/synthesis/interval/precision_points.hpp"
-#include "sphtroch/synthesis/interval/topology_margin.hpp"
+#include "sphtroch/synthesis/free_axis_points.hpp"
+#include "sphtroch/synthesis/precision_points.hpp"
+#include "sphtroch/tolerance/topology_margin.hpp"
 
 #include <sstream>
 #include <string>

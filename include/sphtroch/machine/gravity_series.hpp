@@ -25,6 +25,7 @@
 // the axes are parallel; constant gravity (no period) when nothing turns it.
 #pragma once
 
+#include "sphtroch/core/portable_trig.hpp"
 #include "sphtroch/machine/clinostat.hpp"
 
 #include <algorithm>
@@ -131,7 +132,10 @@ class GravitySeries {
         largest = std::max(largest, f.norm());
         for (int j = 0; j < kGrid; ++j)
           for (int l = 0; l < kGrid; ++l) {
-            const std::complex<double> e = std::polar(1.0 / (kGrid * kGrid), -step * (j * x + l * y));
+            // polar(1/25, angle) with portable_trig.hpp's sines: the same bits natively and in the explorer
+            const SinCos<double> sc = sin_cos(-step * (j * x + l * y));
+            const double r = 1.0 / (kGrid * kGrid);
+            const std::complex<double> e(r * sc.cos, r * sc.sin);
             for (int c = 0; c < 3; ++c) coeff[j][l][c] += f[c] * e;
           }
       }

@@ -77,7 +77,7 @@ constexpr std::size_t kMaxLocusSteps = 10000;  // ~2 ms per step and core for p,
 /// this in a3 (radians).
 constexpr double kLocusJump = 0.25;
 
-/// cusp and triple_point: a rotation chain's events (census/interval/chain_family_events.hpp).
+/// cusp and triple_point: a rotation chain's events (chain/chain_family_events.hpp).
 enum class BoundaryEventKind { pitch_cone, pole, tangency, cusp, triple_point };
 inline const char* to_string(BoundaryEventKind k) {
   switch (k) {
