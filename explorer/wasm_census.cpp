@@ -24,31 +24,13 @@ namespace {
 /// censuses agree node for node, kind and branches included (census/node_sets.hpp).
 CensusCertificate page_certificate(const PageCensus& census) {
   const Reading reading;
-  RootCensusSettings rs;
-  rs.tangency_tolerance = reading.tangency();
-  PolylineCensusSettings ps;
-  ps.tangency_tolerance = reading.tangency();
-  return certified_census(census.analysed, ps, root_census(census.analysed, rs)).certificate;
+  return certified_census(census.analysed, polyline_census_settings(reading), root_census(census.analysed, root_census_settings(reading)))
+      .certificate;
 }
 
 }  // namespace
 
 bool page_certified(const PageCensus& census) { return page_certificate(census).certified; }
-
-/// The cusp stage of exact/analysis.hpp: the pitch-cone criterion's parameters, the point and
-/// speed there.
-std::vector<Cusp> cusps_of(const GearTrain& analysed) {
-  const TracerCurve<double> curve(analysed);
-  std::vector<Cusp> out;
-  for (const AnalyticCusp& a : pitch_cone_cusps(analysed, kCuspResolution)) {
-    Cusp k;
-    k.param = a.param;
-    k.position = curve.point(a.param);
-    k.speed = curve.velocity(a.param).norm();
-    out.push_back(k);
-  }
-  return out;
-}
 
 namespace {
 

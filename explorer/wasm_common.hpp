@@ -101,8 +101,6 @@ PageCensus page_census(const GearTrain& t);
 /// Whether `sphtroch classify` certifies the census's count (its rule: certified_census at the
 /// CLI's default settings, on the analysed train).
 bool page_certified(const PageCensus& census);
-/// The cusps of the analysed train as `sphtroch plot` and `sphtroch nodes` list them.
-std::vector<Cusp> cusps_of(const GearTrain& analysed);
 
 // --- the topics' exports (wasm_module.cpp calls each once) ---------------------------------------
 void register_train();

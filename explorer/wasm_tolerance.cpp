@@ -45,7 +45,7 @@ val tolerance(const std::string& a2, const std::string& a3, const std::string& n
     const ToleranceBox box{parse_angle(tol_a2, "tol-a2"), parse_angle(tol_a3, "tol-a3"), parse_angle(tol_phase, "tol-phase")};
     const PageCensus census = page_census(t);
     check_tolerance_box(census.analysed, box, {"tol-a2", "tol-a3", "tol-phase"});
-    const BoxTolerance r = box_tolerance(census.analysed, census.roots.node_points, cusps_of(census.analysed), box);
+    const BoxTolerance r = box_tolerance(census.analysed, census.roots.node_points, cusp_points(census.analysed), box);
     val margin = val::object();
     margin.set("lower", r.margin.lower);
     margin.set("upper", r.margin.upper);

@@ -92,7 +92,7 @@ val plot_svg(const std::string& a2, const std::string& a3, const std::string& n,
   return guarded([&] {
     const TrainText text = train_text(a2, a3, n, phase, teeth);
     const PageCensus census = page_census(text.train());
-    const std::vector<Cusp> cusps = cusps_of(census.analysed);
+    const std::vector<Cusp> cusps = cusp_points(census.analysed);
     PlotOptions options;
     options.markers = parse_mark_mode(markers);
     options.caption = plot_caption(text, census, cusps.size());

@@ -109,6 +109,7 @@
 
 #include "sphtroch/machine/clinostat.hpp"
 #include "sphtroch/machine/clinostat_design.hpp"
+#include "sphtroch/machine/clinostat_design_output.hpp"
 #include "sphtroch/machine/clinostat_plot.hpp"
 #include "sphtroch/machine/clinostat_report.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"

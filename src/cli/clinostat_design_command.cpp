@@ -3,9 +3,10 @@
 // to epsilon, coverage) (machine/clinostat_design.hpp does the work); a grid divided with
 // --shard I/K and its JSON parts joined back into the bytes of one run.
 //
-// One path makes both outputs: the rows as JSON (unranked, the pairs' order), then
-// ranked_output() ranks them and writes the whole; `merge` rebuilds the rows from the parts and
-// calls the same function, so a merged run equals the unsharded one byte for byte.
+// One path makes both outputs (machine/clinostat_design_output.hpp): the rows as JSON (unranked,
+// the pairs' order) with their ranks (structs), then design_run_json() ranks them and writes the
+// whole; `merge` rebuilds the rows and their ranks from the parts and calls the same function, so
+// a merged run equals the unsharded one byte for byte.
 #include "cli_common.hpp"
 #include "dwell_input.hpp"
 #include "shard_parts.hpp"
@@ -15,6 +16,7 @@
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/machine/clinostat_design.hpp"
+#include "sphtroch/machine/clinostat_design_output.hpp"
 #include "sphtroch/machine/clinostat_text.hpp"
 
 #include <nlohmann/json.hpp>
@@ -78,17 +80,6 @@ DesignRequest read_design_request(const DesignOptions& o) {
   return r;
 }
 
-nlohmann::json request_json(const DesignRequest& r) {
-  const auto range = [](const SpeedRange& s) { return s.lo.str() + ":" + s.hi.str(); };
-  nlohmann::json j = {{"outer", range(r.outer)}, {"inner", range(r.inner)}, {"step", r.outer.step.str()},
-                      {"tilt", r.tilt_deg}, {"frame_angle", r.frame_angle_deg}, {"window_s", r.window_s},
-                      {"epsilon", r.epsilon}, {"resolution_s", r.resolution_s}};
-  j["coverage_s"] = r.coverage_s ? nlohmann::json(*r.coverage_s) : nlohmann::json(nullptr);
-  j["nside"] = r.nside;
-  j["teeth"] = r.teeth ? nlohmann::json(r.teeth->str()) : nlohmann::json(nullptr);
-  return j;
-}
-
 /// The request a part or a run names, read back from its JSON (as a run writes it).
 DesignRequest request_from_json(const nlohmann::json& j) {
   DesignOptions o;
@@ -106,97 +97,9 @@ DesignRequest request_from_json(const nlohmann::json& j) {
   o.tilt = number_text(j.at("tilt").get<double>());
   o.frame_angle = number_text(j.at("frame_angle").get<double>());
   const DesignRequest r = read_design_request(o);
-  if (request_json(r).dump() != j.dump())  // as text: 90 and 90.0 compare equal as numbers
+  if (design_request_json(r).dump() != j.dump())  // as text: 90 and 90.0 compare equal as numbers
     throw InvalidInput("shard", "\"request\" " + brief_json(j), "not written as the run writes it", "the request of sphtroch clinostat design");
   return r;
-}
-
-nlohmann::json or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-
-nlohmann::json row_json(const DesignRow& row) {
-  nlohmann::json j = {{"outer", row.pair.outer.str()}, {"inner", row.pair.inner.str()}};
-  j["n"] = row.n.empty() ? nlohmann::json(nullptr) : nlohmann::json(row.n);
-  if (row.pair.teeth) j["teeth"] = row.pair.teeth->str();
-  j["period_s"] = or_null(row.period_s);
-  j["mean_over_period"] = row.period_mean;
-  j["worst_window_mean"] = row.worst ? nlohmann::json{{"lower", row.worst->lower}, {"upper", row.worst->upper}} : nlohmann::json(nullptr);
-  j["first_s"] = row.time_to ? or_null(row.time_to->first_s) : nlohmann::json(nullptr);
-  j["stays_below_from_s"] = row.time_to ? or_null(row.time_to->stays_below_from_s) : nlohmann::json(nullptr);
-  j["coverage"] = or_null(row.coverage);
-  j["dwell_cv"] = or_null(row.dwell_cv);
-  j["certified"] = row.decided();
-  std::string reason = !row.refused.empty() ? row.refused : row.time_to ? row.time_to->reason : std::string();
-  if (reason.empty() && row.worst && !row.worst->certified)
-    reason = "M(W)'s bracket [" + number_text(row.worst->lower) + ", " + number_text(row.worst->upper) + "] is wider than 1e-9";
-  j["reason"] = reason;
-  return j;
-}
-
-/// What the ranking reads of a row's JSON.
-DesignRank rank_of(const nlohmann::json& row) {
-  DesignRank k;
-  k.outer = parse_rpm(row.at("outer").get<std::string>(), "outer").value();
-  k.inner = parse_rpm(row.at("inner").get<std::string>(), "inner").value();
-  if (!row.at("certified").get<bool>()) return k;
-  k.group = row.at("stays_below_from_s").is_null() ? 1 : 0;
-  if (k.group == 0) {
-    k.stays_s = row.at("stays_below_from_s").get<double>();
-    k.first_s = row.at("first_s").get<double>();
-  }
-  k.coverage = row.at("coverage").is_null() ? -1 : row.at("coverage").get<double>();
-  return k;
-}
-
-/// The whole run's JSON from its rows in the pairs' order: ranked, counted, the Pareto front.
-nlohmann::json ranked_output(const nlohmann::json& request, const std::vector<nlohmann::json>& rows) {
-  std::vector<std::size_t> order(rows.size());
-  std::vector<DesignRank> ranks;
-  for (const nlohmann::json& r : rows) ranks.push_back(rank_of(r));
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return design_less(ranks[a], ranks[b]); });
-  std::vector<DesignRank> ranked;
-  nlohmann::json out_rows = nlohmann::json::array();
-  std::size_t groups[3] = {0, 0, 0};
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    ranked.push_back(ranks[order[k]]);
-    ++groups[ranks[order[k]].group];
-    nlohmann::json row = rows[order[k]];
-    row["rank"] = k + 1;
-    out_rows.push_back(row);
-  }
-  nlohmann::json front = nlohmann::json::array();
-  for (const std::size_t k : pareto_front(ranked)) front.push_back(k + 1);
-  return {{"request", request}, {"pairs", rows.size()}, {"reach_epsilon", groups[0]}, {"never_below", groups[1]},
-          {"undecided", groups[2]}, {"certified", groups[2] == 0}, {"pareto", front}, {"rows", out_rows}};
-}
-
-std::string cell(const nlohmann::json& v) { return v.is_null() ? "-" : v.is_string() ? v.get<std::string>() : number_text(v.get<double>()); }
-
-void write_design_text(std::ostream& out, const nlohmann::json& run, std::size_t top) {
-  const nlohmann::json& q = run.at("request");
-  out << "clinostat design: " << run.at("pairs").get<std::size_t>() << " speed pairs (outer " << cell(q.at("outer")) << ", inner "
-      << cell(q.at("inner")) << " rpm, step " << cell(q.at("step")) << " rpm" << (q.at("teeth").is_null() ? "" : ", gear-driven, teeth " + cell(q.at("teeth")))
-      << "), tilt " << cell(q.at("tilt")) << " deg, frame angle " << cell(q.at("frame_angle")) << " deg\n"
-      << "epsilon " << cell(q.at("epsilon")) << " g0 (windows in steps of " << cell(q.at("resolution_s")) << " s): "
-      << run.at("reach_epsilon").get<std::size_t>() << " pairs reach it, " << run.at("never_below").get<std::size_t>()
-      << " never do (the mean over a period is above it), " << run.at("undecided").get<std::size_t>() << " not certified\n"
-      << "rank  outer  inner  n  period_s  M(" << cell(q.at("window_s")) << " s) upper  first_s  stays_below_from_s"
-      << (q.at("coverage_s").is_null() ? "" : "  coverage(" + cell(q.at("coverage_s")) + " s)") << "\n";
-  const nlohmann::json& rows = run.at("rows");
-  for (std::size_t k = 0; k < rows.size() && k < top; ++k) {
-    const nlohmann::json& r = rows[k];
-    out << r.at("rank").get<std::size_t>() << "  " << cell(r.at("outer")) << "  " << cell(r.at("inner")) << "  " << cell(r.at("n"))
-        << (r.contains("teeth") ? " (teeth " + cell(r.at("teeth")) + ")" : "") << "  " << cell(r.at("period_s")) << "  "
-        << (r.at("worst_window_mean").is_null() ? "-" : cell(r.at("worst_window_mean").at("upper"))) << "  " << cell(r.at("first_s"))
-        << "  " << cell(r.at("stays_below_from_s")) << (q.at("coverage_s").is_null() ? "" : "  " + cell(r.at("coverage")))
-        << (r.at("certified").get<bool>() ? "" : "  NOT CERTIFIED: " + r.at("reason").get<std::string>()) << "\n";
-  }
-  if (rows.size() > top) out << "... " << rows.size() - top << " more (--top N, or --json for every pair)\n";
-  if (!q.at("coverage_s").is_null()) {
-    out << "Pareto front (shorter time to epsilon, larger coverage): ranks";
-    for (const auto& k : run.at("pareto")) out << " " << k.get<std::size_t>();
-    out << "\n";
-  }
 }
 
 void finish_run(const nlohmann::json& run, const std::string& output, bool json, std::size_t top) {
@@ -241,16 +144,18 @@ void run_design(const DesignOptions& o) {
   const auto [begin, end] = shard ? shard_range(all.size(), *shard) : std::pair<std::size_t, std::size_t>{0, all.size()};
   const std::size_t top = o.top.empty() ? 20 : parse_count(o.top, "top", 1, kMaxDesignPairs);
   std::vector<nlohmann::json> rows(end - begin);
+  std::vector<DesignRank> ranks(rows.size());
   std::vector<std::string> refused_by(rows.size());  // the option a row's refusal names ("" for none)
   parallel_for(rows.size(), parse_threads(o.threads), [&](std::size_t k) {
     const DesignRow row = evaluate_pair(r, all[begin + k]);
     // A pair whose mean over a period is above epsilon never searches: neutral ("-").
     refused_by[k] = row.refused.empty() && row.time_to && !row.time_to->first_s && row.time_to->certified ? "-" : row.refused_field;
-    rows[k] = row_json(row);
+    rows[k] = design_row_json(row);
+    ranks[k] = design_rank(row);
   });
   refuse_option_every_pair_refuses(o, refused_by, rows);
-  if (!shard) return finish_run(ranked_output(request_json(r), rows), o.output, o.json, top);
-  nlohmann::json part = {{"request", request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
+  if (!shard) return finish_run(design_run_json(design_request_json(r), rows, ranks), o.output, o.json, top);
+  nlohmann::json part = {{"request", design_request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
   write_output(o.output, [&](std::ostream& out) { out << signed_part(part.dump(2) + "\n"); });
   std::size_t undecided = 0;
   for (const nlohmann::json& row : rows) undecided += row.at("certified").get<bool>() ? 0 : 1;
@@ -382,7 +287,9 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output,
   check_shard_set(names);
   std::vector<nlohmann::json> rows;
   for (const DesignPart& p : parts) rows.insert(rows.end(), p.rows.begin(), p.rows.end());
-  finish_run(ranked_output(parts[0].request, rows), output, json, top);
+  std::vector<DesignRank> ranks;
+  for (const nlohmann::json& row : rows) ranks.push_back(design_rank_of_json(row));  // the rows were checked as written
+  finish_run(design_run_json(parts[0].request, rows, ranks), output, json, top);
 }
 
 }  // namespace

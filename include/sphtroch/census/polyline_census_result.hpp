@@ -9,6 +9,7 @@
 
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
+#include "sphtroch/core/reading.hpp"
 #include "sphtroch/census/node_assembly.hpp"
 #include "sphtroch/core/sampling.hpp"
 
@@ -27,6 +28,15 @@ struct PolylineCensusSettings {
   /// dense samples around near-cusp parameters.
   unsigned escalation = 0;
 };
+
+/// The polyline census's settings for a reading (core/reading.hpp): its tangency tolerance and
+/// `samples` (0: census_sample_count), as classify and the explorer run it.
+inline PolylineCensusSettings polyline_census_settings(const Reading& reading, std::size_t samples = 0) {
+  PolylineCensusSettings ps;
+  ps.samples = samples;
+  ps.tangency_tolerance = reading.tangency();
+  return ps;
+}
 
 /// Work of one census, counted exactly where it is done.
 struct PolylineWork {

@@ -56,6 +56,7 @@
 #include "sphtroch/map/root_function.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/parameters.hpp"
+#include "sphtroch/core/reading.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/census/node_assembly.hpp"
 #include "sphtroch/core/pitch_cone.hpp"
@@ -80,6 +81,13 @@ struct RootCensusSettings {
   /// |g - m| at a stationary point below which it is a tangency. literal mode: the error bound.
   double tangency_tolerance = kTangencyTolerance;
 };
+
+/// The root census's settings for a reading (core/reading.hpp), as classify and the explorer run it.
+inline RootCensusSettings root_census_settings(const Reading& reading) {
+  RootCensusSettings rs;
+  rs.tangency_tolerance = reading.tangency();
+  return rs;
+}
 
 /// One root of g on (0, pi).
 struct NodeRoot {

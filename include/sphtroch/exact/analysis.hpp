@@ -373,9 +373,7 @@ inline const PolylineCensus& Analysis::polyline_census() const {
   if (!polyline_census_) {
     root_census();
     run_stage(Stage::polyline_census, [&](StageWork& w) {
-      PolylineCensusSettings ps;
-      ps.samples = settings_.census_samples;
-      ps.tangency_tolerance = settings_.reading.tangency();
+      const PolylineCensusSettings ps = polyline_census_settings(settings_.reading, settings_.census_samples);
 #if defined(SPHTROCH_FAULT_INJECTION)
       // Test seam, compiled only into tests' sphtroch_fault (tests/CMakeLists.txt), never into the
       // tool or the library's users: a root census missing its last node stands for a disagreement
@@ -415,16 +413,8 @@ inline const std::vector<Node>& Analysis::nodes() const {
 inline const std::vector<Cusp>& Analysis::cusps() const {
   if (!cusps_)
     run_stage(Stage::cusps, [&](StageWork& w) {
-      // Cusps from the pitch-cone criterion, verified by the velocity.
-      const TracerCurve<double> curve(analysed());
-      std::vector<Cusp> out;
-      for (const AnalyticCusp& a : pitch_cone_cusps(analysed(), kCuspResolution)) {
-        Cusp k;
-        k.param = a.param;
-        k.position = curve.point(a.param);
-        k.speed = curve.velocity(a.param).norm();
-        out.push_back(k);
-      }
+      // Cusps from the pitch-cone criterion, verified by the velocity (map/criteria.hpp).
+      std::vector<Cusp> out = cusp_points(analysed());
       w.points_evaluated = 2 * out.size();
       cusps_ = std::move(out);
     });
@@ -434,8 +424,7 @@ inline const std::vector<Cusp>& Analysis::cusps() const {
 inline const RootCensus& Analysis::root_census() const {
   if (!root_)
     run_stage(Stage::root_census, [&](StageWork& w) {
-      RootCensusSettings rs;
-      rs.tangency_tolerance = settings_.reading.tangency();
+      const RootCensusSettings rs = root_census_settings(settings_.reading);
       root_ = sphtroch::root_census(analysed(), rs);
       w.root_evaluations = root_->evaluations;
       w.points_evaluated = assembly_evaluations(root_->nodes);  // velocities of node assembly

@@ -30,9 +30,11 @@
 #pragma once
 
 #include "sphtroch/map/closed_form_boundaries.hpp"
+#include "sphtroch/core/curve.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/parameters.hpp"
+#include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/core/types.hpp"
 
@@ -117,6 +119,10 @@ inline std::vector<AnalyticNode> nodes_eq44b(const GearTrain& train, double tole
 /// On a cone within tolerance but not exactly, the positions are those of the exact cone
 /// (the curve passes within O(margin) of them).
 inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double tolerance = kBoundaryTolerance);
+
+/// The cusps as every report lists them (classify, plot, nodes, the explorer): pitch_cone_cusps at
+/// kCuspResolution, each with its point on the curve and the speed there (which verifies it).
+inline std::vector<Cusp> cusp_points(const GearTrain& analysed);
 
 /// Everything above in one result.
 struct AnalyticClassification {
@@ -510,6 +516,19 @@ inline AnalyticClassification classify_analytic(const GearTrain& train, double t
     a.curve_class = a.cusps.empty() ? "no cusps (nodes not predicted)" : "cusps (nodes not predicted)";
   }
   return a;
+}
+
+inline std::vector<Cusp> cusp_points(const GearTrain& analysed) {
+  const TracerCurve<double> curve(analysed);
+  std::vector<Cusp> out;
+  for (const AnalyticCusp& a : pitch_cone_cusps(analysed, kCuspResolution)) {
+    Cusp k;
+    k.param = a.param;
+    k.position = curve.point(a.param);
+    k.speed = curve.velocity(a.param).norm();
+    out.push_back(k);
+  }
+  return out;
 }
 
 }  // namespace sphtroch
