@@ -2,8 +2,12 @@
 //
 //   std::vector<sphtroch::Node> nodes = sphtroch::assemble_nodes(pairs, curve);  // pairs: BranchPair of any census
 //
-// Pairs whose points lie within `merge_distance` of each other are one node (a point where
-// k branches meet yields up to k(k-1)/2 pairs, one node). A node is a `crossing` when at least
+// One BranchPair for every census; two ways to group pairs into nodes. assemble_nodes (the gear
+// train's root and polyline censuses): pairs whose points lie within `merge_distance` of each
+// other are one node (a point where k branches meet yields up to k(k-1)/2 pairs, one node).
+// assemble_nodes_of_branches (the chain census, whose pairs carry certified enclosures of their
+// parameters): parameters whose enclosures overlap are one branch, and pairs sharing a branch
+// are one node. A node is a `crossing` when at least
 // one of its pairs crosses, a `tangency` when every pair only touches. Its `angle` is the
 // largest angle between the tangent lines of two of its branches.
 #pragma once
@@ -16,18 +20,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <numeric>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace sphtroch {
 
+/// An enclosure [lo, hi] of a branch parameter.
+struct ParamEnclosure {
+  double lo = 0.0, hi = 0.0;
+};
+
 /// One pair of branches through one point.
 struct BranchPair {
-  double t1 = 0.0;  // theta2 of the first branch, [0, period)
-  double t2 = 0.0;  // theta2 of the second branch, [0, period), != t1
-  Vector3d position = Vector3d::Zero();
+  double t1 = 0.0;  // the first branch's parameter (theta2 of a gear train, in [0, period))
+  double t2 = 0.0;  // the second branch's, != t1
+  Vector3d position = Vector3d::Zero();  // the point (assemble_nodes; assemble_nodes_of_branches takes it from the curve)
   NodeKind kind = NodeKind::crossing;
+  ParamEnclosure t1_range, t2_range;  // certified enclosures of t1 and t2 (assemble_nodes_of_branches)
 };
+
+/// x reduced to [0, period): a branch parameter in one period.
+inline double reduce_param(double x, double period) {
+  double r = x - period * std::floor(x / period);
+  if (r >= period || r < 0) r = 0;
+  return r;
+}
 
 /// Default distance (chord, radians for small values) under which two pair points are one node.
 /// Node positions are accurate to ~1e-15 for transversal crossings; multi-branch points found
@@ -125,6 +146,93 @@ inline std::vector<Node> assemble_nodes(const std::vector<BranchPair>& pairs, co
   }
   // Deterministic order: by the first branch parameter.
   std::sort(nodes.begin(), nodes.end(), [](const Node& a, const Node& b) { return a.params.front() < b.params.front(); });
+  return nodes;
+}
+
+/// A branch parameter reduced to [0, T) with its enclosure shifted alike (padded by the reduction's
+/// rounding, 4 ulp of max(1, T)).
+struct BranchParam {
+  double value = 0, lo = 0, hi = 0;
+};
+inline BranchParam reduced_branch(double value, const ParamEnclosure& enclosure, double period) {
+  const double r = reduce_param(value, period), shift = value - r;
+  const double pad = 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, period);
+  return {r, std::min(enclosure.lo, value) - shift - pad, std::max(enclosure.hi, value) - shift + pad};
+}
+
+/// Parameters whose enclosures overlap (circularly, mod T) as one branch: the cluster index of
+/// each. Enclosures that are disjoint are distinct branches, however close (the certified
+/// enclosures of Krawczyk's roots are a few ulp wide); overlapping ones cannot be told apart.
+inline std::vector<std::size_t> branch_clusters(const std::vector<BranchParam>& params, double period) {
+  const std::size_t n = params.size();
+  std::vector<std::size_t> order(n), cluster(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return params[a].lo < params[b].lo; });
+  std::size_t current = 0;
+  double reach = -std::numeric_limits<double>::infinity();  // the largest hi of the current cluster
+  for (std::size_t k = 0; k < n; ++k) {
+    const BranchParam& p = params[order[k]];
+    if (k > 0 && p.lo > reach) ++current, reach = -std::numeric_limits<double>::infinity();
+    reach = std::max(reach, p.hi);
+    cluster[order[k]] = current;
+  }
+  const bool wraps = current > 0 && reach >= params[order[0]].lo + period;
+  if (wraps && current > 0)  // the wrap: the last cluster is the first
+    for (std::size_t k = 0; k < n; ++k)
+      if (cluster[k] == current) cluster[k] = 0;
+  return cluster;
+}
+
+/// Nodes from branch pairs with certified parameter enclosures (the chain census): parameters
+/// clustered into branches by their enclosures (branch_clusters), pairs joined into points by the
+/// branches they share; a point of m branches must have m (m - 1) / 2 pairs (else `why` is set);
+/// its position is the mean of its branches' points, negated when `negated`. Curve: anything with
+/// point(s) and velocity(s) (ChainCurve<double>).
+template <class Curve>
+std::vector<Node> assemble_nodes_of_branches(const Curve& curve, const std::vector<BranchPair>& pairs, double period, bool negated,
+                                             std::string& why) {
+  std::vector<BranchParam> params;
+  for (const BranchPair& p : pairs) params.push_back(reduced_branch(p.t1, p.t1_range, period)), params.push_back(reduced_branch(p.t2, p.t2_range, period));
+  const std::vector<std::size_t> cluster = branch_clusters(params, period);
+  std::size_t clusters = 0;
+  for (const std::size_t c : cluster) clusters = std::max(clusters, c + 1);
+  std::vector<std::size_t> parent(clusters);
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto find = [&](std::size_t x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
+  std::vector<std::tuple<std::size_t, std::size_t, bool>> edges;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    std::size_t a = cluster[2 * k], b = cluster[2 * k + 1];
+    if (a == b) { why = "a node's two branches have the same parameter"; continue; }
+    edges.emplace_back(std::min(a, b), std::max(a, b), pairs[k].kind == NodeKind::tangency);
+    parent[find(a)] = find(b);
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());  // the same pair found twice
+  std::vector<double> value(clusters, 0.0);
+  for (std::size_t k = 0; k < params.size(); ++k) value[cluster[k]] = params[k].value;
+  std::vector<Node> nodes;
+  std::vector<std::size_t> node_of(clusters, SIZE_MAX);
+  for (const auto& [a, b, touching] : edges) {
+    const std::size_t root = find(a);
+    if (node_of[root] == SIZE_MAX) node_of[root] = nodes.size(), nodes.emplace_back();
+    Node& n = nodes[node_of[root]];
+    for (const std::size_t c : {a, b})
+      if (std::find(n.params.begin(), n.params.end(), value[c]) == n.params.end()) n.params.push_back(value[c]);
+    ++(touching ? n.tangency_pairs : n.crossing_pairs);
+    n.angle = std::max(n.angle, tangent_line_angle(curve.velocity(value[a]), curve.velocity(value[b])));
+  }
+  for (Node& n : nodes) {
+    std::sort(n.params.begin(), n.params.end());
+    n.branches = n.params.size();
+    n.kind = n.crossing_pairs > 0 ? NodeKind::crossing : NodeKind::tangency;
+    if (n.crossing_pairs + n.tangency_pairs != n.branches * (n.branches - 1) / 2) why = "a node's branches do not all meet pairwise";
+    else if (n.branches > 2 && why.empty())  // pairwise roots a few ulp apart: one point, or crossings closer than double tells
+      why = "a node of " + std::to_string(n.branches) + " branches is not proved one point (its pairs' roots agree to the rounding of double)";
+    Vector3d sum = Vector3d::Zero();
+    for (const double p : n.params) sum += curve.point(p);
+    n.position = (negated ? -1.0 : 1.0) * sum.normalized();
+  }
+  std::sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) { return x.params.front() < y.params.front(); });
   return nodes;
 }
 

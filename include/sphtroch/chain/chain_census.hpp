@@ -52,6 +52,7 @@
 
 #include "sphtroch/chain/chain_box_search.hpp"
 #include "sphtroch/chain/chain_tangency.hpp"
+#include "sphtroch/census/node_assembly.hpp"
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/number_text.hpp"
@@ -105,12 +106,6 @@ struct ChainCensus {
   std::size_t arcs = 0, arc_pairs = 0, boxes = 0, undecided = 0;
 };
 
-/// x reduced to [0, period): the census's parameters (and the k = 2 dispatch's, chain_classification.hpp).
-inline double reduce_param(double x, double period) {
-  double r = x - period * std::floor(x / period);
-  if (r >= period || r < 0) r = 0;
-  return r;
-}
 
 namespace chain_census_detail {
 
@@ -258,12 +253,17 @@ inline std::optional<CuspZone> near_cusp(const ChainCurve<double>& curve, const 
 }
 
 /// What the searches found, before assembly: branch pairs (s, t) and cusps.
-/// Two branch parameters that meet, and whether they only touch.
-struct BranchPair {
-  double a = 0, b = 0;
-  bool tangency = false;
-  Interval a_range{0.0}, b_range{0.0};  // the two parameters enclosed (over a family too)
-};
+/// A found root as census/node_assembly.hpp's BranchPair: parameters a, b with their certified
+/// enclosures (over a family too); touching: the two branches only touch.
+inline BranchPair chain_pair(double a, double b, bool touching, const Interval& a_range, const Interval& b_range) {
+  BranchPair p;
+  p.t1 = a;
+  p.t2 = b;
+  p.kind = touching ? NodeKind::tangency : NodeKind::crossing;
+  p.t1_range = {a_range.inf(), a_range.sup()};
+  p.t2_range = {b_range.inf(), b_range.sup()};
+  return p;
+}
 
 struct Findings {
   std::vector<BranchPair> pairs;
@@ -294,99 +294,10 @@ inline void search_window(const std::vector<Arc>& arcs, std::size_t i, const Cha
   std::vector<FoundRoot> roots;
   search_box(sys, Box2{a.s, Interval(0.0, end - a.s.inf())}, drop, f.work, roots);
   for (const FoundRoot& r : roots)
-    if (r.v > 0) f.pairs.push_back({r.u, r.u + r.v, false, r.enclosure.u, r.enclosure.u + r.enclosure.v});
+    if (r.v > 0) f.pairs.push_back(chain_pair(r.u, r.u + r.v, false, r.enclosure.u, r.enclosure.u + r.enclosure.v));
 }
 
 
-
-/// A branch parameter reduced to [0, T) with its enclosure shifted alike (padded by the reduction's
-/// rounding, 4 ulp of max(1, T)).
-struct BranchParam {
-  double value = 0, lo = 0, hi = 0;
-};
-inline BranchParam reduced_branch(double value, const Interval& enclosure, double period) {
-  const double r = reduce_param(value, period), shift = value - r;
-  const double pad = 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, period);
-  return {r, std::min(enclosure.inf(), value) - shift - pad, std::max(enclosure.sup(), value) - shift + pad};
-}
-
-/// Parameters whose enclosures overlap (circularly, mod T) as one branch: the cluster index of
-/// each. Enclosures that are disjoint are distinct branches, however close (the certified
-/// enclosures of Krawczyk's roots are a few ulp wide); overlapping ones cannot be told apart.
-inline std::vector<std::size_t> branch_clusters(const std::vector<BranchParam>& params, double period) {
-  const std::size_t n = params.size();
-  std::vector<std::size_t> order(n), cluster(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return params[a].lo < params[b].lo; });
-  std::size_t current = 0;
-  double reach = -std::numeric_limits<double>::infinity();  // the largest hi of the current cluster
-  for (std::size_t k = 0; k < n; ++k) {
-    const BranchParam& p = params[order[k]];
-    if (k > 0 && p.lo > reach) ++current, reach = -std::numeric_limits<double>::infinity();
-    reach = std::max(reach, p.hi);
-    cluster[order[k]] = current;
-  }
-  const bool wraps = current > 0 && reach >= params[order[0]].lo + period;
-  if (wraps && current > 0)  // the wrap: the last cluster is the first
-    for (std::size_t k = 0; k < n; ++k)
-      if (cluster[k] == current) cluster[k] = 0;
-  return cluster;
-}
-
-/// The angle between the tangent lines of two branches, in [0, pi/2].
-inline double tangent_angle(const Vector3d& a, const Vector3d& b) {
-  const double c = std::fabs(a.dot(b)) / (a.norm() * b.norm());
-  return std::acos(std::min(1.0, c));
-}
-
-/// Nodes from the branch pairs: parameters clustered into branches, pairs joined into points; a
-/// point of m branches must have m (m - 1) / 2 pairs (else `why` is set).
-inline std::vector<Node> assemble_nodes(const ChainCurve<double>& curve, const std::vector<BranchPair>& pairs, double period,
-                                        bool negated, std::string& why) {
-  std::vector<BranchParam> params;
-  for (const BranchPair& p : pairs) params.push_back(reduced_branch(p.a, p.a_range, period)), params.push_back(reduced_branch(p.b, p.b_range, period));
-  const std::vector<std::size_t> cluster = branch_clusters(params, period);
-  std::size_t clusters = 0;
-  for (const std::size_t c : cluster) clusters = std::max(clusters, c + 1);
-  std::vector<std::size_t> parent(clusters);
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
-  const auto find = [&](std::size_t x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
-  std::vector<std::tuple<std::size_t, std::size_t, bool>> edges;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    std::size_t a = cluster[2 * k], b = cluster[2 * k + 1];
-    if (a == b) { why = "a node's two branches have the same parameter"; continue; }
-    edges.emplace_back(std::min(a, b), std::max(a, b), pairs[k].tangency);
-    parent[find(a)] = find(b);
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());  // the same pair found twice
-  std::vector<double> value(clusters, 0.0);
-  for (std::size_t k = 0; k < params.size(); ++k) value[cluster[k]] = params[k].value;
-  std::vector<Node> nodes;
-  std::vector<std::size_t> node_of(clusters, SIZE_MAX);
-  for (const auto& [a, b, touching] : edges) {
-    const std::size_t root = find(a);
-    if (node_of[root] == SIZE_MAX) node_of[root] = nodes.size(), nodes.emplace_back();
-    Node& n = nodes[node_of[root]];
-    for (const std::size_t c : {a, b})
-      if (std::find(n.params.begin(), n.params.end(), value[c]) == n.params.end()) n.params.push_back(value[c]);
-    ++(touching ? n.tangency_pairs : n.crossing_pairs);
-    n.angle = std::max(n.angle, tangent_angle(curve.velocity(value[a]), curve.velocity(value[b])));
-  }
-  for (Node& n : nodes) {
-    std::sort(n.params.begin(), n.params.end());
-    n.branches = n.params.size();
-    n.kind = n.crossing_pairs > 0 ? NodeKind::crossing : NodeKind::tangency;
-    if (n.crossing_pairs + n.tangency_pairs != n.branches * (n.branches - 1) / 2) why = "a node's branches do not all meet pairwise";
-    else if (n.branches > 2 && why.empty())  // pairwise roots a few ulp apart: one point, or crossings closer than double tells
-      why = "a node of " + std::to_string(n.branches) + " branches is not proved one point (its pairs' roots agree to the rounding of double)";
-    Vector3d sum = Vector3d::Zero();
-    for (const double p : n.params) sum += curve.point(p);
-    n.position = (negated ? -1.0 : 1.0) * sum.normalized();
-  }
-  std::sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) { return x.params.front() < y.params.front(); });
-  return nodes;
-}
 
 /// The cusps, reduced mod T, each once, by parameter.
 inline std::vector<Cusp> assemble_cusps(const ChainCurve<double>& curve, const std::vector<CuspZone>& zones, double period, double zone,
@@ -468,7 +379,7 @@ inline Findings search_chain(const RotationChain& chain, const std::vector<Arc>&
     if (!undecided.empty()) resolve_undecided(e, undecided, local, f.work);
     roots.insert(roots.end(), local.begin(), local.end());
   }
-  for (const FoundRoot& r : roots) f.pairs.push_back({r.u, r.v, r.tangency, r.enclosure.u, r.enclosure.v});
+  for (const FoundRoot& r : roots) f.pairs.push_back(chain_pair(r.u, r.v, r.tangency, r.enclosure.u, r.enclosure.v));
   return f;
 }
 
@@ -480,16 +391,16 @@ namespace chain_census_detail {
 inline double arcs_needed(const RotationChain& reduced) { return std::ceil(reduced.period() * total_rate(reduced) / kChainArcTurn); }
 
 /// Whether two parameter ranges meet modulo T (padded by 1e-12 max(1, T) for the reduction).
-inline bool ranges_meet(const Interval& x, const Interval& y, double period) {
+inline bool ranges_meet(const ParamEnclosure& x, const ParamEnclosure& y, double period) {
   const double pad = 1e-12 * std::max(1.0, period);
-  const double shift = period * std::round((mid(x) - mid(y)) / period);  // y's copy nearest x
-  return y.inf() + shift - pad <= x.sup() && x.inf() <= y.sup() + shift + pad;
+  const double shift = period * std::round((0.5 * (x.lo + x.hi) - 0.5 * (y.lo + y.hi)) / period);  // y's copy nearest x
+  return y.lo + shift - pad <= x.hi && x.lo <= y.hi + shift + pad;
 }
 
 /// Whether two pairs' ranges meet branch by branch, in either order: the same pair.
 inline bool same_pair(const BranchPair& x, const BranchPair& y, double period) {
-  return (ranges_meet(x.a_range, y.a_range, period) && ranges_meet(x.b_range, y.b_range, period)) ||
-         (ranges_meet(x.a_range, y.b_range, period) && ranges_meet(x.b_range, y.a_range, period));
+  return (ranges_meet(x.t1_range, y.t1_range, period) && ranges_meet(x.t2_range, y.t2_range, period)) ||
+         (ranges_meet(x.t1_range, y.t2_range, period) && ranges_meet(x.t2_range, y.t1_range, period));
 }
 
 /// The pairs with each found twice kept once (a family's roots found from two boxes differ by
@@ -511,9 +422,9 @@ inline bool pairs_may_meet(const std::vector<BranchPair>& pairs, double period) 
   };
   std::vector<Range> ranges;
   for (std::size_t i = 0; i < pairs.size(); ++i)
-    for (const Interval& r : {pairs[i].a_range, pairs[i].b_range}) {
-      const double shift = period * std::floor(r.inf() / period);
-      const double lo = r.inf() - shift, hi = r.sup() - shift;
+    for (const ParamEnclosure& r : {pairs[i].t1_range, pairs[i].t2_range}) {
+      const double shift = period * std::floor(r.lo / period);
+      const double lo = r.lo - shift, hi = r.hi - shift;
       ranges.push_back({lo, hi, i});
       if (hi > period) ranges.push_back({lo - period, hi - period, i});
     }
@@ -552,9 +463,9 @@ inline ChainCensus census_of_reduced(const RotationChain& chain, const ReducedCh
   const ChainCurve<double> curve(curve_chain);
   std::vector<BranchPair> pairs;
   for (const BranchPair& p : f.pairs)
-    if (!inside_zone(std::min(p.a, p.b), std::max(p.a, p.b), f.cusps, out.cusp_zone, period)) pairs.push_back(p);
+    if (!inside_zone(std::min(p.t1, p.t2), std::max(p.t1, p.t2), f.cusps, out.cusp_zone, period)) pairs.push_back(p);
   if (family) pairs = distinct_pairs(std::move(pairs), period);
-  out.nodes = assemble_nodes(curve, pairs, period, reduced.negated, out.why);
+  out.nodes = assemble_nodes_of_branches(curve, pairs, period, reduced.negated, out.why);
   out.cusps = assemble_cusps(curve, f.cusps, period, out.cusp_zone, reduced.negated);
   if (family && f.work.out_of_budget && f.work.boxes <= max_boxes) out.why = "boxes stayed undecided over the range";
   else if (f.work.out_of_budget) out.why = "the search stopped at its bound of " + std::to_string(max_boxes) + " boxes";
