@@ -9,6 +9,7 @@
 #include "sphtroch/interval/krawczyk.hpp"
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -230,6 +231,18 @@ TEST_CASE("Krawczyk: inflation visits its radii in order and stops at the first 
   REQUIRE(third);
   CHECK(*third == 8.0 / 256);
   CHECK(seen.size() == 3);
+}
+
+TEST_CASE("Krawczyk: inflation from an infinite radius or to a floor of 0 tries nothing instead of looping", KRAWCZYK_TAG) {
+  int calls = 0;
+  const auto count = [&](double) -> std::optional<double> {
+    ++calls;
+    return std::nullopt;
+  };
+  CHECK_FALSE(epsilon_inflation(std::numeric_limits<double>::infinity(), 0.5, 1e-9, count));
+  CHECK_FALSE(epsilon_inflation(1.0, 0.5, 0.0, count));
+  CHECK_FALSE(epsilon_inflation(1.0, 1.0, 1e-9, count));
+  CHECK(calls == 0);
 }
 
 TEST_CASE("Krawczyk: boxes about a point are relative or absolute as asked and the centre is inside", KRAWCZYK_TAG) {

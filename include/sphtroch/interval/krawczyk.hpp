@@ -194,7 +194,7 @@ bool contracts(const DoubleMatrix<N>& y_inverse, const IntervalMatrix<N>& ju) {
     for (std::size_t c = 0; c < N; ++c) {
       Interval a(r == c ? 1.0 : 0.0);
       for (std::size_t m = 0; m < N; ++m) a -= y_inverse(int(r), int(m)) * ju[m][c];
-      row += Interval(std::max(-a.inf(), a.sup()));
+      row += Interval(-a.inf() > a.sup() ? -a.inf() : a.sup());  // a NaN end stays NaN: then not < 1
     }
     if (!(row.sup() < 1.0)) return false;
   }
@@ -206,8 +206,10 @@ bool contracts(const DoubleMatrix<N>& y_inverse, const IntervalMatrix<N>& ju) {
 /// radius r and returns a std::optional; the first proof, or nothing when every radius failed.
 /// (A root is proved in a box of some radius once the box is small enough for J to vary little
 /// and wide enough to hold the root with Newton's and the rounding's error.)
+/// A first radius that is not finite, a floor not above 0 or a factor outside (0, 1) tries nothing.
 template <class Prove>
 auto epsilon_inflation(double first, double factor, double last, const Prove& prove) -> decltype(prove(first)) {
+  if (!std::isfinite(first) || !(last > 0) || !(factor > 0 && factor < 1)) return {};
   for (double r = first; r >= last; r *= factor)
     if (auto proof = prove(r)) return proof;
   return {};
