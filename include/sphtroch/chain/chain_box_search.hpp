@@ -145,7 +145,7 @@ inline std::optional<Chart> chart_of(const IntervalVec3& first, const IntervalVe
 /// branches, left to bisection and chain_tangency.hpp). The verdict and box: K (unique), b meets K
 /// (narrowed), b (none, or no step).
 template <class System>
-KrawczykStep<2> krawczyk(const System& sys, const Box2& b, const BoxEvaluation& e, const Chart& c) {
+KrawczykStep<2> chart_step(const System& sys, const Box2& b, const BoxEvaluation& e, const Chart& c) {
   KrawczykStep<2> r;
   r.box = {b.u, b.v};
   const IntervalMatrix<2> j{{{e.d_du[c.a], e.d_dv[c.a]}, {e.d_du[c.b], e.d_dv[c.b]}}};
@@ -187,7 +187,7 @@ Box2 contracted(const System& sys, Box2 k) {
     const BoxEvaluation e = sys.evaluate(k);
     const std::optional<Chart> c = chart_of(e.first, e.second);
     if (!c || c->apart) break;
-    const KrawczykStep<2> next = krawczyk(sys, k, e, *c);
+    const KrawczykStep<2> next = chart_step(sys, k, e, *c);
     const Box2 n = next.verdict == KrawczykVerdict::none ? k : box_of(next);
     if (!(n.width() < 0.9 * k.width())) {
       if (n.width() <= k.width()) k = n;
@@ -222,7 +222,7 @@ bool inflate(const System& sys, const Box2& b, std::vector<FoundRoot>& known, do
     const BoxEvaluation e = sys.evaluate(x);
     const std::optional<Chart> c = chart_of(e.first, e.second);
     if (!c || c->apart) return std::nullopt;
-    const KrawczykStep<2> k = krawczyk(sys, x, e, *c);
+    const KrawczykStep<2> k = chart_step(sys, x, e, *c);
     if (k.verdict != KrawczykVerdict::unique) return std::nullopt;
     return std::make_pair(x, box_of(k));
   });
@@ -256,7 +256,7 @@ void search_box(const System& sys, const Box2& start, const Drop& drop, Search& 
       const std::optional<Chart> c = chart_of(e.first, e.second);
       if (c && c->apart) { split = false; break; }
       if (!c) break;
-      const KrawczykStep<2> k = krawczyk(sys, b, e, *c);
+      const KrawczykStep<2> k = chart_step(sys, b, e, *c);
       if (k.verdict == KrawczykVerdict::none) { split = false; break; }
       if (k.verdict == KrawczykVerdict::unique) {
         const Box2 root = contracted(sys, box_of(k));

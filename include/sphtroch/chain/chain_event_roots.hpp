@@ -153,7 +153,7 @@ std::optional<PointN<n>> newton(const EventSystem<n>& system, PointN<n> x) {
 /// Krawczyk's step (krawczyk.hpp, Y the inverse of mid J(X)) on X, then on its result, six times
 /// (header): the box holding the one root of X, or nothing when not proved.
 template <std::size_t n>
-std::optional<IntervalBox<n>> krawczyk_root(const EventSystem<n>& system, IntervalBox<n> x) {
+std::optional<IntervalBox<n>> proved_root(const EventSystem<n>& system, IntervalBox<n> x) {
   bool proved = false;
   for (int it = 0; it < 6; ++it) {
     const PointN<n> c = centre<n>(x);
@@ -171,12 +171,12 @@ std::optional<IntervalBox<n>> krawczyk_root(const EventSystem<n>& system, Interv
 }
 
 /// Epsilon-inflation (krawczyk.hpp) about a Newton point: boxes of radius 1e-7 down to 1e-13
-/// (times max(1, |x_i|)), each given to krawczyk_root (header).
+/// (times max(1, |x_i|)), each given to proved_root (header).
 template <std::size_t n>
 std::optional<IntervalBox<n>> isolate(const EventSystem<n>& system, const PointN<n>& start) {
   const std::optional<PointN<n>> x = newton(system, start);
   if (!x) return std::nullopt;
-  return epsilon_inflation(1e-7, 0.01, 1e-13, [&](double radius) { return krawczyk_root(system, box_about<n>(*x, radius, true)); });
+  return epsilon_inflation(1e-7, 0.01, 1e-13, [&](double radius) { return proved_root(system, box_about<n>(*x, radius, true)); });
 }
 
 /// p's copy (p + k T) nearest q.

@@ -111,7 +111,7 @@ inline std::optional<FoundRoot> certified_crossing(const ChainEnclosure& e, doub
     const BoxEvaluation ev = sys.evaluate(x);
     const std::optional<Chart> c = chart_of(ev.first, ev.second);
     if (!c || c->apart) return std::nullopt;
-    const KrawczykStep<2> k = krawczyk(sys, x, ev, *c);
+    const KrawczykStep<2> k = chart_step(sys, x, ev, *c);
     if (k.verdict != KrawczykVerdict::unique) return std::nullopt;
     const Box2 root = contracted(sys, box_of(k));
     return FoundRoot{mid(root.u), mid(root.v), x, false, root};

@@ -185,7 +185,7 @@ inline std::array<Interval, 3> along(const TracerJet<Interval>& j, const Eigen::
 
 /// The Krawczyk image of the rest box UV (centred at 0); the test passes when it lies inside UV
 /// (then UV holds exactly one rest for each train, and the image holds it).
-inline std::optional<std::array<Interval, 2>> krawczyk(const NodeParameters& np, const BoxIntervals& b, const std::array<Interval, 2>& UV,
+inline std::optional<std::array<Interval, 2>> rest_step(const NodeParameters& np, const BoxIntervals& b, const std::array<Interval, 2>& UV,
                                                        const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y,
                                                        const std::array<double, 3>& a0) {
   const auto st = parameter_ranges(np, b, UV);
@@ -226,10 +226,10 @@ inline std::optional<std::array<Interval, 2>> krawczyk(const NodeParameters& np,
 inline std::optional<std::array<Interval, 3>> enclose(const GearTrain& train, const NodeParameters& np, double r, const BoxIntervals& b,
                                                       const Vector3d& x, const Eigen::Matrix<double, 3, 2>& E, const Eigen::Matrix2d& Y) {
   const std::array<double, 3> a0{train.a2(), train.a3(), train.phase()};
-  std::optional<std::array<Interval, 2>> K = krawczyk(np, b, {Interval(-r, r), Interval(-r, r)}, E, Y, a0);
+  std::optional<std::array<Interval, 2>> K = rest_step(np, b, {Interval(-r, r), Interval(-r, r)}, E, Y, a0);
   if (!K) return std::nullopt;
   for (int step = 0; step < 3; ++step) {
-    const auto next = krawczyk(np, b, {Interval(std::min(K->at(0).inf(), 0.0), std::max(K->at(0).sup(), 0.0)),
+    const auto next = rest_step(np, b, {Interval(std::min(K->at(0).inf(), 0.0), std::max(K->at(0).sup(), 0.0)),
                                        Interval(std::min(K->at(1).inf(), 0.0), std::max(K->at(1).sup(), 0.0))}, E, Y, a0);
     if (!next) break;
     K = next;
