@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -57,6 +58,18 @@ struct TwoRoots {
   }
 };
 
+/// The step of TwoRoots on x about its centre; nothing when the midpoint is singular.
+std::optional<KrawczykStep<2>> two_roots_step(const TwoRoots& sys, const IntervalBox<2>& x) {
+  IntervalBox<2> f, fy;
+  IntervalMatrix<2> j, jy;
+  sys.eval(x, f, j);
+  const PointN<2> y = centre<2>(x);
+  sys.eval(point_box<2>(y), fy, jy);
+  const auto inverse = midpoint_inverse<2>(midpoint<2>(j));
+  if (!inverse) return std::nullopt;
+  return krawczyk_step<2>(x, y, fy, j, *inverse);
+}
+
 /// Bisection with the step (a test driver, independent of root_isolation.hpp): the boxes proved
 /// to hold one root each; `undecided` counts boxes left narrower than 1e-12.
 std::vector<IntervalBox<2>> isolate_all(const TwoRoots& sys, IntervalBox<2> start, int& undecided) {
@@ -65,14 +78,8 @@ std::vector<IntervalBox<2>> isolate_all(const TwoRoots& sys, IntervalBox<2> star
   while (!stack.empty()) {
     IntervalBox<2> x = stack.back();
     stack.pop_back();
-    IntervalBox<2> f, fy;
-    IntervalMatrix<2> j, jy;
-    sys.eval(x, f, j);
-    const PointN<2> y = centre<2>(x);
-    sys.eval(point_box<2>(y), fy, jy);
-    const auto inverse = midpoint_inverse<2>(midpoint<2>(j));
-    if (inverse) {
-      const KrawczykStep<2> k = krawczyk_step<2>(x, y, fy, j, *inverse);
+    if (const std::optional<KrawczykStep<2>> step = two_roots_step(sys, x)) {
+      const KrawczykStep<2>& k = *step;
       if (k.verdict == KrawczykVerdict::none) continue;
       if (k.verdict == KrawczykVerdict::unique) {
         roots.push_back(k.box);
@@ -164,14 +171,9 @@ TEST_CASE("Krawczyk step: two roots 2e-6 apart are never one and bisection with 
   // Over a box holding both, the step cannot prove uniqueness.
   {
     const IntervalBox<2> x{Interval(-1e-5, 1.1e-5), Interval(-1e-5, 1e-5)};
-    IntervalBox<2> f, fy;
-    IntervalMatrix<2> j, jy;
-    sys.eval(x, f, j);
-    const PointN<2> y = centre<2>(x);
-    sys.eval(point_box<2>(y), fy, jy);
-    const auto inverse = midpoint_inverse<2>(midpoint<2>(j));
-    REQUIRE(inverse);
-    CHECK(krawczyk_step<2>(x, y, fy, j, *inverse).verdict != KrawczykVerdict::unique);
+    const std::optional<KrawczykStep<2>> step = two_roots_step(sys, x);
+    REQUIRE(step);
+    CHECK(step->verdict != KrawczykVerdict::unique);
   }
   int undecided = 0;
   const std::vector<IntervalBox<2>> roots = isolate_all(sys, {Interval(-1.0, 1.3), Interval(-0.7, 1.0)}, undecided);
