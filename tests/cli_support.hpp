@@ -1,6 +1,8 @@
 // tests/cli_support.hpp — running the `sphtroch` executable from a Catch2 test: a fresh
 // directory per test case, the exit status and both output streams captured.
-// REQUIRES: SPHTROCH_EXE (the executable's path) defined by CMake.
+// REQUIRES: SPHTROCH_EXE (the executable's path) defined by CMake. The environment variable
+// SPHTROCH_TEST_EXE, when set, names another build of the tool to run instead: CI runs this
+// suite, built once in Release, against the sanitizer build's tool (.ci/run).
 #pragma once
 
 #include "catch2/catch.hpp"
@@ -72,13 +74,36 @@ inline Result capture(const std::string& command, const fs::path& out, const fs:
   return r;
 }
 
+/// The executable under test: $SPHTROCH_TEST_EXE when set and not empty, else SPHTROCH_EXE.
+inline const std::string& tool_path() {
+  static const std::string path = [] {
+    const char* env = std::getenv("SPHTROCH_TEST_EXE");
+    return std::string(env != nullptr && *env != '\0' ? env : SPHTROCH_EXE);
+  }();
+  return path;
+}
+
+/// tool_path() shell-quoted (single quotes), for command lines.
+inline std::string quoted_tool() { return "'" + tool_path() + "'"; }
+
+/// Whether the tool under test was built with AddressSanitizer (its dynamic symbols name
+/// __asan_init): its shadow memory alone exceeds any data or address-space limit, so the tests
+/// of memory bounds leave those limits out for it (the Release run checks them).
+inline bool tool_has_address_sanitizer() {
+  static const bool has = [] {
+    const std::string bytes = slurp(tool_path());
+    return bytes.find("__asan_init") != std::string::npos;
+  }();
+  return has;
+}
+
 /// Runs `sphtroch <args>` through the shell (args already shell-quoted where needed), capturing
 /// stdout, stderr and the exit status in files of `dir`. With `in_dir`, runs inside `dir` so that
 /// relative paths land there.
 inline Result run(const std::string& args, const TempDir& dir, bool in_dir = false) {
   const fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
   const std::string cd = in_dir ? "cd '" + dir.path.string() + "' && " : std::string();
-  return capture(cd + "'" + SPHTROCH_EXE + "' " + args, out, err);
+  return capture(cd + quoted_tool() + " " + args, out, err);
 }
 
 /// Runs a bash command line (with pipefail) inside `dir`, for pipes and redirections around the

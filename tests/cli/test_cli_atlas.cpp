@@ -169,8 +169,8 @@ TEST_CASE("atlas --degrees: the map's axes in round degrees at the angles they n
 
 TEST_CASE("output files get the mode of a plain open(): 0666 & ~umask, not mkstemp's 0600", "[cli][atlas]") {
   TempDir dir;
-  const std::string cmd = "cd '" + dir.path.string() + "' && umask 022 && '" + SPHTROCH_EXE +
-                          "' atlas --n 1 --grid 2 -o a.csv >/dev/null 2>&1";
+  const std::string cmd = "cd '" + dir.path.string() + "' && umask 022 && " + quoted_tool() +
+                          " atlas --n 1 --grid 2 -o a.csv >/dev/null 2>&1";
   REQUIRE(std::system(cmd.c_str()) == 0);
   const fs::perms p = fs::status(dir.path / "a.csv").permissions();
   CHECK((p & fs::perms::group_read) != fs::perms::none);
@@ -223,17 +223,17 @@ TEST_CASE("atlas-merge streams: a slice from a pipe, checks before stdout, trunc
 }
 
 TEST_CASE("atlas-merge memory is bounded by a line, not the grid (under a 12 MiB data limit)", "[cli][atlas][merge][memory]") {
-#if defined(__SANITIZE_ADDRESS__)
-  SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
-  return;
-#endif
+  if (tool_has_address_sanitizer()) {
+    SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
+    return;
+  }
   TempDir dir;
   // 512 x 512 = 262,144 cells in 3 slices (15.5 MB of CSV); holding the cells takes 56 bytes each
   // (14.7 MB), more than the limit allows.
   for (int i = 1; i <= 3; ++i)
     REQUIRE(run_here("atlas --n 1 --grid 512 --shard " + std::to_string(i) + "/3 -o s" + std::to_string(i) + ".csv", dir)
                 .status == 0);
-  const std::string limit = "prlimit --data=" + std::to_string(12 << 20) + " '" + SPHTROCH_EXE + "' ";
+  const std::string limit = "prlimit --data=" + std::to_string(12 << 20) + " " + quoted_tool() + " ";
   const std::string cd = "cd '" + dir.path.string() + "' && ";
   CHECK(std::system((cd + limit + "atlas-merge -o m.csv s1.csv s2.csv s3.csv > /dev/null 2>&1").c_str()) == 0);
   CHECK(std::system((cd + limit + "atlas-merge -o - s1.csv s2.csv s3.csv 2>/dev/null | tail -n 1 | grep -q '^511,511,'").c_str()) == 0);

@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kExe = std::string("'") + SPHTROCH_EXE + "'";
+const std::string kExe = quoted_tool();
 
 
 /// Exit 2, nothing on stdout, exactly one line on stderr containing `part`.
@@ -429,11 +429,9 @@ TEST_CASE("hostile: D9 stdin_aliasing_the_output and output_symlink_loops are re
 
 TEST_CASE("hostile: D10 sparse_inputs report their first bad row (exit 2), never out of memory", "[cli][hostile][input]") {
   TempDir dir;
-#if defined(__SANITIZE_ADDRESS__)
-  const std::string limit;  // AddressSanitizer's shadow memory alone exceeds any address-space limit
-#else
-  const std::string limit = "ulimit -v 4000000 && ";  // 4 GB: far below what reserving the sizes would take
-#endif
+  // 4 GB: far below what reserving the sizes would take; none for a tool under AddressSanitizer,
+  // whose shadow memory alone exceeds any address-space limit.
+  const std::string limit = tool_has_address_sanitizer() ? std::string() : "ulimit -v 4000000 && ";
   write_file(dir.path / "big.csv", "1,0,0\n0,1,0\n");
   fs::resize_file(dir.path / "big.csv", std::uintmax_t(64) << 30);  // 64 GiB, sparse: NUL bytes, no disk
   check_refused(shell(limit + kExe + " crossings --input big.csv", dir), "--input = big.csv: line 3 ");

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kExe = std::string("'") + SPHTROCH_EXE + "'";
+const std::string kExe = quoted_tool();
 const std::string kTrain = "trace --a2 1 --a3 2 --n 7/3";
 
 
@@ -196,10 +196,10 @@ TEST_CASE("cli io: SIGTERM or SIGINT during a long trace leaves neither the file
 
 TEST_CASE("cli io: trace streams: 1e7 samples run under a 64 MiB data limit that a whole-buffer command exceeds",
           "[cli][io][memory]") {
-#if defined(__SANITIZE_ADDRESS__)
-  SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
-  return;
-#endif
+  if (tool_has_address_sanitizer()) {
+    SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
+    return;
+  }
   TempDir dir;
   const std::string limit = "prlimit --data=" + std::to_string(64 << 20) + " ";
   // The streamed trace: 1e7 rows (~780 MB of CSV) through the limit.
@@ -215,10 +215,10 @@ TEST_CASE("cli io: trace streams: 1e7 samples run under a 64 MiB data limit that
 
 TEST_CASE("cli io: crossings of random directions: counts in O(N) memory under a data limit, cost bounds refuse (D2)",
           "[cli][io][memory][crossings]") {
-#if defined(__SANITIZE_ADDRESS__)
-  SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
-  return;
-#endif
+  if (tool_has_address_sanitizer()) {
+    SUCCEED("not under AddressSanitizer: its shadow memory alone exceeds any data limit (the Release run checks this)");
+    return;
+  }
   TempDir dir;
   // Random directions (long arcs): N = 1500 with a numpy O(N^2) sign-test count as the
   // reference, N = 8000 (~4e6 crossings) and N = 60000 (~1e9). numpy writes the .npy files.

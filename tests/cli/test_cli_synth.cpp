@@ -20,7 +20,7 @@ using namespace sphtroch::test;
 
 namespace {
 
-std::string exe() { return std::string("'") + SPHTROCH_EXE + "'"; }
+std::string exe() { return quoted_tool(); }
 
 /// FNV-1a, 64 bits (offset basis 14695981039346656037, prime 1099511628211).
 std::uint64_t fnv1a64(const std::string& bytes) {
