@@ -1,6 +1,8 @@
-# `man sphtroch` after an install: `cmake --install` of this build (the tool, its man page and its
+# `man sphtroch` after an install: `cmake --install` of this build (the tool, its man pages and its
 # bash completion) to a scratch prefix, then `man` with MANPATH = the prefix's share/man must show
-# the page, naming every command that `sphtroch --help` lists. Called by ctest:
+# the page, naming every command that `sphtroch --help` lists, with the footer "sphtroch VERSION";
+# and `man sphtroch-COMMAND` must show each command's own page: its title, and every option that
+# `sphtroch COMMAND --help` lists (`man sphtroch-clinostat` shows --outer). Called by ctest:
 #   cmake -DBUILD_DIR=<this build> -DWORK_DIR=<scratch> -DEXE=<the built tool> -P run_man_page.cmake
 foreach(var BUILD_DIR WORK_DIR EXE)
   if(NOT DEFINED ${var})
@@ -37,4 +39,32 @@ foreach(c IN LISTS commands)
     message(FATAL_ERROR "man page: the command ${c} of --help is not on the page")
   endif()
 endforeach()
-message(STATUS "man page: ${count} commands on the page")
+execute_process(COMMAND "${EXE}" --version OUTPUT_VARIABLE version_line)
+if(NOT version_line MATCHES "^sphtroch ([0-9.]+)")
+  message(FATAL_ERROR "man page: --version printed '${version_line}'")
+endif()
+set(version "${CMAKE_MATCH_1}")
+if(NOT page MATCHES "\n[ ]*sphtroch ${version} +[A-Z][a-z]+ [0-9]+ +SPHTROCH\\(1\\)[ \n]*$")
+  message(FATAL_ERROR "man page: the footer is not 'sphtroch ${version}  <month year>  SPHTROCH(1)':\n${page}")
+endif()
+foreach(c IN LISTS commands)
+  string(STRIP "${c}" c)
+  string(TOUPPER "sphtroch-${c}" title)
+  execute_process(COMMAND man -P cat "sphtroch-${c}" RESULT_VARIABLE rc OUTPUT_VARIABLE cpage ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT cpage MATCHES "^${title}\\(1\\)")
+    message(FATAL_ERROR "man page: `man sphtroch-${c}` failed (${rc}): ${err}${cpage}")
+  endif()
+  execute_process(COMMAND "${EXE}" ${c} --help OUTPUT_VARIABLE chelp)
+  string(REGEX MATCHALL "\n  (-[a-z],)?--[a-z0-9-]+" options "${chelp}")
+  foreach(o IN LISTS options)
+    string(REGEX REPLACE ".*(--[a-z0-9-]+)$" "\\1" o "${o}")
+    string(REPLACE "-" "\\-" o_regex "${o}")
+    if(NOT cpage MATCHES "${o_regex}")
+      message(FATAL_ERROR "man page: `man sphtroch-${c}` does not show ${o} of `sphtroch ${c} --help`")
+    endif()
+  endforeach()
+endforeach()
+if(NOT page MATCHES "sphtroch-clinostat")
+  message(FATAL_ERROR "man page: `man sphtroch` does not point to the commands' pages")
+endif()
+message(STATUS "man page: ${count} commands on the page, each with its own page")

@@ -1,9 +1,10 @@
 # Builds and runs tests/consumer against sphtroch; called by ctest:
 #   cmake -DSOURCE_DIR=<sphtroch source> -DWORK_DIR=<scratch> -DMODE=find_package|add_subdirectory
-#         -DPART=eigen|interval|exact|exact_unlinked -P run_consumer.cmake
+#         -DPART=eigen|interval|exact|compiled|exact_unlinked -P run_consumer.cmake
 # PART eigen configures the consumer with CGAL hidden (CMAKE_DISABLE_FIND_PACKAGE_CGAL): the
 # Eigen-only package must not need it; PART interval too: CGAL's headers, not its package (which
-# brings GMP and MPFR). PART exact_unlinked must FAIL to build, with the #error
+# brings GMP and MPFR); PART compiled too (sphtroch::compiled: the consumer parses no CGAL header
+# and links libsphtroch_compiled; also built with pkg-config sphtroch-compiled). PART exact_unlinked must FAIL to build, with the #error
 # that names sphtroch::exact.
 # find_package:     configure + install sphtroch (tests, CLI, benchmarks off) into WORK_DIR/<mode>/prefix,
 #                   then configure, build and run the consumer with CMAKE_PREFIX_PATH = that prefix.
@@ -35,11 +36,15 @@ function(step name)
 endfunction()
 
 set(part_flags -DSPHTROCH_CONSUMER_PART=${PART})
-if(PART STREQUAL "eigen" OR PART STREQUAL "interval")
+if(PART STREQUAL "eigen" OR PART STREQUAL "interval" OR PART STREQUAL "compiled")
   list(APPEND part_flags -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE)
 endif()
+set(compiled OFF)  # libsphtroch_compiled: built and installed for PART compiled only
+if(PART STREQUAL "compiled")
+  set(compiled ON)
+endif()
 set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF -DSPHTROCH_BUILD_PYTHON=OFF
-    -DSPHTROCH_BUILD_EXPLORER=OFF)
+    -DSPHTROCH_BUILD_EXPLORER=OFF -DSPHTROCH_BUILD_COMPILED=${compiled})
 if(MODE STREQUAL "find_package")
   step("configure sphtroch" ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${work}/sphtroch-build"
        -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=${prefix} ${off})
@@ -107,3 +112,22 @@ if(PART STREQUAL "interval")  # CGAL's headers only: no GMP or MPFR on the link 
 endif()
 step("run consumer" "${consumer_build}/consumer")
 message(STATUS "consumer (${MODE}): ${step_output}")
+if(PART STREQUAL "compiled" AND MODE STREQUAL "find_package")
+  # The same example without CMake: pkg-config sphtroch-compiled (in <libdir>/pkgconfig, requiring
+  # sphtroch.pc of share/pkgconfig) and one compiler call, run with the library's directory.
+  file(GLOB_RECURSE pc_file "${prefix}/sphtroch-compiled.pc")
+  if(NOT pc_file)
+    message(FATAL_ERROR "consumer (${MODE}, ${PART}): sphtroch-compiled.pc not installed under ${prefix}")
+  endif()
+  get_filename_component(pc_dir "${pc_file}" DIRECTORY)
+  set(ENV{PKG_CONFIG_PATH} "${pc_dir}:${prefix}/share/pkgconfig")
+  step("pkg-config" pkg-config --cflags --libs sphtroch-compiled)
+  separate_arguments(flags UNIX_COMMAND "${step_output}")
+  step("pkg-config libdir" pkg-config --variable=libdir sphtroch-compiled)
+  string(STRIP "${step_output}" libdir)
+  find_program(cxx NAMES c++ g++ REQUIRED)
+  step("compile with pkg-config" ${cxx} -std=c++17 "${CMAKE_CURRENT_LIST_DIR}/main_compiled.cpp" ${flags}
+       -o "${work}/consumer-pkg-config")
+  step("run the pkg-config build" ${CMAKE_COMMAND} -E env "LD_LIBRARY_PATH=${libdir}" "${work}/consumer-pkg-config")
+  message(STATUS "consumer (pkg-config sphtroch-compiled): ${step_output}")
+endif()
