@@ -29,7 +29,8 @@ namespace sphtroch::cli {
 namespace {
 
 struct DesignOptions {
-  std::string outer, inner, step, window, epsilon, resolution, coverage, nside, teeth, tilt, frame_angle, top, threads, shard, output;
+  std::string outer, inner, step, window, epsilon, resolution, coverage, nside, teeth, tilt, frame_angle, offset, top, threads, shard,
+      output;
   bool json = false;
 };
 
@@ -71,10 +72,12 @@ DesignRequest read_design_request(const DesignOptions& o) {
   if (!o.teeth.empty()) r.teeth = parse_tooth_range(o.teeth, "teeth");
   if (!o.tilt.empty()) r.tilt_deg = parse_degrees(o.tilt, "tilt", "[0, 180] degrees");
   if (!o.frame_angle.empty()) r.frame_angle_deg = parse_degrees(o.frame_angle, "frame-angle", "[0, 180] degrees");
-  ClinostatSettings check;  // the frames, checked up front as the single-machine command checks them
+  if (!o.offset.empty()) r.offset_m = parse_offset(o.offset, "offset");
+  ClinostatSettings check;  // the frames and the offset, checked up front as the single-machine command checks them
   check.outer = Rpm(1);
   check.tilt_deg = r.tilt_deg;
   check.frame_angle_deg = r.frame_angle_deg;
+  check.offset_m = r.offset_m;
   const Clinostat checked(check);
   static_cast<void>(checked);
   return r;
@@ -96,6 +99,10 @@ DesignRequest request_from_json(const nlohmann::json& j) {
   if (!j.at("teeth").is_null()) o.teeth = j.at("teeth").get<std::string>();
   o.tilt = number_text(j.at("tilt").get<double>());
   o.frame_angle = number_text(j.at("frame_angle").get<double>());
+  if (!j.at("offset_m").is_null()) {
+    const nlohmann::json& v = j.at("offset_m");
+    o.offset = number_text(v.at(0).get<double>()) + "," + number_text(v.at(1).get<double>()) + "," + number_text(v.at(2).get<double>());
+  }
   const DesignRequest r = read_design_request(o);
   if (design_request_json(r).dump() != j.dump())  // as text: 90 and 90.0 compare equal as numbers
     throw InvalidInput("shard", "\"request\" " + brief_json(j), "not written as the run writes it", "the request of sphtroch clinostat design");
@@ -154,7 +161,7 @@ void run_design(const DesignOptions& o) {
     ranks[k] = design_rank(row);
   });
   refuse_option_every_pair_refuses(o, refused_by, rows);
-  if (!shard) return finish_run(design_run_json(design_request_json(r), rows, ranks), o.output, o.json, top);
+  if (!shard) return finish_run(design_run_json(r, rows, ranks), o.output, o.json, top);
   nlohmann::json part = {{"request", design_request_json(r)}, {"shard", shard->str()}, {"digest", std::string(16, '0')}, {"rows", rows}};
   write_output(o.output, [&](std::ostream& out) { out << signed_part(part.dump(2) + "\n"); });
   std::size_t undecided = 0;
@@ -177,14 +184,9 @@ const std::string kDesignPart = "the JSON of sphtroch clinostat design ... --sha
 /// Refuses (InvalidInput "shard") a row whose period or mean over a period is not the machine's
 /// (computed again: a 25-point transform, no search).
 void check_cheap_numbers(const nlohmann::json& row, const DesignRequest& r, const DesignPair& pair, const std::string& where) {
-  ClinostatSettings s;
-  s.outer = pair.outer;
-  s.inner = pair.inner;
-  s.tilt_deg = r.tilt_deg;
-  s.frame_angle_deg = r.frame_angle_deg;
   std::optional<GravitySeries> series;
   try {
-    series.emplace(GravitySeries::of_gravity(Clinostat(s)));
+    series.emplace(design_series(design_machine(r, pair)));
   } catch (const InvalidInput&) {
     return;  // a pair the run refused: its row says so
   }
@@ -289,7 +291,7 @@ void run_merge(const std::vector<std::string>& paths, const std::string& output,
   for (const DesignPart& p : parts) rows.insert(rows.end(), p.rows.begin(), p.rows.end());
   std::vector<DesignRank> ranks;
   for (const nlohmann::json& row : rows) ranks.push_back(design_rank_of_json(row));  // the rows were checked as written
-  finish_run(design_run_json(parts[0].request, rows, ranks), output, json, top);
+  finish_run(design_run_json(request_from_json(parts[0].request), rows, ranks), output, json, top);
 }
 
 }  // namespace
@@ -301,7 +303,10 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
       "Every pair (outer, inner) of LO, LO + step, ..., HI (exact; the pair 0, 0 left out), each with its\n"
       "time to epsilon (the shortest window from which every longer window averages below epsilon), M(W)\n"
       "for --window W, and with --coverage D the share of HEALPix cells visited over [0, D]. Ranked by\n"
-      "that time, then the first window below, then coverage; the Pareto front of (time, coverage).\n"
+      "that time, then the first window below, then coverage; the Pareto front of (time, coverage). The\n"
+      "recommendation: rank 1 when it reaches epsilon, its lead over the next, and whether it sits at an\n"
+      "end of a speed range (then a wider range may hold a better pair). --offset X,Y,Z (metres): each\n"
+      "pair averages the effective gravity at that sample point (gravity plus the frames' accelerations).\n"
       "--teeth MIN..MAX: a gear-driven machine, only ratios outer/inner of two tooth counts in the range.\n"
       "Cost: at most 100000 pairs per run; per pair ~1 ms at typical speeds, at most M(W)'s 4e6 pieces\n"
       "(~3 s: fast speeds with a short window) and 3e6 window-mean evaluations for the time to epsilon\n"
@@ -319,6 +324,7 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
   cmd->add_option("--teeth", o->teeth, "MIN..MAX: a gear-driven machine's tooth counts");
   cmd->add_option("--tilt", o->tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)");
   cmd->add_option("--frame-angle", o->frame_angle, "angle between the axes, degrees in [0, 180] (default 90)");
+  cmd->add_option("--offset", o->offset, "the sample point X,Y,Z in metres (sample frame; default the centre): its effective gravity is averaged");
   cmd->add_option("--top", o->top, "rows of the text report (default 20)");
   cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
   cmd->add_option("--shard,--slice", o->shard, "only part I of K of the pairs (JSON; join with clinostat merge)");

@@ -205,3 +205,88 @@ TEST_CASE("clinostat design: bad input is refused with one line naming the optio
     CHECK(dir.entries().empty());
   }
 }
+
+TEST_CASE("clinostat design: the recommendation is the fastest reaching pair with its lead and the grid edges it sits at", "[cli][clinostat]") {
+  TempDir dir;
+  const Result r = run("clinostat design --outer 0.5:2 --inner 0.5:2 --step 0.5 --window 1800 --epsilon 0.02 --coverage 300 --nside 2 --json", dir);
+  REQUIRE(r.status == 0);
+  const json d = json::parse(r.out);
+  const json& rec = d["recommendation"];
+  REQUIRE(rec.is_object());
+  // The pick, found here from the rows alone: the smallest stays_below_from_s (ties: first_s,
+  // then coverage larger, then outer, inner), and the runner-up the next reaching row.
+  std::vector<const json*> reaching;
+  for (const json& row : d["rows"])
+    if (!row["stays_below_from_s"].is_null()) reaching.push_back(&row);
+  REQUIRE(reaching.size() >= 2);
+  const auto before = [](const json* a, const json* b) {
+    const double ta = (*a)["stays_below_from_s"], tb = (*b)["stays_below_from_s"];
+    if (ta != tb) return ta < tb;
+    const double fa = (*a)["first_s"], fb = (*b)["first_s"];
+    if (fa != fb) return fa < fb;
+    const double ca = (*a)["coverage"], cb = (*b)["coverage"];
+    if (ca != cb) return ca > cb;
+    return std::stod((*a)["outer"].get<std::string>()) * 1000 + std::stod((*a)["inner"].get<std::string>()) <
+           std::stod((*b)["outer"].get<std::string>()) * 1000 + std::stod((*b)["inner"].get<std::string>());
+  };
+  std::vector<const json*> sorted = reaching;
+  std::stable_sort(sorted.begin(), sorted.end(), before);
+  CHECK(rec["outer"] == (*sorted[0])["outer"]);
+  CHECK(rec["inner"] == (*sorted[0])["inner"]);
+  CHECK(rec["stays_below_from_s"] == (*sorted[0])["stays_below_from_s"]);
+  CHECK(rec["lead_s"].get<double>() ==
+        (*sorted[1])["stays_below_from_s"].get<double>() - (*sorted[0])["stays_below_from_s"].get<double>());
+  // The edges: a speed equal to 0.5 or 2 of its range is at the lower or upper end.
+  std::set<std::string> edges, expected_edges;
+  for (const json& e : rec["at_edge"]) edges.insert(e["speed"].get<std::string>() + " " + e["end"].get<std::string>() + " " + e["rpm"].get<std::string>());
+  for (const char* speed : {"outer", "inner"}) {
+    const std::string v = rec[speed];
+    if (v == "0.5") expected_edges.insert(std::string(speed) + " lower 0.5");
+    if (v == "2") expected_edges.insert(std::string(speed) + " upper 2");
+  }
+  CHECK(edges == expected_edges);
+  // The text says the same pick in words.
+  const Result text = run("clinostat design --outer 0.5:2 --inner 0.5:2 --step 0.5 --window 1800 --epsilon 0.02 --coverage 300 --nside 2", dir);
+  REQUIRE(text.status == 0);
+  CHECK_THAT(text.out, Catch::Contains("recommendation: rank 1, outer " + rec["outer"].get<std::string>() + " rpm, inner " +
+                                       rec["inner"].get<std::string>() + " rpm"));
+  if (!expected_edges.empty()) CHECK_THAT(text.out, Catch::Contains("at the grid's edge: "));
+}
+
+TEST_CASE("clinostat design: no pair reaching epsilon gives no recommendation and says why", "[cli][clinostat]") {
+  TempDir dir;
+  // Outer speeds 0 only: the inner axis is vertical and gravity does not move (mean 1 g0 > epsilon).
+  const Result r = run("clinostat design --outer 0:0 --inner 1:2 --step 1 --window 600 --epsilon 0.01 --json", dir);
+  REQUIRE(r.status == 0);
+  CHECK(json::parse(r.out)["recommendation"].is_null());
+  const Result text = run("clinostat design --outer 0:0 --inner 1:2 --step 1 --window 600 --epsilon 0.01", dir);
+  CHECK_THAT(text.out, Catch::Contains("recommendation: none: no pair of the grid reaches epsilon 0.01 g0"));
+}
+
+TEST_CASE("clinostat design --offset: each row is the single machine's with the same offset", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string grid = "clinostat design --outer 1:2 --inner 1.5:2 --step 0.5 --window 900 --epsilon 0.01 --json";
+  const Result off = run(grid + " --offset 0.1,0,0", dir), centre = run(grid, dir);
+  REQUIRE(off.status == 0);
+  REQUIRE(centre.status == 0);
+  const json d = json::parse(off.out), c = json::parse(centre.out);
+  CHECK(d["request"]["offset_m"] == json::array({0.1, 0.0, 0.0}));
+  CHECK(c["request"]["offset_m"].is_null());
+  bool any_differs = false;
+  for (const json& row : d["rows"]) {
+    const Result one = run("clinostat --outer " + row["outer"].get<std::string>() + " --inner " + row["inner"].get<std::string>() +
+                               " --offset 0.1,0,0 --window 900 --epsilon 0.01 --json", dir);
+    REQUIRE(one.status == 0);
+    const json m = json::parse(one.out);
+    CHECK(row["stays_below_from_s"] == m["time_to_epsilon"]["stays_below_from_s"]);
+    CHECK(row["worst_window_mean"]["upper"] == m["worst_window_mean"]["upper"]);
+    for (const json& centred : c["rows"])
+      if (centred["outer"] == row["outer"] && centred["inner"] == row["inner"])
+        any_differs = any_differs || centred["worst_window_mean"]["upper"] != row["worst_window_mean"]["upper"];
+  }
+  CHECK(any_differs);  // 10 cm off the centre at 1-2 rpm: the frames' accelerations enter M(W)
+  const Result bad = run(grid + " --offset 0.1,0", dir);
+  CHECK(bad.status == 2);
+  CHECK(bad.out.empty());
+  CHECK_THAT(bad.err, Catch::StartsWith("sphtroch: --offset = 0.1,0: "));
+}

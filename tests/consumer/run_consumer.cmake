@@ -39,12 +39,12 @@ set(part_flags -DSPHTROCH_CONSUMER_PART=${PART})
 if(PART STREQUAL "eigen" OR PART STREQUAL "interval" OR PART STREQUAL "compiled")
   list(APPEND part_flags -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=TRUE)
 endif()
-set(compiled OFF)  # libsphtroch_compiled: built and installed for PART compiled only
+set(build_compiled OFF)  # libsphtroch_compiled: built and installed for PART compiled only
 if(PART STREQUAL "compiled")
-  set(compiled ON)
+  set(build_compiled ON)
 endif()
 set(off -DSPHTROCH_BUILD_TESTS=OFF -DSPHTROCH_BUILD_CLI=OFF -DSPHTROCH_BUILD_BENCH=OFF -DSPHTROCH_BUILD_PYTHON=OFF
-    -DSPHTROCH_BUILD_EXPLORER=OFF -DSPHTROCH_BUILD_COMPILED=${compiled})
+    -DSPHTROCH_BUILD_EXPLORER=OFF -DSPHTROCH_BUILD_COMPILED=${build_compiled})
 if(MODE STREQUAL "find_package")
   step("configure sphtroch" ${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${work}/sphtroch-build"
        -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=${prefix} ${off})

@@ -23,6 +23,10 @@
 // pairs whose mean over a period is above epsilon (never below); then the refused or undecided.
 // Pareto front (with coverage): the decided pairs that no other beats in both stays_below_from_s
 // (shorter) and coverage fraction (larger), in rank order.
+// Recommendation (recommend_design): the first ranked pair when it reaches epsilon, with its lead
+// over the runner-up, whether it sits at an end of a speed range (then a wider range may hold a
+// better pair), and with coverage the front's pair of most coverage.
+// Off the centre (offset_m): each pair averages the effective gravity at the sample point.
 // Cost: at most kMaxDesignPairs pairs per run; per pair ~1 ms at typical speeds, at most the worst
 // window mean's kMaxWindowPieces (~3 s, fast speeds with a short window) plus kDesignWorkPerPair
 // window-mean evaluations (~0.3 s) for the time to epsilon, plus the coverage walk (bounded by
@@ -75,6 +79,9 @@ struct DesignRequest {
   std::optional<double> coverage_s;  ///< the duration of the dwell map, when asked
   int nside = 8;
   std::optional<ToothRange> teeth;   ///< a gear-driven machine: n must be a ratio of tooth counts
+  /// The sample point r (metres, sample frame; clinostat.hpp): off the centre the effective
+  /// gravity there (gravity plus the frames' accelerations) is what each pair's windows average.
+  Vector3d offset_m = Vector3d::Zero();
   DwellMapFunction dwell = built_in_dwell_map();  ///< computes the coverage (a front end may open HEALPix on demand)
 };
 
@@ -152,6 +159,24 @@ inline std::vector<DesignPair> design_pairs(const DesignRequest& r) {
   return pairs;
 }
 
+/// The machine of one pair of the grid: its speeds, the request's frames and offset.
+inline ClinostatSettings design_machine(const DesignRequest& r, const DesignPair& pair) {
+  ClinostatSettings s;
+  s.outer = pair.outer;
+  s.inner = pair.inner;
+  s.tilt_deg = r.tilt_deg;
+  s.frame_angle_deg = r.frame_angle_deg;
+  s.offset_m = r.offset_m;
+  return s;
+}
+
+/// What a pair's windows average: the gravity, or off the centre the effective gravity at the
+/// sample point. Throws InvalidInput for a machine Clinostat refuses.
+inline GravitySeries design_series(const ClinostatSettings& s) {
+  const Clinostat machine(s);
+  return machine.has_offset() ? GravitySeries::of_effective_gravity(machine) : GravitySeries::of_gravity(machine);
+}
+
 /// One pair's numbers. Never throws for a pair the grid holds: a refusal becomes `refused`.
 inline DesignRow evaluate_pair(const DesignRequest& r, const DesignPair& pair) {
   DesignRow row;
@@ -161,13 +186,8 @@ inline DesignRow evaluate_pair(const DesignRequest& r, const DesignPair& pair) {
     row.n = den == 1 ? std::to_string(num) : std::to_string(num) + "/" + std::to_string(den);
   }
   try {
-    ClinostatSettings s;
-    s.outer = pair.outer;
-    s.inner = pair.inner;
-    s.tilt_deg = r.tilt_deg;
-    s.frame_angle_deg = r.frame_angle_deg;
-    const Clinostat machine(s);
-    const GravitySeries series = GravitySeries::of_gravity(machine);
+    const ClinostatSettings s = design_machine(r, pair);
+    const GravitySeries series = design_series(s);
     row.period_s = series.period_s();
     row.period_mean = series.period_mean().norm();
     row.worst = worst_window_mean(series, r.window_s);
@@ -240,6 +260,49 @@ inline std::vector<std::size_t> pareto_front(const std::vector<DesignRank>& rank
     k = end;
   }
   return front;
+}
+
+/// A speed of the recommended pair at an end of its grid range (a range of more than one speed):
+/// a wider range may hold a better pair.
+struct DesignEdge {
+  std::string speed;  ///< "outer" or "inner"
+  bool upper = true;  ///< the range's upper end (else its lower end)
+};
+
+/// The pair to use and why: the first of the ranking (design_less) when it reaches epsilon — the
+/// shortest time from which every window averages below epsilon, ties broken by the first window
+/// below, then coverage. How decisive: the next pair that reaches epsilon and how much later it
+/// stays below; where the pick sits on the grid; with coverage, the front's pair of most coverage.
+struct DesignRecommendation {
+  std::size_t position = 0;                   ///< in the ranked rows (rank position + 1)
+  std::optional<std::size_t> runner_up;       ///< the next ranked pair that reaches epsilon
+  double lead_s = 0;                          ///< the runner-up's stays_s minus the pick's, s
+  std::vector<DesignEdge> edges;              ///< the pick's speeds at an end of their range
+  std::optional<std::size_t> more_coverage;   ///< the Pareto pair of largest coverage, when not the pick
+};
+
+/// The recommendation of a ranked run (`ranked` sorted by design_less, `front` its pareto_front),
+/// or none when no pair reaches epsilon.
+inline std::optional<DesignRecommendation> recommend_design(const DesignRequest& r, const std::vector<DesignRank>& ranked,
+                                                            const std::vector<std::size_t>& front) {
+  if (ranked.empty() || ranked[0].group != 0) return std::nullopt;
+  DesignRecommendation rec;
+  if (ranked.size() > 1 && ranked[1].group == 0) {
+    rec.runner_up = 1;
+    rec.lead_s = ranked[1].stays_s - ranked[0].stays_s;
+  }
+  const auto edge = [&](const SpeedRange& range, double speed, const char* name) {
+    const double lo = range.lo.value(), hi = range.hi.value();
+    if (lo == hi) return;
+    if (speed == hi) rec.edges.push_back({name, true});
+    else if (speed == lo) rec.edges.push_back({name, false});
+  };
+  edge(r.outer, ranked[0].outer, "outer");
+  edge(r.inner, ranked[0].inner, "inner");
+  for (const std::size_t k : front)
+    if (k != 0 && (!rec.more_coverage || ranked[k].coverage > ranked[*rec.more_coverage].coverage)) rec.more_coverage = k;
+  if (rec.more_coverage && ranked[*rec.more_coverage].coverage <= ranked[0].coverage) rec.more_coverage.reset();
+  return rec;
 }
 
 }  // namespace sphtroch

@@ -9,11 +9,15 @@
 //   row.pair.inner = sphtroch::Rpm(2);
 //   const nlohmann::json j = sphtroch::design_row_json(row);   // {"outer": "1", "inner": "2", ...}
 //   const sphtroch::DesignRank k = sphtroch::design_rank(row); // the ranking reads the struct
-//   const nlohmann::json run = sphtroch::design_run_json(nlohmann::json::object(), {j}, {k});
+//   sphtroch::DesignRequest r;                                 // the grid the rows come from
+//   const nlohmann::json run = sphtroch::design_run_json(r, {j}, {k});
 //   run["rows"][0]["rank"];                                    // 1
+//   run["recommendation"];                                     // null: no pair reaches epsilon here
 //
 // JSON (docs/clinostat.md): {"request", "pairs", "reach_epsilon", "never_below", "undecided",
-// "certified", "pareto" (ranks), "rows": [{"outer", "inner", "n", "teeth"?, "period_s",
+// "certified", "pareto" (ranks), "recommendation": null | {"rank", "outer", "inner",
+// "stays_below_from_s", "runner_up_rank", "lead_s", "at_edge": [{"speed", "end", "rpm"}],
+// "more_coverage_rank"}, "rows": [{"outer", "inner", "n", "teeth"?, "period_s",
 // "mean_over_period", "worst_window_mean" {"lower", "upper"} | null, "first_s",
 // "stays_below_from_s", "coverage", "dwell_cv", "certified", "reason", "rank"}]}.
 #pragma once
@@ -52,6 +56,7 @@ inline nlohmann::json design_request_json(const DesignRequest& r) {
   j["coverage_s"] = r.coverage_s ? nlohmann::json(*r.coverage_s) : nlohmann::json(nullptr);
   j["nside"] = r.nside;
   j["teeth"] = r.teeth ? nlohmann::json(r.teeth->str()) : nlohmann::json(nullptr);
+  j["offset_m"] = r.offset_m.isZero(0) ? nlohmann::json(nullptr) : nlohmann::json{r.offset_m.x(), r.offset_m.y(), r.offset_m.z()};
   return j;
 }
 
@@ -92,9 +97,30 @@ inline DesignRank design_rank_of_json(const nlohmann::json& row) {
   return k;
 }
 
+namespace design_output_detail {
+/// The recommendation as JSON: the pick's rank, speeds and time, its lead over the runner-up, the
+/// ends of the grid it sits at, the front's pair of more coverage; and the sentence the text prints.
+inline nlohmann::json recommendation_json(const DesignRequest& r, const std::optional<DesignRecommendation>& rec,
+                                          const nlohmann::json& rows) {
+  if (!rec) return nullptr;
+  const nlohmann::json& pick = rows[rec->position];
+  nlohmann::json j = {{"rank", rec->position + 1}, {"outer", pick.at("outer")}, {"inner", pick.at("inner")},
+                      {"stays_below_from_s", pick.at("stays_below_from_s")}};
+  j["runner_up_rank"] = rec->runner_up ? nlohmann::json(*rec->runner_up + 1) : nlohmann::json(nullptr);
+  j["lead_s"] = rec->runner_up ? nlohmann::json(rec->lead_s) : nlohmann::json(nullptr);
+  j["at_edge"] = nlohmann::json::array();
+  for (const DesignEdge& e : rec->edges) {
+    const SpeedRange& range = e.speed == "outer" ? r.outer : r.inner;
+    j["at_edge"].push_back({{"speed", e.speed}, {"end", e.upper ? "upper" : "lower"}, {"rpm", (e.upper ? range.hi : range.lo).str()}});
+  }
+  j["more_coverage_rank"] = rec->more_coverage ? nlohmann::json(*rec->more_coverage + 1) : nlohmann::json(nullptr);
+  return j;
+}
+}  // namespace design_output_detail
+
 /// The whole run from its rows in the pairs' order and their ranks: ranked (stable, design_less),
-/// counted, the Pareto front.
-inline nlohmann::json design_run_json(const nlohmann::json& request, const std::vector<nlohmann::json>& rows,
+/// counted, the Pareto front, the recommendation (recommend_design; null when no pair reaches epsilon).
+inline nlohmann::json design_run_json(const DesignRequest& r, const std::vector<nlohmann::json>& rows,
                                       const std::vector<DesignRank>& ranks) {
   std::vector<std::size_t> order(rows.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -109,11 +135,46 @@ inline nlohmann::json design_run_json(const nlohmann::json& request, const std::
     row["rank"] = k + 1;
     out_rows.push_back(row);
   }
+  const std::vector<std::size_t> pareto = pareto_front(ranked);
   nlohmann::json front = nlohmann::json::array();
-  for (const std::size_t k : pareto_front(ranked)) front.push_back(k + 1);
-  return {{"request", request}, {"pairs", rows.size()}, {"reach_epsilon", groups[0]}, {"never_below", groups[1]},
-          {"undecided", groups[2]}, {"certified", groups[2] == 0}, {"pareto", front}, {"rows", out_rows}};
+  for (const std::size_t k : pareto) front.push_back(k + 1);
+  const nlohmann::json recommendation =
+      design_output_detail::recommendation_json(r, recommend_design(r, ranked, pareto), out_rows);
+  return {{"request", design_request_json(r)}, {"pairs", rows.size()}, {"reach_epsilon", groups[0]},
+          {"never_below", groups[1]}, {"undecided", groups[2]}, {"certified", groups[2] == 0}, {"pareto", front},
+          {"recommendation", recommendation}, {"rows", out_rows}};
 }
+
+namespace design_output_detail {
+/// The recommendation for people: which pair, why, how decisive, and what the grid's edge suggests.
+inline void write_recommendation(std::ostream& out, const nlohmann::json& run) {
+  const nlohmann::json& q = run.at("request");
+  const nlohmann::json& rec = run.at("recommendation");
+  if (rec.is_null()) {
+    out << "recommendation: none: no pair of the grid reaches epsilon " << cell(q.at("epsilon"))
+        << " g0 (wider or faster speed ranges, or a larger --epsilon)\n";
+    return;
+  }
+  const nlohmann::json& pick = run.at("rows")[rec.at("rank").get<std::size_t>() - 1];
+  out << "recommendation: rank " << rec.at("rank").get<std::size_t>() << ", outer " << cell(pick.at("outer")) << " rpm, inner "
+      << cell(pick.at("inner")) << " rpm (n = " << cell(pick.at("n")) << "): every window of " << cell(pick.at("stays_below_from_s"))
+      << " s or longer averages below " << cell(q.at("epsilon")) << " g0, the shortest such time of the "
+      << run.at("reach_epsilon").get<std::size_t>() << " pairs that reach epsilon";
+  if (rec.at("runner_up_rank").is_null()) out << " (the only one)\n";
+  else if (rec.at("lead_s").get<double>() == 0) out << " (tied with rank " << rec.at("runner_up_rank").get<std::size_t>() << ")\n";
+  else out << " (rank " << rec.at("runner_up_rank").get<std::size_t>() << " needs " << cell(rec.at("lead_s")) << " s more)\n";
+  for (const nlohmann::json& e : rec.at("at_edge"))
+    out << "  at the grid's edge: " << e.at("speed").get<std::string>() << " " << cell(e.at("rpm")) << " rpm is the "
+        << e.at("end").get<std::string>() << " end of --" << e.at("speed").get<std::string>() << " " << cell(q.at(e.at("speed").get<std::string>()))
+        << ": a wider range may hold a better pair\n";
+  if (!rec.at("more_coverage_rank").is_null()) {
+    const nlohmann::json& more = run.at("rows")[rec.at("more_coverage_rank").get<std::size_t>() - 1];
+    out << "  for more coverage: rank " << more.at("rank").get<std::size_t>() << " (outer " << cell(more.at("outer")) << ", inner "
+        << cell(more.at("inner")) << " rpm) covers " << cell(more.at("coverage")) << " of the cells, below epsilon from "
+        << cell(more.at("stays_below_from_s")) << " s\n";
+  }
+}
+}  // namespace design_output_detail
 
 /// The run for people: the request, the counts, the first `top` rows and the Pareto front.
 inline void write_design_text(std::ostream& out, const nlohmann::json& run, std::size_t top) {
@@ -142,6 +203,7 @@ inline void write_design_text(std::ostream& out, const nlohmann::json& run, std:
     for (const auto& k : run.at("pareto")) out << " " << k.get<std::size_t>();
     out << "\n";
   }
+  design_output_detail::write_recommendation(out, run);
 }
 
 }  // namespace sphtroch
