@@ -59,7 +59,7 @@ def existing_build():
 
 
 class CMakeBuild(build_ext):
-    """Builds the CMake targets sphtroch_python and sphtroch_python_healpix (in an existing build for
+    """Builds the CMake targets sphtroch_python, sphtroch_python_healpix and sphtroch_python_urdf (in an existing build for
     this interpreter, else in build-pip/), then copies the modules they made."""
 
     def build_extension(self, ext):
@@ -72,7 +72,8 @@ class CMakeBuild(build_ext):
                             f"-DPython3_EXECUTABLE={sys.executable}", "-DSPHTROCH_BUILD_PYTHON=ON",
                             "-DSPHTROCH_BUILD_CLI=OFF", "-DSPHTROCH_BUILD_TESTS=OFF", "-DSPHTROCH_BUILD_EXPLORER=OFF",
                             "-DSPHTROCH_BUILD_BENCH=OFF", "-DSPHTROCH_INSTALL=OFF"], check=True)
-        cmake_target = {"sphtroch._sphtroch": "sphtroch_python", "sphtroch._sphtroch_healpix": "sphtroch_python_healpix"}[ext.name]
+        cmake_target = {"sphtroch._sphtroch": "sphtroch_python", "sphtroch._sphtroch_healpix": "sphtroch_python_healpix",
+                        "sphtroch._sphtroch_urdf": "sphtroch_python_urdf"}[ext.name]
         subprocess.run(["cmake", "--build", str(work), "--target", cmake_target, "-j", jobs], check=True)
         built = work / "python" / "sphtroch" / target.name
         target.parent.mkdir(parents=True, exist_ok=True)
@@ -84,7 +85,8 @@ setup(
     packages=["sphtroch"],
     package_dir={"sphtroch": "python/sphtroch"},
     package_data={"sphtroch": ["__init__.pyi", "py.typed"]},
-    ext_modules=[Extension("sphtroch._sphtroch", sources=[]), Extension("sphtroch._sphtroch_healpix", sources=[])],
+    ext_modules=[Extension("sphtroch._sphtroch", sources=[]), Extension("sphtroch._sphtroch_healpix", sources=[]),
+                 Extension("sphtroch._sphtroch_urdf", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     options={"build": {"build_base": "build-pip"}},
     zip_safe=False,

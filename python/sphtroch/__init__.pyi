@@ -8,6 +8,7 @@ velocity) accept only True or False (also numpy.bool_). Clinostat takes its spee
 its angles in degrees, as `sphtroch clinostat`. Every computation runs with the GIL released;
 GearTrain and Clinostat objects are immutable and may be shared between threads.
 """
+import os
 from fractions import Fraction
 from typing import (Any, Callable, Dict, Iterator, List, Literal, NotRequired, Optional, Protocol, Sequence, Tuple, TypedDict,
                     Union, overload)
@@ -483,6 +484,20 @@ class Chain:
 
     def __init__(self, twists: Union[Sequence[Angle], str], rates: Union[Sequence[RatioLike], str],
                  phases: Union[Sequence[Angle], str, None] = None) -> None: ...
+    @staticmethod
+    def from_urdf(path: Union[str, "os.PathLike[str]"], from_link: str, to_link: str,
+                  axis: Optional[Sequence[float]] = None) -> "Chain":
+        """The chain of a URDF robot description: the revolute joints on the path from from_link
+        down to to_link, coupled to one motor by <mimic>, the tool axis `axis` (x, y, z) in
+        to_link's frame (default (0, 0, 1)) — what `sphtroch chain classify --urdf PATH --from
+        FROM --to TO [--axis X,Y,Z]` reads (docs/chains.md). Twists and phases as round-trip
+        decimals (radians), rates exact. Raises InvalidInput naming the joint or link (field
+        "urdf", "from", "to" or "axis"). Loads the part of the module that links urdfdom on first
+        use."""
+    def export_urdf(self, path: Union[str, "os.PathLike[str]", None] = None, *, name: str = "sphtroch_chain") -> str:
+        """The chain as a URDF robot description, the bytes of `sphtroch chain export --urdf`:
+        joint_1 ... joint_k, each joint after the first mimicking joint_1 with multiplier N_i / N_1;
+        with a path also written there. from_urdf(path, "base_link", "tool") reads it back."""
     @property
     def twists(self) -> Tuple[float, ...]:
         """A1, ..., Ak, radians."""

@@ -1,8 +1,9 @@
 // python/src/bind_chain.cpp — the class sphtroch.Chain (bindings.hpp): a gear-coupled rotation
 // chain (core/rotation_chain.hpp) read from twists, rates and phases as `sphtroch chain` reads
 // them (io/chain_text.hpp: each list is turned into the CLI's comma-separated text, so that the
-// one reader checks it), with trace, kinematics, classify, nodes, cusps, report, boundaries, svg, train, repr,
-// equality and pickling.
+// one reader checks it), or from a URDF (Chain.from_urdf: the reader of `chain --urdf`, in the
+// extension _sphtroch_urdf), with trace, kinematics, classify, nodes, cusps, report, boundaries,
+// svg, train, export_urdf (io/urdf_writer.hpp, `chain export --urdf`), repr, equality and pickling.
 #include "bindings.hpp"
 #include "exact_calls.hpp"
 
@@ -11,6 +12,7 @@
 #include "sphtroch/core/rotation_chain.hpp"
 #include "sphtroch/core/sampling.hpp"
 #include "sphtroch/io/chain_text.hpp"
+#include "sphtroch/io/urdf_writer.hpp"
 
 #include <pybind11/numpy.h>
 
@@ -180,6 +182,56 @@ py::object train(const Chain& self) {
   return py::cast(t);
 }
 
+/// The URDF reader of sphtroch._sphtroch_urdf (urdf_module.cpp), imported here on first use so
+/// that `import sphtroch` loads no urdfdom: the chain, or InvalidInput as read_urdf_chain refuses.
+RotationChain urdf_by_extension(const std::string& xml, const std::string& from, const std::string& to, const Vector3d& axis) {
+  const py::object read = py::module_::import("sphtroch._sphtroch_urdf").attr("read_chain");
+  const py::object r = read(xml, from, to, axis.x(), axis.y(), axis.z());
+  if (py::isinstance<py::dict>(r)) {
+    const py::tuple e = r.cast<py::dict>()["error"];
+    throw InvalidInput(e[0].cast<std::string>(), e[1].cast<std::string>(), e[2].cast<std::string>(), e[3].cast<std::string>());
+  }
+  std::vector<ChainStage> stages;
+  for (const py::handle stage : r) {
+    const py::tuple t = py::reinterpret_borrow<py::tuple>(stage);
+    stages.push_back({t[0].cast<double>(), ChainRate(t[1].cast<std::int64_t>(), t[2].cast<std::int64_t>()), t[3].cast<double>()});
+  }
+  return RotationChain(stages);
+}
+
+/// Chain.from_urdf(path, from_link, to_link, axis=None): `sphtroch chain ... --urdf PATH --from
+/// --to [--axis]`'s chain (io/chain_text.hpp reads the file and checks the arguments), with its
+/// lists as round-trip decimals and exact rates (what repr and pickling give back).
+Chain from_urdf(py::handle path, const std::string& from, const std::string& to, py::handle axis) {
+  ChainText text;
+  text.urdf = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+  text.from = from;
+  text.to = to;
+  if (!axis.is_none()) {
+    std::vector<std::string> items;
+    for (const py::handle v : axis) items.push_back(number_text(v.cast<double>()));
+    if (items.size() != 3) throw InvalidInput("axis", std::to_string(items.size()) + " numbers", "not three numbers", "(x, y, z): three finite numbers, not all 0");
+    text.axis = items[0] + "," + items[1] + "," + items[2];
+  }
+  text.urdf_reader = &urdf_by_extension;
+  Chain c{text.chain(), "", "", ""};
+  for (const ChainStage& s : c.chain.stages()) {
+    const std::string sep = c.twists.empty() ? "" : ",";
+    c.twists += sep + number_text(s.twist);
+    c.rates += sep + s.rate.str();
+    c.phases += sep + number_text(s.phase);
+  }
+  return c;
+}
+
+/// Chain.export_urdf(path=None, *, name="sphtroch_chain"): `chain export --urdf`'s document; with
+/// a path also written there.
+std::string export_urdf(const Chain& self, py::handle path, const std::string& name) {
+  const std::string xml = chain_to_urdf(self.chain, name);
+  if (!path.is_none()) py::module_::import("pathlib").attr("Path")(path).attr("write_text")(xml);
+  return xml;
+}
+
 std::string chain_repr(const Chain& c) {
   return "Chain(twists=" + repr_of(py::str(c.twists)) + ", rates=" + repr_of(py::str(c.rates)) +
          (c.phases.empty() ? std::string() : ", phases=" + repr_of(py::str(c.phases))) + ")";
@@ -217,6 +269,10 @@ void bind_chain(py::module_& m) {
       .def("boundaries", checked(&boundaries), py::arg("vary"), doc("Chain.boundaries"))
       .def("svg", checked(&svg), py::kw_only(), py::arg("view") = py::none(), py::arg("size") = py::none(), py::arg("labels") = "auto",
            py::arg("markers") = "auto", py::arg("style") = "curve", doc("Chain.svg"))
+      .def_static("from_urdf", &from_urdf, py::arg("path"), py::arg("from_link"), py::arg("to_link"),
+                  py::arg("axis") = py::none(), doc("Chain.from_urdf"))
+      .def("export_urdf", checked(&export_urdf), py::arg("path") = py::none(), py::kw_only(), py::arg("name") = "sphtroch_chain",
+           doc("Chain.export_urdf"))
       .def("__repr__", checked(&chain_repr))
       .def("__eq__", checked(+[](const Chain& a, py::handle other) -> py::object {
         if (!py::isinstance<Chain>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import sphtroch
-from conftest import EXE, run_cli
+from conftest import EXE, cli_json, run_cli
 
 
 def rz(t):
@@ -118,6 +118,42 @@ def test_svg_is_the_picture_chain_plot_draws(tmp_path):
     with pytest.raises(sphtroch.InvalidInput) as e:
         wrist().svg(size=10)
     assert e.value.field == "size"
+
+
+def test_export_urdf_is_the_cli_document_and_from_urdf_reads_it_back(tmp_path):
+    """export_urdf's text is the bytes `chain export --urdf` writes; from_urdf of that file gives
+    the chain of the model (rotation product written here) and the census `chain classify --urdf`
+    prints for the same file."""
+    cli_file = tmp_path / "cli.urdf"
+    subprocess.run([EXE, "chain", "export", "--twists", "pi/2,1.2,0.4", "--rates", "1,-2/3,5/3", "--phases", "0,0.3,-1",
+                    "--urdf", str(cli_file)], check=True)
+    written = tmp_path / "py.urdf"
+    text = wrist().export_urdf(written)
+    assert text == cli_file.read_text() == written.read_text()
+    read = sphtroch.Chain.from_urdf(written, "base_link", "tool")
+    assert read.rates == ("1", "-2/3", "5/3")
+    _, p = read.trace(samples=97)
+    for k in (0, 13, 50, 96):  # the read chain draws the model's curve (its frame: joint 1's axis is z)
+        assert np.abs(p[k] - model(WRIST, read.period * k / 97)).max() < 1e-12
+    assert read.classify() == cli_json("chain", "classify", "--urdf", str(written), "--from", "base_link", "--to", "tool", "--json")
+    assert pickle.loads(pickle.dumps(read)) == read
+    assert repr(read).startswith("Chain(twists=")
+
+
+def test_from_urdf_refuses_as_the_cli_does(tmp_path):
+    bad = tmp_path / "bad.urdf"
+    bad.write_text("<robot name='r'><link name='a'/></robot>")
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        sphtroch.Chain.from_urdf(bad, "a", "b")
+    done = subprocess.run([EXE, "chain", "classify", "--urdf", str(bad), "--from", "a", "--to", "b"], capture_output=True, text=True)
+    assert done.returncode == 2
+    assert e.value.field in done.stderr and str(e.value) in done.stderr
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        sphtroch.Chain.from_urdf(tmp_path / "missing.urdf", "a", "b")
+    assert e.value.field == "urdf"
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        wrist().export_urdf(written := tmp_path / "w.urdf") and sphtroch.Chain.from_urdf(written, "base_link", "tool", axis=(0, 0))
+    assert e.value.field == "axis"
 
 
 def test_an_uncertified_census_raises_with_its_nodes():
