@@ -117,6 +117,7 @@
 #include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/rpm.hpp"
+#include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 #if defined(SPHTROCH_HAVE_HEALPIX)

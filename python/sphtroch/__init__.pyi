@@ -253,6 +253,13 @@ class ClinostatCoverage(TypedDict):
     bound_s: float
     dwell_s: List[float]
 
+class RunningMean(TypedDict):
+    """One running mean of Clinostat.report(running_mean=...): the mean over [start_s, start_s + t_s]."""
+    start_s: float
+    t_s: float
+    mean: List[float]
+    magnitude: float
+
 class ClinostatReport(TypedDict):
     """Clinostat.report(): the object `sphtroch clinostat --json` prints (docs/clinostat.md)."""
     train: Optional[ClinostatReportTrain]
@@ -262,6 +269,7 @@ class ClinostatReport(TypedDict):
     mean_over_period: List[float]
     worst_window_mean: NotRequired[WorstWindowMean]
     time_to_epsilon: NotRequired[TimeToEpsilon]
+    running_mean: NotRequired[List[RunningMean]]
     coverage: NotRequired[ClinostatCoverage]
 
 class ChainInfo(TypedDict):
@@ -699,14 +707,17 @@ class Clinostat:
         variation of the dwell over all cells; 0 = uniform), "bound_s" (every cell's time is within
         it)}."""
     def report(self, *, window: Optional[Real] = None, epsilon: Optional[Real] = None, resolution: Optional[Real] = None,
-               coverage: Optional[Real] = None, nside: Count = 8, start: Real = 0.0) -> ClinostatReport:
+               coverage: Optional[Real] = None, nside: Count = 8, start: Real = 0.0,
+               running_mean: Optional[Sequence[Real]] = None) -> ClinostatReport:
         """The whole report as the object `sphtroch clinostat --outer O --inner I ... --window W
         --epsilon E --resolution S --coverage D --nside K --start T --json` prints, member for member
         and double for double (machine/clinostat_report.hpp writes it for both): "train" (or None
         and "train_note"), "averaged", "period_s", "mean_over_period", and with window
-        "worst_window_mean", with epsilon "time_to_epsilon", with coverage "coverage" (HEALPix).
-        Ranges as worst_window_mean(), time_to() (resolution only with epsilon; default 1 s) and
-        coverage(). Raises InvalidInput as those do, naming the CLI's options."""
+        "worst_window_mean", with epsilon "time_to_epsilon", with running_mean (durations T, s)
+        "running_mean" (the mean over [start, start + T] for each T, `--running-mean`), with
+        coverage "coverage" (HEALPix). Ranges as worst_window_mean(), time_to() (resolution only
+        with epsilon; default 1 s) and coverage(). Raises InvalidInput as those do, naming the CLI's
+        options."""
     def _repr_svg_(self) -> Optional[str]:
         """Jupyter's picture: the train's (GearTrain._repr_svg_), or None without a train (Jupyter
         then shows the repr)."""

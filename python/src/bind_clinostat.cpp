@@ -239,8 +239,12 @@ DwellMap dwell_map_of(const py::dict& d) {
 /// Clinostat.report(...): machine/clinostat_report.hpp's JSON object, the one `sphtroch clinostat
 /// --json` prints, read by Python's json module (so the dict is that object, member for member).
 py::object report(const Machine& self, py::handle window, py::handle epsilon, py::handle resolution, py::handle coverage,
-                  py::handle nside, py::handle start) {
+                  py::handle nside, py::handle start, py::handle running_mean) {
   ClinostatRequest q;
+  q.start = time_arg(start, "start");
+  if (!running_mean.is_none())
+    for (const py::handle t : running_mean)
+      q.running_mean_s.push_back(positive_arg(t, "running-mean", Clinostat::kMaxTime, "T1,T2,...: durations in (0, 1e12] seconds"));
   if (!window.is_none()) q.window = positive_arg(window, "window", 1e9, "seconds in (0, 1e9]");
   if (!epsilon.is_none()) q.epsilon = positive_arg(epsilon, "epsilon", 1e9, "a bound in units of g0, > 0");
   if (!resolution.is_none()) {
@@ -323,7 +327,7 @@ void bind_clinostat(py::module_& m) {
            doc("Clinostat.coverage_summary"))
       .def("report", checked(&report), py::kw_only(), py::arg("window") = py::none(), py::arg("epsilon") = py::none(),
            py::arg("resolution") = py::none(), py::arg("coverage") = py::none(), py::arg("nside") = 8, py::arg("start") = 0.0,
-           doc("Clinostat.report"))
+           py::arg("running_mean") = py::none(), doc("Clinostat.report"))
       .def("_repr_svg_", checked(+[](M c) -> py::object {
         return c.gear_train ? py::cast(*c.gear_train).attr("_repr_svg_")() : py::object(py::none());
       }), doc("Clinostat._repr_svg_"))

@@ -7,6 +7,7 @@
 #include "dwell_input.hpp"
 #include "png_output.hpp"
 
+#include "sphtroch/io/chain_text.hpp"  // split_list
 #include "sphtroch/io/npy.hpp"
 #include "sphtroch/io/trace_output.hpp"
 #include "sphtroch/machine/clinostat_plot.hpp"
@@ -26,7 +27,7 @@ constexpr int kMaxPlotNside = 32;
 
 struct ClinostatOptions {
   ClinostatText machine;
-  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output, plot;
+  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output, plot, running_mean;
   bool json = false, trace = false;
 };
 
@@ -59,6 +60,8 @@ ClinostatRequest read_request(const ClinostatOptions& o) {
     if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 1024");
   }
   r.start = parse_time(o.start, "start");
+  for (const std::string& item : split_list(o.running_mean))
+    r.running_mean_s.push_back(parse_positive(item, "running-mean", Clinostat::kMaxTime, "T1,T2,...: durations in (0, 1e12] seconds"));
   return r;
 }
 
@@ -88,8 +91,8 @@ void check_plot_request(const std::string& plot, const ClinostatRequest& q) {
 void run_report(const ClinostatOptions& o, const Clinostat& m) {
   const ClinostatRequest q = read_request(o);
   if (!o.plot.empty()) check_plot_request(o.plot, q);
-  if (!o.start.empty() && !q.coverage && o.plot.empty())
-    throw UsageError{"--start = " + o.start + ": only with --coverage, --plot or --trace; valid: --coverage S --start T"};
+  if (!o.start.empty() && !q.coverage && o.plot.empty() && q.running_mean_s.empty())
+    throw UsageError{"--start = " + o.start + ": only with --coverage, --running-mean, --plot or --trace; valid: --coverage S --start T"};
   if (q.coverage) require_dwell_maps("coverage", o.coverage);  // refused now, not after the other numbers
   ClinostatReport r = clinostat_report(m, q);
   if (q.coverage) r.dwell = dwell_map_by_plugin(m.settings(), q.start, *q.coverage, q.nside);
@@ -109,7 +112,7 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
 void run_trace(const ClinostatOptions& o, const Clinostat& m) {
   for (const auto& [given, name] : {std::pair{!o.window.empty(), "--window"}, std::pair{!o.epsilon.empty(), "--epsilon"},
                                     std::pair{!o.coverage.empty(), "--coverage"}, std::pair{o.json, "--json"},
-                                    std::pair{!o.plot.empty(), "--plot"}})
+                                    std::pair{!o.plot.empty(), "--plot"}, std::pair{!o.running_mean.empty(), "--running-mean"}})
     if (given) throw UsageError{std::string(name) + ": not with --trace; valid: --trace --duration S --samples N [-o FILE]"};
   if (o.duration.empty()) throw UsageError{"--trace needs --duration S; valid: --trace --duration S --samples N [-o FILE]"};
   const double duration = parse_positive(o.duration, "duration", Clinostat::kMaxTime, "seconds in (0, 1e12]");
@@ -169,6 +172,7 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "--window W: M(W), the largest |mean| over every window of W s (certified bracket, width <= 1e-9).\n"
       "--epsilon E: the shortest window (a multiple of --resolution) with M(W) <= E, and the one from\n"
       "which every longer window is below (M is not monotone).\n"
+      "--running-mean T1,T2,...: the mean over [--start, --start + T] for each T (closed form).\n"
       "--coverage D: seconds per HEALPix cell (RING, --nside K, default 8) over [--start, --start + D].\n"
       "--plot FILE.svg|.png: the dwell map (of --coverage, else one period up to an hour) and M(W)\n"
       "against W (up to 1.25 x the time to epsilon, else three periods up to two hours), epsilon dashed.\n"
@@ -188,7 +192,8 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--resolution", o->resolution, "the step of W for --epsilon, seconds (default 1)");
   cmd->add_option("--coverage", o->coverage, "the dwell map over this many seconds");
   cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8: 768 cells)");
-  cmd->add_option("--start", o->start, "start time of --coverage and --trace, seconds (default 0)");
+  cmd->add_option("--start", o->start, "start time of --coverage, --running-mean and --trace, seconds (default 0)");
+  cmd->add_option("--running-mean", o->running_mean, "T1,T2,...: the mean gravity over [--start, --start + T] for each T, seconds");
   cmd->add_flag("--json", o->json, "the report as JSON (schema: docs/clinostat.md)");
   cmd->add_option("--plot", o->plot, "also write the dwell map (Mollweide) and M(W) against W as FILE.svg or FILE.png");
   cmd->add_flag("--trace", o->trace, "write the gravity over time instead of the report");

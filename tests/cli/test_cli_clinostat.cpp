@@ -245,3 +245,50 @@ TEST_CASE("clinostat design merge: a row whose period or mean over a period was 
   CHECK(contains(merged.err, "mean over a period"));
   CHECK(!fs::exists(dir.path / "edited.json"));
 }
+
+TEST_CASE("clinostat --running-mean: the mean over [start, start + T] as --trace integrates it, and its refusals", "[cli][clinostat]") {
+  TempDir dir;
+  const Result r = run("clinostat --outer 1.5 --inner -2 --tilt 70 --running-mean 40,100 --start 7 --json", dir);
+  REQUIRE(r.status == 0);
+  const json d = json::parse(r.out);
+  REQUIRE(d["running_mean"].size() == 2);
+  for (const json& m : d["running_mean"]) {
+    const double t = m["t_s"];
+    CHECK(m["start_s"] == 7.0);
+    // The trace's samples of the same machine, integrated here by Simpson's rule (4000 panels: the
+    // frames turn at most 2 rpm, so the rule's error is below 1e-12 g0).
+    const Result tr = run("clinostat --outer 1.5 --inner -2 --tilt 70 --trace --start 7 --duration " + std::to_string(t) +
+                              " --samples 8001", dir);
+    REQUIRE(tr.status == 0);
+    std::istringstream lines(tr.out);
+    std::string line;
+    std::getline(lines, line);  // header
+    double sum[3] = {0, 0, 0};
+    for (int k = 0; std::getline(lines, line); ++k) {
+      double tt, g[3];
+      REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &tt, &g[0], &g[1], &g[2]) == 4);
+      const double weight = (k == 0 || k == 8000) ? 1 : (k % 2 ? 4 : 2);
+      for (int c = 0; c < 3; ++c) sum[c] += weight * g[c];
+    }
+    double norm2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double mean = sum[c] * (t / 8000 / 3) / t;
+      CHECK(std::fabs(m["mean"][c].get<double>() - mean) < 1e-12);
+      norm2 += m["mean"][c].get<double>() * m["mean"][c].get<double>();
+    }
+    CHECK(m["magnitude"].get<double>() == Approx(std::sqrt(norm2)).epsilon(1e-15));
+  }
+  const Result text = run("clinostat --outer 1.5 --inner -2 --tilt 70 --running-mean 40 --start 7", dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "running mean over [7, 47] s: ("));
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--running-mean 0", "--running-mean"}, {"--running-mean 10,-1", "--running-mean"}, {"--running-mean 10,", "--running-mean"},
+           {"--running-mean 1e13", "--running-mean"}, {"--trace --duration 10 --running-mean 5", "--running-mean"}}) {
+    const Result bad = run("clinostat --outer 1 --inner 2 " + args, dir);
+    INFO(args << " -> " << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(contains(bad.err, option));
+    CHECK(count_lines(bad.err) == 1);
+  }
+}

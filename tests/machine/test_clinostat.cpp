@@ -1,4 +1,5 @@
-// Tests of machine/clinostat.hpp, machine/clinostat_text.hpp and machine/clinostat_train.hpp.
+// Tests of machine/clinostat.hpp, machine/clinostat_text.hpp, machine/clinostat_train.hpp and
+// machine/running_mean.hpp (against a Gauss-Legendre quadrature of the model below).
 // Expected values come from an independent rotation model written here: the frame angles from the
 // exact speed in 128-bit MPFR, the sample frame as a product of Eigen AngleAxis rotations in long
 // double (not the library's Rodrigues matrices), and the off-centre acceleration in the lab frame
@@ -8,6 +9,7 @@
 #include "sphtroch/exact/mpreal_support.hpp"  // first: Eigen's MPRealSupport
 #include "sphtroch/machine/clinostat_text.hpp"
 #include "sphtroch/machine/clinostat_train.hpp"
+#include "sphtroch/machine/running_mean.hpp"
 #include "test_support.hpp"
 
 #include <numeric>
@@ -209,4 +211,84 @@ TEST_CASE("clinostat: speeds are read exactly, bad settings are refused naming t
   }
   const Clinostat m(text.settings());
   CHECK(test::expect_invalid([&] { m.gravity(std::nan("")); }).field() == "t");
+}
+
+namespace {
+
+/// The mean of the model's gravity (or effective gravity) over [a, a + T]: composite 8-point
+/// Gauss-Legendre on panels of at most 0.25 s (at <= 12 rpm a panel holds at most 1/10 of a turn
+/// of either frame: the rule's error is far below 1e-13).
+Vec3L quadrature_mean(const ClinostatSettings& s, double a, double T, bool effective) {
+  static const long double x[4] = {0.183434642495649804939476142360184L, 0.525532409916328985817739049189246L,
+                                   0.796666477413626739591553936475830L, 0.960289856497536231683560868569473L};
+  static const long double w[4] = {0.362683783378361982965150449277196L, 0.313706645877887287337962201986601L,
+                                   0.222381034453374470544355994426241L, 0.101228536290376259152531354309962L};
+  const int panels = static_cast<int>(std::ceil(T / 0.25));
+  const long double h = static_cast<long double>(T) / panels;
+  Vec3L sum = Vec3L::Zero();
+  for (int k = 0; k < panels; ++k) {
+    const long double mid = a + (k + 0.5L) * h;
+    for (int j = 0; j < 4; ++j)
+      for (const int sign : {-1, 1}) {
+        const Model m(s, static_cast<double>(mid + sign * x[j] * h / 2));
+        sum += w[j] * (h / 2) * (effective ? m.effective(s.offset_m) : m.gravity());
+      }
+  }
+  return sum / static_cast<long double>(T);
+}
+
+}  // namespace
+
+TEST_CASE("clinostat: running means are the quadrature of the independent model", "[clinostat][running]") {
+  std::mt19937_64 rng(62);
+  std::uniform_int_distribution<int> num(-1200, 1200);
+  std::uniform_real_distribution<double> start(-500, 500), length(0.5, 120), offset(-0.2, 0.2), angle(0, 180);
+  double worst = 0;
+  for (int i = 0; i < 40; ++i) {
+    ClinostatSettings s;
+    s.outer = Rpm(num(rng), 100);  // |speed| <= 12 rpm
+    s.inner = Rpm(num(rng) == 0 ? 1 : num(rng), 100);
+    if (s.outer.is_zero() && s.inner.is_zero()) s.inner = Rpm(1);
+    s.tilt_deg = angle(rng);
+    s.frame_angle_deg = angle(rng);
+    s.phase_outer_deg = start(rng);
+    const bool effective = i % 2 == 1;
+    if (effective) s.offset_m = Vector3d(offset(rng), offset(rng), offset(rng));
+    const Clinostat m(s);
+    const GravitySeries g = effective ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);
+    const double a = start(rng);
+    const std::vector<double> times = {length(rng), length(rng)};
+    const std::vector<RunningMean> means = running_means(g, a, times);
+    REQUIRE(means.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const Vec3L q = quadrature_mean(s, a, times[k], effective);
+      CHECK(means[k].t_s == times[k]);
+      worst = std::max(worst, static_cast<double>((means[k].mean.cast<long double>() - q).norm()));
+      CHECK(means[k].magnitude == means[k].mean.norm());
+    }
+  }
+  INFO("largest difference from the quadrature: " << worst << " g0");
+  CHECK(worst < 1e-12);
+}
+
+TEST_CASE("clinostat: running means refuse no time a bad time and a start past the clock", "[clinostat][running]") {
+  ClinostatSettings s;
+  s.outer = Rpm(1);
+  s.inner = Rpm(2);
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+  const auto field = [&](double a, std::vector<double> t) {
+    try {
+      running_means(g, a, t);
+    } catch (const InvalidInput& e) {
+      return e.field();
+    }
+    return std::string("none");
+  };
+  CHECK(field(0, {}) == "running-mean");
+  CHECK(field(0, {0.0}) == "running-mean");
+  CHECK(field(0, {-1.0}) == "running-mean");
+  CHECK(field(0, {std::nan("")}) == "running-mean");
+  CHECK(field(0, {2e12}) == "running-mean");
+  CHECK(field(9.9e11, {2e11}) == "start");
+  CHECK(field(0, {60.0}) == "none");
 }

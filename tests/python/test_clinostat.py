@@ -217,12 +217,22 @@ def test_the_report_is_the_clis_json_object(case):
     assert got == full
     assert set(got) == {"train", "averaged", "period_s", "mean_over_period", "worst_window_mean", "time_to_epsilon",
                         "coverage"} | ({"train_note"} if got["train"] is None else set())
+    running = c.report(running_mean=[30, window], start=start)
+    assert running == cli_json("clinostat", *options, "--running-mean", f"30,{window}", f"--start={start}", "--json")
+    for m in running["running_mean"]:  # the mean of the sampled gravity (Simpson's rule on 20001 points)
+        t = np.linspace(start, start + m["t_s"], 20001)
+        g = c.effective_gravity(t) if "offset" in kwargs else c.gravity(t)
+        w = np.ones(t.size)
+        w[1:-1:2], w[2:-1:2] = 4, 2
+        simpson = (w[:, None] * g).sum(axis=0) * (t[1] - t[0]) / 3
+        assert np.abs(simpson / m["t_s"] - m["mean"]).max() < 1e-10
 
 
 def test_the_report_refuses_as_the_cli_does():
     c = sphtroch.Clinostat(1.33, 2)
     for kwargs, field in (({"window": 0}, "window"), ({"epsilon": -1}, "epsilon"), ({"resolution": 2}, "resolution"),
-                          ({"coverage": 600, "nside": 3}, "nside")):
+                          ({"coverage": 600, "nside": 3}, "nside"), ({"running_mean": [0]}, "running-mean"),
+                          ({"running_mean": [10, float("nan")]}, "running-mean")):
         with pytest.raises(sphtroch.InvalidInput) as e:
             c.report(**kwargs)
         assert e.value.field == field

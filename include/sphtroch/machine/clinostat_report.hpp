@@ -19,7 +19,8 @@
 // "rotation"} or null (then "train_note"); "averaged"; "period_s" (null: none); "mean_over_period";
 // with --window "worst_window_mean" {"window_s", "lower", "upper", "start_s", "certified"}; with
 // --epsilon "time_to_epsilon" {"epsilon", "resolution_s", "first_s", "stays_below_from_s",
-// "above_s", "reason", "certified"}; with --coverage "coverage" {"start_s", "duration_s", "nside",
+// "above_s", "reason", "certified"}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
+// "magnitude"}]; with --coverage "coverage" {"start_s", "duration_s", "nside",
 // "order", "fraction", "dwell_cv", "bound_s", "dwell_s"}.
 // Cost: M(W) and the time to epsilon are refused up front when the period is too long to search
 // (worst_window_mean_cost throws CostLimitExceeded); the rest is closed form.
@@ -32,6 +33,7 @@
 #include "sphtroch/machine/clinostat_train.hpp"
 #include "sphtroch/machine/dwell_map_result.hpp"
 #include "sphtroch/machine/gravity_series.hpp"
+#include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
@@ -51,8 +53,9 @@ struct ClinostatRequest {
   std::optional<double> epsilon;   ///< the time to epsilon for this bound, units of g0
   double resolution = 1;           ///< the step of W for epsilon, seconds
   std::optional<double> coverage;  ///< the dwell map over this many seconds (supplied by the caller)
-  double start = 0;                ///< start of the dwell map, seconds
+  double start = 0;                ///< start of the dwell map and of the running means, seconds
   int nside = 8;                   ///< HEALPix nside of the dwell map
+  std::vector<double> running_mean_s;  ///< the running means from start over these durations, seconds
 };
 
 /// A report's numbers, computed once for the text, the JSON and the picture.
@@ -65,6 +68,7 @@ struct ClinostatReport {
   std::optional<WorstWindowMean> worst;
   std::optional<TimeToEpsilon> time_to;
   std::optional<DwellMap> dwell;  ///< the caller's, when coverage was asked
+  std::vector<RunningMean> running;  ///< of request.running_mean_s (running_mean.hpp)
 };
 
 /// The report of machine m for q; `dwell` is the dwell map of q.coverage when asked (the caller
@@ -76,6 +80,7 @@ inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatReque
   if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
   if (q.window) r.worst = worst_window_mean(r.series, *q.window);
   if (q.epsilon) r.time_to = time_to_epsilon(r.series, *q.epsilon, q.resolution);
+  if (!q.running_mean_s.empty()) r.running = running_means(r.series, q.start, q.running_mean_s);
   return r;
 }
 
@@ -125,6 +130,11 @@ inline nlohmann::json clinostat_report_json(const ClinostatReport& r) {
                               {"first_s", d::or_null(r.time_to->first_s)}, {"stays_below_from_s", d::or_null(r.time_to->stays_below_from_s)},
                               {"above_s", d::or_null(r.time_to->above_s)},
                               {"reason", r.time_to->reason}, {"certified", r.time_to->certified}};
+  if (!r.running.empty()) {
+    out["running_mean"] = nlohmann::json::array();
+    for (const RunningMean& m : r.running)
+      out["running_mean"].push_back({{"start_s", r.request.start}, {"t_s", m.t_s}, {"mean", d::vector_json(m.mean)}, {"magnitude", m.magnitude}});
+  }
   if (r.dwell)
     out["coverage"] = {{"start_s", r.dwell->start_s}, {"duration_s", r.dwell->duration_s}, {"nside", r.dwell->nside},
                        {"order", "RING"}, {"fraction", r.dwell->visited_fraction}, {"dwell_cv", r.dwell->dwell_cv},
@@ -181,10 +191,19 @@ inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatRepor
         << number_text(r.dwell->bound_s) << " s (--json gives the dwell per cell)\n";
 }
 
+/// The running means, one line each.
+inline void write_clinostat_running_text(std::ostream& out, const ClinostatReport& r) {
+  for (const RunningMean& m : r.running)
+    out << "running mean over [" << number_text(r.request.start) << ", " << number_text(r.request.start + m.t_s) << "] s: ("
+        << number_text(m.mean.x()) << ", " << number_text(m.mean.y()) << ", " << number_text(m.mean.z()) << ") g0, |mean| = "
+        << number_text(m.magnitude) << " g0\n";
+}
+
 /// The report as text, for people (`sphtroch clinostat` without --json).
 inline void write_clinostat_report_text(std::ostream& out, const ClinostatReport& r) {
   write_clinostat_machine_text(out, r);
   write_clinostat_numbers_text(out, r);
+  write_clinostat_running_text(out, r);
 }
 
 /// How long the --plot's dwell panel covers when no coverage was asked: one period, at most an hour.
