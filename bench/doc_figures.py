@@ -114,8 +114,8 @@ def check_page(path, rel, figures, anchors, performance):
             end = min(e for e in ends if e > m.start())
             start = max([e for e in ends if e <= m.start()], default=0)
             if not any(start <= c < end for c in cites):
-                problems.append(f"{rel}:{line_of(m.start())}: {m.group(0).strip()!r} is not a figure of docs/performance.md "
-                                "and cites no row of it (bench/doc_figures.py)")
+                problems.append(f"{rel}:{line_of(m.start())}: {m.group(0).strip()!r} is not a figure of docs/performance.md, "
+                                "and its sentence has no link to it (the rule: bench/doc_figures.py)")
     return problems
 
 
