@@ -4,7 +4,10 @@
 //   a3 moved, so the ruler's events are kept) for 60 random trains with |p|, q <= 7, the boundary
 //   events at one a2 (lib.events, 60 random), the design map (128^2 cells, then the boundary
 //   curves) in its worker, the census of a dense curve (n = 133/200, a2 = a3 = pi/2: 26,602 nodes;
-//   lib.classify, median of 3) and the module's size. Prints medians; not a test (timing never is).
+//   lib.classify, median of 3), the page's certificate of three trains (report Fig. 3, n = 13/5 at
+//   (0.7, 2.5), n = 133/200 at pi/2, pi/2: from the state drawn to the count check's verdict, the
+//   certified census in its worker) and the module's size. Prints medians; not a test (timing
+//   never is).
 'use strict';
 const fs = require('fs');
 const path = require('path');
@@ -14,6 +17,18 @@ const { chromium } = require(path.join(__dirname, '..', 'explorer', 'test', 'nod
 const build = path.resolve(process.argv[2] || 'build');
 const url = 'file://' + path.join(build, 'web', 'index.html');
 const median = (xs) => { const s = xs.slice().sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
+
+// The page's certificate of the train in `hash`: ms from the state drawn to the count check's
+// verdict ("certified" or "not-certified"; [data-testid="certified"]'s data-state), and the verdict.
+async function certificateTime(page, hash) {
+  await page.goto(url + hash);
+  await page.waitForSelector('body[data-ready="1"]');
+  const t0 = Date.now();
+  await page.waitForFunction(() => !['pending', ''].includes(document.querySelector('[data-testid="certified"]').dataset.state),
+    null, { timeout: 600000 });
+  const state = await page.evaluate(() => document.querySelector('[data-testid="certified"]').dataset.state);
+  return { ms: Date.now() - t0, state };
+}
 
 (async () => {
   const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox'] });
@@ -56,14 +71,21 @@ const median = (xs) => { const s = xs.slice().sort((a, b) => a - b); return s[Ma
   await page.waitForSelector('body[data-ready="1"]');
   await page.waitForFunction(() => /boundary curves/.test(document.querySelector('[data-testid="map-status"]').textContent), null, { timeout: 120000 });
   const status = await page.textContent('[data-testid="map-status"]');
+  const certificates = [];
+  for (const [name, hash] of [['report Fig. 3', '#a2=pi/2&a3=pi/2&n=1&phase=0'], ['n = 13/5 at (0.7, 2.5)', '#a2=0.7&a3=2.5&n=13/5&phase=0'],
+                              ['n = 133/200 at pi/2, pi/2', '#a2=pi/2&a3=pi/2&n=133/200&phase=0']]) {
+    const c = await certificateTime(page, hash);
+    certificates.push(name + ' ' + c.ms + ' ms (' + c.state + ')');
+  }
   await browser.close();
   const js = fs.readFileSync(path.join(build, 'web', 'sphtroch.js'));
   const wasmBytes = Buffer.from(/base64,([A-Za-z0-9+/=]+)/.exec(js.toString())[1], 'base64');
   console.log('explorer, headless Chromium, ' + new Date().toISOString());
-  console.log('first load (median of 5):            ' + median(loads) + ' ms');
+  console.log('first load (median of 5):            ' + median(loads) + ' ms (the first, cold: ' + loads[0] + ' ms)');
   console.log('slider update, a3 (median of 60):    ' + median(inPage.update).toFixed(1) + ' ms (library ' + median(inPage.compute).toFixed(1) + ' ms; max ' + Math.max(...inPage.update).toFixed(1) + ')');
   console.log('boundary events at one a2 (median):  ' + median(inPage.events).toFixed(1) + ' ms (max ' + Math.max(...inPage.events).toFixed(1) + ')');
   console.log('dense census, 133/200 (median of 3):  ' + median(inPage.dense).toFixed(0) + ' ms');
   console.log('design map, n = 13/5:                ' + status);
+  console.log('the page\'s certificate:              ' + certificates.join('; '));
   console.log('wasm: ' + wasmBytes.length + ' bytes, gzip ' + zlib.gzipSync(wasmBytes).length + ' bytes; sphtroch.js ' + js.length + ' bytes');
 })();

@@ -25,7 +25,7 @@ NAME = re.compile(r"(?<![\w./$}-])((?:[\w.-]+/)*[\w-]+\.(?:hpp|cpp|py|md|sh|cmak
 LINK = re.compile(r"\]\(([^)\s]+)\)")
 # Names that are not files of this project although they look like one (generic examples).
 GENERIC = {"app.cpp", "main.cpp", "x.py", "setup.py", "conftest.py", "README.md", "CMakeLists.txt",
-           "file.cpp", "sphtroch_impl.cpp", "cmd.sh",
+           "file.cpp", "sphtroch_impl.cpp", "cmd.sh", "page.md",  # page.md: bench/doc_figures.py's self-test page
            "docstrings.hpp"}  # generated into the build tree by python/gen_docstrings.py
 # Paths of an install prefix (made by `cmake --install`), not of the source tree.
 INSTALLED = ("share/", "lib/", "bin/")
