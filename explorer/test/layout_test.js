@@ -6,29 +6,25 @@
 //  - node list: the same with the "Nodes and cusps" box (a <details>) open;
 //  - fit:       the same with an inverse design's candidates listed (their "use" buttons);
 //  - dense:     n = 133/200 at (pi/2, pi/2): the markers note beside the markers select;
-//  - panels:    the clinostat panel (a machine computed) and the chain panel (a two-stage chain:
-//               its picture, census and "show it above" button) open;
+//  - panels:    the clinostat panel (a machine computed) and the chain panel (a three-stage chain:
+//               its census, command and picture) open; then the chain made a two-stage one (its
+//               gear train and "show it above" button instead);
 //  - errors:    a2, the clinostat's outer rpm and the chain's twists refused: the three error lines.
 // The markers select's open list is drawn by the browser outside the page's layout, so it has no
 // state of its own: the closed select is a control of every state.
 //
-// The controls: what a user reads or operates. Every visible input (not type=hidden), select,
-// button, textarea, label, summary, canvas, outermost svg, table header cell (th: a readout's name)
-// and every element with a data-testid (the readouts, status and error lines of the test contract,
-// docs/explorer.md); elements inside an svg are its drawing, not controls. A control's boxes are its
-// border boxes (getClientRects: one per line of an inline element) and the boxes of the text inside
-// it (so a label whose text runs out of its box counts where the text is), each clipped to every
-// ancestor that clips its overflow (a scrolled box shows only what lies inside it).
-// Fails (exit 1, each failure printed with the width and state) when
-//  - two controls' boxes intersect with an area > 0 (each side longer than 1/128 px, below
-//    Chromium's layout unit of 1/64 px: float noise is not an overlap), unless one contains the
-//    other in the document (a control and its descendants) or one is the other's label
-//    (label.control);
-//  - a visible element's clipped box reaches left of 0 or right of the viewport's width
-//    (document.documentElement.clientWidth, the viewport less a vertical scrollbar, 1/128 px
-//    allowed), or document.documentElement.scrollWidth > clientWidth (the page scrolls sideways).
-// The screenshot: at 1366 x 768, the design state (the sphere's animation stopped at carrier angle
-// 0) is written as OUT_DIR/explorer_1366.png. With FIGURE (the docs' committed copy,
+// The controls: what a user reads or operates — every visible input, select, button, textarea,
+// label, summary, canvas, svg, th, li and element with a data-testid; their boxes include their
+// text's and an outside list marker's, clipped where an ancestor clips (layout_probe.js, which runs
+// in the page, says exactly how). Fails (exit 1, each failure printed with the width and state) when
+//  - two controls' boxes intersect with an area > 0 (each side over 1/128 px), unless one contains
+//    the other or is its label;
+//  - a visible element's box reaches left of 0 or right of the viewport's width (its clientWidth,
+//    the viewport less a vertical scrollbar), or document.documentElement.scrollWidth exceeds it
+//    (the page scrolls sideways).
+// The screenshot: the design state laid out at 1366 x 768 (the sphere's animation stopped at carrier
+// angle 0), written at 0.75 device pixels per CSS pixel as OUT_DIR/explorer_1366.png (fails at
+// 300 KB or more). With FIGURE (the docs' committed copy,
 // data/figures/explorer.png) it is compared with it: fails when the sizes differ or when the mean
 // absolute difference of the two images' 8 x 8 px block means (over the blocks and the R, G, B
 // channels, 0..255) exceeds SCREENSHOT_TOLERANCE; the fix is to copy OUT_DIR/explorer_1366.png
@@ -46,9 +42,9 @@ if (!webDir || !outDir) {
 const pageUrl = 'file://' + path.resolve(webDir, 'index.html');
 const VIEWPORTS = [{ width: 1024, height: 768 }, { width: 1366, height: 768 }, { width: 1920, height: 1080 }];
 const SCREENSHOT_WIDTH = 1366, SCREENSHOT_SCALE = 0.75, SCREENSHOT_BYTES = 300000;
-// Mean absolute difference of 8 x 8 block means, 0..255. Two runs of the test differ by the map's
-// timing text ("128² cells, 0.6 s") and a few antialiased pixels: measured 0.02; the layout moved
-// by 8 px (a wider margin on the body) measures 3.9.
+// Mean absolute difference of 8 x 8 block means, 0..255. Measured: two runs of the test (they
+// differ in the map's timing text, "128² cells, 0.6 s") 0.002; one letter of the title changed
+// 0.014; the page moved right by 8 px (a wider margin on the body) 7.3.
 const SCREENSHOT_TOLERANCE = 0.5;
 const failures = [];
 const check = (ok, what) => { if (!ok) failures.push(what); };
@@ -56,85 +52,8 @@ const check = (ok, what) => { if (!ok) failures.push(what); };
 const DESIGN = '#a2=0.7&a3=2.5&n=13/5&phase=0';
 const DENSE = '#a2=pi/2&a3=pi/2&n=133/200&phase=0';
 const CLINOSTAT = '&clinostat=on&outer=1.33&inner=2&tilt=90&frame-angle=90&window=600&epsilon=0.01';
-const PANELS = '#a2=pi/3&a3=pi/2&n=2&phase=0' + CLINOSTAT + '&twists=1.2,0.9&rates=1,2&phases=0,0.4';
+const PANELS = '#a2=pi/3&a3=pi/2&n=2&phase=0' + CLINOSTAT + '&twists=pi/2,1.2,0.4&rates=1,-2/3,5/3&phases=0,0.3,-1';
 const ERRORS = '#a2=7&a3=pi/2&n=2&phase=0' + CLINOSTAT.replace('outer=1.33', 'outer=abc') + '&twists=4,1&rates=1,2';
-
-// Runs in the page: the controls' clipped boxes, the overlapping pairs and the elements outside
-// the viewport horizontally (see the file's comment for the rules).
-function measureLayout() {
-  const EPS = 1 / 128;
-  const SELECTOR = 'input:not([type=hidden]), select, button, textarea, label, summary, canvas, svg, th, [data-testid]';
-  const viewWidth = document.documentElement.clientWidth;
-  const inSvg = (el) => el.parentElement && el.parentElement.closest('svg') !== null;
-  const name = (el) => {
-    let s = el.tagName.toLowerCase();
-    if (el.id) s += '#' + el.id;
-    if (el.dataset.testid) s += '[data-testid=' + el.dataset.testid + ']';
-    const text = (el.textContent || el.value || '').trim().replace(/\s+/g, ' ').slice(0, 24);
-    return text ? s + ' "' + text + '"' : s;
-  };
-  // The rectangle r cut to every ancestor of el that clips its overflow (its padding box).
-  const clip = (el, r) => {
-    let { left, top, right, bottom } = r;
-    for (let a = el.parentElement; a && a !== document.documentElement; a = a.parentElement) {
-      const cs = getComputedStyle(a);
-      if (cs.overflowX === 'visible' && cs.overflowY === 'visible') continue;
-      const b = a.getBoundingClientRect();
-      left = Math.max(left, b.left + a.clientLeft); right = Math.min(right, b.left + a.clientLeft + a.clientWidth);
-      top = Math.max(top, b.top + a.clientTop); bottom = Math.min(bottom, b.top + a.clientTop + a.clientHeight);
-    }
-    return right - left > EPS && bottom - top > EPS ? { left, top, right, bottom } : null;
-  };
-  const visible = (el) => el.checkVisibility({ checkOpacity: false, checkVisibilityCSS: true });
-  const boxesOf = (el) => {
-    const rects = Array.from(el.getClientRects());
-    const walker = document.createTreeWalker(el, NodeFilter.SHOW_TEXT);
-    const range = document.createRange();
-    for (let t = walker.nextNode(); t; t = walker.nextNode()) {
-      if (t.textContent.trim() === '' || !visible(t.parentElement)) continue;
-      range.selectNodeContents(t);
-      rects.push(...range.getClientRects());
-    }
-    return rects.map((r) => clip(el, r)).filter((r) => r !== null);
-  };
-  const controls = [];
-  for (const el of document.body.querySelectorAll(SELECTOR)) {
-    if (inSvg(el) || !visible(el)) continue;
-    const boxes = boxesOf(el);
-    if (boxes.length > 0) controls.push({ el, boxes });
-  }
-  const related = (a, b) => a.contains(b) || b.contains(a) || (a.control && a.control === b) || (b.control && b.control === a);
-  const overlaps = [];
-  for (let i = 0; i < controls.length; ++i) {
-    for (let j = i + 1; j < controls.length; ++j) {
-      const a = controls[i], b = controls[j];
-      if (related(a.el, b.el)) continue;
-      let worst = null;
-      for (const p of a.boxes) {
-        for (const q of b.boxes) {
-          const w = Math.min(p.right, q.right) - Math.max(p.left, q.left), h = Math.min(p.bottom, q.bottom) - Math.max(p.top, q.top);
-          if (w > EPS && h > EPS && (!worst || w * h > worst.w * worst.h)) worst = { w, h, x: Math.max(p.left, q.left), y: Math.max(p.top, q.top) };
-        }
-      }
-      if (worst) {
-        overlaps.push(name(a.el) + ' and ' + name(b.el) + ' overlap by ' + worst.w.toFixed(1) + ' x ' + worst.h.toFixed(1) +
-          ' px at (' + worst.x.toFixed(0) + ', ' + (worst.y + window.scrollY).toFixed(0) + ')');
-      }
-    }
-  }
-  const outside = [];
-  for (const el of document.body.querySelectorAll('*')) {
-    if (inSvg(el) || !visible(el)) continue;
-    for (const r of Array.from(el.getClientRects()).map((x) => clip(el, x)).filter((x) => x !== null)) {
-      if (r.left < -EPS || r.right > viewWidth + EPS) {
-        outside.push(name(el) + ' spans x = ' + r.left.toFixed(1) + ' .. ' + r.right.toFixed(1) + ', the viewport 0 .. ' + viewWidth);
-        break;
-      }
-    }
-  }
-  const scrollWidth = document.documentElement.scrollWidth;
-  return { controls: controls.length, overlaps, outside, scrollWidth, viewWidth };
-}
 
 async function open(page, hash) {
   await page.goto('about:blank');
@@ -148,10 +67,14 @@ const waitState = (page, id, states) => page.waitForFunction(([i, s]) =>
 
 async function checkState(page, viewport, state) {
   const where = viewport.width + ' px, ' + state;
-  const m = await page.evaluate(measureLayout);
+  await page.addScriptTag({ path: path.join(__dirname, 'layout_probe.js') });
+  const m = await page.evaluate(() => window.layoutProbe.measure());
   check(m.controls >= 20, where + ': only ' + m.controls + ' controls found');
-  for (const o of m.overlaps) check(false, where + ': ' + o);
-  for (const o of m.outside) check(false, where + ': ' + o);
+  const SHOWN = 20;  // failures listed per state and kind, then counted
+  for (const [list, what] of [[m.overlaps, 'overlaps'], [m.outside, 'elements outside the viewport']]) {
+    for (const o of list.slice(0, SHOWN)) check(false, where + ': ' + o);
+    check(list.length <= SHOWN, where + ': and ' + (list.length - SHOWN) + ' more ' + what);
+  }
   check(m.scrollWidth <= m.viewWidth, where + ': the page scrolls sideways (scrollWidth ' + m.scrollWidth + ' > ' + m.viewWidth + ')');
   return m.controls;
 }
@@ -198,6 +121,10 @@ async function checkViewport(browser, viewport) {
   await waitState(page, 'clinostat-status', ['done']);
   await waitState(page, 'chain-status', ['done']);
   counts.push(await checkState(page, viewport, 'panels'));
+  for (const [field, text] of [['twists', '1.2,0.9'], ['rates', '1,2'], ['phases', '0,0.4']]) await page.fill('[data-testid="chain-' + field + '"]', text);
+  await page.waitForFunction(() => !document.getElementById('chain-use-train').hidden &&
+    document.querySelector('[data-testid="chain-status"]').dataset.state === 'done', null, { timeout: 60000 });
+  counts.push(await checkState(page, viewport, 'panels, two-stage chain'));
   await open(page, ERRORS);
   await waitState(page, 'clinostat-status', ['error']);
   await waitState(page, 'chain-status', ['error']);
