@@ -4,7 +4,8 @@
 # routes of an installed sphtroch: header-only (pkg-config sphtroch-exact: the file parses CGAL and
 # compiles the whole census) and compiled (pkg-config sphtroch-compiled: the file declares
 # classify() and links libsphtroch_compiled). g++ -O2, one process per build, REPS runs each
-# (default 3); prints the median wall time and the median peak memory (/usr/bin/time -v).
+# (default 3); prints the median wall time, the median CPU time (user + system: what the load of
+# other processes changes least) and the median peak memory (/usr/bin/time -v), and the load.
 #
 #   bash bench/consumer_compile.sh PREFIX     # PREFIX: a `cmake --install` of a build with sphtroch_compiled
 #
@@ -27,15 +28,18 @@ measure() {  # measure NAME FLAGS...: REPS builds of the example to $work/NAME, 
   shift
   : >"$work/$name.s"
   : >"$work/$name.kb"
+  : >"$work/$name.cpu"
   for ((i = 0; i < reps; ++i)); do
     /usr/bin/time -v -o "$work/time.txt" g++ -std=c++17 -O2 "$example" "$@" -o "$work/$name"
     awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (j = 1; j <= n; ++j) s = s * 60 + t[j]; print s}' \
       "$work/time.txt" >>"$work/$name.s"
     awk -F': ' '/Maximum resident set size/ {print $2}' "$work/time.txt" >>"$work/$name.kb"
+    awk -F': ' '/User time|System time/ {s += $2} END {print s}' "$work/time.txt" >>"$work/$name.cpu"
   done
   LD_LIBRARY_PATH=$(pkg-config --variable=libdir sphtroch-compiled) "$work/$name" >/dev/null
-  printf '%-12s median %6.1f s  peak %5.0f MiB  (%d builds)\n' "$name" "$(median <"$work/$name.s")" \
-    "$(echo "$(median <"$work/$name.kb") / 1024" | bc -l)" "$reps"
+  printf '%-12s median %6.1f s (CPU %6.1f s)  peak %5.0f MiB  (%d builds; load %s)\n' "$name" "$(median <"$work/$name.s")" \
+    "$(median <"$work/$name.cpu")" "$(median <"$work/$name.kb" | awk '{print $1 / 1024}')" "$reps" \
+    "$(cut -d' ' -f1-3 /proc/loadavg)"
 }
 
 # shellcheck disable=SC2046  # pkg-config's flags are words

@@ -290,10 +290,15 @@ async function checkInverseDesign(page) {
   }
   await setPath('');
   await page.fill('[data-testid="fit-nodes"]', '');
-  // A shift-click adds the point under the pointer, on the front of the sphere.
+  // A shift-click adds the point under the pointer, on the front of the sphere. The pointer goes
+  // to a whole pixel of the viewport (where a click lands), `at` is it from the canvas's corner.
+  await page.locator('[data-testid="sphere"]').scrollIntoViewIfNeeded();
   const box = await page.locator('[data-testid="sphere"]').boundingBox();
-  const at = { x: box.width * 0.45, y: box.height * 0.4 };
-  await page.click('[data-testid="sphere"]', { modifiers: ['Shift'], position: at });
+  const pointer = { x: Math.round(box.x + box.width * 0.45), y: Math.round(box.y + box.height * 0.4) };
+  const at = { x: pointer.x - box.x, y: pointer.y - box.y };
+  await page.keyboard.down('Shift');
+  await page.mouse.click(pointer.x, pointer.y);
+  await page.keyboard.up('Shift');
   const added = (await page.inputValue('[data-testid="path-input"]')).trim().split('\n');
   const p = added.length === 2 ? added[1].split(',').map(Number) : [];
   const seen = p.length === 3 ? await page.evaluate((q) => {
@@ -302,7 +307,7 @@ async function checkInverseDesign(page) {
     return [s[0] * c.getBoundingClientRect().width / c.width, s[1] * c.getBoundingClientRect().height / c.height, s[2]];
   }, p) : null;
   check(added[0] === 'x,y,z' && p.length === 3 && Math.abs(Math.hypot(...p) - 1) < 1e-12 && seen &&
-    Math.abs(seen[0] - at.x) < 0.6 && Math.abs(seen[1] - at.y) < 0.6 && seen[2] === true,  // the click lands on a whole pixel
+    Math.abs(seen[0] - at.x) < 0.6 && Math.abs(seen[1] - at.y) < 0.6 && seen[2] === true,
     'inverse design: a shift-click did not add the point under the pointer: ' + JSON.stringify({ added, seen, at }));
 }
 
