@@ -1,6 +1,7 @@
 // The README's C++ example as a program (bench/consumer_compile.sh compiles it through both
 // routes): report Fig. 5(f) classified (four nodes) and one period sampled at 720 points.
-#include <sphtroch/sphtroch.hpp>
+#include <sphtroch/classify.hpp>        // classify() (its definition: sphtroch::compiled, or the headers)
+#include <sphtroch/core/sampling.hpp>   // sample_period()
 
 int main() {
   const double pi = sphtroch::Constants<double>::pi();
