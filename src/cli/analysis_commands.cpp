@@ -34,7 +34,7 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& o) {
   o.train.add_to(cmd);
   cmd.add_flag("--literal", o.literal,
                "analyse the given doubles exactly as given (no snapping onto boundaries within 1e-10 rad)");
-  cmd.add_option("--samples", o.samples, "uniform samples of the polyline census (1024 .. 10000000; default 256*(q+|p|))");
+  cmd.add_option("--samples", o.samples, "uniform samples of the polyline census (1024 .. 10000000; default 256*(q+|p|))")->type_name("N");
   add_output_option(cmd, o.output, "the result");
 }
 
@@ -181,12 +181,14 @@ void register_tolerance(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   auto o = std::make_shared<ToleranceOptions>();
   CLI::App* cmd = app.add_subcommand("tolerance", "will a train made within tolerances draw the same nodes and cusps? (certified)");
   o->train.add_to(*cmd);
-  cmd->add_option("--tol-a2", o->tol_a2, "half-width of the a2 tolerance, radians (degrees with --degrees); 0 fixes a2")->required();
-  cmd->add_option("--tol-a3", o->tol_a3, "half-width of the a3 tolerance, radians (degrees with --degrees); 0 fixes a3")->required();
-  cmd->add_option("--tol-phase", o->tol_phase, "half-width of the phase tolerance (0 .. 2 pi)")->capture_default_str();
+  cmd->add_option("--tol-a2", o->tol_a2, "half-width of the a2 tolerance, radians (degrees with --degrees); 0 fixes a2")
+      ->type_name("ANGLE")->required();
+  cmd->add_option("--tol-a3", o->tol_a3, "half-width of the a3 tolerance, radians (degrees with --degrees); 0 fixes a3")
+      ->type_name("ANGLE")->required();
+  cmd->add_option("--tol-phase", o->tol_phase, "half-width of the phase tolerance (0 .. 2 pi)")->type_name("RAD")->capture_default_str();
   cmd->add_flag("--degrees", o->degrees, "read the tolerances as degrees (the train's angles take a deg suffix: 90deg)");
-  cmd->add_option("--samples", o->samples, "also classify N random trains of the box (1 .. 100000): the spread sampling sees");
-  cmd->add_option("--seed", o->seed, "the samples' random seed (0 .. 2^62)")->capture_default_str();
+  cmd->add_option("--samples", o->samples, "also classify N random trains of the box (1 .. 100000): the spread sampling sees")->type_name("N");
+  cmd->add_option("--seed", o->seed, "the samples' random seed (0 .. 2^62)")->type_name("N")->capture_default_str();
   cmd->add_flag("--json", o->json, "one JSON object: topology, event, margin, nodes, cusps, ... (docs/cli.md: tolerance)");
   add_output_option(*cmd, o->output, "the report");
   cmd->footer("topology: holds (certified: every train of the box draws the nominal census), changes (certified:\n"
@@ -211,7 +213,7 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<AnalysisOptions>();
     CLI::App* cmd = app.add_subcommand("nodes", "nodes and cusps as CSV: kind,x,y,z,t1,t2,branches,id");
     add_analysis_options(*cmd, *o);
-    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R in [1e-100, 1e100]: the cone distance, any unit");
+    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R in [1e-100, 1e100]: the cone distance, any unit")->type_name("R");
     cmd->add_flag("--degrees", o->degrees, "t1, t2 in degrees (header t1_deg,t2_deg)");
     cmd->footer("kind is crossing, tangency or cusp; t1, t2 are the first two branch parameters (theta2, radians;\n"
                 "degrees with --degrees); id N1.. / C1.. as plot labels them.");
@@ -230,16 +232,16 @@ void register_analysis(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>&
     auto o = std::make_shared<CrossingsOptions>();
     CLI::App* cmd = app.add_subcommand("crossings", "exact self-crossings of any spherical polyline given as CSV x,y,z");
     cmd->add_option("--input", o->input,
-                    "the polyline: CSV (rows x,y,z, or a header naming x,y,z), NumPy .npy (N,3|4|7), - for stdin")
+                    "the polyline: CSV (rows x,y,z, or a header naming x,y,z), NumPy .npy (N,3|4|7), - for stdin")->type_name("FILE")
         ->required();
     cmd->add_flag("--open", o->open, "the polyline is open (default: closed, the last vertex joins the first)");
-    cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE (in the search's order)");
+    cmd->add_option("--pairs", o->pairs, "write the edge-index pairs as CSV i,j,kind to FILE (in the search's order)")->type_name("FILE");
     cmd->add_option("--max-crossings", o->max_crossings,
-                    "refuse (exit 2) a polyline with more crossings + touchings (0 .. 1e15; default 1e7)");
+                    "refuse (exit 2) a polyline with more crossings + touchings (0 .. 1e15; default 1e7)")->type_name("N");
     cmd->add_option("--max-work", o->max_work,
-                    "refuse (exit 2) a search needing more candidate + box pairs (0 .. 1e15; default 5e7, ~5 s)");
+                    "refuse (exit 2) a search needing more candidate + box pairs (0 .. 1e15; default 5e7, ~5 s)")->type_name("N");
     cmd->add_flag("--json", o->json, "one JSON object: vertices, crossings, touchings, seconds_read, seconds_search, ...");
-    cmd->add_option("--threads", o->threads, "threads parsing CSV (1 .. 1024; default: all cores, at most 2 used)");
+    cmd->add_option("--threads", o->threads, "threads parsing CSV (1 .. 1024; default: all cores, at most 2 used)")->type_name("N");
     add_output_option(*cmd, o->output, "the summary");
     cmd->footer(
         "Edge e joins vertex e to e+1; adjacent edges are never counted. The format is told by the\n"

@@ -257,20 +257,20 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "Shards: --shard I/K (1 <= I <= K <= G) computes rows [(I-1)G/K, IG/K) of a2; join the\n"
       "slices with `sphtroch atlas-merge -o atlas.csv slice*.csv` (byte-identical to one run).\n"
       "Example: sphtroch atlas --n 2 --grid 128 -o atlas.csv --svg atlas.svg");
-  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (or --teeth)");
+  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (or --teeth)")->type_name("P/Q");
   CLI::Option* gears =
-      cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; echoed next to n)");
+      cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; echoed next to n)")->type_name("ZS:ZP");
   ratio->excludes(gears);
   gears->excludes(ratio);
-  cmd->add_option("--grid", o->grid, "G: G x G cells (1 .. 4096)")->required();
-  cmd->add_option("--a2", o->a2, "a2 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");
-  cmd->add_option("--a3", o->a3, "a3 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)");
-  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
-  cmd->add_option("--shard", o->shard, "compute slice I of K (1 <= I <= K <= G) for a batch job array");
+  cmd->add_option("--grid", o->grid, "G: G x G cells (1 .. 4096)")->type_name("G")->required();
+  cmd->add_option("--a2", o->a2, "a2 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)")->type_name("LO:HI");
+  cmd->add_option("--a3", o->a3, "a3 range LO:HI, 0 <= LO < HI <= pi (default 0:pi)")->type_name("LO:HI");
+  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)")->type_name("N");
+  cmd->add_option("--shard", o->shard, "compute slice I of K (1 <= I <= K <= G) for a batch job array")->type_name("I/K");
   cmd->add_flag("--literal", o->literal, "analyse the cell centres as given (no snapping onto boundaries)");
   cmd->add_option("-o,--output", o->output,
-                  "write the CSV to FILE (never left partial; - for stdout); without it only the summary");
-  cmd->add_option("--svg", o->svg, "draw the map to FILE.svg (not with --shard)");
+                  "write the CSV to FILE (never left partial; - for stdout); without it only the summary")->type_name("FILE");
+  cmd->add_option("--svg", o->svg, "draw the map to FILE.svg (not with --shard)")->type_name("FILE.svg");
   cmd->add_flag("--degrees", o->degrees, "the map's axes in degrees (the CSV stays in radians: atlas-merge reads it)");
   actions.emplace_back(cmd, [o] { run_atlas(*o); });
 
@@ -279,10 +279,10 @@ void register_atlas(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   merge->footer(
       "Slices in any order; refuses slices of different atlases, a missing or repeated shard.\n"
       "Example: sphtroch atlas-merge -o atlas.csv --svg atlas.svg slice-*.csv");
-  merge->add_option("slices", m->slices, "slice CSV files written by sphtroch atlas --shard I/K")->required();
+  merge->add_option("slices", m->slices, "slice CSV files written by sphtroch atlas --shard I/K")->type_name("FILE")->required();
   merge->add_option("-o,--output", m->output,
-                    "write the merged CSV to FILE (never left partial; - for stdout); without it only the summary");
-  merge->add_option("--svg", m->svg, "draw the merged map to FILE.svg");
+                    "write the merged CSV to FILE (never left partial; - for stdout); without it only the summary")->type_name("FILE");
+  merge->add_option("--svg", m->svg, "draw the merged map to FILE.svg")->type_name("FILE.svg");
   merge->add_flag("--degrees", m->degrees, "the map's axes in degrees");
   actions.emplace_back(merge, [m] { run_merge(*m); });
 }

@@ -68,15 +68,15 @@ void register_boundaries(CLI::App& app, std::vector<std::pair<CLI::App*, Action>
       "An a2 range (--a2 LO:HI, default 0:pi): the boundary curves as CSV\n"
       "locus,kind,m,label,a2,a3,b at --steps a2 samples (cell centres; default 720, 1 .. 10000).\n"
       "Example: sphtroch boundaries --n 3 --a2 pi/2");
-  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2");
-  CLI::Option* gears = cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5)");
+  CLI::Option* ratio = cmd->add_option("--n", o->n, "gear ratio n = p/q, p != 0: 3, 5/2, -5/2")->type_name("P/Q");
+  CLI::Option* gears = cmd->add_option("--teeth", o->teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5)")->type_name("ZS:ZP");
   ratio->excludes(gears);
   gears->excludes(ratio);
-  cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)");
+  cmd->add_option("--a2", o->a2, "carrier twist: one angle (events) or LO:HI (curves; default 0:pi)")->type_name("RAD|LO:HI");
   cmd->add_flag("--degrees", o->degrees, "angles printed in degrees (text: a3 = ... deg; CSV: a2_deg,a3_deg,b_deg)");
   cmd->add_flag("--json", o->json, "the events as JSON (one a2 only)");
-  cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 10000; default 720)");
-  cmd->add_option("--threads", o->threads, "worker threads for the curves (1 .. 1024; default: cores)");
+  cmd->add_option("--steps", o->steps, "a2 samples of the curves (1 .. 10000; default 720)")->type_name("N");
+  cmd->add_option("--threads", o->threads, "worker threads for the curves (1 .. 1024; default: cores)")->type_name("N");
   add_output_option(*cmd, o->output, "the events or the curves");
   actions.emplace_back(cmd, [o] { run_boundaries(*o); });
 }

@@ -114,7 +114,7 @@ void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Act
     auto o = std::make_shared<ChainCensusOptions>();
     CLI::App* cmd = chain.add_subcommand("nodes", "the chain's nodes and cusps as CSV kind,x,y,z,t1,t2,branches,id");
     add_chain_options(*cmd, o->chain);
-    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R in [1e-100, 1e100]");
+    cmd->add_option("--radius", o->radius, "scale the positions x,y,z by R in [1e-100, 1e100]")->type_name("R");
     cmd->add_flag("--degrees", o->degrees, "t1, t2 in degrees (header t1_deg,t2_deg)");
     add_output_option(*cmd, o->output, "the table");
     cmd->footer("t1, t2 are the first two branch parameters s (radians). Exit 3 when not certified.");
@@ -135,12 +135,14 @@ void register_chain_census(CLI::App& chain, std::vector<std::pair<CLI::App*, Act
     auto b = std::make_shared<ChainBoundariesOptions>();
     CLI::App* cmd = chain.add_subcommand("boundaries", "where the chain's census changes as one twist or phase varies (--vary)");
     add_chain_options(*cmd, b->chain);
-    cmd->add_option("--vary", b->vary, "NAME:LO:HI: the twist Ai or phase Pi varied over [LO, HI] radians (A2:0:pi)")->required();
+    cmd->add_option("--vary", b->vary, "NAME:LO:HI: the twist Ai or phase Pi varied over [LO, HI] radians (A2:0:pi)")
+        ->type_name("NAME:LO:HI")->required();
     cmd->add_flag("--json", b->json, "the events as JSON");
     add_output_option(*cmd, b->output, "the events");
     cmd->footer("Closed forms: P1 of any chain and P2 of a two-stage chain (no event: the curve turns about z);\n"
                 "A2 of a two-stage chain (the gear train's boundaries: pitch cones, poles, self-tangencies).\n"
-                "Every other family: one certified census per slab of the range, failed slabs halved to " + number_text(kChainEventWidth) + " rad,\n"
+                "Every other family: one certified census per slab of the range, failed slabs halved to " +
+                report_number(kChainEventWidth) + " rad,\n"
                 "then bisected with the census at single values: cusp births, self-tangencies and triple points\n"
                 "within the stated accuracy (docs/chains.md).\n"
                 "Exit 3, after the report, when not certified.\n"

@@ -82,13 +82,13 @@ void run_chain_export(const ChainExportOptions& o) {
 
 void add_chain_options(CLI::App& cmd, ChainText& chain) {
   chain.urdf_reader = &urdf_chain_by_plugin;  // urdfdom opened only when --urdf is read
-  cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)");
-  cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)");
-  cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
-  cmd.add_option("--urdf", chain.urdf, "or read the chain from a URDF FILE (- for stdin) whose joints are coupled by <mimic>");
-  cmd.add_option("--from", chain.from, "with --urdf: the link the chain starts at (the curve is in its first joint's frame)");
-  cmd.add_option("--to", chain.to, "with --urdf: the link that carries the tool axis");
-  cmd.add_option("--axis", chain.axis, "with --urdf: the tool axis X,Y,Z in the --to link's frame (default 0,0,1)");
+  cmd.add_option("--twists", chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2)")->type_name("RAD,...");
+  cmd.add_option("--rates", chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)")->type_name("P/Q,...");
+  cmd.add_option("--phases", chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)")->type_name("RAD,...");
+  cmd.add_option("--urdf", chain.urdf, "or read the chain from a URDF FILE (- for stdin) whose joints are coupled by <mimic>")->type_name("FILE");
+  cmd.add_option("--from", chain.from, "with --urdf: the link the chain starts at (the curve is in its first joint's frame)")->type_name("LINK");
+  cmd.add_option("--to", chain.to, "with --urdf: the link that carries the tool axis")->type_name("LINK");
+  cmd.add_option("--axis", chain.axis, "with --urdf: the tool axis X,Y,Z in the --to link's frame (default 0,0,1)")->type_name("X,Y,Z");
 }
 
 void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
@@ -103,22 +103,22 @@ void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "With --twists A2,A3 --rates 1,n --phases 0,PHASE the bytes are `sphtroch trace`'s.\n"
       "Example: sphtroch chain trace --twists pi/2,1.2,0.4 --rates 1,-2/3,5/3 --samples 8");
   add_chain_options(*cmd, o->chain);
-  cmd->add_option("--samples", o->samples, "number of samples N (3 .. 10000000)");
+  cmd->add_option("--samples", o->samples, "number of samples N (3 .. 10000000)")->type_name("N");
   cmd->add_flag("--velocity", o->velocity, "add columns vx,vy,vz = dP/ds = omega x P");
   cmd->add_flag("--degrees", o->degrees, "the t column (s) in degrees, header t_deg");
   cmd->add_flag("--kinematics", o->kinematics, "add columns speed,geodesic_curvature,tangential_acceleration (per unit s)");
-  cmd->add_option("--format", o->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)");
-  cmd->add_option("--radius", o->radius, "scale positions (and velocities) by R in [1e-100, 1e100]");
-  cmd->add_option("--threads", o->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
+  cmd->add_option("--format", o->format, "csv, npy, dxf or obj (default: by -o's suffix, else csv)")->type_name("csv|npy|dxf|obj");
+  cmd->add_option("--radius", o->radius, "scale positions (and velocities) by R in [1e-100, 1e100]")->type_name("R");
+  cmd->add_option("--threads", o->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)")->type_name("N");
   add_output_option(*cmd, o->output, "the curve");
   actions.emplace_back(cmd, [o] { run_chain_trace(*o); });
   auto e = std::make_shared<ChainExportOptions>();
   CLI::App* exp = chain->add_subcommand("export", "write the chain as a URDF robot description (--urdf FILE)");
-  exp->add_option("--twists", e->chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi]");
-  exp->add_option("--rates", e->chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)");
-  exp->add_option("--phases", e->chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)");
-  exp->add_option("--urdf", e->urdf, "the URDF file to write (- for stdout)")->required();
-  exp->add_option("--name", e->name, "the robot's name (default sphtroch_chain)");
+  exp->add_option("--twists", e->chain.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi]")->type_name("RAD,...");
+  exp->add_option("--rates", e->chain.rates, "N1,...,Nk: each joint's rate, exact (p/q, decimals, 0)")->type_name("P/Q,...");
+  exp->add_option("--phases", e->chain.phases, "P1,...,Pk: each joint's angle at s = 0, radians (default all 0)")->type_name("RAD,...");
+  exp->add_option("--urdf", e->urdf, "the URDF file to write (- for stdout)")->type_name("FILE")->required();
+  exp->add_option("--name", e->name, "the robot's name (default sphtroch_chain)")->type_name("NAME");
   exp->footer("joint_1.. are continuous joints about z, the first turning one the motor, the others <mimic> it\n"
               "(multiplier N_i / N_m); `chain classify --urdf FILE --from base_link --to tool` reads it back.");
   actions.emplace_back(exp, [e] { run_chain_export(*e); });

@@ -25,27 +25,29 @@
 namespace sphtroch::cli {
 
 void TrainOptions::add_to(CLI::App& command) {
-  command.add_option("--a2", a2, "carrier twist a2 in (0, pi): 1.25, pi/2, 2pi/3, 0.75pi, 90deg")->required();
-  command.add_option("--a3", a3, "tracer twist a3 in (0, pi); also ap, pi-ap, a2, pi-a2 with an offset (ap+1e-6)")
+  command.add_option("--a2", a2, "carrier twist a2 in (0, pi): 1.25, pi/2, 2pi/3, 0.75pi, 90deg")->type_name("RAD")->required();
+  command.add_option("--a3", a3, "tracer twist a3 in (0, pi); also ap, pi-ap, a2, pi-a2 with an offset (ap+1e-6)")->type_name("RAD")
       ->required();
-  CLI::Option* ratio = command.add_option("--n", n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (sun-to-planet tooth ratio)");
-  CLI::Option* gears = command.add_option("--teeth", teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; ZS < 0: internal)");
+  CLI::Option* ratio = command.add_option("--n", n, "gear ratio n = p/q, p != 0: 2, 5/2, 2.5 (sun-to-planet tooth ratio)")->type_name("P/Q");
+  CLI::Option* gears = command.add_option("--teeth", teeth, "n as tooth counts ZS:ZP, sun:planet (39:15 is n = 13/5; ZS < 0: internal)")
+      ->type_name("ZS:ZP");
   ratio->excludes(gears);
   gears->excludes(ratio);
-  command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->capture_default_str();
+  command.add_option("--phase", phase, "phase angle theta_p (Eq. 3), any finite angle")->type_name("RAD")->capture_default_str();
 }
 
 void PlotFlags::add_to(CLI::App& cmd) {
   cmd.add_option("--view", view,
                  "auto (default: from the curve's mean direction or a principal axis, stated in the picture), "
-                 "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)");
-  cmd.add_option("--size", size, "width and height of the picture in px (64 .. 8192; default 520)");
-  cmd.add_option("--labels", labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none");
+                 "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)")->type_name("auto|top|front|side|AZ,EL");
+  cmd.add_option("--size", size, "width and height of the picture in px (64 .. 8192; default 520)")->type_name("PX");
+  cmd.add_option("--labels", labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none")->type_name("auto|numbers|none");
   cmd.add_option("--markers", markers,
-                 "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none");
+                 "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none")
+                     ->type_name("auto|all|none");
   cmd.add_option("--style", style,
                  "curve (default: the lines, back half dashed) or density (time spent per steradian on the front half, "
-                 "for dense curves)");
+                 "for dense curves)")->type_name("curve|density");
 }
 
 PlotOptions PlotFlags::options() const {
@@ -72,7 +74,7 @@ void check_svg_name(const std::string& path, const std::string& field) {
 }
 
 void add_output_option(CLI::App& command, std::string& path, const std::string& what) {
-  command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)");
+  command.add_option("-o,--output", path, "write " + what + " to FILE instead of stdout (never left partial)")->type_name("FILE");
 }
 
 double parse_radius(const std::string& text) {

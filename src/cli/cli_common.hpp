@@ -136,9 +136,12 @@ void check_distinct_files(const std::vector<NamedFile>& outputs, const std::vect
 using sphtroch::parse_count;
 using sphtroch::parse_count_pair;
 
-/// Every number the tool prints is sphtroch::number_text (core/number_text.hpp: the shortest form
-/// that reads back as the same double); measured times in text reports are seconds_text.
+/// Every number the tool writes in data (files, tables, JSON, plugin fields) is sphtroch::number_text
+/// (core/number_text.hpp: the shortest form that reads back as the same double); in sentences for
+/// people (text reports, help) report_number (the same digits: 0.0001, 1e-5, 0 for -0); measured
+/// times in text reports are seconds_text.
 using sphtroch::number_text;
+using sphtroch::report_number;
 using sphtroch::seconds_text;
 
 /// The worker threads of a command: `text` ("" = all cores, capped at kMaxThreads) as a count.

@@ -180,25 +180,26 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "Exit 3: a bracket or a comparison not certified (the output says which).\n"
       "Choosing speeds: sphtroch clinostat design (and clinostat merge for its --shard parts).\n"
       "Example: sphtroch clinostat --outer 1.33 --inner 2 --window 600 --epsilon 0.01");
-  cmd->add_option("--outer", o->machine.outer, "outer frame's speed, rpm (signed; exact decimal or p/q); required");
-  cmd->add_option("--inner", o->machine.inner, "inner frame's speed, rpm (signed; exact decimal or p/q); required");
-  cmd->add_option("--tilt", o->machine.tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)");
-  cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)");
-  cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)");
-  cmd->add_option("--phase-inner", o->machine.phase_inner, "inner frame's angle at t = 0, degrees (default 0)");
-  cmd->add_option("--offset", o->machine.offset, "the sample point X,Y,Z in metres (sample frame; default the centre)");
-  cmd->add_option("--window", o->window, "M(W) for this window length, seconds");
-  cmd->add_option("--epsilon", o->epsilon, "the time to epsilon for this bound, units of g0");
-  cmd->add_option("--resolution", o->resolution, "the step of W for --epsilon, seconds (default 1)");
-  cmd->add_option("--coverage", o->coverage, "the dwell map over this many seconds");
-  cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8: 768 cells)");
-  cmd->add_option("--start", o->start, "start time of --coverage, --running-mean and --trace, seconds (default 0)");
-  cmd->add_option("--running-mean", o->running_mean, "T1,T2,...: the mean gravity over [--start, --start + T] for each T, seconds");
+  cmd->add_option("--outer", o->machine.outer, "outer frame's speed, rpm (signed; exact decimal or p/q); required")->type_name("RPM");
+  cmd->add_option("--inner", o->machine.inner, "inner frame's speed, rpm (signed; exact decimal or p/q); required")->type_name("RPM");
+  cmd->add_option("--tilt", o->machine.tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)")->type_name("DEG");
+  cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)")->type_name("DEG");
+  cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
+  cmd->add_option("--phase-inner", o->machine.phase_inner, "inner frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
+  cmd->add_option("--offset", o->machine.offset, "the sample point X,Y,Z in metres (sample frame; default the centre)")->type_name("X,Y,Z");
+  cmd->add_option("--window", o->window, "M(W) for this window length, seconds")->type_name("S");
+  cmd->add_option("--epsilon", o->epsilon, "the time to epsilon for this bound, units of g0")->type_name("G0");
+  cmd->add_option("--resolution", o->resolution, "the step of W for --epsilon, seconds (default 1)")->type_name("S");
+  cmd->add_option("--coverage", o->coverage, "the dwell map over this many seconds")->type_name("S");
+  cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8: 768 cells)")->type_name("K");
+  cmd->add_option("--start", o->start, "start time of --coverage, --running-mean and --trace, seconds (default 0)")->type_name("S");
+  cmd->add_option("--running-mean", o->running_mean, "T1,T2,...: the mean gravity over [--start, --start + T] for each T, seconds")
+      ->type_name("S,S,...");
   cmd->add_flag("--json", o->json, "the report as JSON (schema: docs/clinostat.md)");
-  cmd->add_option("--plot", o->plot, "also write the dwell map (Mollweide) and M(W) against W as FILE.svg or FILE.png");
+  cmd->add_option("--plot", o->plot, "also write the dwell map (Mollweide) and M(W) against W as FILE.svg or FILE.png")->type_name("FILE");
   cmd->add_flag("--trace", o->trace, "write the gravity over time instead of the report");
-  cmd->add_option("--duration", o->duration, "--trace: seconds covered");
-  cmd->add_option("--samples", o->samples, "--trace: number of samples N (2 .. 10000000; default 1001)");
+  cmd->add_option("--duration", o->duration, "--trace: seconds covered")->type_name("S");
+  cmd->add_option("--samples", o->samples, "--trace: number of samples N (2 .. 10000000; default 1001)")->type_name("N");
   add_output_option(*cmd, o->output, "the --trace table");
   actions.emplace_back(cmd, [o, cmd] {
     if (cmd->get_subcommands().empty()) return run_clinostat(*o);

@@ -313,21 +313,22 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
       "(then the row says it is not certified, exit 3), plus the coverage walk (--nside <= 64).\n"
       "--shard I/K computes part I of K of the pairs (JSON); sphtroch clinostat merge joins the parts.\n"
       "Example: sphtroch clinostat design --outer 0.5:5 --inner 0.5:5 --step 0.5 --window 3600 --epsilon 0.01");
-  cmd->add_option("--outer", o->outer, "outer speeds LO:HI, rpm");
-  cmd->add_option("--inner", o->inner, "inner speeds LO:HI, rpm");
-  cmd->add_option("--step", o->step, "the grid's step, rpm (both ranges)");
-  cmd->add_option("--window", o->window, "the experiment's window W: M(W) of each pair, seconds");
-  cmd->add_option("--epsilon", o->epsilon, "the bound on the averaged gravity, units of g0");
-  cmd->add_option("--resolution", o->resolution, "the step of W for the time to epsilon, seconds (default 1)");
-  cmd->add_option("--coverage", o->coverage, "also the share of cells visited over this many seconds");
-  cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8)");
-  cmd->add_option("--teeth", o->teeth, "MIN..MAX: a gear-driven machine's tooth counts");
-  cmd->add_option("--tilt", o->tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)");
-  cmd->add_option("--frame-angle", o->frame_angle, "angle between the axes, degrees in [0, 180] (default 90)");
-  cmd->add_option("--offset", o->offset, "the sample point X,Y,Z in metres (sample frame; default the centre): its effective gravity is averaged");
-  cmd->add_option("--top", o->top, "rows of the text report (default 20)");
-  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)");
-  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the pairs (JSON; join with clinostat merge)");
+  cmd->add_option("--outer", o->outer, "outer speeds LO:HI, rpm")->type_name("RPM:RPM");
+  cmd->add_option("--inner", o->inner, "inner speeds LO:HI, rpm")->type_name("RPM:RPM");
+  cmd->add_option("--step", o->step, "the grid's step, rpm (both ranges)")->type_name("RPM");
+  cmd->add_option("--window", o->window, "the experiment's window W: M(W) of each pair, seconds")->type_name("S");
+  cmd->add_option("--epsilon", o->epsilon, "the bound on the averaged gravity, units of g0")->type_name("G0");
+  cmd->add_option("--resolution", o->resolution, "the step of W for the time to epsilon, seconds (default 1)")->type_name("S");
+  cmd->add_option("--coverage", o->coverage, "also the share of cells visited over this many seconds")->type_name("S");
+  cmd->add_option("--nside", o->nside, "HEALPix nside for --coverage, a power of two 1 .. 1024 (default 8)")->type_name("K");
+  cmd->add_option("--teeth", o->teeth, "MIN..MAX: a gear-driven machine's tooth counts")->type_name("MIN..MAX");
+  cmd->add_option("--tilt", o->tilt, "outer axis from the vertical, degrees in [0, 180] (default 90)")->type_name("DEG");
+  cmd->add_option("--frame-angle", o->frame_angle, "angle between the axes, degrees in [0, 180] (default 90)")->type_name("DEG");
+  cmd->add_option("--offset", o->offset, "the sample point X,Y,Z in metres (sample frame; default the centre): its effective gravity is averaged")
+      ->type_name("X,Y,Z");
+  cmd->add_option("--top", o->top, "rows of the text report (default 20)")->type_name("N");
+  cmd->add_option("--threads", o->threads, "worker threads (1 .. 1024; default: all cores)")->type_name("N");
+  cmd->add_option("--shard,--slice", o->shard, "only part I of K of the pairs (JSON; join with clinostat merge)")->type_name("I/K");
   cmd->add_flag("--json", o->json, "every pair as JSON (schema: docs/clinostat.md)");
   add_output_option(*cmd, o->output, "the report");
   actions.emplace_back(cmd, [o] { run_design(*o); });
@@ -337,9 +338,9 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
   CLI::App* join = clinostat.add_subcommand("merge", "join the JSON parts of clinostat design --shard I/K");
   join->footer("Parts in any order; the result is byte for byte what the unsharded run prints.\n"
                "Example: sphtroch clinostat merge --json -o design.json part-*.json");
-  join->add_option("parts", *paths, "the part files (JSON)")->required();
+  join->add_option("parts", *paths, "the part files (JSON)")->type_name("FILE")->required();
   join->add_flag("--json", merge->json, "the joined run as JSON (else the text report)");
-  join->add_option("--top", merge->top, "rows of the text report (default 20)");
+  join->add_option("--top", merge->top, "rows of the text report (default 20)")->type_name("N");
   add_output_option(*join, merge->output, "the joined run");
   actions.emplace_back(join, [paths, merge] {
     check_distinct_files({{merge->output, "--output"}}, [&] {

@@ -70,7 +70,7 @@ std::string bash_script(const CLI::App& app) {
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto shell = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("completion", "print a bash or zsh completion script for sphtroch (from its own commands and options)");
-  cmd->add_option("shell", *shell, "bash or zsh")->required()->check(CLI::IsMember({"bash", "zsh"}));
+  cmd->add_option("shell", *shell, "bash or zsh")->type_name("SHELL")->required()->check(CLI::IsMember({"bash", "zsh"}));
   cmd->footer("Example: source <(sphtroch completion bash)");
   actions.emplace_back(cmd, [shell, &app] {
     const std::string script = bash_script(app);

@@ -72,7 +72,7 @@ void require_dwell_maps(const std::string& option, const std::string& value) {
 }
 
 DwellMap dwell_map_by_plugin(const ClinostatSettings&, double, double duration_s, int) {
-  throw InvalidInput("coverage", number_text(duration_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
+  throw InvalidInput("coverage", report_number(duration_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)", "--coverage in a build with HEALPix");
 }
 
 std::vector<std::vector<Vector3d>> cell_outlines_by_plugin(int, int) { return {}; }

@@ -117,10 +117,10 @@ std::size_t validate_scene_text(const std::string& text) { return parse_scene_te
 void register_scene(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto o = std::make_shared<SceneOptions>();
   CLI::App* cmd = app.add_subcommand("scene", "run a scene file: gear trains and the effects wanted from each (JSON)");
-  cmd->add_option("FILE", o->file, "the scene (JSON; see docs/cli.md: sphtroch scene)")->required();
+  cmd->add_option("FILE", o->file, "the scene (JSON; see docs/cli.md: sphtroch scene)")->type_name("FILE")->required();
   cmd->add_flag("--explain", o->explain, "print, per gear train, the stages each effect needs and the work done");
   cmd->add_flag("--json", o->json, "the explanation as one JSON object (implies --explain)");
-  cmd->add_option("--output-dir", o->output_dir, "resolve relative output paths against DIR (default: the current directory)");
+  cmd->add_option("--output-dir", o->output_dir, "resolve relative output paths against DIR (default: the current directory)")->type_name("DIR");
   cmd->footer("Example: sphtroch scene data/scenes/paper_figures.json --output-dir /tmp --explain");
   actions.emplace_back(cmd, [o] { run_scene(*o); });
 }

@@ -31,13 +31,13 @@ sphtroch::IdentifyOptions identify_bounds(const std::string& text) {
 void write_identified_text(std::ostream& out, const Identified& id) {
   const GearTrain& g = id.train;
   out << "n = " << g.ratio().str() << "\n"
-      << "a2 = " << number_text(g.a2()) << " rad\n"
-      << "a3 = " << number_text(g.a3()) << " rad\n"
-      << "phase = " << number_text(g.phase()) << " rad\n"
-      << "residual = " << number_text(id.residual) << " (max |P(t_i) - P_i|), rms " << number_text(id.rms)
-      << ", noise off the planet circle " << number_text(id.noise) << "\n"
-      << "trace it: sphtroch trace --n " << g.ratio().str() << " --a2 " << number_text(g.a2()) << " --a3 "
-      << number_text(g.a3()) << " --phase " << number_text(g.phase()) << "\n";
+      << "a2 = " << report_number(g.a2()) << " rad\n"
+      << "a3 = " << report_number(g.a3()) << " rad\n"
+      << "phase = " << report_number(g.phase()) << " rad\n"
+      << "residual = " << report_number(id.residual) << " (max |P(t_i) - P_i|), rms " << report_number(id.rms)
+      << ", noise off the planet circle " << report_number(id.noise) << "\n"
+      << "trace it: sphtroch trace --n " << g.ratio().str() << " --a2 " << report_number(g.a2()) << " --a3 "
+      << report_number(g.a3()) << " --phase " << report_number(g.phase()) << "\n";
 }
 
 /// {"n", "a2", "a3", "phase", "residual", "rms", "noise"} (angles in radians).
@@ -75,8 +75,8 @@ void register_synth(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "turns by less than 3pi/4 between two. Prints n as the simplest fraction that fits (|p|, q <= 1000,\n"
       "--max-terms P,Q), a2, a3, the phase and the residual max |P(t_i) - P_i|; JSON with --json.\n"
       "Example: sphtroch trace --n 5/2 --a2 1 --a3 2 | sphtroch synth identify --input -");
-  cmd->add_option("--input", o->input, "the timed samples (CSV t,x,y,z or .npy; - for standard input)")->required();
-  cmd->add_option("--max-terms", o->max_terms, "bounds P,Q of the ratio: |p| <= P, q <= Q (default 1000,1000)");
+  cmd->add_option("--input", o->input, "the timed samples (CSV t,x,y,z or .npy; - for standard input)")->type_name("FILE")->required();
+  cmd->add_option("--max-terms", o->max_terms, "bounds P,Q of the ratio: |p| <= P, q <= Q (default 1000,1000)")->type_name("P,Q");
   cmd->add_flag("--json", o->json, "{\"n\", \"a2\", \"a3\", \"phase\", \"residual\", \"rms\", \"noise\"}");
   add_output_option(*cmd, o->output, "the identified train");
   actions.emplace_back(cmd, [o] { run_identify(*o); });

@@ -282,13 +282,14 @@ void register_synth_fit(CLI::App& synth, std::vector<std::pair<CLI::App*, Action
       "with that census; every candidate printed has it, confirmed by classify. None possible: no\n"
       "candidate and the reason (exit 0). Example: sphtroch synth fit --input path.csv --n 2 --nodes 2");
   add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the path's points");
-  cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)");
-  cmd->add_option("--cusps", o->cusps, "wanted cusps C (0; |p| on a pitch cone; 2|p| where both meet, |n| < 1)");
-  cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)");
-  cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point");
-  cmd->add_option("--node-at", o->node_at, "X,Y,Z: a node (self-crossing) wanted at this point of the sphere");
-  cmd->add_option("--node-tolerance", o->node_tolerance, "how near --node-at the certified node must be (default 1e-6 rad)");
-  cmd->add_option("--min-margin", o->min_margin, "keep candidates at least D (certified) from a change of their census (radians, or 0.1deg)");
+  cmd->add_option("--nodes", o->nodes, "wanted node points K (crossings and tangencies)")->type_name("N");
+  cmd->add_option("--cusps", o->cusps, "wanted cusps C (0; |p| on a pitch cone; 2|p| where both meet, |n| < 1)")->type_name("N");
+  cmd->add_option("--candidates", o->candidates, "at most M candidates (1 .. 1000, default 5)")->type_name("N");
+  cmd->add_option("--max-deviation", o->max_deviation, "drop candidates farther than D radians from a point")->type_name("RAD");
+  cmd->add_option("--node-at", o->node_at, "X,Y,Z: a node (self-crossing) wanted at this point of the sphere")->type_name("X,Y,Z");
+  cmd->add_option("--node-tolerance", o->node_tolerance, "how near --node-at the certified node must be (default 1e-6 rad)")->type_name("RAD");
+  cmd->add_option("--min-margin", o->min_margin, "keep candidates at least D (certified) from a change of their census (radians, or 0.1deg)")
+      ->type_name("RAD");
   cmd->add_flag("--json", o->json, "{\"candidates\": [{\"n\", \"a2\", \"a3\", \"phase\", \"rms\", \"max_deviation\", "
                                    "\"margin\", \"counts\", ...}], \"reason\", \"dropped\"} (docs/cli.md: synth fit)");
   add_output_option(*cmd, o->output, "the candidates");

@@ -265,7 +265,7 @@ void register_synth_merge(CLI::App& synth, std::vector<std::pair<CLI::App*, Acti
   CLI::App* cmd = synth.add_subcommand("merge", "join the JSON shards of synth points or synth fit --ratios P,Q --shard I/K");
   cmd->footer("Shards in any order; the result is byte for byte what the unsharded run prints.\n"
               "Example: sphtroch synth merge -o all.json part-*.json");
-  cmd->add_option("shards", *paths, "the shard files (JSON)")->required();
+  cmd->add_option("shards", *paths, "the shard files (JSON)")->type_name("FILE")->required();
   add_output_option(*cmd, *output, "the joined JSON");
   actions.emplace_back(cmd, [paths, output] {
     check_distinct_files({{*output, "--output"}}, [&] {
@@ -291,7 +291,7 @@ void register_synth_points(CLI::App& synth, std::vector<std::pair<CLI::App*, Act
       "not certified complete. Example: sphtroch synth points --input pts.csv --n 1/2 --json");
   add_ratio_set_options(*cmd, o->input, o->n, o->ratios, o->teeth, o->shard, "the three points (five with --free-axis)");
   cmd->add_flag("--free-axis", o->free_axis, "five points; the sun axis may be placed anywhere (docs/cli.md: synth points)");
-  cmd->add_option("--threads", o->threads, "with --free-axis: worker threads (1 .. 1024; default: all cores)");
+  cmd->add_option("--threads", o->threads, "with --free-axis: worker threads (1 .. 1024; default: all cores)")->type_name("N");
   cmd->add_flag("--json", o->json, "{\"solutions\": [{\"n\", \"a2\", \"a3\", \"phase\", \"params\", \"residual\", \"counts\", ...}], "
                                    "\"complete\", ...} (docs/cli.md: synth points)");
   add_output_option(*cmd, o->output, "the trains");

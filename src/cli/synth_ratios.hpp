@@ -118,13 +118,13 @@ inline void check_train_teeth(const nlohmann::json& train, const Ratio& n, const
 /// --input, --n, --ratios and --shard (--slice) of a synth command over a ratio set.
 inline void add_ratio_set_options(CLI::App& cmd, std::string& input, std::string& n, std::string& ratios,
                                   std::string& teeth, std::string& shard, const std::string& what) {
-  cmd.add_option("--input", input, what + " (CSV x,y,z or .npy; - for standard input)")->required();
-  cmd.add_option("--n", n, "the gear ratio p/q");
-  cmd.add_option("--ratios", ratios, "every ratio p/q with |p| <= P, q <= Q, both signs");
+  cmd.add_option("--input", input, what + " (CSV x,y,z or .npy; - for standard input)")->type_name("FILE")->required();
+  cmd.add_option("--n", n, "the gear ratio p/q")->type_name("P/Q");
+  cmd.add_option("--ratios", ratios, "every ratio p/q with |p| <= P, q <= Q, both signs")->type_name("P,Q");
   cmd.add_option("--teeth", teeth,
                  "ZS:ZP, sun:planet tooth counts (n = ZS/ZP; ZS < 0: internal), or MIN..MAX: every n = +-ZS/ZP "
-                 "with both counts in the range");
-  cmd.add_option("--shard,--slice", shard, "only part I of K of the ratio set (join the JSON parts with synth merge)");
+                 "with both counts in the range")->type_name("ZS:ZP|MIN..MAX");
+  cmd.add_option("--shard,--slice", shard, "only part I of K of the ratio set (join the JSON parts with synth merge)")->type_name("I/K");
 }
 
 }  // namespace sphtroch::cli

@@ -149,17 +149,18 @@ void register_trace(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
       "unit). Rows are streamed: memory does not grow with N.\n"
       "Example: sphtroch trace --a2 pi/2 --a3 pi/2 --n 1 --samples 8");
   options->train.add_to(*cmd);
-  cmd->add_option("--samples", options->samples, "number of samples N (3 .. 10000000)");
-  cmd->add_option("--turns", options->turns, "open curve over K carrier turns, K in (0, 1e6]");
+  cmd->add_option("--samples", options->samples, "number of samples N (3 .. 10000000)")->type_name("N");
+  cmd->add_option("--turns", options->turns, "open curve over K carrier turns, K in (0, 1e6]")->type_name("K");
   cmd->add_flag("--velocity", options->velocity, "add columns vx,vy,vz = dP/dtheta2 (Eq. 47a)");
   cmd->add_flag("--degrees", options->degrees, "the t column (theta2) in degrees, header t_deg");
   cmd->add_flag("--kinematics", options->kinematics,
                 "add columns speed,geodesic_curvature,tangential_acceleration (per unit carrier rate)");
-  cmd->add_option("--format", options->format, "csv, npy, dxf, obj or step (default: by -o's suffix, else csv)");
+  cmd->add_option("--format", options->format, "csv, npy, dxf, obj or step (default: by -o's suffix, else csv)")->type_name("csv|npy|dxf|obj|step");
   cmd->add_option("--tolerance", options->tolerance,
-                  "STEP only: max distance of the B-spline from the path, in --radius units (default 1e-6 * R)");
-  cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R in [1e-100, 1e100]: the cone distance, any unit");
-  cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)");
+                  "STEP only: max distance of the B-spline from the path, in --radius units (default 1e-6 * R)")->type_name("LENGTH");
+  cmd->add_option("--radius", options->radius, "scale positions (and velocities) by R in [1e-100, 1e100]: the cone distance, any unit")
+      ->type_name("R");
+  cmd->add_option("--threads", options->threads, "worker threads computing and formatting rows (1 .. 1024; default: cores + 1)")->type_name("N");
   add_output_option(*cmd, options->output, "the trajectory");
   actions.emplace_back(cmd, [options] { run_trace(*options); });
 }

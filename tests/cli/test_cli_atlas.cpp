@@ -31,7 +31,7 @@ TEST_CASE("atlas: CSV layout, and the same bytes with 1 or 2 threads", "[cli][at
   const Result one = run_here("atlas --n 2 --grid 12 --threads 1 -o one.csv", dir);
   REQUIRE(one.status == 0);
   CHECK(one.err.empty());  // no progress bar: stderr is not a terminal
-  CHECK(contains(one.out, "disagreements (census vs report): 0 (0 within 1e-09 rad of a boundary, 0 elsewhere)\n"));
+  CHECK(contains(one.out, "disagreements (census vs report): 0 (0 within 1e-9 rad of a boundary, 0 elsewhere)\n"));
   const Result two = run_here("atlas --n 2 --grid 12 --threads 2 -o two.csv", dir);
   REQUIRE(two.status == 0);
   const std::string a = slurp(dir.path / "one.csv"), b = slurp(dir.path / "two.csv");

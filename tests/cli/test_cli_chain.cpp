@@ -6,7 +6,8 @@
 // node positions and branches of `sphtroch classify` (the gear train's two censuses); for k = 3
 // each node's two branch parameters give one point of the rotation model; the report's Fig. 3
 // node at (0, 1, 0) (Eq. 25); a chain written by `chain export --urdf` reads back to the same
-// census; bad input, including URDF files, exits 2 with one line.
+// census, and the text of a hand-written one prints the twists (the angles between its axes),
+// rates and phases read; bad input, including URDF files, exits 2 with one line.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
@@ -16,6 +17,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -247,6 +249,62 @@ TEST_CASE("chain export --urdf, read back with chain classify --urdf: the same c
   CHECK(slurp(dir.path / "wrist.urdf") == before);  // the motor's rate is 1 here, so the rates are the same
   for (std::size_t k = 0; k < a["nodes"].size(); ++k)
     for (int x = 0; x < 3; ++x) CHECK(std::fabs(a["nodes"][k]["position"][x].get<double>() - b["nodes"][k]["position"][x].get<double>()) < 1e-12);
+}
+
+namespace {
+
+/// The numbers of the text line that starts with `head` ("twists: "), comma-separated, before " rad".
+std::vector<double> listed(const std::string& text, const std::string& head) {
+  std::vector<double> v;
+  const std::size_t at = text.find("\n" + head);
+  if (at == std::string::npos) return v;
+  std::istringstream in(text.substr(at + 1 + head.size(), text.find(" rad", at) - at - 1 - head.size()));
+  for (std::string field; std::getline(in, field, ',');) v.push_back(std::strtod(field.c_str(), nullptr));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("chain classify --urdf text: the twists, rates and phases read from the file", "[cli][chain]") {
+  // Three joints through the origin, no joint origin turned: the axes as written are the rest
+  // pose's, z1 = z, z2 = (0, sin a, cos a), z3 = (sin b, 0, cos b), and the tool axis --axis 1,0,0.
+  // The twists are the angles between consecutive axes: a, acos(cos a cos b), acos(sin b).
+  const double a = 0.7, b = 1.1;
+  const Eigen::Vector3d z1(0, 0, 1), z2(0, std::sin(a), std::cos(a)), z3(std::sin(b), 0, std::cos(b)), tool(1, 0, 0);
+  const std::vector<double> twists = {a, std::acos(std::cos(a) * std::cos(b)), std::acos(std::sin(b))};
+  TempDir dir;
+  {
+    const auto axis = [](const Eigen::Vector3d& v) { return shortest_g(v.x()) + " " + shortest_g(v.y()) + " " + shortest_g(v.z()); };
+    std::ofstream f(dir.path / "three.urdf");
+    f << "<robot name='three'><link name='base'/><link name='l1'/><link name='l2'/><link name='l3'/>"
+      << "<joint name='j1' type='continuous'><parent link='base'/><child link='l1'/><axis xyz='" << axis(z1) << "'/></joint>"
+      << "<joint name='j2' type='continuous'><parent link='l1'/><child link='l2'/><axis xyz='" << axis(z2) << "'/>"
+      << "<mimic joint='j1' multiplier='0.5' offset='0.3'/></joint>"
+      << "<joint name='j3' type='continuous'><parent link='l2'/><child link='l3'/><axis xyz='" << axis(z3) << "'/>"
+      << "<mimic joint='j1' multiplier='-1.5'/></joint></robot>";
+  }
+  const Result r = run("chain classify --urdf three.urdf --from base --to l3 --axis 1,0,0", dir, true);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.rfind("chain: 3 stages, rates 1,1/2,-3/2, period ", 0) == 0);
+  const std::vector<double> got = listed(r.out, "twists: "), phases = listed(r.out, "phases: ");
+  REQUIRE(got.size() == 3);
+  REQUIRE(phases.size() == 3);
+  for (std::size_t i = 0; i < 3; ++i) CHECK(std::fabs(got[i] - twists[i]) < 1e-12);
+  // The phases printed, with those twists and rates, draw the tool axis of the file's joints
+  // turned by s, s/2 + 0.3 and -3s/2 about their axes (up to a turn about z1: the first joint's
+  // frame), so its height along z1 at every s.
+  const std::vector<Stage> stages = {{got[0], 1, 1, phases[0]}, {got[1], 1, 2, phases[1]}, {got[2], -3, 2, phases[2]}};
+  for (int k = 0; k < 50; ++k) {
+    const double s = 0.5 * k;
+    const Eigen::Vector3d p = Eigen::AngleAxisd(s, z1) * Eigen::AngleAxisd(s / 2 + 0.3, z2) * Eigen::AngleAxisd(-1.5 * s, z3) * tool;
+    CHECK(std::fabs(static_cast<double>(model(stages, s).z()) - p.z()) < 1e-12);
+  }
+  // The JSON gives the same numbers.
+  const auto j = nlohmann::json::parse(run("chain classify --urdf three.urdf --from base --to l3 --axis 1,0,0 --json", dir, true).out);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(j["chain"]["twists"][i].get<double>() == got[i]);
+    CHECK(j["chain"]["phases"][i].get<double>() == phases[i]);
+  }
 }
 
 TEST_CASE("chain classify, nodes, export: bad input is refused with one line naming the option", "[cli][chain]") {

@@ -1,8 +1,9 @@
 // `sphtroch clinostat`, run as the real executable: the JSON's train and rotation reproduce the
 // gravity (Eq. 4 written here with Eigen's AngleAxis: Rz(theta2) Rx(a2) Rz(n theta2 + phase)
 // Rx(a3) z) and both equal --trace's rows and an independent rotation model of the machine; the
-// report's keys; the dwell map's size and total; bad input (exit 2, one stderr line, nothing on
-// stdout, no file).
+// report's keys; the dwell map's size and total; the text's numbers as a person writes them (a
+// window of --resolution 0.01 as its decimal, no -0, 0.0001); bad input (exit 2, one stderr line,
+// nothing on stdout, no file).
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -206,6 +208,62 @@ TEST_CASE("clinostat: numbers and refusals as typed (leading zeros, epsilon belo
   CHECK(design.out.empty());
   CHECK(count_lines(design.err) == 1);
   CHECK(contains(design.err, "resolution"));
+}
+
+namespace {
+
+/// k hundredths as a person writes them (8760 -> "87.6", 3755 -> "37.55", 100 -> "1"), k >= 0.
+std::string hundredths(long long k) {
+  std::string s = std::to_string(k / 100);
+  const long long cents = k % 100;
+  if (cents != 0) s += (cents % 10 == 0 ? "." + std::to_string(cents / 10) : (cents < 10 ? ".0" : ".") + std::to_string(cents));
+  return s;
+}
+
+/// A window in the JSON that lies on the grid of 0.01 s: the double nearest the decimal k / 100.
+long long on_hundredths_grid(const nlohmann::json& v) {
+  const long long k = std::llround(v.get<double>() * 100);
+  CHECK(v.get<double>() == std::strtod((std::to_string(k) + "e-2").c_str(), nullptr));
+  return k;
+}
+
+}  // namespace
+
+TEST_CASE("clinostat text: a window of --resolution 0.01 prints as its decimal, not 87.60000000000001", "[cli][clinostat]") {
+  TempDir dir;
+  // 1.33 / 2 rpm at epsilon 0.03 (and 0.05): windows of 8760 x 0.01 s (39140 x 0.01 s), whose
+  // products of doubles are 87.60000000000001 (391.40000000000003).
+  CHECK(8760 * 0.01 != 87.6);
+  for (const char* epsilon : {"0.03", "0.05"}) {
+    INFO(epsilon);
+    const std::string args = std::string("clinostat --outer 1.33 --inner 2 --epsilon ") + epsilon + " --resolution 0.01";
+    const Result text = run(args, dir), json = run(args + " --json", dir);
+    REQUIRE(text.status == 0);
+    REQUIRE(json.status == 0);
+    const nlohmann::json t = nlohmann::json::parse(json.out)["time_to_epsilon"];
+    const long long first = on_hundredths_grid(t["first_s"]), stays = on_hundredths_grid(t["stays_below_from_s"]);
+    CHECK(contains(text.out, std::string("time to epsilon = ") + epsilon + " g0 (windows in steps of 0.01 s): the first window below is " +
+                                 hundredths(first) + " s; every window from " + hundredths(stays) + " s on, of any length, is below"));
+  }
+}
+
+TEST_CASE("clinostat text: no -0 (a single-axis machine's window starts at 0 s) and epsilon 0.0001 as typed", "[cli][clinostat]") {
+  TempDir dir;
+  // One axis: every start is as bad as any other; the start reported is 0, not -0 (fmod of -30 s
+  // by the 30 s period), in the text and in the JSON.
+  const Result one = run("clinostat --outer 2 --inner 0 --window 60", dir);
+  REQUIRE(one.status == 0);
+  CHECK(contains(one.out, "reached by the window starting at 0 s\n"));
+  CHECK_FALSE(contains(one.out, "-0 "));
+  CHECK_FALSE(contains(one.out, "-0,"));
+  CHECK_FALSE(contains(one.out, "(-0"));
+  const nlohmann::json j = nlohmann::json::parse(run("clinostat --outer 2 --inner 0 --window 60 --json", dir).out);
+  CHECK(j["worst_window_mean"]["start_s"].get<double>() == 0.0);
+  CHECK_FALSE(std::signbit(j["worst_window_mean"]["start_s"].get<double>()));
+  const Result small = run("clinostat --outer 1.33 --inner 2 --epsilon 0.0001", dir);
+  REQUIRE(small.status == 0);
+  CHECK(contains(small.out, "time to epsilon = 0.0001 g0 (windows in steps of 1 s): "));
+  CHECK_FALSE(contains(small.out, "e-0"));
 }
 
 TEST_CASE("clinostat --plot of a machine with a very long period is bounded (the torus bound) and says so", "[cli][clinostat]") {

@@ -324,6 +324,28 @@ TEST_CASE("cli synth fit: a trace's path gives back its train first, and a wante
   }
 }
 
+TEST_CASE("cli synth fit text: the margin line says what each of its numbers measures", "[cli][synth]") {
+  // n = 2, a2 = 1.1, a3 = 0.9: the nearest change of the census is the pole line a3 = a2 (the
+  // tracer through the pole), a line at 45 deg. Its distance is |a2 - a3| / sqrt 2 = 0.1414...
+  // (the margin, first order: exact for a straight line); the largest square about the train that
+  // it does not meet has half-width |a2 - a3| / 2 = 0.1 (the certified margin's bracket).
+  TempDir dir;
+  REQUIRE(run("trace --n 2 --a2 1.1 --a3 0.9 --phase 0.4 --samples 300 -o t.csv", dir, true).status == 0);
+  REQUIRE(shell("(echo x,y,z; tail -n +2 t.csv | cut -d, -f2-4) > path.csv", dir).status == 0);
+  const nlohmann::json j = nlohmann::json::parse(run("synth fit --input path.csv --n 2 --candidates 1 --json", dir, true).out);
+  REQUIRE(j["candidates"].size() == 1);
+  const auto& best = j["candidates"][0];
+  const double margin = best["margin"], lower = best["certified_margin"]["lower"], upper = best["certified_margin"]["upper"];
+  CHECK(std::abs(margin - 0.2 / std::sqrt(2.0)) < 1e-6);
+  CHECK(lower <= 0.1 + 1e-12);
+  CHECK(upper >= 0.1 - 1e-12);
+  CHECK(upper - lower < 1e-6);
+  const Result text = run("synth fit --input path.csv --n 2 --candidates 1", dir, true);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "; margin " + shortest_g(margin) + " (distance to the nearest change of the census, first order), " +
+                               "change-free square of half-width " + shortest_g(lower) + " .. " + shortest_g(upper) + " (certified); "));
+}
+
 TEST_CASE("cli synth fit: bad input is one stderr line, exit 2, no stdout", "[cli][synth][errors]") {
   TempDir dir;
   REQUIRE(shell("printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n' > three.csv && printf 'x,y,z\\n1,0,0\\n0,1,0\\n0,0,1\\n0,0,1.00001\\n' > off.csv && "

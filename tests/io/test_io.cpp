@@ -123,6 +123,53 @@ TEST_CASE("number_text: every double round-trips exactly, and the form is the sh
   }
 }
 
+TEST_CASE("report_number: number_text's digits as a person writes them, 0 for -0", "[io][numbers]") {
+  // Fixed notation for 1e-4 <= |v| < 1e16, else d.ddde-5 / d.ddde16 (no '+', no leading zeros).
+  CHECK(report_number(-0.0) == "0");
+  CHECK(report_number(0.0) == "0");
+  CHECK(report_number(1e-4) == "0.0001");
+  CHECK(report_number(-1e-4) == "-0.0001");
+  CHECK(report_number(1e-5) == "1e-5");
+  CHECK(report_number(2.5e-11) == "2.5e-11");
+  CHECK(report_number(0.001) == "0.001");
+  CHECK(report_number(37.55) == "37.55");
+  CHECK(report_number(1200.0) == "1200");
+  CHECK(report_number(1e15) == "1000000000000000");
+  CHECK(report_number(1e16) == "1e16");
+  CHECK(report_number(DBL_MAX) == "1.7976931348623157e308");
+  CHECK(report_number(std::numeric_limits<double>::denorm_min()) == "5e-324");
+  CHECK(report_number(1.0 / 3.0) == number_text(1.0 / 3.0));
+  CHECK(seconds_text(1.0234e-6) == "1.02e-6");
+  CHECK(seconds_text(123456.0) == "123000");
+  // Every finite value reads back as itself (a zero as +0), in as many significant digits as number_text.
+  std::mt19937_64 rng(20261201);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<double> values;
+  for (int e = -12; e <= 20; ++e) values.push_back(std::pow(10.0, e) * unit(rng));
+  for (int i = 0; i < 20000; ++i) {
+    std::uint64_t b = rng();
+    double v;
+    std::memcpy(&v, &b, sizeof v);
+    if (std::isfinite(v)) values.push_back(v);
+  }
+  const auto significant = [](const std::string& s) {
+    std::string digits;
+    for (char c : s.substr(0, s.find('e'))) if (std::isdigit(static_cast<unsigned char>(c))) digits += c;
+    digits.erase(0, digits.find_first_not_of('0'));
+    return digits.substr(0, digits.find_last_not_of('0') + 1);
+  };
+  for (const double v : values) {
+    const std::string s = report_number(v);
+    INFO(number_text(v) << " as " << s);
+    const auto back = parse_number(s);
+    REQUIRE(back.has_value());
+    CHECK(bits(*back) == bits(v == 0 ? 0.0 : v));
+    CHECK(significant(s) == significant(number_text(v)));
+    CHECK(s.find("e+") == std::string::npos);
+    CHECK(s.find("e-0") == std::string::npos);
+  }
+}
+
 TEST_CASE("number_text: parse_number accepts numbers only, whole, finite", "[io][numbers]") {
   CHECK(parse_number("2.5e-3") == 2.5e-3);
   CHECK(parse_number("+1") == 1.0);

@@ -8,7 +8,9 @@
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #include "test_support.hpp"
 
+#include <cstdlib>
 #include <random>
+#include <string>
 
 using namespace sphtroch;
 
@@ -234,6 +236,28 @@ TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted fra
   CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.0, 1.0); }).field() == "epsilon");
   CHECK(test::expect_invalid([&] { time_to_epsilon(tilted, 0.01, -1.0); }).field() == "resolution");
   CHECK(test::expect_invalid([&] { worst_window_mean(tilted, 0.0); }).field() == "window");
+}
+
+TEST_CASE("time to epsilon: the grid of a decimal resolution is of decimals (k x 0.01 s, not k * 0.01)", "[window_mean]") {
+  // 8760 * 0.01 is 87.60000000000001 in doubles; the grid's window is the double nearest 87.6.
+  REQUIRE(8760 * 0.01 != 87.6);
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(machine("1.33", "2")));
+  for (const double resolution : {0.01, 0.1, 0.25, 1.0}) {
+    for (const double eps : {0.03, 0.05}) {
+      INFO("resolution " << resolution << ", epsilon " << eps);
+      const TimeToEpsilon t = time_to_epsilon(g, eps, resolution);
+      REQUIRE(t.first_s);
+      REQUIRE(t.stays_below_from_s);
+      // k steps of r = R / 100 (R = 1, 10, 25, 100): the decimal k R / 100, read by strtod.
+      const long long hundredths = std::llround(resolution * 100);
+      const auto decimal = [&](long long k) { return std::strtod((std::to_string(k * hundredths) + "e-2").c_str(), nullptr); };
+      const long long first = std::llround(*t.first_s / resolution);
+      CHECK(*t.first_s == decimal(first));
+      CHECK(*t.stays_below_from_s == decimal(std::llround(*t.stays_below_from_s / resolution)));
+      CHECK(worst_window_mean(g, *t.first_s).upper <= eps);
+      if (first > 1) CHECK(worst_window_mean(g, decimal(first - 1)).lower > eps);
+    }
+  }
 }
 
 TEST_CASE("time to epsilon holds for every real window length: one axis at 60 rpm, whose period divides the resolution", "[window_mean]") {

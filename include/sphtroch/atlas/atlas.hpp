@@ -181,7 +181,7 @@ inline void AtlasSpec::validate() const {
   if (teeth && !(teeth->ratio() == ratio))
     throw InvalidInput("teeth", teeth->str(), "not the ratio n = " + ratio.str(), "tooth counts ZS:ZP with ZS/ZP = n");
   if (!(reading.boundary_tolerance >= 0.0))
-    throw InvalidInput("boundary_tolerance", number_text(reading.boundary_tolerance), "negative", ">= 0 radians");
+    throw InvalidInput("boundary_tolerance", report_number(reading.boundary_tolerance), "negative", ">= 0 radians");
   // The carrier-twist bounds up front, for every row: a row whose pitch cone is ill-defined would
   // refuse the cells near it (GearTrain), so the whole range is refused instead.
   for (std::size_t i = 0; i < grid; ++i) GearTrain::on_cone(a2_at(i), A3Reference::pitch_cone, 0.0, ratio);

@@ -13,7 +13,7 @@
 // "disagreements (census vs report): D (W within BAND rad of a boundary, F elsewhere)", one line
 // per listed disagreeing cell, "  ... and M more (agree = 0 in the CSV)" when some are not listed,
 // and, when the run was timed, "time: S s on T thread(s), X ms per cell per thread".
-// Numbers in the shortest round-trip form (number_text.hpp); the time with printf %.3f.
+// Numbers as report_number writes them (number_text.hpp); the time with printf %.3f.
 #pragma once
 
 #include "sphtroch/atlas/atlas.hpp"
@@ -63,12 +63,12 @@ namespace atlas_report_detail {
 
 inline void head(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s, const AtlasRun& run) {
   out << "atlas: n = " << spec.ratio.str() << (spec.teeth ? " (teeth " + spec.teeth->str() + ")" : "") << ", grid " << spec.grid << " x " << spec.grid << ", a2 in ["
-      << number_text(spec.a2.lo) << ", " << number_text(spec.a2.hi) << "], a3 in [" << number_text(spec.a3.lo) << ", "
-      << number_text(spec.a3.hi) << "], cell centres; "
+      << report_number(spec.a2.lo) << ", " << report_number(spec.a2.hi) << "], a3 in [" << report_number(spec.a3.lo) << ", "
+      << report_number(spec.a3.hi) << "], cell centres; "
       << (spec.reading.literal ? "literal reading (tolerances 0)"
-                       : "default reading (boundary tolerance " + number_text(spec.reading.boundary_tolerance) +
-                             " rad, tangency " + number_text(kTangencyTolerance) + ")")
-      << "; cusp resolution " << number_text(kCuspResolution) << " rad"
+                       : "default reading (boundary tolerance " + report_number(spec.reading.boundary_tolerance) +
+                             " rad, tangency " + report_number(kTangencyTolerance) + ")")
+      << "; cusp resolution " << report_number(kCuspResolution) << " rad"
       << "\n";
   out << "cells: " << s.cells << " (";
   if (run.shard) out << "shard " << run.shard->index << "/" << run.shard->count << ": ";
@@ -102,10 +102,10 @@ inline void disagreements(std::ostream& out, const AtlasSpec& spec, const AtlasS
       << " rad of a boundary, " << s.disagreements_off_boundaries << " elsewhere)\n";
   for (const AtlasCell& c : listed) {
     const NearestBoundary b = nearest_boundary(c.a2, c.a3, spec.ratio);
-    out << "  i=" << c.i << " j=" << c.j << " a2=" << number_text(c.a2) << " a3=" << number_text(c.a3) << ": census "
+    out << "  i=" << c.i << " j=" << c.j << " a2=" << report_number(c.a2) << " a3=" << report_number(c.a3) << ": census "
         << c.nodes << " node(s), " << c.cusps << " cusp(s); report "
         << (c.analytic_nodes ? std::to_string(*c.analytic_nodes) : std::string("NA")) << " node(s), "
-        << c.analytic_cusps << " cusp(s); nearest boundary " << b.name << " at " << number_text(b.distance) << " rad\n";
+        << c.analytic_cusps << " cusp(s); nearest boundary " << b.name << " at " << report_number(b.distance) << " rad\n";
   }
   if (s.disagreement_count > listed.size())
     out << "  ... and " << s.disagreement_count - listed.size() << " more (agree = 0 in the CSV)\n";

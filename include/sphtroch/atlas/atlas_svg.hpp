@@ -485,7 +485,7 @@ inline std::string render_atlas_svg(const AtlasSpec& spec, const std::vector<Atl
   spec.validate();
   SPHTROCH_ASSERT(cells.size() == spec.cells(), "render_atlas_svg: one cell per grid point");
   if (!(options.map_px >= 64 && options.map_px <= 8192))
-    throw InvalidInput("map_px", number_text(options.map_px), "outside the valid range", "[64, 8192] px");
+    throw InvalidInput("map_px", report_number(options.map_px), "outside the valid range", "[64, 8192] px");
   const std::string teeth = spec.teeth ? " (teeth " + spec.teeth->str() + ")" : "";
   const std::string title = options.title.empty() ? "Curve classes over (α2, α3), n = " + spec.ratio.str() + teeth + ", " +
                                                         std::to_string(spec.grid) + " × " + std::to_string(spec.grid) + " cells"

@@ -183,10 +183,10 @@ inline std::pair<double, double> checked_tolerance_and_span(const GearTrain& tra
   check_cone_distance(o.radius);
   const double tolerance = o.tolerance.value_or(1e-6 * o.radius);
   if (!(std::isfinite(tolerance) && tolerance >= 1e-12 * o.radius))
-    throw InvalidInput("tolerance", number_text(tolerance), "below what double precision can check",
+    throw InvalidInput("tolerance", report_number(tolerance), "below what double precision can check",
                        ">= 1e-12 * radius = " + number_text(1e-12 * o.radius));
   if (o.turns && !(*o.turns >= kMinStepTurns && *o.turns <= 1e6))
-    throw InvalidInput("turns", number_text(*o.turns), "outside the range STEP export takes", "[1e-6, 1e6] carrier turns");
+    throw InvalidInput("turns", report_number(*o.turns), "outside the range STEP export takes", "[1e-6, 1e6] carrier turns");
   return {tolerance, o.turns ? 2 * Constants<double>::pi() * *o.turns : train.period()};
 }
 
@@ -214,7 +214,7 @@ inline StepPath step_path(const GearTrain& train, const StepOptions& options) {
   step_detail::silence_opencascade();
   std::size_t n = step_detail::first_point_count(train, options, span);
   const auto too_tight = [&](double predicted) {
-    return InvalidInput("tolerance", number_text(tolerance), "needs about " + number_text(std::ceil(predicted)) +
+    return InvalidInput("tolerance", report_number(tolerance), "needs about " + number_text(std::ceil(predicted)) +
                         " B-spline points, more than " + std::to_string(kMaxStepPoints),
                         "a larger tolerance (the default is 1e-6 * radius)");
   };

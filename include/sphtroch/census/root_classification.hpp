@@ -92,7 +92,7 @@ inline std::vector<A3Interval> classify_a3_range(double a2, const Ratio& n, doub
                                                  const RootClassificationSettings& settings = {}) {
   const double pi = Constants<double>::pi();
   if (!(lo > 0.0 && lo < hi && hi < pi))
-    throw InvalidInput("a3_range", number_text(lo) + ":" + number_text(hi), "not inside (0, pi) or empty",
+    throw InvalidInput("a3_range", report_number(lo) + ":" + number_text(hi), "not inside (0, pi) or empty",
                        "0 < lo < hi < pi radians");
   if (count < 2 || count > 1000000)
     throw InvalidInput("count", std::to_string(count), "outside the valid range", "integer 2 .. 1000000");

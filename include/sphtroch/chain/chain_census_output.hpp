@@ -5,7 +5,7 @@
 //   const sphtroch::RotationChain chain({{1.0, sphtroch::ChainRate(1), 0.0}, {2.0, sphtroch::ChainRate(2, 3), 0.0}});
 //   const sphtroch::ChainCensus c = sphtroch::chain_census(chain);
 //   nlohmann::json j = sphtroch::chain_census_json(chain, c);   // the schema below
-//   std::string t = sphtroch::chain_census_text(chain, c);      // for people
+//   std::string t = sphtroch::chain_census_text(chain, c);      // for people: the chain as read, then the census
 //
 // JSON: "chain" {"twists", "rates" (exact, "p/q"), "phases" (as reduced), "period" (2 pi L / g),
 // "curve_period" (the census's: shorter when coaxial joints make the curve repeat)}; "class"
@@ -69,24 +69,35 @@ inline nlohmann::json chain_census_json(const RotationChain& chain, const ChainC
   return j;
 }
 
+/// The stages' twists or phases (radians) as a person reads them and --twists / --phases take
+/// them: "1.5707963267948966,0.4".
+inline std::string chain_angles_text(const RotationChain& chain, double ChainStage::*angle) {
+  std::string t;
+  for (const ChainStage& s : chain.stages()) t += (t.empty() ? "" : ",") + report_number(s.*angle);
+  return t;
+}
+
+/// The census for people: a header with the chain as read (its stages, rates, period, twists
+/// and phases: what a chain read from a URDF turned into), the class, the nodes and the cusps.
 inline std::string chain_census_text(const RotationChain& chain, const ChainCensus& c) {
   std::ostringstream out;
-  out << "chain: " << chain.size() << " stages, rates " << chain.rates_text() << ", period " << number_text(chain.period());
-  if (c.period != chain.period()) out << " (the curve repeats after " << number_text(c.period) << ")";
-  out << "\nclass: " << chain_class_text(c)
+  out << "chain: " << chain.size() << " stages, rates " << chain.rates_text() << ", period " << report_number(chain.period());
+  if (c.period != chain.period()) out << " (the curve repeats after " << report_number(c.period) << ")";
+  out << "\ntwists: " << chain_angles_text(chain, &ChainStage::twist) << " rad\nphases: " << chain_angles_text(chain, &ChainStage::phase)
+      << " rad\nclass: " << chain_class_text(c)
       << (c.certified ? " (certified)" : " (NOT certified: " + c.why + ")") << "\nnodes: " << c.nodes.size() << "\n";
   std::size_t id = 0;
   for (const Node& n : c.nodes) {
-    out << "  N" << ++id << "  (" << number_text(n.position.x()) << ", " << number_text(n.position.y()) << ", "
-        << number_text(n.position.z()) << ")  " << n.branches << " branches, s =";
-    for (const double p : n.params) out << ' ' << number_text(p);
+    out << "  N" << ++id << "  (" << report_number(n.position.x()) << ", " << report_number(n.position.y()) << ", "
+        << report_number(n.position.z()) << ")  " << n.branches << " branches, s =";
+    for (const double p : n.params) out << ' ' << report_number(p);
     out << '\n';
   }
-  out << "cusps: " << c.cusps.size() << " (within " << number_text(kChainCuspResolution) << " sum |N_i| of zero speed)\n";
+  out << "cusps: " << c.cusps.size() << " (within " << report_number(kChainCuspResolution) << " sum |N_i| of zero speed)\n";
   id = 0;
   for (const Cusp& k : c.cusps)
-    out << "  C" << ++id << "  (" << number_text(k.position.x()) << ", " << number_text(k.position.y()) << ", "
-        << number_text(k.position.z()) << ")  s = " << number_text(k.param) << '\n';
+    out << "  C" << ++id << "  (" << report_number(k.position.x()) << ", " << report_number(k.position.y()) << ", "
+        << report_number(k.position.z()) << ")  s = " << report_number(k.param) << '\n';
   return out.str();
 }
 

@@ -146,15 +146,15 @@ inline ChainEvents chain_events(const RotationChain& chain, const ChainVary& var
 
 inline void write_chain_events_text(std::ostream& out, const RotationChain& chain, const ChainEvents& e) {
   out << "chain boundaries: " << chain.size() << " stages, rates " << chain.rates_text() << ", " << e.vary.name() << " in ["
-      << number_text(e.vary.lo) << ", " << number_text(e.vary.hi) << "] rad\n";
-  out << "events, ascending (" << e.vary.name() << " to " << number_text(e.accuracy)
+      << report_number(e.vary.lo) << ", " << report_number(e.vary.hi) << "] rad\n";
+  out << "events, ascending (" << e.vary.name() << " to " << report_number(e.accuracy)
       << " rad; node points as chain classify counts them, just below -> just above):\n";
   if (e.events.empty()) out << "  none" << (e.note.empty() ? "" : ": " + e.note) << "\n";
   for (std::size_t i = 0; i < e.events.size(); ++i) {
     const BoundaryEvent& b = e.events[i];
-    out << "  " << e.vary.name() << " = " << number_text(b.a3) << "  " << to_string(b.kind) << "  nodes " << b.nodes_below << " -> "
+    out << "  " << e.vary.name() << " = " << report_number(b.a3) << "  " << to_string(b.kind) << "  nodes " << b.nodes_below << " -> "
         << b.nodes_above << "  (" << b.name << ")";
-    if (i < e.roots.size()) out << (e.roots[i].certified ? "  root certified" : "  root not isolated: value to +-" + number_text(e.accuracy_of(i)));
+    if (i < e.roots.size()) out << (e.roots[i].certified ? "  root certified" : "  root not isolated: value to +-" + report_number(e.accuracy_of(i)));
     out << "\n";
   }
   if (!e.certified) out << "NOT CERTIFIED: " << e.why << "\n";

@@ -208,20 +208,20 @@ class GearTrain {
   GearTrain(double a2, A3Reference reference, double offset, Ratio n, double phase)
       : a2_(a2), a3_(0.0), reference_(reference), offset_(offset), ratio_(n), phase_(0.0), phase_given_(phase) {
     const double pi = Constants<double>::pi();
-    if (!(a2 > 0.0 && a2 < pi)) throw InvalidInput("a2", number_text(a2), "outside the valid range", "(0, pi) radians");
+    if (!(a2 > 0.0 && a2 < pi)) throw InvalidInput("a2", report_number(a2), "outside the valid range", "(0, pi) radians");
     if (!carrier_twist_in_range(a2))
-      throw InvalidInput("a2", number_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
+      throw InvalidInput("a2", report_number(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
                          "[1e-6, pi - 1e-6] radians");
     const double nv = n.value(), speed = std::sqrt(std::max(0.0, 1.0 + nv * nv + 2.0 * nv * std::cos(a2)));
-    if (!std::isfinite(offset)) throw InvalidInput("a3", number_text(offset), "not a finite number", "(0, pi) radians");
-    if (!std::isfinite(phase)) throw InvalidInput("phase", number_text(phase), "not a finite number", "any finite angle in radians");
+    if (!std::isfinite(offset)) throw InvalidInput("a3", report_number(offset), "not a finite number", "(0, pi) radians");
+    if (!std::isfinite(phase)) throw InvalidInput("phase", report_number(phase), "not a finite number", "any finite angle in radians");
     phase_ = reduce_phase(phase);
     a3_ = reference_angle() + offset;
     const double ap = planet_cone_of(a2, n);
     const bool near_cone = reference == A3Reference::pitch_cone || reference == A3Reference::mirror_pitch_cone ||
                            std::abs(a3_ - ap) < kPitchConeGuard || std::abs(a3_ - (pi - ap)) < kPitchConeGuard;
     if (!(speed >= kMinPlanetSpeed) && near_cone)
-      throw InvalidInput("a2", number_text(a2),
+      throw InvalidInput("a2", report_number(a2),
                          "with n = " + n.str() + " the planet barely turns in space (|Z1 + n Z2| = " + number_text(speed) +
                              ") and a3 is on or near its ill-defined pitch cone",
                          "a2 with sqrt(1 + n^2 + 2 n cos a2) >= 1e-3, or a3 at least 0.01 rad from the pitch cones");

@@ -11,6 +11,13 @@
 // 2-20% shorter than 17 significant digits, so files are smaller and faster to write and read.
 // Non-finite values are written "nan", "inf", "-inf" (the tool never writes them in data rows).
 // Parsing is std::from_chars (general format, round-to-nearest): exact inverse of the above.
+// That is the form of data: files, tables, JSON, the texts front ends exchange.
+//
+// Sentences people read (text reports, explanations) use report_number: the same digits, written
+// as a person writes them: 0.0001, 37.55, 1e-5, 2.5e-11, 1e16 (fixed notation for 1e-4 <= |v| <
+// 1e16, as Python's repr; an exponent without '+' or leading zeros), and 0 for -0.0. It reads back
+// as the same double but for the sign of a zero. Measured times are seconds_text: 3 significant
+// digits in the same form.
 //
 // Where the standard library has no floating-point to_chars/from_chars (__cpp_lib_to_chars unset:
 // emscripten's libc++, the explorer's WebAssembly build) the same texts come from
@@ -99,12 +106,52 @@ inline bool decimal_underflows(const char* first, const char* last) noexcept {
 
 }  // namespace detail
 
-/// A measured time in seconds for text reports: 3 significant digits, printf "%.3g" (timings are
-/// noisy; JSON reports keep every digit with number_text / the JSON writer).
+/// The shortest round-trip decimal of |v| (v finite, not 0): its significant digits, without
+/// leading or trailing zeros, and the decimal exponent of the first (|v| reads as
+/// d1.d2d3... x 10^exponent): 37.55 is {"3755", 1}, 0.01 is {"1", -2}, 1200 is {"12", 3}.
+struct DecimalDigits {
+  std::string digits;
+  int exponent = 0;
+};
+inline DecimalDigits decimal_digits(double v) {
+  const std::string text = number_text(std::fabs(v));
+  const std::size_t e_at = std::min(text.find('e'), text.size());
+  const std::size_t point = std::min(text.find('.'), e_at);
+  DecimalDigits d;
+  for (std::size_t i = 0; i < e_at; ++i)
+    if (text[i] != '.') d.digits += text[i];
+  const std::size_t lead = std::min(d.digits.find_first_not_of('0'), d.digits.size());
+  d.exponent = static_cast<int>(point) - 1 - static_cast<int>(lead) + (e_at < text.size() ? std::atoi(text.c_str() + e_at + 1) : 0);
+  d.digits.erase(0, lead);
+  d.digits.erase(std::min(d.digits.find_last_not_of('0') + 1, d.digits.size()));
+  return d;
+}
+
+/// v for a sentence a person reads (see the header): number_text's digits, fixed notation for
+/// 1e-4 <= |v| < 1e16, else d.ddde-5 / d.ddde16; -0.0 as "0"; "nan", "inf", "-inf" as number_text.
+inline std::string report_number(double v) {
+  if (v == 0) return "0";
+  if (!std::isfinite(v)) return number_text(v);
+  const DecimalDigits d = decimal_digits(v);
+  const std::size_t count = d.digits.size();
+  std::string out = v < 0 ? "-" : "";
+  if (d.exponent < -4 || d.exponent > 15) {
+    out += d.digits.substr(0, 1) + (count > 1 ? "." + d.digits.substr(1) : "") + "e" + std::to_string(d.exponent);
+  } else if (d.exponent < 0) {
+    out += "0." + std::string(static_cast<std::size_t>(-d.exponent - 1), '0') + d.digits;
+  } else {
+    const std::size_t whole = static_cast<std::size_t>(d.exponent) + 1;
+    out += count <= whole ? d.digits + std::string(whole - count, '0') : d.digits.substr(0, whole) + "." + d.digits.substr(whole);
+  }
+  return out;
+}
+
+/// A measured time in seconds for text reports: 3 significant digits (timings are noisy; JSON
+/// reports keep every digit with number_text / the JSON writer), written as report_number does.
 inline std::string seconds_text(double seconds) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.3g", seconds);
-  return buf;
+  return report_number(std::strtod(buf, nullptr));
 }
 
 /// Parses a number at [first, last): an optional '+' or '-', digits with an optional point and

@@ -47,7 +47,7 @@ struct Reading {
   /// Throws InvalidInput("boundary_tolerance", ...) unless 0 <= boundary_tolerance <= 1e-3.
   void validate() const {
     if (!(boundary_tolerance >= 0.0 && boundary_tolerance <= kMaxBoundaryTolerance))
-      throw InvalidInput("boundary_tolerance", number_text(boundary_tolerance), "outside the valid range",
+      throw InvalidInput("boundary_tolerance", report_number(boundary_tolerance), "outside the valid range",
                          "[0, 1e-3] radians");
   }
 };

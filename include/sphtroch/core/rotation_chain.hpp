@@ -108,9 +108,9 @@ class RotationChain {
     for (std::size_t i = 0; i < stages_.size(); ++i) {
       const ChainStage& s = stages_[i];
       if (!(s.twist >= 0 && s.twist <= pi))
-        throw InvalidInput("twists", number_text(s.twist) + " (stage " + std::to_string(i + 1) + ")", "outside [0, pi]", "A in [0, pi] radians");
+        throw InvalidInput("twists", report_number(s.twist) + " (stage " + std::to_string(i + 1) + ")", "outside [0, pi]", "A in [0, pi] radians");
       if (!std::isfinite(s.phase))
-        throw InvalidInput("phases", number_text(s.phase) + " (stage " + std::to_string(i + 1) + ")", "not finite", "a finite angle in radians");
+        throw InvalidInput("phases", report_number(s.phase) + " (stage " + std::to_string(i + 1) + ")", "not finite", "a finite angle in radians");
       stages_[i].phase = reduce_phase(s.phase);  // to [-pi, pi] as GearTrain's phase: the same curve
     }
     std::int64_t l = 1;

@@ -83,7 +83,7 @@ inline std::size_t trace_sample_count(const GearTrain& train, std::optional<doub
                          : 360.0 * static_cast<double>(r.q() + r.abs_p());
   if (n > static_cast<double>(kMaxDefaultSamples)) {
     if (turns)
-      throw InvalidInput("turns", number_text(*turns),
+      throw InvalidInput("turns", report_number(*turns),
                          "needs 360 (1 + |n|) K + 1 = " + number_text(std::ceil(n)) + " samples, more than 1000000",
                          "K <= " + number_text(max_default_turns(train)) + " carrier turns for this n");
     throw InvalidInput("samples", "(default)",

@@ -295,17 +295,17 @@ inline ScreenPoint SphereView::project(const Vector3d& p) const {
 inline PlotLayout plot_layout(const PlotOptions& o) {
   const double pi = Constants<double>::pi();
   if (!std::isfinite(o.azimuth))
-    throw InvalidInput("azimuth", number_text(o.azimuth), "not a finite number", "any finite angle in radians");
+    throw InvalidInput("azimuth", report_number(o.azimuth), "not a finite number", "any finite angle in radians");
   if (!(std::isfinite(o.elevation) && std::fabs(o.elevation) <= pi / 2))
-    throw InvalidInput("elevation", number_text(o.elevation), "outside the valid range", "[-pi/2, pi/2] radians");
+    throw InvalidInput("elevation", report_number(o.elevation), "outside the valid range", "[-pi/2, pi/2] radians");
   if (!(o.size_px >= 64 && o.size_px <= 8192))
-    throw InvalidInput("size", number_text(o.size_px), "outside the valid range", "[64, 8192] px");
+    throw InvalidInput("size", report_number(o.size_px), "outside the valid range", "[64, 8192] px");
   if (!(o.decimals >= 0 && o.decimals <= 6))
     throw InvalidInput("decimals", std::to_string(o.decimals), "outside the valid range", "integer 0 .. 6");
   if (!(o.simplify_px >= 0 && o.simplify_px <= 5))
-    throw InvalidInput("simplify_px", number_text(o.simplify_px), "outside the valid range", "[0, 5] px");
+    throw InvalidInput("simplify_px", report_number(o.simplify_px), "outside the valid range", "[0, 5] px");
   if (!(o.max_arc_step > 0 && o.max_arc_step <= 0.5))
-    throw InvalidInput("max_arc_step", number_text(o.max_arc_step), "outside the valid range", "(0, 0.5] radians");
+    throw InvalidInput("max_arc_step", report_number(o.max_arc_step), "outside the valid range", "(0, 0.5] radians");
 
   PlotLayout l;
   l.width = l.height = o.size_px;

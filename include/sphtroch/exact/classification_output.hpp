@@ -10,8 +10,9 @@
 //
 // Contracts:
 //  1. `text` echoes the angles as the user wrote them (a2_text, a3_text, the plot caption); every
-//     number comes from the Classification, printed in the shortest round-trip form
-//     (number_text.hpp) in text, as JSON numbers (also round-trip) in JSON; measured times in
+//     number comes from the Classification, printed as report_number writes it in text (the
+//     shortest round-trip digits, 1e-5, 0 for -0: number_text.hpp), as JSON numbers (round-trip)
+//     in JSON; measured times in
 //     text reports have 3 significant digits (seconds_text), in JSON every digit.
 //  2. classification_json: one object with the keys inputs, cone_angles, period, class, counts,
 //     nodes, cusps, cusp_within_resolution, boundaries, z_extremes, nearest_event, margin (the
@@ -115,7 +116,7 @@ inline void write_crossings_summary_text(std::ostream& out, const CrossingsSumma
 namespace report_detail {
 
 inline std::string vec_text(const Vector3d& v) {
-  return "(" + number_text(v.x()) + ", " + number_text(v.y()) + ", " + number_text(v.z()) + ")";
+  return "(" + report_number(v.x()) + ", " + report_number(v.y()) + ", " + report_number(v.z()) + ")";
 }
 
 inline double longitude(const Vector3d& p) { return std::atan2(p.y(), p.x()); }
@@ -230,43 +231,43 @@ inline void text_inputs(std::ostream& out, const TrainText& text, const Classifi
   const GearTrain& in = c.input;
   const GearTrain& tr = c.snapped.train;
   out << "inputs\n";
-  out << "  a2 = " << text.a2 << " = " << number_text(in.a2()) << " rad (" << number_text(degrees(in.a2())) << " deg)\n";
-  out << "  a3 = " << text.a3 << " = " << number_text(in.a3()) << " rad (" << number_text(degrees(in.a3())) << " deg)\n";
-  out << "  n = " << in.ratio().str() << text.teeth_note() << ", phase = " << number_text(in.phase_given()) << " rad";
-  if (in.phase() != in.phase_given()) out << " (reduced to " << number_text(in.phase()) << ")";
+  out << "  a2 = " << text.a2 << " = " << report_number(in.a2()) << " rad (" << report_number(degrees(in.a2())) << " deg)\n";
+  out << "  a3 = " << text.a3 << " = " << report_number(in.a3()) << " rad (" << report_number(degrees(in.a3())) << " deg)\n";
+  out << "  n = " << in.ratio().str() << text.teeth_note() << ", phase = " << report_number(in.phase_given()) << " rad";
+  if (in.phase() != in.phase_given()) out << " (reduced to " << report_number(in.phase()) << ")";
   out << "\n";
   out << "  reading: " << (c.literal ? "literal (the given doubles)" : "default (boundaries within tolerance are snapped)")
       << "\n";
-  out << "cone angles\n  a_p = " << number_text(tr.planet_cone()) << " rad, a_s = " << number_text(tr.sun_cone())
-      << " rad; period 2*pi*q = " << number_text(tr.period()) << " rad\n";
+  out << "cone angles\n  a_p = " << report_number(tr.planet_cone()) << " rad, a_s = " << report_number(tr.sun_cone())
+      << " rad; period 2*pi*q = " << report_number(tr.period()) << " rad\n";
 }
 
 inline void text_boundaries(std::ostream& out, const Classification& c) {
-  out << "boundaries (tolerance " << number_text(c.snapped.tolerance) << " rad)\n";
-  if (c.snapped.a2_snapped) out << "  a2 = pi/2 (margin " << number_text(c.snapped.a2_margin) << ")\n";
-  for (const Boundary& b : c.snapped.hits) out << "  on " << b.name << " (margin " << number_text(b.margin) << ")\n";
+  out << "boundaries (tolerance " << report_number(c.snapped.tolerance) << " rad)\n";
+  if (c.snapped.a2_snapped) out << "  a2 = pi/2 (margin " << report_number(c.snapped.a2_margin) << ")\n";
+  for (const Boundary& b : c.snapped.hits) out << "  on " << b.name << " (margin " << report_number(b.margin) << ")\n";
   if (!c.snapped.a2_snapped && c.snapped.hits.empty()) out << "  none within tolerance\n";
-  out << "  margin to pitch cone a3 - a_p = " << number_text(c.cone.pitch) << ", to mirror a3 - (pi - a_p) = "
-      << number_text(c.cone.mirror) << "\n\n";
+  out << "  margin to pitch cone a3 - a_p = " << report_number(c.cone.pitch) << ", to mirror a3 - (pi - a_p) = "
+      << report_number(c.cone.mirror) << "\n\n";
 }
 
 inline void text_nodes_and_cusps(std::ostream& out, const Classification& c) {
   out << "class: " << to_string(c.curve_class) << " — " << c.nodes.size() << " node(s) (" << c.crossings
       << " crossing, " << c.tangencies << " tangency), " << c.cusps.size() << " cusp(s)"
-      << (c.cusp_within_resolution ? " [cusp within resolution " + number_text(kCuspResolution) + " rad]" : "") << "\n";
+      << (c.cusp_within_resolution ? " [cusp within resolution " + report_number(kCuspResolution) + " rad]" : "") << "\n";
   out << "certified: " << (c.certified() ? "yes (two independent censuses agree)" : "NO — " + uncertified_text(c)) << "\n";
   std::size_t i = 0;
   for (const Node& n : c.nodes) {
     out << "  node " << ++i << ": " << to_string(n.kind) << ", " << n.branches << " branches, at " << vec_text(n.position)
-        << "\n          lon " << number_text(degrees(longitude(n.position))) << " deg, lat "
-        << number_text(degrees(latitude(n.position))) << " deg; theta2 =";
-    for (double t : n.params) out << ' ' << number_text(t);
-    out << "; angle " << number_text(n.angle) << " rad\n";
+        << "\n          lon " << report_number(degrees(longitude(n.position))) << " deg, lat "
+        << report_number(degrees(latitude(n.position))) << " deg; theta2 =";
+    for (double t : n.params) out << ' ' << report_number(t);
+    out << "; angle " << report_number(n.angle) << " rad\n";
   }
   i = 0;
   for (const Cusp& k : c.cusps)
-    out << "  cusp " << ++i << ": at " << vec_text(k.position) << ", theta2 = " << number_text(k.param) << ", speed "
-        << number_text(k.speed) << "\n";
+    out << "  cusp " << ++i << ": at " << vec_text(k.position) << ", theta2 = " << report_number(k.param) << ", speed "
+        << report_number(k.speed) << "\n";
 }
 
 /// "nearest event: <name> at a3 = A (a3 + M rad): N -> M nodes" (boundary_events.hpp).
@@ -274,17 +275,17 @@ inline void text_nearest_event(std::ostream& out, const Classification& c) {
   if (!c.nearest_event) return;
   const BoundaryEvent& e = *c.nearest_event;
   const double margin = e.a3 - c.snapped.train.a3();
-  out << "\nnearest event in a3 at this a2 (sphtroch boundaries): " << e.name << " at a3 = " << number_text(e.a3)
-      << " (a3 " << (margin < 0 ? "- " : "+ ") << number_text(std::abs(margin)) << " rad): nodes " << e.nodes_below
+  out << "\nnearest event in a3 at this a2 (sphtroch boundaries): " << e.name << " at a3 = " << report_number(e.a3)
+      << " (a3 " << (margin < 0 ? "- " : "+ ") << report_number(std::abs(margin)) << " rad): nodes " << e.nodes_below
       << " -> " << e.nodes_above << " across it\n";
 }
 
 /// "certified margin (sphtroch tolerance): L .. U rad in (a2, a3) to <boundary> at a2 = .., a3 = .."
 inline void text_certified_margin(std::ostream& out, const Classification& c) {
   const TopologyMargin m = topology_margin(c.snapped.train);
-  out << "certified margin (sphtroch tolerance): " << number_text(m.lower) << " .. " << number_text(m.upper)
-      << " rad in (a2, a3)" << (m.nearest ? " to " + boundary_text(m.nearest->boundary) + " at a2 = " + number_text(m.nearest->a2()) +
-                                                 ", a3 = " + number_text(m.nearest->a3())
+  out << "certified margin (sphtroch tolerance): " << report_number(m.lower) << " .. " << report_number(m.upper)
+      << " rad in (a2, a3)" << (m.nearest ? " to " + boundary_text(m.nearest->boundary) + " at a2 = " + report_number(m.nearest->a2()) +
+                                                 ", a3 = " + report_number(m.nearest->a3())
                                            : std::string())
       << (m.converged ? "" : " (the proof stopped at its box bound)") << "\n";
 }
@@ -294,17 +295,17 @@ inline void text_dwell_points(std::ostream& out, const Classification& c) {
   out << "\ndwell points (speed minima of |dP/dtheta2|, per unit carrier rate): " << c.dwell_points.size() << "\n";
   std::size_t i = 0;
   for (const DwellPoint& d : c.dwell_points)
-    out << "  dwell " << ++i << ": theta2 = " << number_text(d.param) << ", speed " << number_text(d.speed) << " at "
+    out << "  dwell " << ++i << ": theta2 = " << report_number(d.param) << ", speed " << report_number(d.speed) << " at "
         << vec_text(d.position) << "\n";
 }
 
 inline void text_extremes_and_symmetry(std::ostream& out, const Classification& c) {
-  out << "\nz extremes (Eqs. 14/15, 32-35 generalised)\n  z_max = " << number_text(c.z.z_max) << " at theta2 =";
-  for (const auto& p : c.z.maxima) out << ' ' << number_text(p.param);
-  out << "\n  z_min = " << number_text(c.z.z_min) << " at theta2 =";
-  for (const auto& p : c.z.minima) out << ' ' << number_text(p.param);
+  out << "\nz extremes (Eqs. 14/15, 32-35 generalised)\n  z_max = " << report_number(c.z.z_max) << " at theta2 =";
+  for (const auto& p : c.z.maxima) out << ' ' << report_number(p.param);
+  out << "\n  z_min = " << report_number(c.z.z_min) << " at theta2 =";
+  for (const auto& p : c.z.minima) out << ' ' << report_number(p.param);
   out << "\nsymmetry: " << c.symmetry_planes.rotation_order << "-fold about Z1; mirror planes with normals at azimuth";
-  for (const auto& p : c.symmetry_planes.planes) out << ' ' << number_text(p.azimuth);
+  for (const auto& p : c.symmetry_planes.planes) out << ' ' << report_number(p.azimuth);
   out << " rad\n";
 }
 
@@ -312,7 +313,7 @@ inline void text_criteria(std::ostream& out, const AnalyticClassification& a) {
   out << "\nthe report's criteria\n";
   for (const Criterion& k : a.criteria)
     out << "  " << k.equation << ": " << k.statement << " — " << to_string(k.status) << " (margins "
-        << number_text(k.lower_margin) << ", " << number_text(k.upper_margin) << "): " << k.prediction << "\n";
+        << report_number(k.lower_margin) << ", " << report_number(k.upper_margin) << "): " << k.prediction << "\n";
   out << "  predicted: "
       << (a.predicted_nodes ? std::to_string(*a.predicted_nodes) + " node(s)"
                             : std::string("nodes not given by the report for this n"))
@@ -338,11 +339,11 @@ inline void text_censuses(std::ostream& out, const Classification& c) {
 }
 
 inline void text_tolerances_and_work(std::ostream& out, const Classification& c) {
-  out << "\ntolerances: boundary " << number_text(c.snapped.tolerance) << " rad, cusp resolution "
-      << number_text(kCuspResolution) << " rad, tangency " << number_text(c.tangency_tolerance) << ", node residual "
-      << number_text(kNodeResidual) << ", node merge " << number_text(kNodeMergeDistance) << ", agreement "
-      << number_text(kAgreementDistance) << ", branch grouping " << number_text(kBranchParamTolerance)
-      << " rad, lens scan below " << number_text(kLensScanAngle) << " rad\n";
+  out << "\ntolerances: boundary " << report_number(c.snapped.tolerance) << " rad, cusp resolution "
+      << report_number(kCuspResolution) << " rad, tangency " << report_number(c.tangency_tolerance) << ", node residual "
+      << report_number(kNodeResidual) << ", node merge " << report_number(kNodeMergeDistance) << ", agreement "
+      << report_number(kAgreementDistance) << ", branch grouping " << report_number(kBranchParamTolerance)
+      << " rad, lens scan below " << report_number(kLensScanAngle) << " rad\n";
   out << "work: " << c.work.points_evaluated << " points evaluated, " << c.work.predicates << " exact predicates, "
       << c.work.newton_steps << " Newton steps, " << c.work.root_evaluations << " root-function evaluations, "
       << seconds_text(c.work.seconds) << " s\n";

@@ -16,14 +16,18 @@
 // or not ("census_certified"). With a node point (options.node_at), every candidate's certified
 // census has a node within options.node_tolerance of it ("node_distance": to the nearest node).
 // JSON: {"candidates": [{"n": "p/q", "teeth": "ZS:ZP" (only with a TeethSpec), "a2", "a3", "phase",
-// "rms", "max_deviation", "margin" (first order), "certified_margin": {"lower", "upper"}
-// (topology_margin.hpp: the distance to the nearest change of the census lies in [lower, upper]),
+// "rms", "max_deviation", "margin" (map_margin: the distance in the (a2, a3) plane to the nearest
+// change of the census, to first order), "certified_margin": {"lower", "upper"} (topology_margin.hpp:
+// the half-width of the largest square of (a2, a3) about the train that no change meets lies in
+// [lower, upper]; a square's half-width, so up to sqrt 2 below the distance, at a boundary at 45 deg),
 // "node_distance" (only with node_at) (radians),
 // "counts": {"nodes", "crossings", "tangencies", "cusps"}, "census_certified"}], best (smallest rms)
 // first over all ratios, at most options.max_candidates; "reason": why there is none, or "";
 // "dropped": candidates removed because the census did not confirm the wanted counts, or because
 // their certified margin is below options.min_margin}. The text says when the best candidate
-// lies within kFitHugMargin of a change of its census.
+// lies within kFitHugMargin of a change of its census, and names both margins on each candidate's
+// line: "margin D (distance to the nearest change of the census, first order), change-free square
+// of half-width LO .. HI (certified)".
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_EXACT)
@@ -189,8 +193,8 @@ inline std::string wanted_text(const FitOptions& f) {
   if (f.nodes) s += std::to_string(*f.nodes) + " node(s)";
   if (f.cusps) s += (s.empty() ? "" : ", ") + std::to_string(*f.cusps) + " cusp(s)";
   if (f.node_at)
-    s += (s.empty() ? "" : ", ") + std::string("a node within ") + number_text(f.node_tolerance) + " rad of " +
-         number_text(f.node_at->x()) + "," + number_text(f.node_at->y()) + "," + number_text(f.node_at->z());
+    s += (s.empty() ? "" : ", ") + std::string("a node within ") + report_number(f.node_tolerance) + " rad of " +
+         report_number(f.node_at->x()) + "," + report_number(f.node_at->y()) + "," + report_number(f.node_at->z());
   return s.empty() ? "any counts" : s + " wanted";
 }
 
@@ -206,18 +210,19 @@ inline std::string fit_text(const std::vector<RatioFit>& all, const FitOptions& 
   for (std::size_t k = 0; k < ranked.size(); ++k) {
     const FitCandidate& c = ranked[k]->candidate;
     const Classification& census = ranked[k]->census;
-    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << number_text(c.train.a2())
-        << ", a3 = " << number_text(c.train.a3()) << ", phase = " << number_text(c.train.phase_given()) << "; rms "
-        << number_text(c.rms) << ", max " << number_text(c.max_deviation) << "; margin " << number_text(c.margin)
-        << " (certified " << number_text(ranked[k]->certified_margin.lower) << " .. " << number_text(ranked[k]->certified_margin.upper) << "); "
+    out << "  " << k + 1 << ". n = " << c.train.ratio().str() << teeth_text(teeth, c.train.ratio()) << ", a2 = " << report_number(c.train.a2())
+        << ", a3 = " << report_number(c.train.a3()) << ", phase = " << report_number(c.train.phase_given()) << "; rms "
+        << report_number(c.rms) << ", max " << report_number(c.max_deviation) << "; margin " << report_number(c.margin)
+        << " (distance to the nearest change of the census, first order), change-free square of half-width "
+        << report_number(ranked[k]->certified_margin.lower) << " .. " << report_number(ranked[k]->certified_margin.upper) << " (certified); "
         << census.nodes.size() << " node(s), " << census.cusps.size() << " cusp(s)"
-        << (f.node_at ? "; node point " + number_text(c.node_distance) + " rad away" : "")
+        << (f.node_at ? "; node point " + report_number(c.node_distance) + " rad away" : "")
         << (census.certified() ? " (certified)" : " (census NOT certified)") << "\n"
         << "     plot it: sphtroch plot " << train_arguments(c.train) << " -o candidate" << k + 1 << ".svg\n";
   }
   if (!ranked.empty() && ranked[0]->certified_margin.upper < kFitHugMargin) {
     const TopologyMargin& m = ranked[0]->certified_margin;
-    out << "note: candidate 1 lies within " << number_text(m.upper) << " rad of a change of its census"
+    out << "note: candidate 1 lies within " << report_number(m.upper) << " rad of a change of its census"
         << (m.nearest ? " (" + boundary_text(m.nearest->boundary) + ")" : std::string())
         << ": a train built to that tolerance may draw other counts; --min-margin D keeps candidates at least D away\n";
   }

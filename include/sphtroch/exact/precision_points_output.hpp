@@ -124,16 +124,16 @@ inline std::string precision_points_text(const std::vector<RatioPrecisionPoints>
     for (std::size_t k = 0; k < rs.result.solutions.size(); ++k) {
       const PrecisionSolution& s = rs.result.solutions[k];
       const Classification& c = rs.census[k];
-      out << "  " << ++index << ". a2 = " << number_text(s.train.a2()) << ", a3 = " << number_text(s.train.a3())
-          << ", phase = " << number_text(s.train.phase_given());
+      out << "  " << ++index << ". a2 = " << report_number(s.train.a2()) << ", a3 = " << report_number(s.train.a3())
+          << ", phase = " << report_number(s.train.phase_given());
       if (rs.free_axis)
         out << "; sun axis " << vector_json(s.frame.col(2)) << ", frame x " << vector_json(s.frame.col(0)) << ", y "
             << vector_json(s.frame.col(1));
       out << "; theta2 at the points:";
-      for (const double t : s.params) out << " " << number_text(t);
-      out << "; residual " << number_text(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
+      for (const double t : s.params) out << " " << report_number(t);
+      out << "; residual " << report_number(s.residual) << "; " << c.nodes.size() << " node(s), " << c.cusps.size()
           << " cusp(s)" << (c.certified() ? "" : " (census NOT certified)") << "; certified margin "
-          << number_text(rs.margins[k].lower) << " .. " << number_text(rs.margins[k].upper) << " rad"
+          << report_number(rs.margins[k].lower) << " .. " << report_number(rs.margins[k].upper) << " rad"
           << (s.isolated ? "" : " (root NOT isolated: near-singular)") << "\n"
           << "     plot it: sphtroch plot " << train_arguments(s.train) << " -o train" << index << ".svg"
           << (rs.free_axis ? " (in the train's frame above)" : "") << "\n";

@@ -281,7 +281,7 @@ inline std::string vertex_text(VertexSpan vs, std::size_t i) {
 
 inline void validate_margin(double margin) {
   if (!(std::isfinite(margin) && margin >= 0.0))
-    throw InvalidInput("margin", number_text(margin), "not a finite non-negative distance", "[0, inf)");
+    throw InvalidInput("margin", report_number(margin), "not a finite non-negative distance", "[0, inf)");
 }
 
 /// Validates (see validate_spherical_polyline) and returns whether every vertex is already a

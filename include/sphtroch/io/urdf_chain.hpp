@@ -380,7 +380,7 @@ inline ZxzAngles zxz_angles(const Matrix3d& g) {
 inline Vector3d unit_tool_axis(const Vector3d& axis) {
   const double n = axis.cwiseAbs().maxCoeff();  // scaled first: 1e300,1e300,0 is a direction too
   if (!axis.allFinite() || !(n > 0))
-    throw InvalidInput("axis", number_text(axis.x()) + "," + number_text(axis.y()) + "," + number_text(axis.z()), "zero or not finite",
+    throw InvalidInput("axis", report_number(axis.x()) + "," + number_text(axis.y()) + "," + number_text(axis.z()), "zero or not finite",
                        "a nonzero direction X,Y,Z in the to link's frame");
   const Vector3d scaled = axis / n;
   return scaled / scaled.norm();

@@ -96,7 +96,7 @@ class Clinostat {
     check_phase("phase-outer", s.phase_outer_deg);
     check_phase("phase-inner", s.phase_inner_deg);
     if (!s.offset_m.allFinite() || s.offset_m.norm() > kMaxOffset)
-      throw InvalidInput("offset", number_text(s.offset_m.x()) + "," + number_text(s.offset_m.y()) + "," + number_text(s.offset_m.z()),
+      throw InvalidInput("offset", report_number(s.offset_m.x()) + "," + number_text(s.offset_m.y()) + "," + number_text(s.offset_m.z()),
                          "not a finite point within 10 m of the centre", "X,Y,Z in metres, |r| <= 10");
     tilt_ = degree_sin_cos(s.tilt_deg);
     frame_ = degree_sin_cos(s.frame_angle_deg);
@@ -161,7 +161,7 @@ class Clinostat {
     if (!(std::fabs(deg) <= kMaxPhase)) throw InvalidInput(field, number_text(deg), "not a finite phase", "|phase| <= 1e6 degrees");
   }
   static double checked_time(double t) {
-    if (!(std::fabs(t) <= kMaxTime)) throw InvalidInput("t", number_text(t), "not a finite time", "|t| <= 1e12 seconds");
+    if (!(std::fabs(t) <= kMaxTime)) throw InvalidInput("t", report_number(t), "not a finite time", "|t| <= 1e12 seconds");
     return t;
   }
   static double two_pi_turns(const Rpm& w, double t, double dt) {

@@ -194,7 +194,7 @@ inline DesignRow evaluate_pair(const DesignRequest& r, const DesignPair& pair) {
     row.time_to = time_to_epsilon(series, r.epsilon, r.resolution_s, kDesignWorkPerPair);
     if (r.coverage_s) {
       if (!r.dwell)
-        throw InvalidInput("coverage", number_text(*r.coverage_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)",
+        throw InvalidInput("coverage", report_number(*r.coverage_s), "this build of sphtroch has no HEALPix (libhealpix-cxx-dev)",
                            "coverage in a build with HEALPix");
       const DwellMap d = r.dwell(s, 0, *r.coverage_s, r.nside);
       row.coverage = d.visited_fraction;

@@ -43,7 +43,7 @@ namespace design_output_detail {
 inline nlohmann::json or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 /// A text cell: "-" for null, a string as it is, a number as its shortest text.
 inline std::string cell(const nlohmann::json& v) {
-  return v.is_null() ? "-" : v.is_string() ? v.get<std::string>() : number_text(v.get<double>());
+  return v.is_null() ? "-" : v.is_string() ? v.get<std::string>() : report_number(v.get<double>());
 }
 }  // namespace design_output_detail
 
@@ -76,7 +76,7 @@ inline nlohmann::json design_row_json(const DesignRow& row) {
   j["certified"] = row.decided();
   std::string reason = !row.refused.empty() ? row.refused : row.time_to ? row.time_to->reason : std::string();
   if (reason.empty() && row.worst && !row.worst->certified)
-    reason = "M(W)'s bracket [" + number_text(row.worst->lower) + ", " + number_text(row.worst->upper) + "] is wider than 1e-9";
+    reason = "M(W)'s bracket [" + report_number(row.worst->lower) + ", " + report_number(row.worst->upper) + "] is wider than 1e-9";
   j["reason"] = reason;
   return j;
 }

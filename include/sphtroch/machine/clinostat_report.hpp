@@ -109,7 +109,7 @@ inline nlohmann::json train_json(const ClinostatTrain& ct) {
           {"theta2_at_0", ct.theta2_at_0}, {"theta2_rate", ct.theta2_rate}, {"rotation", rows}};
 }
 
-inline std::string degrees(double radians) { return number_text(radians * 180 / Constants<double>::pi()); }
+inline std::string degrees(double radians) { return report_number(radians * 180 / Constants<double>::pi()); }
 
 }  // namespace clinostat_report_detail
 
@@ -146,49 +146,49 @@ inline nlohmann::json clinostat_report_json(const ClinostatReport& r) {
 inline void write_clinostat_machine_text(std::ostream& out, const ClinostatReport& r) {
   namespace d = clinostat_report_detail;
   const ClinostatSettings& s = r.settings;
-  out << "clinostat: outer " << s.outer.str() << " rpm, inner " << s.inner.str() << " rpm, tilt " << number_text(s.tilt_deg)
-      << " deg, frame angle " << number_text(s.frame_angle_deg) << " deg\n";
+  out << "clinostat: outer " << s.outer.str() << " rpm, inner " << s.inner.str() << " rpm, tilt " << report_number(s.tilt_deg)
+      << " deg, frame angle " << report_number(s.frame_angle_deg) << " deg\n";
   if (!r.train.train) {
     out << "gravity path: " << r.train.reason << "\n";
     return;
   }
   const GearTrain& t = *r.train.train;
   out << "gravity path: the spherical trochoid of the gear train n = " << t.ratio().str() << ", a2 = " << d::degrees(t.a2())
-      << " deg, a3 = " << d::degrees(t.a3()) << " deg, phase = " << number_text(t.phase()) << " rad\n"
-      << "  traced by: sphtroch trace --a2 " << number_text(t.a2()) << " --a3 " << number_text(t.a3()) << " --n "
-      << t.ratio().str() << " --phase " << number_text(t.phase()) << "\n"
-      << "  g_s(t) = rotation * P(theta2), theta2 = " << number_text(r.train.theta2_at_0)
-      << (r.train.theta2_rate < 0 ? " - " : " + ") << number_text(std::fabs(r.train.theta2_rate)) << " t rad (t in s; --json gives the rotation)\n";
+      << " deg, a3 = " << d::degrees(t.a3()) << " deg, phase = " << report_number(t.phase()) << " rad\n"
+      << "  traced by: sphtroch trace --a2 " << report_number(t.a2()) << " --a3 " << report_number(t.a3()) << " --n "
+      << t.ratio().str() << " --phase " << report_number(t.phase()) << "\n"
+      << "  g_s(t) = rotation * P(theta2), theta2 = " << report_number(r.train.theta2_at_0)
+      << (r.train.theta2_rate < 0 ? " - " : " + ") << report_number(std::fabs(r.train.theta2_rate)) << " t rad (t in s; --json gives the rotation)\n";
 }
 
 /// The period, the mean, M(W), the time to epsilon and the coverage (the rest of the text).
 inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatReport& r) {
   if (r.series.period_s())
-    out << "period: " << number_text(*r.series.period_s()) << " s (" << number_text(*r.series.period_s() / 60)
+    out << "period: " << report_number(*r.series.period_s()) << " s (" << report_number(*r.series.period_s() / 60)
         << " min): both frames back at their start\n";
   else
     out << "period: none (the gravity does not move in the sample)\n";
   const Vector3d c = r.series.period_mean();
-  out << "mean " << (r.effective ? "effective gravity" : "gravity") << " over a period: (" << number_text(c.x()) << ", "
-      << number_text(c.y()) << ", " << number_text(c.z()) << ") g0, |mean| = " << number_text(c.norm()) << " g0\n";
+  out << "mean " << (r.effective ? "effective gravity" : "gravity") << " over a period: (" << report_number(c.x()) << ", "
+      << report_number(c.y()) << ", " << report_number(c.z()) << ") g0, |mean| = " << report_number(c.norm()) << " g0\n";
   if (r.worst)
-    out << "worst window mean, W = " << number_text(r.worst->window_s) << " s: M(W) in [" << number_text(r.worst->lower) << ", "
-        << number_text(r.worst->upper) << "] g0, reached by the window starting at " << number_text(r.worst->start_s) << " s"
+    out << "worst window mean, W = " << report_number(r.worst->window_s) << " s: M(W) in [" << report_number(r.worst->lower) << ", "
+        << report_number(r.worst->upper) << "] g0, reached by the window starting at " << report_number(r.worst->start_s) << " s"
         << (r.worst->certified ? "" : " (NOT CERTIFIED: the bracket is wider than 1e-9)") << "\n";
   if (r.time_to) {
-    out << "time to epsilon = " << number_text(r.time_to->epsilon) << " g0 (windows in steps of " << number_text(r.request.resolution) << " s): ";
+    out << "time to epsilon = " << report_number(r.time_to->epsilon) << " g0 (windows in steps of " << report_number(r.request.resolution) << " s): ";
     if (r.time_to->first_s)
-      out << "the first window below is " << number_text(*r.time_to->first_s) << " s; every window from "
-          << number_text(*r.time_to->stays_below_from_s) << " s on, of any length, is below"
-          << (r.time_to->above_s ? " (one of " + number_text(*r.time_to->above_s) + " s is above)" : std::string()) << "\n";
+      out << "the first window below is " << report_number(*r.time_to->first_s) << " s; every window from "
+          << report_number(*r.time_to->stays_below_from_s) << " s on, of any length, is below"
+          << (r.time_to->above_s ? " (one of " + report_number(*r.time_to->above_s) + " s is above)" : std::string()) << "\n";
     else
       out << (r.time_to->certified ? "none: " : "NOT CERTIFIED: ") << r.time_to->reason << "\n";
   }
   if (r.dwell)
-    out << "coverage over [" << number_text(r.dwell->start_s) << ", " << number_text(r.dwell->start_s + r.dwell->duration_s)
-        << "] s on " << r.dwell->dwell_s.size() << " HEALPix cells (nside " << r.dwell->nside << "): " << number_text(100 * r.dwell->visited_fraction)
-        << "% visited, dwell coefficient of variation " << number_text(r.dwell->dwell_cv) << "; each cell's time within "
-        << number_text(r.dwell->bound_s) << " s (--json gives the dwell per cell)\n";
+    out << "coverage over [" << report_number(r.dwell->start_s) << ", " << report_number(r.dwell->start_s + r.dwell->duration_s)
+        << "] s on " << r.dwell->dwell_s.size() << " HEALPix cells (nside " << r.dwell->nside << "): " << report_number(100 * r.dwell->visited_fraction)
+        << "% visited, dwell coefficient of variation " << report_number(r.dwell->dwell_cv) << "; each cell's time within "
+        << report_number(r.dwell->bound_s) << " s (--json gives the dwell per cell)\n";
 }
 
 /// The running means, one line each.
@@ -217,12 +217,12 @@ inline double clinostat_plot_dwell_s(const ClinostatReport& r) { return std::min
 inline ClinostatPlot clinostat_report_plot(const ClinostatReport& r, const DwellMap* dwell, std::vector<std::vector<Vector3d>> cells) {
   ClinostatPlot plot;
   const ClinostatSettings& s = r.settings;
-  plot.title = "clinostat " + s.outer.str() + " / " + s.inner.str() + " rpm, tilt " + number_text(s.tilt_deg) + " deg, frame angle " +
-               number_text(s.frame_angle_deg) + " deg";
+  plot.title = "clinostat " + s.outer.str() + " / " + s.inner.str() + " rpm, tilt " + report_number(s.tilt_deg) + " deg, frame angle " +
+               report_number(s.frame_angle_deg) + " deg";
   if (dwell) {
     plot.cells = std::move(cells);
     plot.dwell_s = dwell->dwell_s;
-    plot.title += "; dwell over " + number_text(dwell->duration_s) + " s";
+    plot.title += "; dwell over " + report_number(dwell->duration_s) + " s";
   }
   plot.epsilon = r.request.epsilon;
   const double period = r.series.period_s().value_or(60.0);

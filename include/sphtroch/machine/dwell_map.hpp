@@ -127,8 +127,8 @@ inline void check_dwell_request(double start_s, double duration_s, int nside) {
   if (!(nside >= 1 && nside <= kMaxNside && (nside & (nside - 1)) == 0))
     throw InvalidInput("nside", std::to_string(nside), "not a power of two in range", "1, 2, 4, ..., 1024");
   if (!(duration_s > 0 && duration_s <= Clinostat::kMaxTime))
-    throw InvalidInput("coverage", number_text(duration_s), "not a positive duration", "0 < seconds <= 1e12");
-  if (!(std::fabs(start_s) <= Clinostat::kMaxTime)) throw InvalidInput("start", number_text(start_s), "not a finite time", "|t| <= 1e12 seconds");
+    throw InvalidInput("coverage", report_number(duration_s), "not a positive duration", "0 < seconds <= 1e12");
+  if (!(std::fabs(start_s) <= Clinostat::kMaxTime)) throw InvalidInput("start", report_number(start_s), "not a finite time", "|t| <= 1e12 seconds");
 }
 
 }  // namespace detail
@@ -160,7 +160,7 @@ inline DwellMap dwell_map(const Clinostat& m, double start_s, double duration_s,
   const double rest = duration_s - repeats * period;
   const double walked = repeats > 0 ? period : duration_s;
   if (walked / walker.first_step() > kMaxDwellSteps)
-    throw InvalidInput("coverage", number_text(duration_s),
+    throw InvalidInput("coverage", report_number(duration_s),
                        "the walk needs " + number_text(std::ceil(walked / walker.first_step())) + " steps (the gravity's period is " +
                            number_text(period) + " s)",
                        "at most 2e6 steps: a shorter duration, slower speeds or a smaller nside");

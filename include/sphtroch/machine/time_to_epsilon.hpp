@@ -11,6 +11,8 @@
 //
 // Two answers, because M(W) (worst_window_mean.hpp) is not monotone in W:
 // - first_s: the shortest window on the grid W = r, 2r, ... (r the resolution) with M(W) <= epsilon.
+//   The grid is of decimals: W = k r is the double nearest the decimal k x r, r read as the
+//   shortest decimal of its double (detail::DecimalGrid), so 3755 steps of 0.01 s are 37.55 s.
 // - stays_below_from_s: a multiple of r from which EVERY window, of any real length W, is below
 //   epsilon (not only the grid's: a machine whose periods divide r is below at every grid point
 //   and far above in between). above_s, when found, is a length certified above epsilon within
@@ -37,6 +39,7 @@
 // many windows within a hair of epsilon).
 #pragma once
 
+#include "sphtroch/core/number_text.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
 #include <cmath>
@@ -65,6 +68,34 @@ constexpr double kMaxWindows = 1e7;
 constexpr double kMaxTimeToEpsilonWork = 3e7;
 
 namespace detail {
+
+/// The grid W_k = k r of a resolution r, k = 1, 2, ... up to max_k: the double nearest the decimal
+/// k x r, r read as its shortest decimal R x 10^scale (number_text: 0.01 is 1 x 10^-2), so that a
+/// window printed reads as the multiple it is (3755 x 0.01 = 37.55, where the product of doubles
+/// is 37.550000000000004). k R and 10^|scale| are exact doubles and one division or product
+/// rounds them correctly when k R <= 2^53 and |scale| <= 22; beyond (r of many digits), k * r.
+/// at() is nondecreasing in k either way.
+class DecimalGrid {
+ public:
+  DecimalGrid(double step, double max_k) : step_(step) {
+    const DecimalDigits d = decimal_digits(step);
+    scale_ = d.exponent - static_cast<int>(d.digits.size()) + 1;
+    const double units = d.digits.size() <= 17 ? std::stod(d.digits) : 0;
+    constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
+    exact_ = units > 0 && units <= kExactIntegers && units * max_k <= kExactIntegers && std::abs(scale_) <= 22;
+    units_ = units;
+    for (int i = 0; i < std::abs(scale_); ++i) power_ *= 10;  // exact: 10^22 < 2^53 x 2^22
+  }
+  double at(double k) const {
+    if (!exact_) return k * step_;
+    return scale_ < 0 ? k * units_ / power_ : k * units_ * power_;
+  }
+
+ private:
+  double step_, units_ = 0, power_ = 1;
+  int scale_ = 0;
+  bool exact_ = false;
+};
 
 /// sup_t |g(t)| bounded: the unit vectors' 1, else the torus bound with every sinc 1.
 inline double gravity_bound(const GravitySeries& g, const TorusGramBound& torus) {
@@ -125,21 +156,21 @@ inline DownwardWalk walk_down(const GravitySeries& g, const TorusGramBound& toru
 inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, double resolution_s,
                                      double max_work = kMaxTimeToEpsilonWork) {
   if (!(epsilon >= kMinEpsilon && epsilon <= 1e9))
-    throw InvalidInput("epsilon", number_text(epsilon), "not a bound in range",
+    throw InvalidInput("epsilon", report_number(epsilon), "not a bound in range",
                        "1e-12 <= epsilon <= 1e9 (units of g0; the mean over a period is known to ~1e-14)");
   if (!(resolution_s > 0 && resolution_s <= 1e6))
-    throw InvalidInput("resolution", number_text(resolution_s), "not a positive step", "0 < resolution <= 1e6 seconds");
+    throw InvalidInput("resolution", report_number(resolution_s), "not a positive step", "0 < resolution <= 1e6 seconds");
   TimeToEpsilon out;
   out.epsilon = epsilon;
   out.resolution_s = resolution_s;
   const double c = g.period_mean().norm();
   if (std::fabs(c - epsilon) <= epsilon * 1e-12 + 1e-14) {  // c's rounding (~1e-16) could put it on either side
     out.certified = false;
-    out.reason = "the mean over a period, " + number_text(c) + " g0, is within rounding of epsilon: not decided";
+    out.reason = "the mean over a period, " + report_number(c) + " g0, is within rounding of epsilon: not decided";
     return out;
   }
   if (c > epsilon) {
-    out.reason = "the mean over a period, " + number_text(c) + " g0, is above epsilon: no window is below (M(W) >= it for every W)";
+    out.reason = "the mean over a period, " + report_number(c) + " g0, is above epsilon: no window is below (M(W) >= it for every W)";
     return out;
   }
   double tail = 0;
@@ -147,47 +178,48 @@ inline TimeToEpsilon time_to_epsilon(const GravitySeries& g, double epsilon, dou
   out.tail_s = tail / (epsilon - c);
   const double last = std::ceil(out.tail_s / resolution_s);
   if (out.tail_s / kMaxWindows > 1e6)  // no resolution would do
-    throw InvalidInput("epsilon", number_text(epsilon),
-                       "so close to the mean over a period (" + number_text(c) + " g0) that the proven tail is at " + number_text(out.tail_s) + " s",
+    throw InvalidInput("epsilon", report_number(epsilon),
+                       "so close to the mean over a period (" + report_number(c) + " g0) that the proven tail is at " + report_number(out.tail_s) + " s",
                        "an epsilon whose tail, (sum 2 A_k / |W_k|) / (epsilon - |c|), is at most 1e13 s: a larger epsilon");
   if (last > kMaxWindows)
-    throw InvalidInput("resolution", number_text(resolution_s),
-                       "the search would cover " + number_text(last) + " windows up to the proven tail at " + number_text(out.tail_s) + " s",
-                       "a resolution >= " + number_text(out.tail_s / kMaxWindows) + " s, or a larger epsilon");
+    throw InvalidInput("resolution", report_number(resolution_s),
+                       "the search would cover " + report_number(last) + " windows up to the proven tail at " + report_number(out.tail_s) + " s",
+                       "a resolution >= " + report_number(out.tail_s / kMaxWindows) + " s, or a larger epsilon");
+  const detail::DecimalGrid grid(resolution_s, last + 2);
   const TorusGramBound torus_bound(g);
   const auto cheap_upper = [&](double w) { return torus_bound.upper(w); };
 
   double hint = 0;  // the start of the last window found above epsilon
   double work = 0;
   const auto side = [&](double k) {
-    const double w = k * resolution_s;
+    const double w = grid.at(k);
     if (cheap_upper(w) <= epsilon) return WindowSide::below;
     if (work > max_work) return WindowSide::undecided;
     return compare_worst_window_mean(g, w, epsilon, &hint, &work);
   };
-  const auto undecided = [&](double k) {
+  const auto undecided = [&](double w) {
     out.certified = false;
     out.first_s.reset();
     out.stays_below_from_s.reset();
     out.reason = work > max_work
-                     ? "the search reached its work bound (" + number_text(max_work) + " evaluations) at W = " + number_text(k * resolution_s) +
+                     ? "the search reached its work bound (" + report_number(max_work) + " evaluations) at W = " + report_number(w) +
                            " s: not decided; a coarser resolution or a larger epsilon"
-                     : "M(W) at W = " + number_text(k * resolution_s) + " s is within rounding of epsilon: not decided";
+                     : "M(W) at W = " + report_number(w) + " s is within rounding of epsilon: not decided";
     return out;
   };
   double first = 1;
   for (; first <= last; ++first) {
     const WindowSide s = side(first);
-    if (s == WindowSide::undecided) return undecided(first);
+    if (s == WindowSide::undecided) return undecided(grid.at(first));
     if (s == WindowSide::below) break;
   }
   first = std::min(first, std::max(1.0, last));  // at the tail's grid point the cheap bound holds
-  out.first_s = first * resolution_s;
+  out.first_s = grid.at(first);
   const detail::DownwardWalk walk = detail::walk_down(g, torus_bound, epsilon, resolution_s, out.tail_s, max_work, work, hint);
-  if (walk.out_of_work) return undecided(walk.covered / resolution_s);
+  if (walk.out_of_work) return undecided(walk.covered);
   double stays = std::max(first, std::ceil(walk.covered / resolution_s));
-  if (stays * resolution_s < walk.covered) stays += 1;  // the division's rounding
-  out.stays_below_from_s = stays * resolution_s;
+  if (grid.at(stays) < walk.covered) stays += 1;  // the division's rounding
+  out.stays_below_from_s = grid.at(stays);
   if (walk.above > 0 && walk.above >= out.stays_below_from_s.value() - 2 * resolution_s) out.above_s = walk.above;
   return out;
 }

@@ -109,6 +109,13 @@ class TorusGramBound {
 
 namespace detail {
 
+/// t reduced into [0, period) seconds, zero unsigned (fmod of a negative multiple of the period
+/// is -0, a start no report should print).
+inline double start_in_period(double t, double period) {
+  const double r = std::fmod(t, period) + 0.0;
+  return r < 0 ? r + period : r;
+}
+
 /// The window mean m(tm) of one window length and the bounds of the header.
 class WindowMeanFunction {
  public:
@@ -161,7 +168,7 @@ class WindowMeanFunction {
 /// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
 template <typename Stop>
 WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
-  if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", number_text(w), "not a positive window", "seconds > 0");
+  if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", report_number(w), "not a positive window", "seconds > 0");
   WorstWindowMean out;
   out.window_s = w;
   if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: M(W) = |c|
@@ -193,8 +200,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
     add((2 * k + 1) * half, half);
     if (stop(out.lower, std::numeric_limits<double>::infinity())) {  // proven above already
       out.upper = std::numeric_limits<double>::infinity();
-      out.start_s = std::fmod(best_at - w / 2, period);
-      if (out.start_s < 0) out.start_s += period;
+      out.start_s = detail::start_in_period(best_at - w / 2, period);
       return out;
     }
   }
@@ -211,8 +217,7 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   }
   out.upper = std::max(out.upper, out.lower);
   out.certified = out.upper - out.lower <= width;
-  out.start_s = std::fmod(best_at - w / 2, period);
-  if (out.start_s < 0) out.start_s += period;
+  out.start_s = detail::start_in_period(best_at - w / 2, period);
   return out;
 }
 

@@ -364,9 +364,9 @@ inline bool a2_in_range(double a2) {
 
 inline void check_a2(double a2) {
   if (!(std::isfinite(a2) && a2 > 0 && a2 < Constants<double>::pi()))
-    throw InvalidInput("a2", number_text(a2), "outside the valid range", "(0, pi) radians");
+    throw InvalidInput("a2", report_number(a2), "outside the valid range", "(0, pi) radians");
   if (!a2_in_range(a2))
-    throw InvalidInput("a2", number_text(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
+    throw InvalidInput("a2", report_number(a2), "within 1e-6 rad of 0 or pi (the curve degenerates into a multiply covered circle)",
                        "[1e-6, pi - 1e-6] radians");
 }
 

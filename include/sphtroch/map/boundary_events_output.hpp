@@ -1,6 +1,7 @@
 // sphtroch/map/boundary_events_output.hpp — the boundary set (boundary_events.hpp) as text, JSON and CSV: what
 // `sphtroch boundaries` prints. Eigen only; no JSON library (the JSON is written by hand: every
-// string is a fixed ASCII name, every number the shortest round-trip form, number_text.hpp).
+// string is a fixed ASCII name, every number the shortest round-trip form, number_text.hpp; the
+// text's numbers as report_number writes them).
 //
 //   write_boundary_text(std::cout, boundary_set(a2, n));
 //   write_boundary_json(std::cout, boundary_set(a2, n));   // {"n","a2","events":[...]}
@@ -27,9 +28,9 @@ namespace sphtroch {
 /// One line per event: "a3  kind  nodes below -> above  (name; witness)"; a3 and b in degrees
 /// ("a3 = 18.3 deg") when `in_degrees`.
 inline void write_boundary_text(std::ostream& out, const BoundarySet& s, bool in_degrees = false) {
-  const auto angle = [&](double r) { return in_degrees ? number_text(degrees(r)) + " deg" : number_text(r); };
-  out << "boundaries: n = " << s.ratio.str() << ", a2 = " << number_text(s.a2) << " rad\n";
-  out << "events in a3 (0, pi), ascending (a3 to " << number_text(kEventAccuracy)
+  const auto angle = [&](double r) { return in_degrees ? report_number(degrees(r)) + " deg" : report_number(r); };
+  out << "boundaries: n = " << s.ratio.str() << ", a2 = " << report_number(s.a2) << " rad\n";
+  out << "events in a3 (0, pi), ascending (a3 to " << report_number(kEventAccuracy)
       << " rad; node points as classify counts them, just below -> just above):\n";
   if (s.events.empty()) out << "  none\n";
   for (const BoundaryEvent& e : s.events) {

@@ -163,7 +163,7 @@ inline std::vector<Boundary> boundaries(const GearTrain& train) {
 
 inline std::vector<Boundary> boundaries_hit(const GearTrain& train, double tolerance) {
   if (!(tolerance >= 0.0))
-    throw InvalidInput("boundary_tolerance", number_text(tolerance), "not a number >= 0", ">= 0 radians");
+    throw InvalidInput("boundary_tolerance", report_number(tolerance), "not a number >= 0", ">= 0 radians");
   std::vector<Boundary> out;
   for (const Boundary& b : boundaries(train))
     if (std::abs(b.margin) <= tolerance) out.push_back(b);

@@ -489,7 +489,7 @@ inline std::vector<AnalyticCusp> pitch_cone_cusps(const GearTrain& train, double
 inline AnalyticClassification classify_analytic(const GearTrain& train, double tol) {
   using namespace criteria_detail;
   if (!(tol >= 0.0))
-    throw InvalidInput("boundary_tolerance", number_text(tol), "not a number >= 0", ">= 0 radians");
+    throw InvalidInput("boundary_tolerance", report_number(tol), "not a number >= 0", ">= 0 radians");
   AnalyticClassification a;
   a.tolerance = tol;
   a.boundaries_hit = boundaries_hit(train, tol);

@@ -58,7 +58,7 @@ inline std::vector<MapCell> map_cells(double a2, const Ratio& n) {
 /// "a3" outside (0, pi).
 inline double map_margin(double a2, double a3, const Ratio& n, bool on_cone = false) {
   const double pi = Constants<double>::pi();
-  if (!(a3 > 0 && a3 < pi)) throw InvalidInput("a3", number_text(a3), "outside the valid range", "(0, pi) radians");
+  if (!(a3 > 0 && a3 < pi)) throw InvalidInput("a3", report_number(a3), "outside the valid range", "(0, pi) radians");
   const double h = a2 + 1e-4 < pi - 1e-6 ? 1e-4 : -1e-4;
   const BoundarySet here = boundary_set(a2, n), near = boundary_set(a2 + h, n);
   double margin = std::numeric_limits<double>::infinity();

@@ -559,16 +559,16 @@ inline void check_fit_inputs(const std::vector<Vector3d>& points, const Ratio& n
   if (o.nodes && *o.nodes < 0) throw InvalidInput("nodes", std::to_string(*o.nodes), "negative", "a count >= 0");
   if (o.cusps && *o.cusps < 0) throw InvalidInput("cusps", std::to_string(*o.cusps), "negative", "a count >= 0");
   if (o.max_candidates < 1) throw InvalidInput("candidates", "0", "none asked for", "1 or more");
-  if (!(o.max_deviation > 0)) throw InvalidInput("max-deviation", number_text(o.max_deviation), "not positive", "radians > 0");
+  if (!(o.max_deviation > 0)) throw InvalidInput("max-deviation", report_number(o.max_deviation), "not positive", "radians > 0");
   if (o.node_at && !(std::abs(o.node_at->norm() - 1.0) <= kFitUnitTolerance))
-    throw InvalidInput("node-at", number_text(o.node_at->x()) + "," + number_text(o.node_at->y()) + "," + number_text(o.node_at->z()),
+    throw InvalidInput("node-at", report_number(o.node_at->x()) + "," + number_text(o.node_at->y()) + "," + number_text(o.node_at->z()),
                        "not on the unit sphere", "x,y,z with |P| within 1e-6 of 1");
   if (!(o.node_tolerance > 0 && o.node_tolerance <= kPi))
-    throw InvalidInput("node-tolerance", number_text(o.node_tolerance), "not an angle in (0, pi]", "radians in (0, pi]");
+    throw InvalidInput("node-tolerance", report_number(o.node_tolerance), "not an angle in (0, pi]", "radians in (0, pi]");
   if (!(o.min_margin >= 0 && o.min_margin <= kMaxFitMinMargin))
-    throw InvalidInput("min-margin", number_text(o.min_margin), "outside the valid range", "radians in [0, 0.785]");
+    throw InvalidInput("min-margin", report_number(o.min_margin), "outside the valid range", "radians in [0, 0.785]");
   if (o.min_margin > 0 && o.cusps && *o.cusps > 0)
-    throw InvalidInput("min-margin", number_text(o.min_margin) + " with " + std::to_string(*o.cusps) + " cusps",
+    throw InvalidInput("min-margin", report_number(o.min_margin) + " with " + std::to_string(*o.cusps) + " cusps",
                        "a train with cusps lies on a pitch cone, a boundary of the map (margin 0)", "0 when cusps > 0 are wanted");
   check_census_cost(n);
 }

@@ -107,11 +107,11 @@ inline nlohmann::json points_json(const std::vector<NodeTolerance>& points) {
 
 inline std::string vector_text(const std::optional<Vector3d>& v) {
   if (!v) return "-";
-  return "(" + number_text(v->x()) + ", " + number_text(v->y()) + ", " + number_text(v->z()) + ")";
+  return "(" + report_number(v->x()) + ", " + report_number(v->y()) + ", " + report_number(v->z()) + ")";
 }
 
 inline std::string witness_text(const BoundaryWitness& w) {
-  return boundary_text(w.boundary) + " at a2 = " + number_text(w.a2()) + ", a3 = " + number_text(w.a3());
+  return boundary_text(w.boundary) + " at a2 = " + report_number(w.a2()) + ", a3 = " + report_number(w.a3());
 }
 
 inline std::string topology_line(const ToleranceReport& r) {
@@ -133,7 +133,7 @@ inline void points_text(std::ostream& out, const std::string& what, const std::v
   for (std::size_t k = 0; k < points.size(); ++k) {
     const NodeTolerance& p = points[k];
     out << "  " << k + 1 << "  " << vector_text(p.position) << "  "
-        << (p.max_displacement ? number_text(*p.max_displacement) : std::string("not proved")) << "  " << vector_text(p.d_da2)
+        << (p.max_displacement ? report_number(*p.max_displacement) : std::string("not proved")) << "  " << vector_text(p.d_da2)
         << "  " << vector_text(p.d_da3) << "  " << vector_text(p.d_dphase) << "\n";
   }
 }
@@ -170,10 +170,10 @@ inline std::string tolerance_text(const TrainText& text, const ToleranceReport& 
   std::ostringstream out;
   out << "tolerance: n = " << r.train.ratio().str() << text.teeth_note() << ", a2 = " << text.a2 << ", a3 = " << text.a3
       << ", phase = " << text.phase << "\n";
-  out << "box: a2 +- " << number_text(r.box.da2) << ", a3 +- " << number_text(r.box.da3) << ", phase +- "
-      << number_text(r.box.dphase) << " (radians)\n";
+  out << "box: a2 +- " << report_number(r.box.da2) << ", a3 +- " << report_number(r.box.da3) << ", phase +- "
+      << report_number(r.box.dphase) << " (radians)\n";
   out << "topology: " << d::topology_line(r) << "\n";
-  out << "margin: " << number_text(r.margin.lower) << " .. " << number_text(r.margin.upper)
+  out << "margin: " << report_number(r.margin.lower) << " .. " << report_number(r.margin.upper)
       << " rad (certified bracket" << (r.margin.converged ? "" : ", wider than 1e-6 relative: the proof stopped at its box bound")
       << ")" << (r.margin.nearest ? "; nearest boundary " + d::witness_text(*r.margin.nearest) : std::string()) << "\n";
   if (!r.census_certified) out << "census: NOT certified (classify's two censuses disagree)\n";
@@ -181,7 +181,7 @@ inline std::string tolerance_text(const TrainText& text, const ToleranceReport& 
   d::points_text(out, "cusps", r.cusps);
   if (r.monte_carlo)
     out << "monte carlo (" << r.monte_carlo->samples << " trains, seed " << r.monte_carlo->seed << "; seen, not proved): "
-        << r.monte_carlo->same_census << " with the nominal census, largest node shift " << number_text(r.monte_carlo->max_node_shift)
+        << r.monte_carlo->same_census << " with the nominal census, largest node shift " << report_number(r.monte_carlo->max_node_shift)
         << " rad\n";
   return out.str();
 }

@@ -211,9 +211,9 @@ inline BoxTopology box_topology(const GearTrain& train, double da2, double da3) 
   const double lo = kMinCarrierTwist, hi = Constants<double>::pi() - kMinCarrierTwist;
   const std::string range = "a half-width >= 0 radians that keeps the angle in [1e-6, pi - 1e-6]";
   if (!(da2 >= 0) || !std::isfinite(da2) || !(train.a2() - da2 >= lo && train.a2() + da2 <= hi))
-    throw InvalidInput("tol_a2", number_text(da2), "outside the valid range", range);
+    throw InvalidInput("tol_a2", report_number(da2), "outside the valid range", range);
   if (!(da3 >= 0) || !std::isfinite(da3) || !(train.a3() - da3 >= lo && train.a3() + da3 <= hi))
-    throw InvalidInput("tol_a3", number_text(da3), "outside the valid range", range);
+    throw InvalidInput("tol_a3", report_number(da3), "outside the valid range", range);
   const RoundingGuard upward;
   const Ratio& n = train.ratio();
   BoxTopology r;
