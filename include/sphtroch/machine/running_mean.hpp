@@ -4,6 +4,9 @@
 // (gravity_series.hpp, each harmonic integrated exactly), so the error is the rounding of the
 // series' terms (about 1e-15 g0 at the speeds of a clinostat), not a quadrature's.
 //
+//   sphtroch::ClinostatSettings s;
+//   s.outer = sphtroch::Rpm(1);
+//   s.inner = sphtroch::Rpm(2);
 //   const sphtroch::GravitySeries g = sphtroch::GravitySeries::of_gravity(sphtroch::Clinostat(s));
 //   const std::vector<sphtroch::RunningMean> m = sphtroch::running_means(g, 0.0, {60.0, 600.0});
 //   m[1].magnitude;   // |mean of g over [0 s, 600 s]|, units of g0
