@@ -76,7 +76,7 @@ struct ClinostatReport {
 inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatRequest& q, std::optional<DwellMap> dwell = std::nullopt) {
   ClinostatReport r{m.settings(), q, clinostat_train(m),
                     m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m), m.has_offset(),
-                    std::nullopt, std::nullopt, std::move(dwell)};
+                    std::nullopt, std::nullopt, std::move(dwell), {}};
   if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
   if (q.window) r.worst = worst_window_mean(r.series, *q.window);
   if (q.epsilon) r.time_to = time_to_epsilon(r.series, *q.epsilon, q.resolution);
