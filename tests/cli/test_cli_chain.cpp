@@ -265,7 +265,7 @@ std::vector<double> listed(const std::string& text, const std::string& head) {
 
 }  // namespace
 
-TEST_CASE("chain classify --urdf text: the twists, rates and phases read from the file", "[cli][chain]") {
+TEST_CASE("chain classify --urdf text: the twists and rates and phases read from the file", "[cli][chain]") {
   // Three joints through the origin, no joint origin turned: the axes as written are the rest
   // pose's, z1 = z, z2 = (0, sin a, cos a), z3 = (sin b, 0, cos b), and the tool axis --axis 1,0,0.
   // The twists are the angles between consecutive axes: a, acos(cos a cos b), acos(sin b).

@@ -229,7 +229,7 @@ long long on_hundredths_grid(const nlohmann::json& v) {
 
 }  // namespace
 
-TEST_CASE("clinostat text: a window of --resolution 0.01 prints as its decimal, not 87.60000000000001", "[cli][clinostat]") {
+TEST_CASE("clinostat text: a window of --resolution 0.01 prints as its decimal (87.6 s not 87.60000000000001 s)", "[cli][clinostat]") {
   TempDir dir;
   // 1.33 / 2 rpm at epsilon 0.03 (and 0.05): windows of 8760 x 0.01 s (39140 x 0.01 s), whose
   // products of doubles are 87.60000000000001 (391.40000000000003).

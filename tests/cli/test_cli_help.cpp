@@ -33,7 +33,7 @@ std::vector<std::string> subcommands(const std::string& help) {
 
 }  // namespace
 
-TEST_CASE("cli --help of every command: every option names its unit or form, none shows TEXT", "[cli][help]") {
+TEST_CASE("cli --help of every command: every option names its unit or form and none shows TEXT", "[cli][help]") {
   TempDir dir;
   const std::regex generic(R"(\b(TEXT|INT|UINT|FLOAT|NUMBER)\b)");
   std::vector<std::string> commands = {""}, seen;

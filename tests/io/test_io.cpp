@@ -123,7 +123,7 @@ TEST_CASE("number_text: every double round-trips exactly, and the form is the sh
   }
 }
 
-TEST_CASE("report_number: number_text's digits as a person writes them, 0 for -0", "[io][numbers]") {
+TEST_CASE("report_number: number_text's digits as a person writes them and 0 for -0", "[io][numbers]") {
   // Fixed notation for 1e-4 <= |v| < 1e16, else d.ddde-5 / d.ddde16 (no '+', no leading zeros).
   CHECK(report_number(-0.0) == "0");
   CHECK(report_number(0.0) == "0");

@@ -238,7 +238,7 @@ TEST_CASE("time to epsilon: M(W) below at W, above at W - resolution, tilted fra
   CHECK(test::expect_invalid([&] { worst_window_mean(tilted, 0.0); }).field() == "window");
 }
 
-TEST_CASE("time to epsilon: the grid of a decimal resolution is of decimals (k x 0.01 s, not k * 0.01)", "[window_mean]") {
+TEST_CASE("time to epsilon: the grid of a decimal resolution is of decimals (k x 0.01 s and not k * 0.01)", "[window_mean]") {
   // 8760 * 0.01 is 87.60000000000001 in doubles; the grid's window is the double nearest 87.6.
   REQUIRE(8760 * 0.01 != 87.6);
   const GravitySeries g = GravitySeries::of_gravity(Clinostat(machine("1.33", "2")));

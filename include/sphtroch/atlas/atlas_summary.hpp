@@ -98,7 +98,7 @@ inline void counts(std::ostream& out, const AtlasSpec& spec, const AtlasSummary&
 inline void disagreements(std::ostream& out, const AtlasSpec& spec, const AtlasSummary& s,
                           const std::vector<AtlasCell>& listed) {
   out << "disagreements (census vs report): " << s.disagreement_count << " ("
-      << s.disagreement_count - s.disagreements_off_boundaries << " within " << kAtlasBoundaryBand
+      << s.disagreement_count - s.disagreements_off_boundaries << " within " << report_number(kAtlasBoundaryBand)
       << " rad of a boundary, " << s.disagreements_off_boundaries << " elsewhere)\n";
   for (const AtlasCell& c : listed) {
     const NearestBoundary b = nearest_boundary(c.a2, c.a3, spec.ratio);
