@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <stdlib.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -95,6 +96,22 @@ inline bool tool_has_address_sanitizer() {
     return bytes.find("__asan_init") != std::string::npos;
   }();
   return has;
+}
+
+/// Whether the tool under test has an optional component, as its --version line says ("step
+/// yes", "png yes", ...): a sanitizer build of the tool has neither STEP nor PNG, whatever the
+/// build of this suite has.
+inline bool tool_has_component(const std::string& name) {
+  static const std::string version = [] {
+    std::string out;
+    if (FILE* p = popen((quoted_tool() + " --version 2>/dev/null").c_str(), "r")) {
+      char buf[512];
+      while (std::fgets(buf, sizeof buf, p) != nullptr) out += buf;
+      pclose(p);
+    }
+    return out;
+  }();
+  return version.find(name + " yes") != std::string::npos;
 }
 
 /// Runs `sphtroch <args>` through the shell (args already shell-quoted where needed), capturing
