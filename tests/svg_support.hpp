@@ -35,11 +35,27 @@ inline std::string decode_entities(std::string s) {
   return s;
 }
 
+/// The attributes name="value" of a tag's text (after its name), scanned by hand: std::regex
+/// recurses per character and a path's data runs to hundreds of kB.
+inline std::map<std::string, std::string> attributes(const std::string& tag) {
+  std::map<std::string, std::string> out;
+  for (std::size_t at = tag.find(' '); at != std::string::npos && at < tag.size();) {
+    const std::size_t eq = tag.find("=\"", at);
+    if (eq == std::string::npos) break;
+    const std::size_t end = tag.find('"', eq + 2);
+    if (end == std::string::npos) throw std::runtime_error("unterminated attribute");
+    std::size_t name = tag.find_last_of(" \n", eq);
+    name = name == std::string::npos ? 0 : name + 1;
+    out[tag.substr(name, eq - name)] = decode_entities(tag.substr(eq + 2, end - eq - 2));
+    at = end + 1;
+  }
+  return out;
+}
+
 /// Every element of the document, in document order.
 inline std::vector<Element> elements(const std::string& svg) {
   std::vector<Element> out;
   std::vector<std::string> groups;
-  static const std::regex attribute_re("([A-Za-z_:][-A-Za-z0-9_:.]*)=\"([^\"]*)\"");
   for (std::size_t at = svg.find('<'); at != std::string::npos; at = svg.find('<', at + 1)) {
     if (svg.compare(at, 2, "<?") == 0 || svg.compare(at, 2, "<!") == 0) continue;
     const std::size_t close = svg.find('>', at);
@@ -51,8 +67,7 @@ inline std::vector<Element> elements(const std::string& svg) {
     const std::string tag = svg.substr(at + 1, close - at - 1);
     Element e;
     e.name = tag.substr(0, tag.find_first_of(" \n/"));
-    for (std::sregex_iterator m(tag.begin(), tag.end(), attribute_re), end; m != end; ++m)
-      e.attributes[(*m)[1]] = decode_entities((*m)[2]);
+    e.attributes = attributes(tag);
     e.groups = groups;
     const bool self_closing = tag.back() == '/';
     if (e.name == "text" && !self_closing) e.text = decode_entities(svg.substr(close + 1, svg.find("</text>", close) - close - 1));
