@@ -86,8 +86,8 @@ inline std::string chain_plot_svg(const RotationChain& chain, const Trajectory<d
 
 /// The picture of a chain with its census `c` (classify_chain's): chain_plot_sample_count samples
 /// of the period drawn by chain_plot_svg, its caption's angles as in `typed` when given. `chain
-/// plot` and the explorer's chain panel pass the text they read, Python's Chain.svg none (its
-/// angles to 6 significant digits).
+/// plot`, Python's Chain.svg (a float as its shortest decimal, so written to 6 digits) and the
+/// explorer's chain panel pass the text they read.
 inline std::string chain_picture_svg(const RotationChain& chain, const ChainCensus& c, const PlotOptions& options = {},
                                      const ChainText* typed = nullptr) {
   const ChainCurve<double> curve(chain);
