@@ -325,7 +325,7 @@ inline PlotLabels parse_plot_labels(std::string_view text, const std::string& fi
   if (text == "auto") return PlotLabels::automatic;
   if (text == "numbers") return PlotLabels::numbers;
   if (text == "none") return PlotLabels::none;
-  throw InvalidInput(field, std::string(text), "not a label mode", "auto (no overlaps), numbers (all), none");
+  throw InvalidInput(field, std::string(text), "not a label mode", "auto (kept one em apart), numbers (all), none");
 }
 
 inline SphereView SphereView::looking_from(double azimuth, double elevation, double cx, double cy, double radius) {
