@@ -44,7 +44,7 @@ val chain_plot(const std::string& twists, const std::string& rates, const std::s
       return out;
     }
     const ChainCensus c = chain_census(chain);
-    val out = text_object(chain_picture_svg(chain, c, options));
+    val out = text_object(chain_picture_svg(chain, c, options, &text));
     out.set("json", chain_census_json(chain, c).dump());
     return out;
   });

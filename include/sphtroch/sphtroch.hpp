@@ -70,10 +70,13 @@
 #endif
 
 #include "sphtroch/draw/curve_view.hpp"
+#include "sphtroch/draw/diverging_colour.hpp"
 #include "sphtroch/draw/dwell_raster.hpp"
 #include "sphtroch/draw/mark_density.hpp"
+#include "sphtroch/draw/ratio_scale.hpp"
 #include "sphtroch/draw/svg.hpp"
 #include "sphtroch/draw/svg_plot.hpp"
+#include "sphtroch/draw/text_layout.hpp"
 
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/map/boundary_events_output.hpp"

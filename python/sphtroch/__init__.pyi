@@ -407,8 +407,8 @@ class GearTrain:
         an uncertified count says so in the caption). view: "auto" (the default: from the curve's
         mean direction, or a principal axis when that shows clearly more of it in front; the
         picture states the view), "top" (along the sun axis), "front", "side", "AZ,EL" or (az, el)
-        angles; size: 64 .. 8192 px (default 520); labels: "auto" (no two labels overlap; the
-        picture says how many it shows), "numbers" (every N<i>, C<j>: the rows of nodes() then
+        angles; size: 64 .. 8192 px (default 520: the width; notes and caption below the sphere);
+        labels: "auto" (every two labels one em apart; the picture says how many it shows), "numbers" (every N<i>, C<j>: the rows of nodes() then
         cusps()) or "none"; markers: "auto" (every node and cusp marker up to 200 of them, none
         above; the picture says how many it hides), "all" or "none"; style: "curve" (lines, back
         half dashed) or "density" (the time spent per steradian on the front half, for dense

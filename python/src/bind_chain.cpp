@@ -150,8 +150,12 @@ py::object nodes(const Chain& self) {
 /// svg(): `sphtroch chain plot`'s SVG (the picture options: plot_options_arg).
 std::string svg(const Chain& self, py::handle view, py::handle size, py::handle labels, py::handle markers, py::handle style) {
   const PlotOptions options = plot_options_arg(view, size, labels, markers, style);
+  ChainText typed;  // the caption's angles as given (chain_plot_caption)
+  typed.twists = self.twists;
+  typed.rates = self.rates;
+  typed.phases = self.phases;
   py::gil_scoped_release release;
-  return chain_plot_svg_text(self.chain, options);
+  return chain_plot_svg_text(self.chain, options, typed);
 }
 
 /// boundaries(vary): `sphtroch chain boundaries --vary VARY --json` as a dict.

@@ -51,8 +51,8 @@ std::string chain_boundaries_json_text(const RotationChain& chain, const std::st
   return out.str();
 }
 
-std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options) {
-  return chain_picture_svg(chain, classify_chain(chain), options);
+std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options, const ChainText& typed) {
+  return chain_picture_svg(chain, classify_chain(chain), options, &typed);
 }
 
 std::string tolerance_json_text(const TrainText& text, const GearTrain& train, double da2, double da3, double dphase,

@@ -3,6 +3,7 @@
 // Python objects here, so every call may run with the GIL released. Errors: InvalidInput.
 #pragma once
 
+#include "sphtroch/io/chain_text.hpp"  // ChainText: a chain as typed (the chain caption's angles)
 #include "sphtroch/io/train_text.hpp"  // TrainText: the angles as text, as `classify --json` reports them
 
 #include "sphtroch/core/gear_train.hpp"
@@ -59,8 +60,9 @@ std::string chain_classification_json_text(const RotationChain& chain);
 std::string chain_classification_report_text(const RotationChain& chain);
 /// Chain.boundaries(vary): `sphtroch chain boundaries --vary VARY --json` (chain_family_events).
 std::string chain_boundaries_json_text(const RotationChain& chain, const std::string& vary);
-/// Chain.svg(): `sphtroch chain plot`'s SVG (chain_picture_svg of classify_chain's census).
-std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options);
+/// Chain.svg(): `sphtroch chain plot`'s SVG (chain_picture_svg of classify_chain's census), its
+/// caption's angles as in `typed` (the Chain's texts: "pi/2" as given, a float as number_text).
+std::string chain_plot_svg_text(const RotationChain& chain, const PlotOptions& options, const ChainText& typed);
 
 /// Python's classify_roots(): the root-count classification (Reading{literal}) as
 /// root_classification_json (classification_output.hpp), JSON text.

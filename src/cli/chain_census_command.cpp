@@ -72,7 +72,7 @@ void run_chain_plot(const ChainCensusOptions& o) {
   const RotationChain chain = o.chain.chain();
   const PlotOptions options = o.plot.options();  // checked before the work
   const ChainCensus c = census_of(o.chain, chain);
-  const std::string bytes = picture_bytes(chain_picture_svg(chain, c, options), o.output);
+  const std::string bytes = picture_bytes(chain_picture_svg(chain, c, options, &o.chain), o.output);
   write_output(o.output, [&](std::ostream& out) { out << bytes; }, "--output", kPictureOutputs);
   check_chain_certified(c);
 }

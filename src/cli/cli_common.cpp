@@ -40,8 +40,8 @@ void PlotFlags::add_to(CLI::App& cmd) {
   cmd.add_option("--view", view,
                  "auto (default: from the curve's mean direction or a principal axis, stated in the picture), "
                  "top (along the sun axis), front, side, or AZ,EL (e.g. 30deg,45deg)")->type_name("auto|top|front|side|AZ,EL");
-  cmd.add_option("--size", size, "width and height of the picture in px (64 .. 8192; default 520)")->type_name("PX");
-  cmd.add_option("--labels", labels, "auto (default: no two labels overlap), numbers (every N<i>/C<j>), none")->type_name("auto|numbers|none");
+  cmd.add_option("--size", size, "width of the picture in px, and height above its notes and caption (64 .. 8192; default 520)")->type_name("PX");
+  cmd.add_option("--labels", labels, "auto (default: labels kept one em apart, some left out), numbers (every N<i>/C<j>), none")->type_name("auto|numbers|none");
   cmd.add_option("--markers", markers,
                  "auto (default: every node and cusp marker up to 200 of them, none above; the picture says so), all, none")
                      ->type_name("auto|all|none");

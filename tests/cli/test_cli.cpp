@@ -5,6 +5,7 @@
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "test_support.hpp"
+#include "svg_support.hpp"
 #include "sphtroch/core/kinematics.hpp"
 
 #include <Eigen/Geometry>
@@ -1153,6 +1154,83 @@ TEST_CASE("cli: plot --view top looks along the sun axis and --labels auto leave
     CHECK(b.status == 2);
     CHECK(b.out.empty());
     CHECK(contains(b.err, bad.substr(0, bad.find(' ')) + " = "));
+  }
+}
+
+namespace {
+
+/// The box of a mark's label as DejaVu Sans Bold draws it (x, y top left, w, h): advance widths N
+/// 0.837 em, C 0.734 em, digits 0.696 em; from the cap height (0.729 em) above the baseline down
+/// to it (none of N, C and the digits descends).
+std::array<double, 4> glyph_box(const SvgLabel& l) {
+  double w = (l.text[0] == 'N' ? 0.837 : 0.734) * l.font;
+  w += 0.696 * l.font * static_cast<double>(l.text.size() - 1);
+  return {l.anchor_end ? l.x - w : l.x, l.y - 0.729 * l.font, w, 0.729 * l.font};
+}
+
+/// The distance between two boxes (0 when they meet).
+double box_gap(const std::array<double, 4>& a, const std::array<double, 4>& b) {
+  const double dx = std::max({0.0, b[0] - (a[0] + a[2]), a[0] - (b[0] + b[2])});
+  const double dy = std::max({0.0, b[1] - (a[1] + a[3]), a[1] - (b[1] + b[3])});
+  return std::hypot(dx, dy);
+}
+
+/// The sphere's disc of a plot: the first circle (cx, cy, r).
+std::array<double, 3> plot_disc(const std::vector<svg_test::Element>& svg) {
+  for (const svg_test::Element& e : svg)
+    if (e.name == "circle") return {e.number("cx"), e.number("cy"), e.number("r")};
+  FAIL("no circle");
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("cli: plot --labels auto keeps every two labels 12 px apart (glyph boxes) in dense pictures", "[cli][plot][svg]") {
+  // The issue's command first: two labels of --a2 0.7 --a3 2.5 --n 13/5 were closer than 12 px.
+  TempDir dir;
+  for (const std::string args : {"--a2 0.7 --a3 2.5 --n 13/5 --labels auto", "--a2 0.7 --a3 2.5 --n 13/5 --view top",
+                                 "--a2 0.7 --a3 2.5 --n 13/5 --view 30deg,10deg", "--a2 1.2 --a3 2.2 --n 9/4",
+                                 "--a2 pi/2 --a3 pi/2 --n 11/7", "--a2 0.9 --a3 1.6 --n -8/3", "--a2 0.7 --a3 2.5 --n 13/5 --size 900"}) {
+    const Result r = run("plot " + args, dir);
+    REQUIRE(r.status == 0);
+    const std::vector<SvgLabel> labels = plot_labels(r.out);
+    INFO(args << ": " << labels.size() << " labels");
+    CHECK(labels.size() >= 20);
+    double closest = 1e9;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      for (std::size_t j = i + 1; j < labels.size(); ++j) closest = std::min(closest, box_gap(glyph_box(labels[i]), glyph_box(labels[j])));
+    INFO("closest " << closest << " px");
+    CHECK(closest >= 12);
+  }
+}
+
+TEST_CASE("cli: plot's notes and caption stay off the sphere's disc and every text is at least 9.5 px", "[cli][plot][svg]") {
+  // Dense curves (n = 133/200: 26,602 nodes, their markers hidden and said so; n = 13/5: labels
+  // left out and said so), the density view, and a long caption (--teeth). A text's box: from
+  // 1 em above the baseline to 0.3 em below it, 0.65 em per character wide, placed by its anchor.
+  TempDir dir;
+  for (const std::string args : {"--a2 pi/2 --a3 pi/2 --n 133/200", "--a2 0.7 --a3 2.5 --n 133/200", "--a2 1.2 --a3 0.4 --n 133/200",
+                                 "--a2 0.7 --a3 2.5 --n 13/5", "--a2 pi/2 --a3 pi/2 --n 133/200 --style density",
+                                 "--a2 0.7 --a3 2.5 --n 13/5 --view top --markers none", "--a2 pi/3 --a3 pi/2 --teeth 120:60"}) {
+    const Result r = run("plot " + args, dir);
+    REQUIRE(r.status == 0);
+    const std::vector<svg_test::Element> svg = svg_test::elements(r.out);
+    const auto [cx, cy, radius] = plot_disc(svg);
+    int band = 0;
+    for (const svg_test::Element& e : svg) {
+      if (e.name != "text") continue;
+      INFO(args << ": \"" << e.text << "\"");
+      CHECK(svg_test::font_px(e) >= 9.5);
+      if (!e.in_group("caption")) continue;
+      ++band;
+      const double f = svg_test::font_px(e), w = 0.65 * f * static_cast<double>(e.text.size()), x = e.number("x"), y = e.number("y");
+      const std::string anchor = e.has("text-anchor") ? e.attributes.at("text-anchor") : "start";
+      const double left = anchor == "end" ? x - w : anchor == "middle" ? x - w / 2 : x;
+      const double nx = std::clamp(cx, left, left + w), ny = std::clamp(cy, y - f, y + 0.3 * f);  // the box's point nearest the centre
+      CHECK(std::hypot(nx - cx, ny - cy) > radius);
+    }
+    INFO(args);
+    CHECK(band >= 2);  // the view note and the caption at least
   }
 }
 

@@ -10,6 +10,7 @@
 // rates and phases read; bad input, including URDF files, exits 2 with one line.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
+#include "svg_support.hpp"
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>
@@ -339,13 +340,16 @@ TEST_CASE("chain classify, nodes, export: bad input is refused with one line nam
 
 TEST_CASE("chain plot: for k = 2 the picture of sphtroch plot, for k = 3 the census of chain classify", "[cli][chain]") {
   TempDir dir;
-  // Everything but the caption (the <title> and the <text> elements) is plot's: the same curve
-  // bits (ChainCurve = TracerCurve), the same sample count, the same census.
+  // Everything but the caption (the <title> and the <text> elements, and the picture's height,
+  // which grows with the caption's lines) is plot's: the same curve bits (ChainCurve =
+  // TracerCurve), the same sample count, the same census.
   const auto without_text = [](std::string svg) {
     for (const char* tag : {"title", "text"}) {
       const std::string open = std::string("<") + tag, close = std::string("</") + tag + ">";
-      for (std::size_t at; (at = svg.find(open)) != std::string::npos;) svg.erase(at, svg.find(close, at) + close.size() - at);
+      for (std::size_t at; (at = svg.find(open)) != std::string::npos;) svg.erase(at, svg.find(close, at) + close.size() + 1 - at);  // and its line end
     }
+    const std::size_t root = svg.find("<svg"), height = svg.find(" height=\"", root);
+    svg.erase(height, svg.find('>', height) - height);  // the height and the viewBox after it
     return svg;
   };
   std::mt19937 rng(4547);
@@ -382,6 +386,38 @@ TEST_CASE("chain plot: for k = 2 the picture of sphtroch plot, for k = 3 the cen
   const auto uj = nlohmann::json::parse(run("chain classify " + sixteen + " --json", dir, true).out);
   CHECK(uj["certified"] == false);
   CHECK(uj["class"] == "unknown");
+}
+
+TEST_CASE("chain plot: the caption's angles as typed or to 6 digits, wrapped at a readable size", "[cli][chain]") {
+  TempDir dir;
+  // The caption: the lines of the caption group that are not notes (notes end at the right
+  // margin, the caption is centred), read back into one text.
+  const auto caption_of = [](const std::string& text, double& smallest, std::size_t& lines) {
+    std::string caption;
+    smallest = 1e9;
+    lines = 0;
+    for (const svg_test::Element& e : svg_test::elements(text)) {
+      if (e.name != "text" || !e.in_group("caption")) continue;
+      smallest = std::min(smallest, svg_test::font_px(e));
+      if (!e.has("text-anchor") || e.attributes.at("text-anchor") != "middle") continue;
+      ++lines;
+      caption += (caption.empty() || caption.back() == ',' ? "" : " ") + e.text;
+    }
+    return caption;
+  };
+  double smallest = 0;
+  std::size_t lines = 0;
+  REQUIRE(run("chain plot --twists pi/2,pi/3,pi/4 --rates 1,1/2,-3/2 --phases 0,0.3,0 -o w.svg", dir, true).status == 0);
+  const std::string w = caption_of(slurp(dir.path / "w.svg"), smallest, lines);
+  CHECK(contains(w, "twists pi/2,pi/3,pi/4, rates 1,1/2,-3/2, phases 0,0.3,0 — "));
+  CHECK(smallest >= 9.5);  // the issue's caption was 6.1 px
+  CHECK(lines >= 2);       // too long for one line at that size: wrapped, not shrunk
+  // Decimals of more than 6 significant digits (as Python's floats arrive) are rounded to 6.
+  REQUIRE(run("chain plot --twists 1.0471975511965976,0.7853981633974483,2 --rates 1,3,-1 --phases 0,0,0.123456789 -o d.svg", dir, true)
+              .status == 0);
+  const std::string d = caption_of(slurp(dir.path / "d.svg"), smallest, lines);
+  CHECK(contains(d, "twists 1.0472,0.785398,2, rates 1,3,-1, phases 0,0,0.123457 — "));
+  CHECK(smallest >= 9.5);
 }
 
 TEST_CASE("chain --urdf: a tool axis that does not move names --urdf, a huge --axis is a direction", "[cli][chain]") {

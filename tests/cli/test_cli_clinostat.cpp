@@ -6,15 +6,18 @@
 // nothing on stdout, no file).
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
+#include "svg_support.hpp"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -145,13 +148,132 @@ TEST_CASE("clinostat --plot: the dwell map's cells and the M(W) curve, the repor
   const std::string svg = slurp(dir.path / "map.svg");
   CHECK(contains(svg.substr(0, 200), "<svg"));
   CHECK(contains(svg, "epsilon = 0.01 g0"));
-  std::size_t cells = 0;
-  for (std::size_t at = svg.find("fill:#"); at != std::string::npos; at = svg.find("fill:#", at + 1)) ++cells;
-  CHECK(cells >= 3 * 48);  // 48 cells at nside 2, each drawn three times (across the date line), and the scale
+  std::set<std::string> cells;  // 48 cells at nside 2, each drawn once or twice (across the date line)
+  for (const svg_test::Element& e : svg_test::elements(svg))
+    if (e.name == "path" && e.in_group("cells")) cells.insert(e.attributes.at("class"));
+  CHECK(cells.size() == 48);
   const Result bad = run("clinostat --outer 1.33 --inner 2 --plot map.pdf", dir, true);
   CHECK(bad.status == 2);
   CHECK(bad.out.empty());
   CHECK(contains(bad.err, "--plot"));
+}
+
+TEST_CASE("clinostat --plot: the visited cells spread over the colour scale and the unvisited ones are one grey", "[cli][clinostat]") {
+  // The picture of the issue: 1.33 / 2 rpm over an hour, nside 8 (768 cells). The rule, from the
+  // picture's contract (clinostat_plot.hpp), computed here from the JSON's dwell: ratio r = dwell /
+  // (total / 768); L = max(1, |log2 r| at the 5th and 95th percentile of the visited cells);
+  // position 1/2 + log2 r / (2 L), clamped; the colour there on the legend's own gradient stops.
+  TempDir dir;
+  const std::string machine = "clinostat --outer 1.33 --inner 2 --coverage 3600 --epsilon 0.01";
+  const Result r = run(machine + " --plot map.svg", dir, true);
+  REQUIRE(r.status == 0);
+  const json report = json::parse(run(machine + " --json", dir).out);
+  const std::vector<double> dwell = report["coverage"]["dwell_s"].get<std::vector<double>>();
+  REQUIRE(dwell.size() == 768);
+  const std::vector<svg_test::Element> svg = svg_test::elements(slurp(dir.path / "map.svg"));
+  std::vector<std::string> fills(dwell.size()), stops;  // each cell's fill, by its class "cell-<index>"
+  std::size_t paths = 0;
+  for (const svg_test::Element& e : svg) {
+    if (e.name == "path" && e.in_group("cells")) {
+      const std::size_t c = std::stoul(e.attributes.at("class").substr(5));
+      REQUIRE(c < dwell.size());
+      CHECK((fills[c].empty() || fills[c] == *svg_test::style(e, "fill")));  // a cell's copies alike
+      fills[c] = *svg_test::style(e, "fill");
+      ++paths;
+    }
+    if (e.name == "stop") stops.push_back(e.attributes.at("stop-color"));
+  }
+  CHECK(std::count(fills.begin(), fills.end(), std::string()) == 0);  // every cell drawn
+  CHECK(paths < 2 * dwell.size());  // copies that miss the ellipse are left out
+  REQUIRE(stops.size() >= 3);
+  // Unvisited cells: one colour, which no visited cell has and the gradient does not contain.
+  std::set<std::string> unvisited, visited;
+  std::vector<double> visited_dwell, visited_luminance;
+  double total = 0;
+  for (const double d : dwell) total += d;
+  std::size_t zeros = 0;
+  for (std::size_t c = 0; c < dwell.size(); ++c) {
+    (dwell[c] > 0 ? visited : unvisited).insert(fills[c]);
+    if (dwell[c] == 0) ++zeros;
+    else visited_dwell.push_back(dwell[c]), visited_luminance.push_back(svg_test::luminance(fills[c]));
+  }
+  CHECK(zeros == 68);  // the issue's count
+  REQUIRE(unvisited.size() == 1);
+  CHECK(visited.count(*unvisited.begin()) == 0);
+  CHECK(std::find(stops.begin(), stops.end(), *unvisited.begin()) == stops.end());
+  bool swatch = false, swatch_text = false;
+  for (const svg_test::Element& e : svg) {
+    swatch = swatch || (e.name == "rect" && svg_test::style(e, "fill") == *unvisited.begin());
+    swatch_text = swatch_text || (e.name == "text" && e.text == "not visited (68)");
+  }
+  CHECK(swatch);
+  CHECK(swatch_text);
+  // The acceptance: the interquartile range of the visited cells' luminance is at least 20% of the
+  // scale's range of luminance (its stops: the map is piecewise linear between them).
+  double lo = 1, hi = 0;
+  for (const std::string& s : stops) lo = std::min(lo, svg_test::luminance(s)), hi = std::max(hi, svg_test::luminance(s));
+  const double iqr = svg_test::quantile(visited_luminance, 0.75) - svg_test::quantile(visited_luminance, 0.25);
+  INFO("luminance IQR " << iqr << " of a scale range " << hi - lo);
+  CHECK(iqr >= 0.2 * (hi - lo));
+  // Each visited cell's colour is the rule's, within one unit of rounding per component.
+  std::vector<double> sorted = visited_dwell;
+  std::sort(sorted.begin(), sorted.end());
+  const double mean = total / static_cast<double>(dwell.size());
+  const std::size_t k = static_cast<std::size_t>(std::floor(0.05 * static_cast<double>(sorted.size() - 1)));
+  const double half = std::max({1.0, std::fabs(std::log2(sorted[k] / mean)), std::fabs(std::log2(sorted[sorted.size() - 1 - k] / mean))});
+  std::size_t wrong = 0;
+  for (std::size_t c = 0; c < dwell.size(); ++c) {
+    if (dwell[c] == 0) continue;
+    const double f = std::clamp(0.5 + std::log2(dwell[c] / mean) / (2 * half), 0.0, 1.0) * static_cast<double>(stops.size() - 1);
+    const std::size_t i = std::min(stops.size() - 2, static_cast<std::size_t>(f));
+    const auto a = svg_test::rgb(stops[i]), b = svg_test::rgb(stops[i + 1]), got = svg_test::rgb(fills[c]);
+    for (int ch = 0; ch < 3; ++ch)
+      if (std::fabs(got[ch] - ((1 - (f - i)) * a[ch] + (f - i) * b[ch])) > 1.01) ++wrong;
+  }
+  CHECK(wrong == 0);
+  // Every text is readable: at least 9.5 px.
+  for (const svg_test::Element& e : svg)
+    if (e.name == "text") CHECK(svg_test::font_px(e) >= 9.5);
+}
+
+TEST_CASE("clinostat --plot: M(W) has intermediate ticks and marks the time to epsilon", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string machine = "clinostat --outer 1.33 --inner 2 --epsilon 0.01";
+  REQUIRE(run(machine + " --coverage 600 --nside 2 --plot map.svg", dir, true).status == 0);
+  const json t = json::parse(run(machine + " --json", dir).out)["time_to_epsilon"];
+  const std::string text = slurp(dir.path / "map.svg");
+  const auto whole = [](double v) { return std::to_string(static_cast<long long>(v)); };
+  REQUIRE(t["first_s"].get<double>() == std::floor(t["first_s"].get<double>()));  // 1 s resolution: whole seconds
+  const std::vector<svg_test::Element> svg = svg_test::elements(text);
+  std::string words;  // the texts in order, lines joined by spaces (a wrapped sentence read back)
+  for (const svg_test::Element& e : svg)
+    if (e.name == "text") words += e.text + " ";
+  CHECK(contains(words, "first window below epsilon: " + whole(t["first_s"].get<double>()) + " s"));
+  CHECK(contains(words, "every window from " + whole(t["stays_below_from_s"].get<double>()) + " s on is below"));
+  // The panel (the rect with no fill after the dwell map): a dotted vertical line inside it and a
+  // shaded band from stays_below_from_s to its right edge; tick labels along W between its ends.
+  const svg_test::Element* panel = nullptr;
+  for (const svg_test::Element& e : svg)
+    if (e.name == "rect" && svg_test::style(e, "fill") == std::string("none")) panel = &e;
+  REQUIRE(panel != nullptr);
+  const double x0 = panel->number("x"), w = panel->number("width"), y0 = panel->number("y"), h = panel->number("height");
+  int dotted = 0, shaded = 0, w_ticks = 0, m_ticks = 0;
+  for (const svg_test::Element& e : svg) {
+    if (e.name == "line" && svg_test::style(e, "stroke-dasharray") == std::string("2,3") && e.number("x1") == e.number("x2") &&
+        e.number("x1") > x0 && e.number("x1") < x0 + w)
+      ++dotted;
+    if (e.name == "rect" && svg_test::style(e, "fill-opacity") && std::fabs(e.number("x") + e.number("width") - (x0 + w)) < 0.02) ++shaded;
+    if (e.name == "text" && e.number("y") > y0 + h && e.number("y") < y0 + h + 25 && e.number("x") >= x0 && e.number("x") <= x0 + w &&
+        e.text.find_first_not_of("0123456789.") == std::string::npos)
+      ++w_ticks;  // a number under the panel
+    if (e.name == "line" && e.number("y1") == e.number("y2") && e.number("x2") == x0 && x0 - e.number("x1") > 0 &&
+        x0 - e.number("x1") < 5)
+      ++m_ticks;  // a short tick left of the panel
+  }
+  CHECK(dotted == 1);
+  CHECK(shaded == 1);
+  CHECK(w_ticks >= 4);
+  CHECK(m_ticks >= 8);  // 2 .. 9 times at least one decade
 }
 
 TEST_CASE("clinostat: bad input is refused with one line naming the option, nothing on stdout", "[cli][clinostat]") {

@@ -575,7 +575,14 @@ TEST_CASE("render: open trajectories and every view give well-formed SVG", "[svg
     const XmlCheck x = check_xml(svg);
     INFO("elevation " << el << ": " << x.error);
     CHECK(x.ok);
-    CHECK(svg.find("width=\"300\" height=\"300\"") != std::string::npos);
+    // 300 px wide; the sphere's square 300 px high, the view note and the caption under it
+    // (contract 8): at least two lines of 9.5 px text more.
+    const auto at = svg.find("width=\"300\" height=\"");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::stod(svg.substr(at + 20)) >= 300 + 2 * 9.5);
+    const auto caption = svg.find(">view test</text>");
+    REQUIRE(caption != std::string::npos);
+    CHECK(std::stod(svg.substr(svg.rfind(" y=\"", caption) + 4)) > 300);
   }
 }
 

@@ -38,12 +38,19 @@
 //     cusp j as a triangle labelled "C<j+1>" (the order of the node and cusp lists, i.e. the rows
 //     of `sphtroch nodes`); markers on the back half are faded. Ring colour tells the node kind
 //     (crossing / tangency); a legend explains the marks. PlotOptions::labels: `numbers` labels
-//     every mark; `none` none; `automatic` (the default) labels the marks in order, front half
-//     first, skipping a label whose box would overlap one already placed (boxes from the font
-//     size: 0.86 em for the letter, 0.72 em per digit, 1.2 em high, bounds on the boxes a browser
-//     lays sans-serif bold out in), so a dense curve stays readable; the legend then says how many
-//     labels it shows.
-//  5. The caption is escaped (svg.hpp), so any text is safe; the document is valid SVG 1.1.
+//     every mark beside it (label_position); `none` none; `automatic` (the default) labels the
+//     marks in order (the nodes on the front half, then those on the back, then the cusps), each at
+//     the first of sixteen places around its mark (label_position's turns 0, 1, -1, 2, -2, 3, -3,
+//     4: outward first, then turning by 45 degrees either way; beside the mark, then 0.6 em
+//     farther) whose box keeps kLabelGapEm em (12.4 px at the default size) from every label
+//     already placed and stays between the legend band and the text band; a label with no such
+//     place is left out, and a note says how many labels the picture shows. The boxes bound what a browser draws in
+//     sans-serif bold (e.g. DejaVu Sans Bold: N 0.84 em, digits 0.70 em, ascent 0.93 em, descent
+//     0.24 em): 0.86 em for the letter, 0.72 em per digit, from 0.95 em above the baseline to
+//     0.25 em below. The camera follows the curve, so marks gather where it is dense: the gap, not
+//     the view, keeps their labels apart.
+//  5. The caption is escaped (svg.hpp), so any text is safe; the document is valid SVG 1.1. The
+//     <title> holds the caption whole.
 //  6. Markers (PlotOptions::markers, mark_density.hpp): automatic draws the node and cusp markers
 //     of a curve with at most kAutoMarkLimit of them and none above, all and none as named; a
 //     note above the caption says how many were hidden. Hidden markers leave the legend too.
@@ -54,6 +61,12 @@
 //     the 98th percentile of the visited cells' densities (denser cells darkest), clipped to the
 //     disc; the legend shows the ramp and its top ("0.0912+"), a note says the back half is not
 //     shown.
+//  8. Layout (plot_layout, plot_text_band): the picture is size_px wide; the legend band along the
+//     top, then the sphere with its axes fill a square size_px high; under it the text band: the
+//     notes (right-aligned, 0.8 em), then the caption (centred, 1 em), each wrapped to the width
+//     (text_layout.hpp), so the height is size_px plus the band's lines, rounded up to a whole px.
+//     Every text of the picture is at least kMinTextPx (9.5 px), and nothing in the text band
+//     reaches the sphere's disc or its axes.
 //  REQUIRES: trajectory points, node and cusp positions finite (assertion); options valid
 //  (InvalidInput naming the field otherwise).
 #pragma once
@@ -68,6 +81,7 @@
 #include "sphtroch/draw/dwell_raster.hpp"
 #include "sphtroch/draw/mark_density.hpp"
 #include "sphtroch/draw/svg.hpp"
+#include "sphtroch/draw/text_layout.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/types.hpp"
@@ -189,25 +203,64 @@ struct SphereView {
   bool is_front(const Vector3d& p) const { return p.dot(view) >= -kSilhouetteTolerance; }
 };
 
-/// Sizes derived from the options: the camera, marker and font sizes, the caption line.
+/// The smallest text of the picture, px (contract 8).
+constexpr double kMinTextPx = 9.5;
+/// The least gap between the boxes of two labels in automatic labelling, in em of the label font
+/// (contract 4).
+constexpr double kLabelGapEm = 1.0;
+
+/// Sizes derived from the options: the camera, marker and font sizes, the bands (contract 8).
 struct PlotLayout {
   SphereView sphere;
-  double width = 0.0, height = 0.0;
-  double font_px = 12.0;        // labels; the caption uses 1.1x
+  double width = 0.0;
+  double height = 0.0;          // the square's (plot_layout); plot_text_band adds the text band
+  double font_px = 12.0;        // labels and the caption; the legend 0.9x, the notes 0.8x (at least kMinTextPx)
   double marker_radius = 5.0;   // node ring radius, cusp triangle half-size
-  double caption_y = 0.0;       // baseline of the caption
+  double legend_bottom = 0.0;   // the legend band above the sphere ends here
+  double band_top = 0.0;        // the text band under the sphere begins here
 };
 
 /// REQUIRES: valid options (throws InvalidInput naming the field otherwise).
 inline PlotLayout plot_layout(const PlotOptions& options);
 
-/// Where the label of a marker at `at` goes: pushed away from the sphere centre, past the mark.
-/// `anchor_end` is true when the text should end there (labels left of the centre).
+/// A line of the text band under the sphere: its text, baseline position, size, and whether it
+/// is a note (right-aligned at x) or the caption (centred at x).
+struct BandLine {
+  std::string text;
+  double x = 0.0, y = 0.0, font_px = 0.0;
+  bool note = false;
+};
+
+/// The text band (contract 8): `notes` (one line each, wrapped when too wide) then the caption,
+/// wrapped; sets layout.height to the picture's whole height.
+inline std::vector<BandLine> plot_text_band(PlotLayout& layout, const std::vector<std::string>& notes,
+                                            const std::string& caption);
+
+/// Where the label of a marker at `at` goes: pushed away from the sphere centre, past the mark,
+/// then turned by `turn` x 45 degrees, 0.6 em farther when `farther` (contract 4's other places).
+/// `anchor_end` is true when the text should end there (labels left of the mark).
 struct LabelPlacement {
   double x = 0.0, y = 0.0;
   bool anchor_end = false;
 };
-inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at);
+inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at, int turn = 0, bool farther = false);
+
+/// A mark's label where place_labels put it.
+struct PlacedLabel {
+  std::string text;       // "N3", "C1"
+  LabelPlacement at;
+  const char* colour;     // the mark's
+  bool front = true;      // the mark is on the front half
+  bool node = true;       // a node's label (else a cusp's)
+};
+
+/// The labels of the marks (contract 4) and how many marks there are to label.
+struct LabelPlan {
+  std::vector<PlacedLabel> labels;
+  std::size_t wanted = 0;
+};
+inline LabelPlan place_labels(const PlotLayout& layout, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                              PlotLabels mode);
 
 /// A spherical polyline cut into maximal runs on each half of the sphere.
 struct HemisphereSplit {
@@ -272,7 +325,7 @@ inline PlotLabels parse_plot_labels(std::string_view text, const std::string& fi
   if (text == "auto") return PlotLabels::automatic;
   if (text == "numbers") return PlotLabels::numbers;
   if (text == "none") return PlotLabels::none;
-  throw InvalidInput(field, std::string(text), "not a label mode", "auto (no overlaps), numbers (all), none");
+  throw InvalidInput(field, std::string(text), "not a label mode", "auto (kept one em apart), numbers (all), none");
 }
 
 inline SphereView SphereView::looking_from(double azimuth, double elevation, double cx, double cy, double radius) {
@@ -309,11 +362,13 @@ inline PlotLayout plot_layout(const PlotOptions& o) {
 
   PlotLayout l;
   l.width = l.height = o.size_px;
-  l.font_px = std::max(9.0, o.size_px / 42.0);
+  l.font_px = std::max(kMinTextPx, o.size_px / 42.0);
   l.marker_radius = std::max(3.5, o.size_px / 95.0);
-  const double caption_band = o.caption.empty() ? 0.0 : 2.2 * l.font_px;
   const double legend_band = o.draw_legend ? 1.7 * l.font_px : 0.3 * l.font_px;
-  const double avail_h = l.height - caption_band - legend_band;
+  // Under the lowest mark, room for its label at label_position's turn 0 (at most 0.4 ring radii
+  // and 0.9 em below the ring's centre): the text band never meets a label.
+  const double label_margin = 0.4 * l.marker_radius + 0.9 * l.font_px;
+  const double avail_h = l.height - legend_band - label_margin;
   // Extents around the centre in units of the radius: the sphere (plus the marker rings on
   // its rim), and the axes' tips at kAxisReach R with their labels about 0.2 R further out.
   const SphereView unit = SphereView::looking_from(o.azimuth, o.elevation, 0.0, 0.0, 1.0);
@@ -331,13 +386,35 @@ inline PlotLayout plot_layout(const PlotOptions& o) {
   const double cx = left * radius + 0.5 * (l.width - (left + right) * radius);
   const double cy = legend_band + top * radius + 0.5 * (avail_h - (top + bottom) * radius);
   l.sphere = SphereView::looking_from(o.azimuth, o.elevation, cx, cy, radius);
-  l.caption_y = l.height - 0.75 * l.font_px;
+  l.legend_bottom = legend_band;
+  l.band_top = l.height;
   return l;
 }
 
-inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at) {
+inline std::vector<BandLine> plot_text_band(PlotLayout& layout, const std::vector<std::string>& notes,
+                                            const std::string& caption) {
+  const double margin = 0.4 * layout.font_px, width = layout.width - 2 * margin;
+  const double note_px = std::max(kMinTextPx, 0.8 * layout.font_px), caption_px = std::max(kMinTextPx, layout.font_px);
+  std::vector<BandLine> lines;
+  double y = layout.band_top;
+  for (const std::string& note : notes)
+    for (const std::string& line : wrap_text(note, width, note_px)) {
+      y += 1.25 * note_px;
+      lines.push_back({line, layout.width - margin, y, note_px, true});
+    }
+  if (!caption.empty()) y += 0.3 * caption_px;
+  for (const std::string& line : wrap_text(caption, width, caption_px)) {
+    y += 1.25 * caption_px;
+    lines.push_back({line, 0.5 * layout.width, y, caption_px, false});
+  }
+  // The last line's descent (0.24 em) and a margin.
+  layout.height = std::ceil(y + (lines.empty() ? 0.0 : 0.6 * lines.back().font_px));
+  return lines;
+}
+
+inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint& at, int turn, bool farther) {
   // Outward from the centre, bent towards the upper right so that a mark on an axis (a pole,
-  // the centre) does not put its label on the axis line.
+  // the centre) does not put its label on the axis line; then turned.
   double dx = at.x - layout.sphere.cx, dy = at.y - layout.sphere.cy;
   const double len = detail::screen_length(dx, dy);
   if (len > 1e-9 * layout.sphere.radius) {
@@ -356,7 +433,15 @@ inline LabelPlacement label_position(const PlotLayout& layout, const ScreenPoint
     dx = 1.0;
     dy = 0.0;
   }
-  const double gap = layout.marker_radius + 0.3 * layout.font_px;
+  if (turn % 8 != 0) {  // by turn x 45 degrees: cosine and sine exact at the quarter turns
+    constexpr double h = 0.70710678118654752440;
+    static const double cos_sin[8][2] = {{1, 0}, {h, h}, {0, 1}, {-h, h}, {-1, 0}, {-h, -h}, {0, -1}, {h, -h}};
+    const double* cs = cos_sin[((turn % 8) + 8) % 8];
+    const double rx = cs[0] * dx - cs[1] * dy, ry = cs[1] * dx + cs[0] * dy;
+    dx = rx;
+    dy = ry;
+  }
+  const double gap = layout.marker_radius + (farther ? 0.9 : 0.3) * layout.font_px;
   LabelPlacement p;
   p.x = at.x + dx * gap;
   p.y = at.y + dy * gap + 0.35 * layout.font_px * (1.0 + dy);  // baseline: glyphs clear of the mark
@@ -552,12 +637,83 @@ constexpr const char* kAxisColour = "#444444";
 
 namespace detail {
 
-/// The sphere picture being drawn (contracts 1-5): layout, view, writer and base line width, with
-/// one method per layer. render_sphere_svg calls them back to front.
+/// A box in picture px (x, y: top left).
+struct Box {
+  double x, y, w, h;
+  /// The distance between the two boxes (0 when they touch or overlap).
+  double gap(const Box& o) const {
+    const double dx = std::max({0.0, o.x - (x + w), x - (o.x + o.w)}), dy = std::max({0.0, o.y - (y + h), y - (o.y + o.h)});
+    return screen_length(dx, dy);
+  }
+};
+
+/// The box of a label of `chars` characters placed at p (contract 4's bound on the glyphs).
+inline Box label_box(const PlotLayout& layout, const LabelPlacement& p, std::size_t chars) {
+  const double w = layout.font_px * (0.86 + 0.72 * static_cast<double>(chars - 1));
+  return Box{p.anchor_end ? p.x - w : p.x, p.y - 0.95 * layout.font_px, w, 1.2 * layout.font_px};
+}
+
+/// Automatic labelling's first free place for `text` at mark `at` (contract 4): a place whose box
+/// keeps the gap from `placed`, inside the picture between the bands; none: false.
+inline bool free_place(const PlotLayout& layout, const ScreenPoint& at, const std::string& text, const std::vector<Box>& placed,
+                       LabelPlacement& out) {
+  const double gap = kLabelGapEm * layout.font_px;
+  for (const bool farther : {false, true})
+    for (const int turn : {0, 1, -1, 2, -2, 3, -3, 4}) {
+      const LabelPlacement p = label_position(layout, at, turn, farther);
+      const Box b = label_box(layout, p, text.size());
+      if (b.x < 0 || b.x + b.w > layout.width || b.y < layout.legend_bottom || b.y + b.h > layout.band_top) continue;
+      if (std::any_of(placed.begin(), placed.end(), [&](const Box& o) { return b.gap(o) < gap; })) continue;
+      out = p;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace detail
+
+inline LabelPlan place_labels(const PlotLayout& layout, const std::vector<Node>& nodes, const std::vector<Cusp>& cusps,
+                              PlotLabels mode) {
+  struct Mark {
+    ScreenPoint at;
+    PlacedLabel label;
+  };
+  std::vector<Mark> marks;  // in labelling order: front nodes, back nodes, cusps
+  for (const bool front_half : {true, false})
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const ScreenPoint s = layout.sphere.project(nodes[i].position);
+      const bool front = s.depth >= -kSilhouetteTolerance;
+      if (front != front_half) continue;
+      const char* colour = nodes[i].kind == NodeKind::crossing ? detail::kCrossingColour : detail::kTangencyColour;
+      marks.push_back({s, {"N" + std::to_string(i + 1), {}, colour, front, true}});
+    }
+  for (std::size_t j = 0; j < cusps.size(); ++j) {
+    const ScreenPoint s = layout.sphere.project(cusps[j].position);
+    marks.push_back({s, {"C" + std::to_string(j + 1), {}, detail::kCuspColour, s.depth >= -kSilhouetteTolerance, false}});
+  }
+  LabelPlan plan;
+  plan.wanted = marks.size();
+  if (mode == PlotLabels::none) return plan;
+  std::vector<detail::Box> placed;
+  for (const Mark& m : marks) {
+    PlacedLabel label = m.label;
+    if (mode == PlotLabels::numbers) label.at = label_position(layout, m.at);
+    else if (!detail::free_place(layout, m.at, label.text, placed, label.at)) continue;
+    placed.push_back(detail::label_box(layout, label.at, label.text.size()));
+    plan.labels.push_back(std::move(label));
+  }
+  return plan;
+}
+
+namespace detail {
+
+/// The sphere picture being drawn (contracts 1-8): layout (with its text band: plot_text_band),
+/// view, writer and base line width, with one method per layer. render_sphere_svg calls them back
+/// to front.
 class SphereCanvas {
  public:
-  explicit SphereCanvas(const PlotOptions& options)
-      : opt_(options), L_(plot_layout(options)), cam_(L_.sphere), svg_(L_.width, L_.height, options.decimals),
+  SphereCanvas(const PlotOptions& options, const PlotLayout& layout)
+      : opt_(options), L_(layout), cam_(L_.sphere), svg_(L_.width, L_.height, options.decimals),
         lw_(std::max(1.0, L_.width / 300.0)) {
     svg_.title(options.caption.empty() ? std::string("sphtroch trajectory") : options.caption);
   }
@@ -620,7 +776,7 @@ class SphereCanvas {
     svg_.path(runs_path(curve.front, {}), stroke(kCurveColour, 1.7) + ";stroke-linejoin:round;stroke-linecap:round");
   }
 
-  /// Node i as a ring labelled N<i+1>, coloured by kind, faded on the back half (contract 4).
+  /// Node i as a ring, coloured by kind, faded on the back half (contract 4).
   void node_markers(const std::vector<Node>& nodes) {
     svg_.begin_group("", "id=\"nodes\"");
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -633,20 +789,18 @@ class SphereCanvas {
       svg_.circle(s.x, s.y, L_.marker_radius, stroke(colour, 1.6) + (front ? "" : back_mark()));
     }
     svg_.end_group();
+  }
+
+  /// The nodes' labels as `plan` placed them (contract 4).
+  void node_labels(const LabelPlan& plan) {
     svg_.begin_group("", "id=\"node-labels\"");
-    for (const bool front_half : {true, false})  // front labels first: they win a place
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const ScreenPoint s = cam_.project(nodes[i].position);
-        const bool front = s.depth >= -kSilhouetteTolerance;
-        if (front != front_half) continue;
-        const char* colour = nodes[i].kind == NodeKind::crossing ? kCrossingColour : kTangencyColour;
-        marker_label(s, "N" + std::to_string(i + 1), colour, front);
-      }
+    for (const PlacedLabel& l : plan.labels)
+      if (l.node) marker_label(l);
     svg_.end_group();
   }
 
-  /// Cusp j as a triangle labelled C<j+1> (contract 4).
-  void cusp_markers(const std::vector<Cusp>& cusps) {
+  /// Cusp j as a triangle, with its label when `plan` placed one (contract 4).
+  void cusp_markers(const std::vector<Cusp>& cusps, const LabelPlan& plan) {
     svg_.begin_group("", "id=\"cusps\"");
     for (std::size_t j = 0; j < cusps.size(); ++j) {
       SPHTROCH_ASSERT(std::isfinite(cusps[j].position.norm()), "render_sphere_svg: finite cusp position");
@@ -654,25 +808,20 @@ class SphereCanvas {
       const bool front = s.depth >= -kSilhouetteTolerance;
       svg_.path(triangle_path(s.x, s.y, 1.1 * L_.marker_radius, dec()),
                 stroke(kCuspColour, 1.6) + ";stroke-linejoin:round" + (front ? "" : back_mark()));
-      marker_label(s, "C" + std::to_string(j + 1), kCuspColour, front);
     }
+    for (const PlacedLabel& l : plan.labels)
+      if (!l.node) marker_label(l);
     svg_.end_group();
   }
 
-  /// The notes above the caption, right-aligned, one line each from the bottom up: the view, then
-  /// what the labels and markers leave out (contracts 4, 6).
-  void notes(const std::string& view, const MarkChoice& marks) {
-    std::vector<std::string> lines{view};
-    if (label_boxes_.size() < labels_wanted_ && opt_.labels == PlotLabels::automatic)
-      lines.push_back(std::to_string(label_boxes_.size()) + " of " + std::to_string(labels_wanted_) +
-                      " labels (no overlaps; all: --labels numbers, the list: sphtroch nodes)");
-    if (!marks.note.empty()) lines.push_back(marks.note + " (--markers all draws them)");
-    if (opt_.style == PlotStyle::density)
-      lines.push_back("density view: the front half's dwell in " + std::to_string(kDwellCells) + " x " +
-                      std::to_string(kDwellCells) + " cells, the back half not shown");
-    for (std::size_t i = 0; i < lines.size(); ++i)
-      label(L_.width - 0.4 * L_.font_px, L_.caption_y - (1.3 + 1.05 * static_cast<double>(i)) * L_.font_px, lines[i],
-            "font-family:sans-serif;font-size:" + num(0.8 * L_.font_px) + "px;fill:#555555", "end");
+  /// The text band under the sphere (contract 8): the notes, right-aligned, then the caption.
+  void text_band(const std::vector<BandLine>& lines) {
+    svg_.begin_group("", "id=\"caption\"");
+    for (const BandLine& line : lines) {
+      const std::string style = "font-family:sans-serif;font-size:" + num(line.font_px) + "px;fill:" + (line.note ? "#555555" : "#111111");
+      svg_.text(line.x, line.y, line.text, style, line.note ? "end" : "middle");
+    }
+    svg_.end_group();
   }
 
   /// Legend: one line along the top, only for what is drawn.
@@ -700,14 +849,6 @@ class SphereCanvas {
     }
   }
 
-  /// The caption, shrunk to fit the width (a sans-serif glyph averages about 0.55 em).
-  void caption() {
-    if (opt_.caption.empty()) return;
-    const double fit = 0.95 * L_.width / (0.55 * static_cast<double>(std::max<std::size_t>(1, opt_.caption.size())));
-    svg_.text(0.5 * L_.width, L_.caption_y, opt_.caption,
-              "font-family:sans-serif;font-size:" + num(std::min(1.1 * L_.font_px, fit)) + "px;fill:#111111", "middle");
-  }
-
   HemisphereSplit split(const std::vector<Vector3d>& points, bool closed) const {
     return split_by_silhouette(points, closed, cam_.view, opt_.max_arc_step);
   }
@@ -715,14 +856,6 @@ class SphereCanvas {
   const SphereView& camera() const { return cam_; }
 
  private:
-  /// A label's box in picture px (x, y: top left).
-  struct LabelBox {
-    double x, y, w, h;
-    bool overlaps(const LabelBox& o) const { return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h; }
-  };
-  std::vector<LabelBox> label_boxes_;
-  std::size_t labels_wanted_ = 0;
-
   /// Where the next legend item goes: x advances, y is the text baseline.
   struct LegendPen {
     double x, y;
@@ -753,23 +886,12 @@ class SphereCanvas {
     svg_.text(x, y, text, style + ";stroke:#ffffff;stroke-width:" + num(2.5 * lw_) + ";stroke-linejoin:round", anchor);
     svg_.text(x, y, text, style, anchor);
   }
-  /// A mark's label, unless PlotOptions::labels leaves it out (contract 4).
-  void marker_label(const ScreenPoint& s, const std::string& text, const char* colour, bool front) {
-    ++labels_wanted_;
-    if (opt_.labels == PlotLabels::none) return;
-    const LabelPlacement lp = label_position(L_, s);
-    // The box a browser lays the text out in (sans-serif bold, e.g. DejaVu Sans Bold: N 0.84 em,
-    // digits 0.70 em, ascent 0.93 em, descent 0.24 em), rounded up.
-    const double w = L_.font_px * (0.86 + 0.72 * static_cast<double>(text.size() - 1));
-    const LabelBox box{lp.anchor_end ? lp.x - w : lp.x, lp.y - 0.95 * L_.font_px, w, 1.2 * L_.font_px};
-    if (opt_.labels == PlotLabels::automatic &&
-        std::any_of(label_boxes_.begin(), label_boxes_.end(), [&](const LabelBox& b) { return b.overlaps(box); }))
-      return;
-    label_boxes_.push_back(box);
-    label(lp.x, lp.y, text,
-          "font-family:sans-serif;font-weight:bold;font-size:" + num(L_.font_px) + "px;fill:" + colour +
-              (front ? "" : ";fill-opacity:0.6"),
-          lp.anchor_end ? "end" : "start");
+  /// A mark's label where place_labels put it, faded on the back half.
+  void marker_label(const PlacedLabel& l) {
+    label(l.at.x, l.at.y, l.text,
+          "font-family:sans-serif;font-weight:bold;font-size:" + num(L_.font_px) + "px;fill:" + l.colour +
+              (l.front ? "" : ";fill-opacity:0.6"),
+          l.at.anchor_end ? "end" : "start");
   }
 
   /// Axis k: its line (solid or dashed), an arrow head unless seen nearly end-on, its label.
@@ -826,8 +948,9 @@ class SphereCanvas {
   }
 
   void legend_text(LegendPen& pen, const std::string& t) {
-    svg_.text(pen.x, pen.y, t, "font-family:sans-serif;font-size:" + num(0.9 * L_.font_px) + "px;fill:#333333");
-    pen.x += 0.5 * L_.font_px * static_cast<double>(t.size()) + 1.2 * L_.font_px;  // rough text width
+    const double size = std::max(kMinTextPx, 0.9 * L_.font_px);
+    svg_.text(pen.x, pen.y, t, "font-family:sans-serif;font-size:" + num(size) + "px;fill:#333333");
+    pen.x += text_width_em(t) * size + 1.2 * L_.font_px;
   }
   void legend_line(LegendPen& pen, const std::string& style, const std::string& t) {
     svg_.line(pen.x, pen.mid(L_), pen.x + 1.8 * L_.font_px, pen.mid(L_), style);
@@ -862,6 +985,22 @@ inline std::string view_note(const PlotOptions& o, const std::string& reason) {
          (reason.empty() ? "" : " (" + reason + ")");
 }
 
+/// The notes of the text band, top to bottom: what the markers, the labels and the density view
+/// leave out, then the view (contracts 4, 6, 7).
+inline std::vector<std::string> plot_notes(const PlotOptions& o, const std::string& view, const MarkChoice& marks,
+                                           const LabelPlan& plan) {
+  std::vector<std::string> lines;
+  if (!marks.note.empty()) lines.push_back(marks.note + " (--markers all draws them)");
+  if (plan.labels.size() < plan.wanted && o.labels == PlotLabels::automatic)
+    lines.push_back(std::to_string(plan.labels.size()) + " of " + std::to_string(plan.wanted) +
+                    " labels (kept apart; all: --labels numbers, the list: sphtroch nodes)");
+  if (o.style == PlotStyle::density)
+    lines.push_back("density view: the front half's dwell in " + std::to_string(kDwellCells) + " x " +
+                    std::to_string(kDwellCells) + " cells, the back half not shown");
+  lines.push_back(view);
+  return lines;
+}
+
 }  // namespace detail
 
 /// The picture (see header): the view, then the layers back to front.
@@ -880,7 +1019,10 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
     reason = view.reason;
   }
   const MarkChoice marks = choose_marks(o.markers, nodes.size(), cusps.size());
-  detail::SphereCanvas canvas(o);
+  PlotLayout layout = plot_layout(o);
+  const LabelPlan plan = marks.draw ? place_labels(layout, nodes, cusps, o.labels) : LabelPlan{};
+  const std::vector<BandLine> band = plot_text_band(layout, detail::plot_notes(o, detail::view_note(o, reason), marks, plan), o.caption);
+  detail::SphereCanvas canvas(o, layout);
   canvas.disc();
   const bool density = o.style == PlotStyle::density;
   const SphereView& cam = canvas.camera();
@@ -893,11 +1035,11 @@ inline std::string render_sphere_svg(const Trajectory<double>& trajectory, const
   canvas.curve_front(curve);
   if (marks.draw) {
     canvas.node_markers(nodes);
-    canvas.cusp_markers(cusps);
+    canvas.node_labels(plan);
+    canvas.cusp_markers(cusps, plan);
   }
   canvas.legend(marks.draw && !cusps.empty());
-  canvas.notes(detail::view_note(o, reason), marks);
-  canvas.caption();
+  canvas.text_band(band);
   return canvas.finish();
 }
 

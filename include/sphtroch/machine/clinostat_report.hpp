@@ -213,7 +213,7 @@ inline double clinostat_plot_dwell_s(const ClinostatReport& r) { return std::min
 /// none: no dwell panel) on the cells' outlines `cells`, and M(W) at 100 windows up to 1.25 times
 /// the time to epsilon (or three periods, at most two hours), by window_curve (searched, or the
 /// torus bound when 100 searches would cost more than kMaxCurvePieces: the picture's cost is
-/// bounded whatever the period).
+/// bounded whatever the period), with the time to epsilon's two answers when it was asked.
 inline ClinostatPlot clinostat_report_plot(const ClinostatReport& r, const DwellMap* dwell, std::vector<std::vector<Vector3d>> cells) {
   ClinostatPlot plot;
   const ClinostatSettings& s = r.settings;
@@ -230,6 +230,10 @@ inline ClinostatPlot clinostat_report_plot(const ClinostatReport& r, const Dwell
   const WindowCurve curve = window_curve(r.series, longest, 100);
   for (const WorstWindowMean& w : curve.points) plot.windows.push_back({w.window_s, w.lower, w.upper});
   if (curve.torus) plot.window_note = "the period is too long to search: the upper bound over every frame angle";
+  if (r.time_to) {
+    plot.first_below_s = r.time_to->first_s;
+    plot.stays_below_from_s = r.time_to->stays_below_from_s;
+  }
   return plot;
 }
 
