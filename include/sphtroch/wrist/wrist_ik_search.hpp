@@ -46,10 +46,13 @@ constexpr double kWristStartOffset = 0.0137;
 constexpr std::size_t kMaxWristBoxes = 4000000;
 /// Undecided boxes of scaled width below this try Newton's method and epsilon-inflation.
 constexpr double kWristNewtonWidth = 0.05;
-/// Undecided boxes of scaled width below this are left undecided.
+/// Undecided boxes of scaled width below this are left undecided...
 constexpr double kWristMinWidth = 1e-9;
-/// The search stops after this many undecided boxes (a continuum of solutions, a fold).
-constexpr std::size_t kMaxWristUndecided = 256;
+/// ... with the box of this scaled radius about them (an undecided region: the boxes inside it are
+/// not searched; a double root leaves a cluster of undecided boxes ~1e-7 wide, one region).
+constexpr double kWristUndecidedRadius = 1e-6;
+/// The search stops after this many undecided regions (a continuum of solutions).
+constexpr std::size_t kMaxWristUndecided = 64;
 
 namespace wrist_search_detail {
 
@@ -163,6 +166,7 @@ class WristIkSearch {
   }
 
   bool stopped() const { return boxes_ >= max_boxes_ || undecided_.size() > kMaxWristUndecided; }
+  bool over_budget() const { return boxes_ >= max_boxes_; }
 
   /// The grid of pieces_[j] boxes per motor over [lo_j, hi_j].
   std::vector<Box> start_boxes() const {
@@ -212,7 +216,7 @@ class WristIkSearch {
       return;
     }
     if (w < kWristMinWidth) {
-      undecided_.push_back(x);
+      undecided_.push_back(about(centre<M>(x), kWristUndecidedRadius));
       return;
     }
     bisect(x, p, stack);
@@ -274,8 +278,10 @@ class WristIkSearch {
     stack.push_back(a);
   }
 
+  /// Whether x lies in a known root's region or in an undecided region.
   bool in_known_region(const Box& x) const {
-    return std::any_of(known_.begin(), known_.end(), [&](const Known& k) { return wrist_search_detail::inside<M>(x, k.region); });
+    return std::any_of(known_.begin(), known_.end(), [&](const Known& k) { return wrist_search_detail::inside<M>(x, k.region); }) ||
+           std::any_of(undecided_.begin(), undecided_.end(), [&](const Box& u) { return wrist_search_detail::inside<M>(x, u); });
   }
   bool in_known_region(const PointN<M>& y) const {
     return std::any_of(known_.begin(), known_.end(), [&](const Known& k) { return wrist_search_detail::inside<M>(y, k.region); });
@@ -461,7 +467,7 @@ class WristIkSearch {
     for (const std::vector<Box>* list : {&ambiguous_, &undecided_})
       for (const Box& x : *list)
         if (r.undecided_at.size() < 16) r.undecided_at.push_back(motors_of(x).first);
-    r.on_fold = !r.certified && left_ == 0 && ambiguous_.empty() && undecided_.size() <= kMaxWristUndecided &&
+    r.on_fold = !r.certified && !over_budget() && ambiguous_.empty() && undecided_.size() <= kMaxWristUndecided &&
                 std::all_of(undecided_.begin(), undecided_.end(), [&](const Box& x) {
                   return wrist_search_detail::may_be_singular<M>(system_.over(x).jac);
                 });
@@ -473,18 +479,18 @@ class WristIkSearch {
   std::string why(const WristIkResult& r) const {
     if (r.certified) return "";
     std::string at;
-    for (const double u : r.undecided_at.front()) at += (at.empty() ? "" : ", ") + number_text(u);
-    at = " near u = (" + at + ")";
-    if (left_ > 0)
+    if (!r.undecided_at.empty()) {
+      for (const double u : r.undecided_at.front()) at += (at.empty() ? "" : ", ") + number_text(u);
+      at = " near u = (" + at + ")";
+    }
+    if (over_budget())
       return "the search stopped at its budget of " + std::to_string(max_boxes_) + " boxes with " + std::to_string(left_) + " unexamined";
     if (undecided_.size() > kMaxWristUndecided)
-      return "more than " + std::to_string(kMaxWristUndecided) + " boxes narrower than " + number_text(kWristMinWidth) +
-             " stay undecided (a continuum of solutions, or a fold)" + at;
+      return "the search stopped after " + std::to_string(undecided_.size()) + " undecided regions (a continuum of solutions?)" + at;
     if (!ambiguous_.empty()) return "two root enclosures overlap without a proof that they are one root" + at;
     if (r.on_fold)
-      return "the target is on a fold or within " + number_text(kWristMinWidth) +
-             " of one: a double root (J singular) may lie in " + std::to_string(undecided_.size()) + " undecided box(es)" + at;
-    return std::to_string(undecided_.size()) + " box(es) narrower than " + number_text(kWristMinWidth) + " stay undecided" + at;
+      return "the target is on a fold (or within rounding of one): a double root (J singular) may lie in " + std::to_string(undecided_.size()) + " undecided region(s)" + at;
+    return std::to_string(undecided_.size()) + " undecided region(s)" + at;
   }
 
   WristIkSystem<M> system_;

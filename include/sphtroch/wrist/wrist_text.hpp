@@ -47,8 +47,8 @@ struct WristText {
       joints.push_back({angle_item(a[i], "twists", at), p.empty() ? 0.0 : angle_item(p[i], "phases", at)});
     }
     std::vector<std::vector<ChainRate>> rows = coupling_rows();  // in this order: the first bad option is named
-    const Vector3d a = tool_axis();
-    return Wrist(joints, std::move(rows), a);
+    const Vector3d tool = tool_axis();
+    return Wrist(joints, std::move(rows), tool);
   }
 
   /// The target of the wrist's kind (see header).
