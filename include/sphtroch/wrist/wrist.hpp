@@ -1,12 +1,5 @@
 // sphtroch/wrist/wrist.hpp — a geared spherical wrist: k revolute joints about axes through one
-// centre, driven by m = 2 or 3 motors through gears. Joint i turns by
-//   theta_i(u) = sum_j C_ij u_j + phi_i
-// (u the motor angles, C the k x m coupling of exact fractions, phi_i the phases), and the last
-// body's frame and tool axis are
-//   F(u) = Rz(theta_1) Rx(A_1) Rz(theta_2) Rx(A_2) ... Rz(theta_k) Rx(A_k),   P(u) = F(u) a
-// (A_i the twists, a the tool axis in the last body, z unless given). A one-column C is a rotation
-// chain (core/rotation_chain.hpp); the gear train of the report (Eq. 4) driven by a base motor is
-// twists (0, a2, a3) with C = [1 0; 0 1; 0 n].
+// centre, driven by m = 2 or 3 motors through gears.
 //
 //   const sphtroch::Wrist wrist({{0.0, 0.0}, {1.0, 0.0}, {0.5, 0.0}},
 //                               {{sphtroch::ChainRate(1), sphtroch::ChainRate(0)},
@@ -15,6 +8,12 @@
 //   wrist.period(1);                                   // 4 pi: motor 2 turns joint 3 by 3/2
 //   const sphtroch::Vector3d p = wrist.point<double>({0.1, 0.2});   // a unit vector
 //
+// Joint i turns by theta_i(u) = sum_j C_ij u_j + phi_i (u the motor angles, C the k x m coupling
+// of exact fractions, phi_i the phases); the last body's frame and tool axis are
+// F(u) = Rz(theta_1) Rx(A_1) Rz(theta_2) Rx(A_2) ... Rz(theta_k) Rx(A_k) and P(u) = F(u) a (A_i
+// the twists, a the tool axis in the last body, z unless given). A one-column C is a rotation chain
+// (core/rotation_chain.hpp); the report's gear train (Eq. 4) driven by a base motor is twists
+// (0, a2, a3) with C = [1 0; 0 1; 0 n].
 // Motor j's period is T_j = 2 pi L_j, L_j the lcm of the denominators in column j: every joint
 // angle is back (up to whole turns) after u_j grows by T_j, so the motor torus is
 // [0, T_1) x ... x [0, T_m). The kinematics: dF/du_j = [omega_j]x F with omega_j = sum_i C_ij Z_i
