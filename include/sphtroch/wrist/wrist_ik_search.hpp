@@ -110,13 +110,12 @@ struct Known {
 };
 
 /// What one look at a box gives: excluded, or the Krawczyk step (none when J at the centre is
-/// singular), with J over the box and at the centre.
+/// singular), with J at the centre (for the choice of the motor to split).
 template <std::size_t M>
 struct Probe {
   bool excluded = false;
   std::optional<KrawczykStep<M>> step;
-  IntervalMatrix<M> jac;
-  DoubleMatrix<M> jac_centre;
+  DoubleMatrix<M> jac_centre = DoubleMatrix<M>::Zero();
 };
 
 }  // namespace wrist_search_detail
@@ -197,10 +196,8 @@ class WristIkSearch {
     for (int round = 0; round < 4; ++round) {
       if (in_known_region(x)) return;
       p = probe(x);
-      if (p.excluded || !p.step) {
-        if (p.excluded) return;
-        break;
-      }
+      if (p.excluded) return;
+      if (!p.step) break;  // J singular at the centre: split
       if (p.step->verdict == KrawczykVerdict::none) return;
       if (p.step->verdict == KrawczykVerdict::unique) {
         if (record_unique(x, p.step->box)) return;
@@ -239,7 +236,6 @@ class WristIkSearch {
     for (std::size_t l = 0; l < M; ++l) sign += vx.sign_gradient[l] * dx[l];
     if (wrist_search_detail::meet(vx.sign, sign).sup() < system_.peak().inf()) p.excluded = true;
     if (p.excluded) return p;
-    p.jac = vx.jac;
     p.jac_centre = midpoint<M>(vy.jac);
     if (const auto inverse = midpoint_inverse<M>(p.jac_centre)) p.step = krawczyk_step<M>(x, y, vy.f, vx.jac, *inverse);
     return p;
