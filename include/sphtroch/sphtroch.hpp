@@ -3,7 +3,8 @@
 //     CSV/.npy readers and writers; POSIX), draw/ (SVG), map/ (closed-form boundaries, the report's
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
-//     gear train, window means, the worst window mean, the time to epsilon, the report and its JSON).
+//     gear train, window means, the worst window mean, the time to epsilon, the report and its JSON),
+//     wrist/'s model, targets, typed options and reports (geared wrists with 2 or 3 motors).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
 //   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains read
 //     from URDF; io/urdf_writer.hpp writes them without it).
@@ -11,8 +12,9 @@
 //     arithmetic, interval 3-vectors, the one Krawczyk step, certified root isolation), chain/ (the
 //     certified census of rotation chains and its events along a family; chain/chain_events.hpp, the
 //     events' types and closed forms, is Eigen only), tolerance/ (the certified topology margin,
-//     box topology and node enclosures of a tolerance box) and synthesis/'s precision points
-//     (fixed frame, free axis).
+//     box topology and node enclosures of a tolerance box), synthesis/'s precision points
+//     (fixed frame, free axis) and wrist/'s certified inverse kinematics (every solution on the
+//     motor torus).
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
 //     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
 //     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
@@ -20,8 +22,8 @@
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (exact/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
-// classify()'s declaration and its result types (exact/classification.hpp), no interval/, chain/, tolerance/
-// or precision points, and parses no CGAL
+// classify()'s declaration and its result types (exact/classification.hpp), no interval/, chain/, tolerance/,
+// precision points or wrist inverse kinematics, and parses no CGAL
 // header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
 #pragma once
 
@@ -127,6 +129,12 @@
 #include "sphtroch/machine/dwell_map.hpp"
 #endif
 
+#include "sphtroch/wrist/wrist.hpp"
+#include "sphtroch/wrist/wrist_ik_output.hpp"
+#include "sphtroch/wrist/wrist_ik_result.hpp"
+#include "sphtroch/wrist/wrist_target.hpp"
+#include "sphtroch/wrist/wrist_text.hpp"
+
 #if defined(SPHTROCH_HAVE_INTERVAL) && !defined(SPHTROCH_SEPARATE_EXACT)  // separate mode parses no CGAL header
 #include "sphtroch/interval/interval.hpp"
 #include "sphtroch/interval/interval_vector.hpp"
@@ -147,6 +155,10 @@
 #include "sphtroch/tolerance/topology_margin.hpp"
 #include "sphtroch/synthesis/free_axis_points.hpp"
 #include "sphtroch/synthesis/precision_points.hpp"
+#include "sphtroch/wrist/wrist_enclosure.hpp"
+#include "sphtroch/wrist/wrist_ik.hpp"
+#include "sphtroch/wrist/wrist_ik_search.hpp"
+#include "sphtroch/wrist/wrist_ik_system.hpp"
 #endif
 
 #if defined(SPHTROCH_HAVE_EXACT)

@@ -161,6 +161,10 @@ void register_clinostat_design(CLI::App& clinostat, std::vector<std::pair<CLI::A
 void register_chain(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);  // chain trace (chain_command.cpp)
 /// --twists, --rates, --phases of every chain subcommand, into the library's reader.
 void add_chain_options(CLI::App& cmd, ChainText& chain);
+#ifdef SPHTROCH_HAVE_WRIST
+/// `wrist ik` (wrist_command.cpp; CGAL's interval headers, sphtroch::interval).
+void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
+#endif
 /// `completion bash|zsh`: register it last, so that its script lists every command (completion_command.cpp).
 void register_completion(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions);
 #ifdef SPHTROCH_HAVE_ANALYSIS

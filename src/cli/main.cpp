@@ -180,6 +180,9 @@ int main(int argc, char** argv) {
 #endif
   register_clinostat(app, actions);
   register_chain(app, actions);
+#ifdef SPHTROCH_HAVE_WRIST
+  register_wrist(app, actions);
+#endif
   register_completion(app, actions);  // last: its script lists the commands above
   if (const auto bad = unknown_command(app, argc, argv)) return fail(*bad);
   if (const auto bad = flag_with_value(app, argc, argv)) return fail(*bad);

@@ -1,0 +1,104 @@
+// `sphtroch wrist ik`, run as the real executable: the JSON's schema and numbers (the base x gear
+// train wrist's 2 |p| solutions, each pointing the tool as the product of AngleAxis rotations in
+// long double says; the 3R wrist's two frames), the text report, exit 3 with one line on a fold,
+// and bad input: exit 2, one line on stderr naming the option, nothing on stdout (a rank-deficient
+// coupling, rows != k, a zero denominator, a non-unit target, NaN, a problem beyond the cost bound).
+#include "catch2/catch.hpp"
+#include "cli_support.hpp"
+#include "wrist/wrist_reference.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace sphtroch::test;
+
+std::vector<long double> motors_of(const nlohmann::json& s) {
+  std::vector<long double> u;
+  for (const auto& x : s["motors"]) u.push_back(x.get<double>());
+  return u;
+}
+
+}  // namespace
+
+TEST_CASE("wrist ik --json: the base x gear train wrist's 2 |p| solutions, each on the target", "[wrist][cli]") {
+  TempDir dir;
+  const Result r = run("wrist ik --twists 0,1,0.5 --coupling '1,0;0,1;0,3/2' --target 0.6,0,0.8 --json", dir);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == true);
+  CHECK(j["on_fold"] == false);
+  CHECK(j["count"] == 6);  // n = 3/2: 2 |p| = 6, z = 0.8 inside (cos 1.5, cos 0.5)
+  REQUIRE(j["solutions"].size() == 6);
+  const WristModel m{{0.0, 1.0, 0.5}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {3, 2}}}};
+  CHECK(j["wrist"]["periods"][1].get<double>() == 4 * 3.141592653589793);
+  for (const auto& s : j["solutions"]) {
+    const std::vector<long double> u = motors_of(s);
+    REQUIRE(u.size() == 2);
+    CHECK((u[0] >= 0 && u[0] < m.period(0) && u[1] >= 0 && u[1] < m.period(1)));
+    CHECK(double((m.point(u) - Vec3L(0.6L, 0, 0.8L)).norm()) < 1e-12);
+    CHECK(s["box_radius"].get<double>() < 1e-12);
+  }
+  const Result text = run("wrist ik --twists 0,1,0.5 --coupling '1,0;0,1;0,3/2' --target 0.6,0,0.8", dir);
+  CHECK(text.status == 0);
+  CHECK(contains(text.out, "solutions: 6 (certified"));
+  CHECK(count_lines(text.out) == 3 + 6);
+}
+
+TEST_CASE("wrist ik --target-frame: the 3R wrist's two solutions hold the frame", "[wrist][cli]") {
+  TempDir dir;
+  const WristModel m{{1.0, 1.2, 0.7}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}, {0, 1}}, {{0, 1}, {1, 1}, {0, 1}}, {{0, 1}, {0, 1}, {1, 1}}}};
+  const Mat3L f = m.frame({0.3L, 2.0L, 5.0L});
+  std::string rows;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) rows += (rows.empty() ? "" : ",") + shortest_g(double(f(i, k)));
+  const Result r = run("wrist ik --twists 1,1.2,0.7 --coupling '1,0,0;0,1,0;0,0,1' --target-frame " + rows + " --json", dir);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == true);
+  REQUIRE(j["count"] == 2);
+  for (const auto& s : j["solutions"]) CHECK(double((m.frame(motors_of(s)) - f).cwiseAbs().maxCoeff()) < 1e-12);
+}
+
+TEST_CASE("wrist ik: a target on a fold exits 3 with one line, the report complete and saying so", "[wrist][cli]") {
+  TempDir dir;
+  // Twists pi/2, pi/4 and the target at z = cos(pi/4) on the fold circle z = cos(A1 - A2).
+  const Result r = run("wrist ik --twists 1.5707963267948966,0.7853981633974483 --coupling '1,0;0,1' "
+                       "--target 0.7071067811865476,0,0.7071067811865476 --json", dir);
+  CHECK(r.status == 3);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "fold"));
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == false);
+  CHECK(j["on_fold"] == true);
+}
+
+TEST_CASE("wrist ik: bad input exits 2 with one line naming the option and nothing on stdout", "[wrist][cli]") {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--twists 1,1,1 --coupling '1,2;2,4;3,6' --target 0,0,1", "--coupling"},        // rank 1
+      {"--twists 1,1,1 --coupling '1,0;0,1' --target 0,0,1", "--coupling"},            // rows != k
+      {"--twists 1,1,1 --coupling '1/0,0;0,1;0,1' --target 0,0,1", "--coupling"},      // zero denominator
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --target 1,1,1", "--target"},          // not unit
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --target nan,0,1", "--target"},        // NaN
+      {"--twists 1,nan,1 --coupling '1,0;0,1;0,2' --target 0,0,1", "--twists"},        // NaN
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2'", "--target"},                         // no target
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --target-frame 1,0,0,0", "--target-frame"},
+      {"--twists 1,1,1 --coupling '1,0,0;0,1,0;0,0,1' --target-frame 1,0,0,0 --axis 1,0,0", "--axis"},
+      {"--twists 1,1,1 --coupling '5,1/1000;3,999/1000;1,7' --target 0,0,1", "--coupling"},  // beyond the cost bound
+  };
+  for (const auto& [args, option] : cases) {
+    const Result r = run("wrist ik " + args, dir);
+    INFO(args << "\n" << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, option));
+  }
+  const Result cost = run("wrist ik --twists 1,1,1 --coupling '5,1/1000;3,999/1000;1,7' --target 0,0,1", dir);
+  CHECK(contains(cost.err, "start boxes"));
+}
