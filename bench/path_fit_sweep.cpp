@@ -10,7 +10,7 @@
 // of sigma per direction; the wanted count is the hidden train's (classify); "free" fits without one.
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/synthesis.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -22,9 +22,11 @@
 //   sphtroch::mpfr (defines SPHTROCH_HAVE_MPFR): adds the mpfr::mpreal Scalar (exact/mpreal_support.hpp).
 //   sphtroch::step (OpenCASCADE; defines SPHTROCH_HAVE_STEP): adds cad/: the path as a STEP B-spline.
 // Separate mode (SPHTROCH_SEPARATE_EXACT, classify.hpp): of exact/ the umbrella then gives only
-// classify()'s declaration and its result types (exact/classification.hpp), no interval/, chain/, tolerance/,
-// precision points or wrist inverse kinematics, and parses no CGAL
-// header; a file that needs more of exact/ includes those headers itself and pays CGAL's parse.
+// the declarations of classify(), tolerance_report(), precision_points_with_census() and
+// fit_with_census() with their result types and formats (classify.hpp, tolerance.hpp,
+// synthesis.hpp), none of the solvers of interval/, chain/, tolerance/, synthesis/ or wrist/, and
+// parses no CGAL header; a file that needs more of exact/ includes those headers itself and pays
+// CGAL's parse.
 #pragma once
 
 #if defined(SPHTROCH_HAVE_MPFR)
@@ -100,6 +102,11 @@
 
 #include "sphtroch/chain/chain_events.hpp"  // Eigen only; the rest of chain/ needs sphtroch::interval
 
+#include "sphtroch/tolerance/tolerance_report.hpp"  // the results, no CGAL; the solvers need sphtroch::interval
+#include "sphtroch/tolerance/tolerance_types.hpp"
+#include "sphtroch/interval/isolated_roots.hpp"  // a plain result type
+#include "sphtroch/synthesis/precision_solution.hpp"
+
 #include "sphtroch/atlas/atlas.hpp"
 #include "sphtroch/atlas/atlas_boundary_check.hpp"
 #include "sphtroch/atlas/atlas_csv.hpp"
@@ -151,7 +158,6 @@
 #include "sphtroch/tolerance/boundary_enclosure.hpp"
 #include "sphtroch/tolerance/node_tolerance.hpp"
 #include "sphtroch/tolerance/tolerance_box.hpp"
-#include "sphtroch/tolerance/tolerance_report.hpp"
 #include "sphtroch/tolerance/topology_margin.hpp"
 #include "sphtroch/synthesis/free_axis_points.hpp"
 #include "sphtroch/synthesis/precision_points.hpp"
@@ -163,7 +169,15 @@
 
 #if defined(SPHTROCH_HAVE_EXACT)
 #include "sphtroch/classify.hpp"
+#include "sphtroch/synthesis.hpp"   // declared; defined unless separate
+#include "sphtroch/tolerance.hpp"   // declared; defined unless separate
+#include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/exact/tolerance_output.hpp"
 #if !defined(SPHTROCH_SEPARATE_EXACT)
+#include "sphtroch/exact/path_fit_analysis.hpp"
+#include "sphtroch/exact/precision_points_analysis.hpp"
+#include "sphtroch/exact/tolerance_analysis.hpp"
 #include "sphtroch/exact/analysis.hpp"
 #include "sphtroch/exact/arc_predicates.hpp"
 #include "sphtroch/exact/certified_census.hpp"
@@ -171,9 +185,6 @@
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/exact/classification_output.hpp"
 #include "sphtroch/exact/polyline_census.hpp"
-#include "sphtroch/exact/precision_points_output.hpp"
-#include "sphtroch/exact/path_fit_output.hpp"
-#include "sphtroch/exact/tolerance_output.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 #endif

@@ -10,11 +10,10 @@
 #include "sphtroch/chain/chain_census_output.hpp"
 #include "sphtroch/chain/chain_picture.hpp"
 #include "sphtroch/exact/chain_classification.hpp"
-#include "sphtroch/exact/path_fit_output.hpp"
-#include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/synthesis.hpp"
 #include "sphtroch/exact/scene.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
-#include "sphtroch/exact/tolerance_output.hpp"
+#include "sphtroch/tolerance.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -9,7 +9,7 @@
 #include "sphtroch/io/node_csv.hpp"
 #include "sphtroch/io/polyline_input.hpp"
 #include "sphtroch/exact/classification_output.hpp"
-#include "sphtroch/exact/tolerance_output.hpp"
+#include "sphtroch/tolerance.hpp"
 
 #include <nlohmann/json.hpp>
 

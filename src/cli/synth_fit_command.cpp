@@ -6,7 +6,7 @@
 
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
-#include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/synthesis.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"

@@ -5,7 +5,7 @@
 
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/cost_bounds.hpp"
-#include "sphtroch/exact/precision_points_output.hpp"
+#include "sphtroch/synthesis.hpp"
 #include "sphtroch/io/input_file.hpp"
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/io/polyline_input.hpp"

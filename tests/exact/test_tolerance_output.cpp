@@ -5,7 +5,7 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "sphtroch/exact/analysis.hpp"
-#include "sphtroch/exact/tolerance_output.hpp"
+#include "sphtroch/tolerance.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "catch2/catch.hpp"
 #include "sphtroch/classify.hpp"
 #include "sphtroch/core/curve.hpp"
-#include "sphtroch/exact/path_fit_output.hpp"
+#include "sphtroch/synthesis.hpp"
 #include "sphtroch/exact/self_crossings.hpp"
 
 #include <algorithm>

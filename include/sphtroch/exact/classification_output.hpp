@@ -16,7 +16,7 @@
 //     text reports have 3 significant digits (seconds_text), in JSON every digit.
 //  2. classification_json: one object with the keys inputs, cone_angles, period, class, counts,
 //     nodes, cusps, cusp_within_resolution, boundaries, z_extremes, nearest_event, margin (the
-//     certified margin: topology_margin.hpp, as tolerance_output.hpp's topology_margin_json), symmetry, analytic, censuses,
+//     certified margin: topology_margin.hpp, as tolerance_report.hpp's topology_margin_json), symmetry, analytic, censuses,
 //     agreement, tolerances, work (docs/cli.md: classify --json documents each field). nlohmann::json
 //     sorts keys when dumped. Node longitude/latitude are radians, atan2(y, x) and asin(z).
 //  3. The text report states the same facts in words, with degrees beside radians for the inputs
@@ -34,7 +34,8 @@
 #endif
 
 #include "sphtroch/exact/classification.hpp"
-#include "sphtroch/exact/tolerance_output.hpp"  // the certified margin and its JSON
+#include "sphtroch/tolerance/topology_margin.hpp"  // the certified margin
+#include "sphtroch/tolerance/tolerance_report.hpp"  // its JSON (topology_margin_json)
 #include "sphtroch/map/criteria.hpp"
 #include "sphtroch/io/train_text.hpp"
 #include "sphtroch/core/node.hpp"

@@ -34,11 +34,11 @@
 #error "sphtroch/exact/path_fit_output.hpp needs CGAL: link the CMake target sphtroch::exact"
 #endif
 
-#include "sphtroch/exact/analysis.hpp"  // classify()
+#include "sphtroch/exact/classification.hpp"  // classify()'s result
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/tolerance/topology_margin.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 #include "sphtroch/synthesis/path_fit.hpp"
 
 #include <nlohmann/json.hpp>
@@ -89,46 +89,12 @@ inline bool census_confirms(const Classification& c, const FitOptions& o) {
          (!o.cusps || static_cast<std::int64_t>(c.cusps.size()) == *o.cusps);
 }
 
-/// fit_path for each ratio, then classify() of every candidate (see header).
-inline std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
-                                             const FitOptions& options = {}) {
-  std::vector<RatioFit> all;
-  // A few more than wanted, so that a candidate the census does not confirm leaves room for the next.
-  check_fit_cost(points.size(), ratios);
-  FitOptions more = options;
-  more.max_candidates = options.max_candidates + kFitSpareCandidates;
-  for (const Ratio& n : ratios) {
-    PathFit f = fit_path(points, n, more);
-    RatioFit rf{n, {}, f.reason, 0};
-    for (FitCandidate& c : f.candidates) {
-      if (rf.candidates.size() == options.max_candidates) break;
-      Classification census = classify(c.train);
-      if (options.node_at) c.node_distance = census_node_distance(census, *options.node_at);
-      const bool node_held = !options.node_at || (census.certified() && c.node_distance <= options.node_tolerance);
-      if (!(census_confirms(census, options) && node_held)) {
-        ++rf.dropped;
-        continue;
-      }
-      TopologyMargin margin = topology_margin(census.snapped.train);
-      if (options.min_margin > 0 && !(margin.lower >= options.min_margin && square_in_range(census.snapped.train, options.min_margin))) {
-        ++rf.dropped;
-        ++rf.too_near;
-        continue;
-      }
-      rf.candidates.push_back({std::move(c), std::move(census), std::move(margin)});
-    }
-    if (rf.candidates.empty() && rf.reason.empty() && rf.dropped > 0)
-      rf.reason = "n = " + n.str() + ": " +
-                  (rf.too_near == rf.dropped ? "every candidate lies nearer than --min-margin " + number_text(options.min_margin) +
-                                                   " rad to a change of its census or to the end of the range (0, pi) (" +
-                                                   std::to_string(rf.dropped) + " candidate(s))"
-                                             : "the census (classify) did not confirm the wanted counts (or node point) of any of " +
-                                                   std::to_string(rf.dropped) + " candidate(s)" +
-                                                   (rf.too_near ? " (" + std::to_string(rf.too_near) + " nearer than --min-margin)" : ""));
-    all.push_back(std::move(rf));
-  }
-  return all;
-}
+/// fit_path for each ratio, then classify() and topology_margin() of every candidate (see header;
+/// defined in path_fit_analysis.hpp). A function template (Options = FitOptions), like
+/// classify(), so that files built with and without SPHTROCH_SEPARATE_EXACT share one program.
+template <typename Options = FitOptions>
+std::vector<RatioFit> fit_with_census(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                      const Options& options = {});
 
 /// The best candidates over all ratios, best first, at most options.max_candidates.
 inline std::vector<const ConfirmedCandidate*> ranked_candidates(const std::vector<RatioFit>& all, const FitOptions& options) {

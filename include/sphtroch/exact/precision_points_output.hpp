@@ -24,13 +24,12 @@
 #error "sphtroch/exact/precision_points_output.hpp needs CGAL: link the CMake target sphtroch::exact"
 #endif
 
-#include "sphtroch/exact/analysis.hpp"  // classify()
+#include "sphtroch/exact/classification.hpp"  // classify()'s result
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/core/teeth.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/synthesis/free_axis_points.hpp"
-#include "sphtroch/synthesis/precision_points.hpp"
-#include "sphtroch/tolerance/topology_margin.hpp"
+#include "sphtroch/synthesis/precision_solution.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <sstream>
 #include <string>
@@ -48,23 +47,12 @@ struct RatioPrecisionPoints {
 };
 
 /// precision_points (or, with free_axis, free_axis_points) for each ratio, then classify() and
-/// topology_margin() of every train found.
-inline std::vector<RatioPrecisionPoints> precision_points_with_census(const std::vector<Vector3d>& points,
-                                                                      const std::vector<Ratio>& ratios,
-                                                                      const PrecisionPointsOptions& options = {},
-                                                                      bool free_axis = false) {
-  std::vector<RatioPrecisionPoints> all;
-  for (const Ratio& n : ratios) {
-    RatioPrecisionPoints rs{n, free_axis ? free_axis_points(points, n, options) : precision_points(points, n, options), {}, {},
-                            free_axis};
-    for (const auto& s : rs.result.solutions) {
-      rs.census.push_back(classify(s.train));
-      rs.margins.push_back(topology_margin(s.train));
-    }
-    all.push_back(std::move(rs));
-  }
-  return all;
-}
+/// topology_margin() of every train found (defined in precision_points_analysis.hpp). A function
+/// template (Options = PrecisionPointsOptions), like classify(), so that files built with and
+/// without SPHTROCH_SEPARATE_EXACT share one program.
+template <typename Options = PrecisionPointsOptions>
+std::vector<RatioPrecisionPoints> precision_points_with_census(const std::vector<Vector3d>& points, const std::vector<Ratio>& ratios,
+                                                               const Options& options = {}, bool free_axis = false);
 
 /// [x, y, z] of a vector, shortest round-trip numbers.
 inline std::string vector_json(const Vector3d& v) {

@@ -27,8 +27,8 @@
 #include "sphtroch/core/pitch_cone.hpp"
 #include "sphtroch/exact/classification.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/tolerance/tolerance_box.hpp"
 #include "sphtroch/tolerance/tolerance_report.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,8 +40,11 @@
 
 namespace sphtroch {
 
-/// The report for the train and box (runs classify, the margin, the box topology, each node).
-inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box);
+/// The report for the train and box (runs classify, the margin, the box topology, each node;
+/// defined in tolerance_analysis.hpp). A function template (Box = ToleranceBox), like classify(),
+/// so that files built with and without SPHTROCH_SEPARATE_EXACT share one program.
+template <typename Box = ToleranceBox>
+ToleranceReport tolerance_report(const GearTrain& train, const Box& box);
 
 /// Classifies `samples` trains drawn uniformly from the box (std::mt19937_64 seeded with `seed`)
 /// and sets r.monte_carlo; `progress` (when set) is called with (k, samples) after the k-th train,
@@ -57,24 +60,6 @@ inline void run_monte_carlo(ToleranceReport& r, std::size_t samples, std::uint64
 inline void check_monte_carlo_cost(const GearTrain& train, const ToleranceBox& box, std::size_t samples);
 
 // ------------------------------------------------------------------------------------------------
-
-inline ToleranceReport tolerance_report(const GearTrain& train, const ToleranceBox& box) {
-  check_tolerance_box(train, box);
-  const Classification c = classify(train);
-  ToleranceReport r;
-  r.train = c.snapped.train;
-  r.box = box;
-  check_tolerance_box(r.train, box);
-  r.node_count = c.nodes.size();
-  r.cusp_count = c.cusps.size();
-  r.census_certified = c.certificate.certified;
-  BoxTolerance proved = box_tolerance(r.train, c.nodes, c.cusps, box);
-  r.margin = std::move(proved.margin);
-  r.topology = std::move(proved.topology);
-  r.nodes = std::move(proved.nodes);
-  r.cusps = std::move(proved.cusps);
-  return r;
-}
 
 inline void check_monte_carlo_cost(const GearTrain& train, const ToleranceBox& box, std::size_t samples) {
   if (!(samples >= 1 && samples <= kMaxToleranceSamples))

@@ -46,6 +46,7 @@
 #endif
 
 #include "sphtroch/core/types.hpp"
+#include "sphtroch/interval/isolated_roots.hpp"
 #include "sphtroch/interval/krawczyk.hpp"
 
 #include <Eigen/Dense>
@@ -71,15 +72,6 @@ constexpr double kUnisolatedResidual = 1e-12;
 /// of undecided boxes, and each listed train costs its census (measured: 11,429 trains, 135 s).
 constexpr std::size_t kMaxUnisolatedSolutions = 64;
 
-/// What a search returns: the System's solutions (its `Solution` type, which has the members
-/// `isolated` and `residual`), in the order found, whether the list is certified complete, and the work.
-template <class Solution>
-struct IsolatedRoots {
-  std::vector<Solution> solutions;
-  bool certified = true;      // every box was excluded or isolated one root (see header)
-  std::size_t undecided = 0;  // boxes left undecided (0 when certified)
-  std::size_t boxes = 0;      // boxes examined (the work)
-};
 
 template <class System>
 class RootIsolation;

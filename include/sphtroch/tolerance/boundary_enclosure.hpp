@@ -41,6 +41,7 @@
 #include "sphtroch/core/ratio.hpp"
 #include "sphtroch/map/boundary_events.hpp"
 #include "sphtroch/interval/interval.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <array>
 #include <cmath>
@@ -50,27 +51,6 @@
 #include <vector>
 
 namespace sphtroch {
-
-/// [a2_lo, a2_hi] x [a3_lo, a3_hi], radians (a side may be a point).
-struct TwistBox {
-  double a2_lo = 0, a2_hi = 0, a3_lo = 0, a3_hi = 0;
-  double a2_mid() const { return a2_lo + 0.5 * (a2_hi - a2_lo); }
-  double a3_mid() const { return a3_lo + 0.5 * (a3_hi - a3_lo); }
-  double width() const { return std::max(a2_hi - a2_lo, a3_hi - a3_lo); }
-};
-
-/// One boundary curve of the design map (see the header).
-struct MapBoundary {
-  enum class Kind { pitch_cone, mirror_pitch_cone, north_pole, south_pole, tangency };
-  Kind kind = Kind::pitch_cone;
-  int label = -1;      // tangency: the stationary point (0: larger b)
-  std::int64_t m = 0;  // tangency: the integer value of g
-};
-
-/// The boundary in the words of map/boundary_events.hpp's events: "a3 = a_p (pitch cone)", ...
-inline std::string boundary_text(const MapBoundary& b);
-/// Its event kind as `boundaries` prints it: pitch_cone, pole or tangency.
-inline BoundaryEventKind event_kind(const MapBoundary& b);
 
 /// Every boundary that may meet the box (empty: certified that none does). A box where G_l cannot
 /// be enclosed (a pole of the curve's circle inside, or more than 64 integers in reach) reports a
@@ -313,27 +293,6 @@ inline int sign_at(const MapBoundary& b, double a2, double a3, const Ratio& n) {
 
 }  // namespace boundary_enclosure_detail
 
-inline std::string boundary_text(const MapBoundary& b) {
-  switch (b.kind) {
-    case MapBoundary::Kind::pitch_cone: return boundary_name(BoundaryKind::pitch_cone);
-    case MapBoundary::Kind::mirror_pitch_cone: return boundary_name(BoundaryKind::mirror_pitch_cone);
-    case MapBoundary::Kind::north_pole: return boundary_name(BoundaryKind::a2);
-    case MapBoundary::Kind::south_pole: return boundary_name(BoundaryKind::pi_minus_a2);
-    case MapBoundary::Kind::tangency: break;
-  }
-  return "tangency g = " + std::to_string(b.m) + " (stationary point " + std::to_string(b.label) + ")";
-}
-
-inline BoundaryEventKind event_kind(const MapBoundary& b) {
-  switch (b.kind) {
-    case MapBoundary::Kind::pitch_cone:
-    case MapBoundary::Kind::mirror_pitch_cone: return BoundaryEventKind::pitch_cone;
-    case MapBoundary::Kind::north_pole:
-    case MapBoundary::Kind::south_pole: return BoundaryEventKind::pole;
-    case MapBoundary::Kind::tangency: break;
-  }
-  return BoundaryEventKind::tangency;
-}
 
 inline std::vector<MapBoundary> boundaries_possibly_in(const TwistBox& box, const Ratio& n) {
   namespace d = boundary_enclosure_detail;

@@ -34,6 +34,7 @@
 #include "sphtroch/core/node.hpp"
 #include "sphtroch/core/types.hpp"
 #include "sphtroch/interval/krawczyk.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <Eigen/Dense>
 
@@ -43,20 +44,10 @@
 
 namespace sphtroch {
 
-/// Half-widths of a tolerance box, radians (0 fixes that parameter).
-struct ToleranceBox {
-  double da2 = 0, da3 = 0, dphase = 0;
-};
 
 /// How many times node_tolerance may halve the tolerance box where its test fails (<= 2^6 parts).
 constexpr int kNodeBoxCuts = 6;
 
-struct NodeTolerance {
-  Vector3d position = Vector3d::Zero();
-  std::optional<double> max_displacement;           // radians, proved; nothing if not proved
-  std::optional<Vector3d> d_da2, d_da3;             // nothing for a cusp or a tangency node
-  Vector3d d_dphase = Vector3d::Zero();
-};
 
 /// The tolerance of one crossing node (see header).
 inline NodeTolerance node_tolerance(const GearTrain& train, const Node& node, const ToleranceBox& box);

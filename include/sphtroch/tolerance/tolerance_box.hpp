@@ -24,6 +24,7 @@
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/tolerance/node_tolerance.hpp"
 #include "sphtroch/tolerance/topology_margin.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <array>
 #include <cmath>
@@ -32,33 +33,8 @@
 
 namespace sphtroch {
 
-/// The largest phase half-width (a whole turn).
-constexpr double kMaxPhaseTolerance = 6.283185307179586;
 
-/// Throws InvalidInput naming fields[k] unless each half-width is finite and >= 0, the box's a2 and
-/// a3 stay in [kMinCarrierTwist, pi - kMinCarrierTwist] and dphase <= kMaxPhaseTolerance.
-inline void check_tolerance_box(const GearTrain& train, const ToleranceBox& box,
-                                const std::array<std::string, 3>& fields = {"da2", "da3", "dphase"}) {
-  const double lo = kMinCarrierTwist, hi = Constants<double>::pi() - kMinCarrierTwist;
-  const std::string twist = "a half-width >= 0 radians that keeps the angle in [1e-6, pi - 1e-6]";
-  auto check = [&](double d, double centre, const std::string& field) {
-    if (!(std::isfinite(d) && d >= 0)) throw InvalidInput(field, number_text(d), "not a finite half-width >= 0", twist);
-    if (!(centre - d >= lo && centre + d <= hi))
-      throw InvalidInput(field, number_text(d), "the box leaves the trains' range (" + number_text(centre - d) + " .. " +
-                                                    number_text(centre + d) + ")", twist);
-  };
-  check(box.da2, train.a2(), fields[0]);
-  check(box.da3, train.a3(), fields[1]);
-  if (!(std::isfinite(box.dphase) && box.dphase >= 0 && box.dphase <= kMaxPhaseTolerance))
-    throw InvalidInput(fields[2], number_text(box.dphase), "outside the valid range", "a half-width in [0, 2 pi] radians");
-}
 
-/// What is proved about a tolerance box (see header).
-struct BoxTolerance {
-  TopologyMargin margin;
-  BoxTopology topology;
-  std::vector<NodeTolerance> nodes, cusps;  // in the order of the census given
-};
 
 /// The margin, the topology and the enclosures for the box about `train`, whose census is
 /// `nodes`, `cusps` (see header). Throws InvalidInput as check_tolerance_box.

@@ -2,7 +2,7 @@
 // within tolerances draw the census of its drawing?) and its formats: the result (the nominal
 // census, the box's topology, the certified margin, each node's enclosure and sensitivities, and
 // optionally a Monte Carlo run beside the proof), its JSON and its text. exact/tolerance_output.hpp
-// computes it (classify's census); the formats need no CGAL beyond the interval type.
+// computes it (classify's census); the result and its formats need no CGAL (tolerance_types.hpp).
 //
 //   sphtroch::ToleranceReport r = sphtroch::tolerance_report(train, {1e-3, 1e-3, 0.0});   // exact/
 //   const sphtroch::TrainText typed{"pi/3", "pi/2", "5/2"};
@@ -20,15 +20,12 @@
 // the Monte Carlo figures are what sampling saw, not bounds.
 #pragma once
 
-#if !defined(SPHTROCH_HAVE_INTERVAL)
-#error "sphtroch/tolerance/tolerance_report.hpp needs CGAL's headers: link the CMake target sphtroch::interval"
-#endif
 
 #include "sphtroch/census/node_json.hpp"
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/io/train_text.hpp"
-#include "sphtroch/tolerance/tolerance_box.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <nlohmann/json.hpp>
 

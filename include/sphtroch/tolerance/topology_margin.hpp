@@ -33,6 +33,7 @@
 #include "sphtroch/core/gear_train.hpp"
 #include "sphtroch/core/number_text.hpp"
 #include "sphtroch/tolerance/boundary_enclosure.hpp"
+#include "sphtroch/tolerance/tolerance_types.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -45,20 +46,7 @@
 
 namespace sphtroch {
 
-/// A boundary and a certified point of it: it meets the segment `at`.
-struct BoundaryWitness {
-  MapBoundary boundary;
-  TwistBox at;
-  double a2() const { return at.a2_mid(); }
-  double a3() const { return at.a3_mid(); }
-};
 
-struct TopologyMargin {
-  double lower = 0, upper = 0;             // radians: lower <= margin <= upper
-  std::optional<BoundaryWitness> nearest;  // a boundary point at L-infinity distance <= upper
-  bool converged = false;                  // upper - lower <= max(1e-9, 1e-6 upper)
-  std::size_t boxes = 0;                   // boxes examined
-};
 
 /// The most boxes topology_margin examines (~2-4 us each).
 constexpr std::size_t kMaxMarginBoxes = 200000;
@@ -70,14 +58,6 @@ constexpr std::size_t kMaxTopologyBoxes = 50000;
 /// The certified margin of the train (see header).
 inline TopologyMargin topology_margin(const GearTrain& train);
 
-struct BoxTopology {
-  enum class Verdict { holds, changes, undecided };
-  Verdict verdict = Verdict::undecided;
-  std::optional<BoundaryWitness> event;  // changes: a boundary point inside the box
-  std::string why;                       // undecided: the reason
-  std::size_t boxes = 0;
-};
-inline const char* to_string(BoxTopology::Verdict v);
 
 /// Whether every train with a2 in [a2 - da2, a2 + da2] and a3 in [a3 - da3, a3 + da3] has the
 /// census of `train` (see header). Throws InvalidInput("tol_a2" / "tol_a3") unless the half-widths
@@ -197,14 +177,6 @@ inline TopologyMargin topology_margin(const GearTrain& train) {
   return r;
 }
 
-inline const char* to_string(BoxTopology::Verdict v) {
-  switch (v) {
-    case BoxTopology::Verdict::holds: return "holds";
-    case BoxTopology::Verdict::changes: return "changes";
-    case BoxTopology::Verdict::undecided: return "undecided";
-  }
-  return "?";
-}
 
 inline BoxTopology box_topology(const GearTrain& train, double da2, double da3) {
   namespace d = topology_margin_detail;
