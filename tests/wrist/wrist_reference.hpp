@@ -1,7 +1,8 @@
 // tests/wrist/wrist_reference.hpp — the wrist written again for the tests, independently of
 // include/sphtroch/wrist/: the frame as a product of Eigen AngleAxis rotations in long double, and
 // an inverse-kinematics count by a dense torus grid, Gauss-Newton and de-duplication (no
-// intervals, no Krawczyk).
+// intervals, no Krawczyk); the fold determinant det[P, dP/du_1, dP/du_2] by differentiating the
+// product of rotation matrices factor by factor (no angular velocities).
 #pragma once
 
 #include <Eigen/Dense>
@@ -79,6 +80,38 @@ struct WristModel {
     for (int j = 0; j < 2; ++j) jac.col(j) = omega[j].cross(p);
   }
 };
+
+/// det[P, dP/du_1, dP/du_2] of a 2-motor wrist in S: F = prod_i Rz(theta_i) Rx(A_i), dF/du_j =
+/// sum_i C_ij (prod_{i' < i} ...) Rz'(theta_i) Rx(A_i) (prod_{i' > i} ...), Rz' = d Rz / d theta,
+/// each product multiplied out; P = F a, dP/du_j = (dF/du_j) a.
+template <typename S>
+S fold_det(const WristModel& w, const S (&u)[2]) {
+  using M = Eigen::Matrix<S, 3, 3>;
+  using V = Eigen::Matrix<S, 3, 1>;
+  const std::size_t k = w.twist.size();
+  std::vector<M> rz(k), drz(k), rx(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    S theta = S(w.phase[i]);
+    for (std::size_t j = 0; j < 2; ++j) theta += S(w.coupling[i][j].first) * u[j] / S(w.coupling[i][j].second);
+    const S c = std::cos(theta), s = std::sin(theta), ca = std::cos(S(w.twist[i])), sa = std::sin(S(w.twist[i]));
+    rz[i] << c, -s, 0, s, c, 0, 0, 0, 1;
+    drz[i] << -s, -c, 0, c, -s, 0, 0, 0, 0;
+    rx[i] << 1, 0, 0, 0, ca, -sa, 0, sa, ca;
+  }
+  const V a = w.axis.cast<S>().normalized();
+  M f = M::Identity();
+  for (std::size_t i = 0; i < k; ++i) f = M(f * rz[i] * rx[i]);
+  V d[2] = {V::Zero(), V::Zero()};
+  for (std::size_t i = 0; i < k; ++i) {
+    M g = M::Identity();
+    for (std::size_t l = 0; l < k; ++l) g = M(g * (l == i ? drz[l] : rz[l]) * rx[l]);
+    const V dp = g * a;
+    for (std::size_t j = 0; j < 2; ++j) d[j] += (S(w.coupling[i][j].first) / S(w.coupling[i][j].second)) * dp;
+  }
+  M m;
+  m << f * a, d[0], d[1];
+  return m.determinant();
+}
 
 /// The pointing solutions of a 2-motor wrist counted without intervals: P on a grid of spacing
 /// h / sum_i |C_ij| per motor (computed once, in doubles); for a target t, Gauss-Newton on P(u) - t from every
