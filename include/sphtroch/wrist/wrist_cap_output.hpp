@@ -68,6 +68,7 @@ inline std::string wrist_cap_text(const Wrist& wrist, const Vector3d& home, cons
         << wrist_tuple_text({r.fold_motors[0], r.fold_motors[1]}) << " within " << number_text(r.fold_motor_radius) << "\n";
   if (r.home_on_fold) out << "home is on a fold (within " << number_text(r.upper) << " rad of one): the cap may be a point\n";
   if (r.count) out << "count inside the cap: " << *r.count << " (wrist ik at home, certified)\n";
+  else if (r.home_on_fold) out << "count inside the cap: none (home on a fold: wrist ik at home has a double root)\n";
   else out << "count inside the cap: not known (wrist ik at home is not certified)\n";
   if (!r.certified) out << "NOT certified: " << r.why << "\n";
   return out.str();
