@@ -1,11 +1,15 @@
-// sphtroch wrist ik, wrist cap — every inverse-kinematics solution of a geared spherical wrist with 2 motors
+// sphtroch wrist ik, wrist cap, wrist atlas — every inverse-kinematics solution of a geared spherical wrist with 2 motors
 // (pointing its tool axis) or 3 (holding a frame), each certified the only root in its box, the
 // list certified complete or exit 3 naming what is undecided (sphtroch/wrist/wrist_ik.hpp); text
 // or --json (sphtroch/wrist/wrist_ik_output.hpp); the largest cap about a home direction with no
 // fold of a 2-motor wrist inside, its radius a certified bracket, and the count inside it
-// (sphtroch/wrist/wrist_cap.hpp, wrist_cap_output.hpp). CGAL's interval headers only (sphtroch::interval).
+// (sphtroch/wrist/wrist_cap.hpp, wrist_cap_output.hpp); the critical curve enclosed in cells and
+// the fold polylines (sphtroch/wrist/wrist_atlas.hpp, wrist_atlas_output.hpp). CGAL's interval headers only (sphtroch::interval).
 #include "cli_common.hpp"
 
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/wrist/wrist_atlas.hpp"
+#include "sphtroch/wrist/wrist_atlas_output.hpp"
 #include "sphtroch/wrist/wrist_cap.hpp"
 #include "sphtroch/wrist/wrist_cap_output.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
@@ -20,7 +24,7 @@ namespace {
 
 struct WristIkOptions {
   WristText wrist;
-  std::string output;
+  std::string output, width;
   bool json = false;
 };
 
@@ -72,10 +76,43 @@ void register_wrist_cap(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action
   actions.emplace_back(cmd, [o] { run_wrist_cap(*o); });
 }
 
+/// --width as typed: a finite number ("" = the default); its range is wrist_fold_atlas's.
+double atlas_width(const std::string& text) {
+  if (text.empty()) return kWristAtlasDefaultWidth;
+  const std::optional<double> w = detail::strict_double(detail::trim(text));
+  if (!w) throw InvalidInput("width", text, "not a finite number", "radians of joint motion per cell, 0.001 to 1 (default 0.05)");
+  return *w;
+}
+
+void run_wrist_atlas(const WristIkOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {});
+  const Wrist wrist = o.wrist.wrist();
+  const WristAtlasResult r = wrist_fold_atlas(wrist, atlas_width(o.width));  // refuses bad input and cost before any output
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << wrist_atlas_json(wrist, r).dump(2) << "\n";
+    else out << wrist_atlas_text(wrist, r);
+  });
+  if (!r.certified) throw UncertifiedResult{"wrist atlas: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
+}
+
+void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<WristIkOptions>();
+  CLI::App* cmd = wrist.add_subcommand("atlas", "the critical curve det = 0 on the motor torus (2 motors), certified cells, and the fold polylines");
+  add_wrist_options(*cmd, o->wrist);
+  cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
+  cmd->add_flag("--json", o->json, "print one JSON object instead of text");
+  add_output_option(*cmd, o->output, "the report");
+  cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"
+              "point proved in each by the Krawczyk test, and the fold set drawn as polylines through them; exit 3 when a\n"
+              "cell has no proved point. 2 motors only (docs/wrists.md).\n"
+              "Example: sphtroch wrist atlas --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --json");
+  actions.emplace_back(cmd, [o] { run_wrist_atlas(*o); });
+}
+
 }  // namespace
 
 void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
-  CLI::App* wrist = app.add_subcommand("wrist", "a geared spherical wrist with 2 or 3 motors: its inverse kinematics (wrist ik), its fold-free cap about home (wrist cap)");
+  CLI::App* wrist = app.add_subcommand("wrist", "a geared spherical wrist with 2 or 3 motors: its inverse kinematics (wrist ik), its fold-free cap about home (wrist cap), its fold curve (wrist atlas)");
   wrist->require_subcommand(1);
   auto o = std::make_shared<WristIkOptions>();
   CLI::App* cmd = wrist->add_subcommand("ik", "every motor-angle solution pointing the tool (2 motors) or holding a frame (3), certified");
@@ -93,6 +130,7 @@ void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
               "Example: sphtroch wrist ik --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --target 0.6,0,0.8 --json");
   actions.emplace_back(cmd, [o] { run_wrist_ik(*o); });
   register_wrist_cap(*wrist, actions);
+  register_wrist_atlas(*wrist, actions);
 }
 
 }  // namespace sphtroch::cli

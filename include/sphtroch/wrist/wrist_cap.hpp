@@ -84,16 +84,18 @@ inline Interval meet(const Interval& a, const Interval& b) {
   return lo <= hi ? Interval(lo, hi) : a;
 }
 
+}  // namespace wrist_cap_detail
+
 /// The angle between unit vectors whose squared chord is q, 2 atan(sqrt(q / (4 - q))): a value
 /// below it for q = q_lo (0 for q_lo <= 0) and above it for q = q_hi (pi, raised, for q_hi >= 4).
 /// REQUIRES rounding upward.
-inline double angle_below(double q_lo) {
+inline double wrist_chord_angle_below(double q_lo) {
   if (!(q_lo > 0)) return 0.0;
   const Interval q(q_lo), gap = 4.0 - q;
   if (!(gap.inf() > 0)) return 3.141592653589793;  // below pi
   return std::max(0.0, (2.0 * interval_atan(CGAL::sqrt(q / gap))).inf());
 }
-inline double angle_above(double q_hi) {
+inline double wrist_chord_angle_above(double q_hi) {
   const double pi_up = 3.1415926535897936;  // above pi
   if (!(q_hi > 0)) return 0.0;
   const Interval q(q_hi), gap = 4.0 - q;
@@ -101,7 +103,6 @@ inline double angle_above(double q_hi) {
   return std::min(pi_up, (2.0 * interval_atan(CGAL::sqrt(q / gap))).sup());
 }
 
-}  // namespace wrist_cap_detail
 
 /// The search of one wrist and home (see header). REQUIRES a 2-motor wrist, home finite and not 0
 /// (normalised). run() in any rounding mode, once.
@@ -182,7 +183,7 @@ class WristCapSearch {
       const Interval lagrange = combined_mean_value<2, 2>({1.0, -lambda}, {qc, vc.det}, {gx.data(), vx.det_gradient.data()}, dx.data());
       q_lo = std::max(q_lo, lagrange.inf());
     }
-    const double lower = wrist_cap_detail::angle_below(q_lo);
+    const double lower = wrist_chord_angle_below(q_lo);
     if (lower > best_hi_) return std::nullopt;
     return Item{lower, x};
   }
@@ -236,10 +237,10 @@ class WristCapSearch {
     const std::optional<Box> proved = critical_.fold_point_at(c, d, *t);
     if (!proved) return;
     const Interval q = chord(critical_.over(*proved)).first;
-    const double hi = wrist_cap_detail::angle_above(q.sup());
+    const double hi = wrist_chord_angle_above(q.sup());
     if (hi >= best_hi_) return;
     best_hi_ = hi;
-    best_lo_ = wrist_cap_detail::angle_below(q.inf());
+    best_lo_ = wrist_chord_angle_below(q.inf());
     best_box_ = *proved;
     found_ = true;
   }
