@@ -74,28 +74,35 @@ class WristCritical {
     return fold_point_at(c, d, *t);
   }
 
-  /// Newton's iterates on psi(t) = D(c + t d) from 0 (at most 12), when they settle (|step| <
-  /// 1e-14 (1 + |t|)) within |t| |d|_inf <= reach: an estimate in doubles, proved by fold_point_at.
+  /// Newton's iterates on psi(t) = D(c + t d) from 0 (at most 12) within |t| |d|_inf <= reach, when
+  /// they settle: a step below 1e-13 (1 + |t| |d|_inf) radians of motor, or below 1e-9 after the
+  /// last (the rounding of D, ~1e-16 / |grad D|, may keep them from settling further). An estimate in
+  /// doubles, proved by fold_point_at.
   std::optional<double> line_root(const PointN<2>& c, const PointN<2>& d, double reach) const {
     const double dn = std::max(std::fabs(d[0]), std::fabs(d[1]));
     if (!(dn > 0) || !std::isfinite(dn)) return std::nullopt;
-    double t = 0;
+    double t = 0, moved = 1;
     for (int it = 0; it < 12; ++it) {
       const WristFoldValue<double> v = at({c[0] + t * d[0], c[1] + t * d[1]});
       const double step = v.det / (v.det_gradient[0] * d[0] + v.det_gradient[1] * d[1]);
       if (!std::isfinite(step)) return std::nullopt;
       t -= step;
+      moved = std::fabs(step) * dn;
       if (!(std::fabs(t) * dn <= reach)) return std::nullopt;
-      if (std::fabs(step) < 1e-14 * (1 + std::fabs(t))) return t;
+      if (moved < 1e-13 * (1 + std::fabs(t) * dn)) return t;
     }
+    if (moved < 1e-9) return t;
     return std::nullopt;
   }
 
-  /// The Krawczyk step (N = 1) on psi over [t - r, t + r], r = 1e-9 max(1, |t|), 1.25e-10 ..., down
-  /// to 1e-15: the box c + K d holding a root of psi (D = 0 there), or nothing. REQUIRES rounding upward.
+  /// The Krawczyk step (N = 1) on psi over [t - r, t + r], r |d|_inf = 1e-8 max(1, |t| |d|_inf),
+  /// 1/8 of it, ..., down to r = 1e-15 max(1, |t|): the box c + K d holding a root of psi (D = 0
+  /// there), or nothing. REQUIRES rounding upward.
   std::optional<IntervalBox<2>> fold_point_at(const PointN<2>& c, const PointN<2>& d, double t) const {
-    const double first = 1e-9 * std::max(1.0, std::fabs(t));
-    return epsilon_inflation(first, 1.0 / 8, 1e-15, [&](double r) -> std::optional<IntervalBox<2>> {
+    const double dn = std::max(std::fabs(d[0]), std::fabs(d[1]));
+    if (!(dn > 0) || !std::isfinite(dn)) return std::nullopt;
+    const double first = 1e-8 * std::max(1.0, std::fabs(t) * dn) / dn;
+    return epsilon_inflation(first, 1.0 / 8, 1e-15 * std::max(1.0, std::fabs(t)), [&](double r) -> std::optional<IntervalBox<2>> {
       const Interval tt(t - r, t + r);
       const WristFoldValue<Interval> vt = over(along(c, d, tt)), vy = over(along(c, d, Interval(t)));
       const IntervalMatrix<1> jx{{{vt.det_gradient[0] * d[0] + vt.det_gradient[1] * d[1]}}};
