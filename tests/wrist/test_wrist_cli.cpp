@@ -5,6 +5,7 @@
 // coupling, rows != k, a zero denominator, a non-unit target, NaN, a problem beyond the cost bound).
 // `sphtroch wrist cap`: the JSON's fields against the base x gear train's fold circle, the text,
 // home on a fold (radius 0, said), and its refusals (--home not unit, NaN, missing; 3 motors; cost).
+// `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -169,5 +170,45 @@ TEST_CASE("wrist cap: bad input exits 2 with one line naming the option and noth
     CHECK(r.out.empty());
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, option));
+  }
+}
+
+TEST_CASE("wrist atlas --json: the base x gear train wrist's fold polylines on its circles, and refusals", "[wrist][cli]") {
+  TempDir dir;
+  const Result r = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1 --json", dir);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == true);
+  CHECK(j["cells_without_point"] == 0);
+  CHECK(j["cell_width"].get<double>() <= 0.1);
+  CHECK(j["enclosure"].get<double>() > 0);
+  REQUIRE(j["polylines"].size() == 4);  // n u2 = 0, pi, 2 pi, 3 pi
+  for (const auto& l : j["polylines"]) {
+    CHECK(l["closed"] == true);
+    CHECK(l["points"].size() == l["motors"].size());
+    for (const auto& p : l["points"]) {
+      const double z = p[2].get<double>();
+      CHECK(std::min(std::fabs(z - std::cos(0.5)), std::fabs(z - std::cos(1.5))) < 1e-12);
+    }
+  }
+  REQUIRE(!j["cells"].empty());
+  CHECK(j["cells"][0]["motors"].size() == 2);
+  CHECK(j["cells"][0]["image"].size() == 3);
+  CHECK(j["wrist"]["periods"].size() == 2);
+  const Result text = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1", dir);
+  CHECK(text.status == 0);
+  CHECK(contains(text.out, "fold polylines: 4"));
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0", "--width"},
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width abc", "--width"},
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width nan", "--width"},
+           {"--twists 1,1,1 --coupling '1,0,0;0,1,0;0,0,1'", "--coupling"}}) {
+    const Result bad = run("wrist atlas " + args, dir);
+    INFO(args << "\n" << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+    CHECK(contains(bad.err, option));
   }
 }

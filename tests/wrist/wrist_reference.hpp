@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -111,6 +112,38 @@ S fold_det(const WristModel& w, const S (&u)[2]) {
   M m;
   m << f * a, d[0], d[1];
   return m.determinant();
+}
+
+/// The points of a dense grid's edges (spacing h radians of joint motion per motor, wrapping round
+/// the torus) where fold_det changes sign, each bisected 60 times along its edge: (u_1, u_2), motor
+/// j in [0, T_j).
+inline std::vector<std::array<long double, 2>> fold_sign_changes(const WristModel& m, double h) {
+  std::size_t n[2];
+  for (std::size_t j = 0; j < 2; ++j) n[j] = static_cast<std::size_t>(std::ceil(double(m.period(j)) * m.speed(j) / h));
+  const auto at = [&](double a, double b) {
+    const double u[2] = {double(m.period(0)) * a / double(n[0]), double(m.period(1)) * b / double(n[1])};
+    return fold_det<double>(m, u);
+  };
+  std::vector<double> det(n[0] * n[1]);
+  for (std::size_t a = 0; a < n[0]; ++a)
+    for (std::size_t b = 0; b < n[1]; ++b) det[a * n[1] + b] = at(double(a), double(b));
+  std::vector<std::array<long double, 2>> out;
+  for (std::size_t a = 0; a < n[0]; ++a)
+    for (std::size_t b = 0; b < n[1]; ++b)
+      for (int dir = 0; dir < 2; ++dir) {
+        const double d0 = det[a * n[1] + b];
+        const double d1 = dir == 0 ? det[((a + 1) % n[0]) * n[1] + b] : det[a * n[1] + (b + 1) % n[1]];
+        if ((d0 > 0) == (d1 > 0)) continue;
+        double lo = 0, hi = 1;  // along the edge, det's sign at lo is d0's
+        for (int it = 0; it < 60; ++it) {
+          const double t = 0.5 * (lo + hi);
+          const double d = dir == 0 ? at(double(a) + t, double(b)) : at(double(a), double(b) + t);
+          ((d > 0) == (d0 > 0) ? lo : hi) = t;
+        }
+        const double t = 0.5 * (lo + hi);
+        out.push_back({m.period(0) * (double(a) + (dir == 0 ? t : 0)) / n[0], m.period(1) * (double(b) + (dir == 1 ? t : 0)) / n[1]});
+      }
+  return out;
 }
 
 /// The pointing solutions of a 2-motor wrist counted without intervals: P on a grid of spacing

@@ -5,12 +5,16 @@
 // sign change of det[P, dP/du1, dP/du2] on a dense torus grid (tests/wrist/wrist_reference.hpp:
 // products of rotation matrices, bisection), its upper end at least their least distance minus
 // the grid's resolution, and the count is the grid and Gauss-Newton count at a random direction
-// inside the cap; the fold function's enclosure holds the reference determinant's sign.
+// inside the cap; the fold function's enclosure holds the reference determinant's sign. The fold
+// atlas (wrist_atlas.hpp): the base x gear train's critical curve is the 2 |p| lines n u2 = k pi,
+// each a closed polyline whose points lie on the circles; on random wrists every grid sign change
+// lies in a listed cell, within the enclosure of that cell's point, and every point has det ~ 0.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "wrist/wrist_reference.hpp"
 
 #include "sphtroch/wrist/wrist.hpp"
+#include "sphtroch/wrist/wrist_atlas.hpp"
 #include "sphtroch/wrist/wrist_cap.hpp"
 #include "sphtroch/wrist/wrist_critical.hpp"
 
@@ -25,6 +29,7 @@ using namespace sphtroch;
 using namespace sphtroch::test;
 
 constexpr double kPi = 3.141592653589793;
+constexpr long double kPiL = 3.141592653589793238462643383279502884L;
 
 Wrist cap_wrist(const WristModel& m) {
   std::vector<WristJoint> joints;
@@ -70,37 +75,10 @@ Eigen::Vector3d random_unit(std::mt19937& rng) {
   return v.normalized();
 }
 
-/// The fold points of a dense grid: every grid edge (spacing h radians of joint motion per motor,
-/// wrapping round the torus) where fold_det changes sign, bisected 60 times; their angles from home.
+/// The angles from home to the fold points of a dense grid (wrist_reference.hpp's fold_sign_changes).
 std::vector<long double> grid_fold_angles(const WristModel& m, double h, const Eigen::Vector3d& home) {
-  std::size_t n[2];
-  for (std::size_t j = 0; j < 2; ++j) n[j] = static_cast<std::size_t>(std::ceil(double(m.period(j)) * m.speed(j) / h));
-  const auto at = [&](double a, double b) {
-    const double u[2] = {double(m.period(0)) * a / double(n[0]), double(m.period(1)) * b / double(n[1])};
-    return fold_det<double>(m, u);
-  };
-  std::vector<double> det(n[0] * n[1]);
-  for (std::size_t a = 0; a < n[0]; ++a)
-    for (std::size_t b = 0; b < n[1]; ++b) det[a * n[1] + b] = at(double(a), double(b));
-  const Vec3L hl = home.cast<long double>();
   std::vector<long double> out;
-  for (std::size_t a = 0; a < n[0]; ++a)
-    for (std::size_t b = 0; b < n[1]; ++b)
-      for (int dir = 0; dir < 2; ++dir) {
-        const double d0 = det[a * n[1] + b];
-        const double d1 = dir == 0 ? det[((a + 1) % n[0]) * n[1] + b] : det[a * n[1] + (b + 1) % n[1]];
-        if ((d0 > 0) == (d1 > 0)) continue;
-        double lo = 0, hi = 1;  // along the edge, det's sign at lo is d0's
-        for (int it = 0; it < 60; ++it) {
-          const double t = 0.5 * (lo + hi);
-          const double d = dir == 0 ? at(double(a) + t, double(b)) : at(double(a), double(b) + t);
-          ((d > 0) == (d0 > 0) ? lo : hi) = t;
-        }
-        const double t = 0.5 * (lo + hi);
-        const long double ua = (long double)m.period(0) * (double(a) + (dir == 0 ? t : 0)) / n[0];
-        const long double ub = (long double)m.period(1) * (double(b) + (dir == 1 ? t : 0)) / n[1];
-        out.push_back(angle_between(m.point({ua, ub}), hl));
-      }
+  for (const auto& u : fold_sign_changes(m, h)) out.push_back(angle_between(m.point({u[0], u[1]}), home.cast<long double>()));
   return out;
 }
 
@@ -206,4 +184,83 @@ TEST_CASE("wrist cap: refusals (3 motors, a home not unit, beyond the cost bound
   const Wrist costly({{1.0, 0.0}, {1.0, 0.0}, {1.0, 0.0}},
                      {{ChainRate(5), ChainRate(1, 1000)}, {ChainRate(3), ChainRate(999, 1000)}, {ChainRate(1), ChainRate(7)}});
   CHECK_THROWS_WITH(wrist_cap(costly, Eigen::Vector3d::UnitZ()), Catch::Contains("start boxes"));
+}
+
+namespace {
+
+/// The index of a cell holding u (motors moved by whole periods into the cells' ranges), or -1.
+long cell_holding(const WristAtlasResult& r, const std::array<long double, 2>& u) {
+  for (std::size_t i = 0; i < r.cells.size(); ++i) {
+    bool in = true;
+    for (std::size_t j = 0; j < 2 && in; ++j) {
+      const auto& range = r.cells[i].motors[j];
+      long double v = u[j] - r.periods[j] * std::floor((u[j] - range[0]) / r.periods[j]);  // in [lo, lo + T)
+      in = v <= range[1] + 1e-12L || v >= range[0] + r.periods[j] - 1e-12L;
+    }
+    if (in) return long(i);
+  }
+  return -1;
+}
+
+}  // namespace
+
+TEST_CASE("wrist atlas: the base x gear train's critical curve is 2 |p| closed lines on the circles z = cos(a2 +- a3)", "[wrist][atlas]") {
+  struct Case {
+    double a2, a3;
+    int p, q;
+  };
+  for (const Case& c : std::vector<Case>{{1.0, 0.5, 2, 1}, {1.2, 0.4, -3, 2}, {2.0, 0.6, 1, 2}, {0.9, 0.7, -1, 1}}) {
+    const Wrist wrist({{0.0, 0.0}, {c.a2, 0.0}, {c.a3, 0.0}},
+                      {{ChainRate(1), ChainRate(0)}, {ChainRate(0), ChainRate(1)}, {ChainRate(0), ChainRate(c.p, c.q)}});
+    const WristAtlasResult r = wrist_fold_atlas(wrist, 0.05);
+    INFO("a2 " << c.a2 << " a3 " << c.a3 << " n " << c.p << "/" << c.q << " " << r.why);
+    CHECK(r.certified);
+    CHECK(r.polylines.size() == std::size_t(2 * std::abs(c.p)));
+    for (const WristFoldPolyline& l : r.polylines) CHECK(l.closed);
+    for (const WristFoldCell& cell : r.cells) {
+      REQUIRE(cell.has_point);
+      CHECK(std::min(std::fabs(cell.point[2] - std::cos(c.a2 - c.a3)), std::fabs(cell.point[2] - std::cos(c.a2 + c.a3))) < 1e-12);
+    }
+    // Every point of the lines n u2 = k pi (u2 = k pi q / p) lies in a cell.
+    const WristModel m{{0.0, c.a2, c.a3}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {c.p, c.q}}}};
+    std::size_t missing = 0;
+    for (int k = 0; k < 2 * std::abs(c.p); ++k)
+      for (int s = 0; s < 200; ++s) {
+        const std::array<long double, 2> u{m.period(0) * (s + 0.37L) / 200, kPiL * k * c.q / std::abs(c.p)};
+        if (cell_holding(r, u) < 0) ++missing;
+      }
+    CHECK(missing == 0);
+  }
+}
+
+TEST_CASE("wrist atlas: random 2-motor wrists: every grid sign change of the reference determinant is enclosed", "[wrist][atlas]") {
+  std::mt19937 rng(1961);
+  std::size_t certified = 0;
+  const int wrists = 12;
+  for (int mechanism = 0; mechanism < wrists; ++mechanism) {
+    const WristModel m = random_cap_wrist(rng, 120);
+    const Wrist wrist = cap_wrist(m);
+    const WristAtlasResult r = wrist_fold_atlas(wrist, 0.05);
+    INFO("wrist " << mechanism << " coupling " << wrist.coupling_text() << " twists " << wrist.twists_text() << ": " << r.why);
+    if (r.certified) ++certified;
+    for (const WristFoldCell& cell : r.cells) {
+      if (!cell.has_point) continue;
+      const double u[2] = {cell.point_motors[0], cell.point_motors[1]};
+      CHECK(std::fabs(fold_det<double>(m, u)) < 1e-9);
+      CHECK(double(angle_between(m.point({u[0], u[1]}), Vec3L(cell.point[0], cell.point[1], cell.point[2]))) < 1e-12);
+    }
+    std::size_t outside = 0, beyond = 0;
+    for (const auto& u : fold_sign_changes(m, 0.02)) {
+      const long i = cell_holding(r, u);
+      if (i < 0) {
+        ++outside;
+        continue;
+      }
+      const WristFoldCell& cell = r.cells[std::size_t(i)];
+      if (r.certified && angle_between(m.point({u[0], u[1]}), Vec3L(cell.point[0], cell.point[1], cell.point[2])) > r.enclosure + 1e-9) ++beyond;
+    }
+    CHECK(outside == 0);
+    CHECK(beyond == 0);
+  }
+  CHECK(certified >= wrists - 1);
 }
