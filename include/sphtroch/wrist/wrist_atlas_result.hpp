@@ -4,7 +4,9 @@
 // those points.
 //
 //   sphtroch::WristAtlasResult r;           // filled by sphtroch::wrist_fold_atlas (wrist_atlas.hpp)
-//   r.cells.push_back({{{0.0, 0.05}, {1.5, 1.55}}, {{{0.4, 0.5}, {0.0, 0.05}, {0.87, 0.88}}}, true, {0.47, 0.02, 0.878}, {0.02, 1.5708}});
+//   sphtroch::WristFoldCell cell;
+//   cell.motors = {{{0.0, 0.05}, {1.5, 1.55}}};   // motor 1 in [0, 0.05], motor 2 in [1.5, 1.55]
+//   r.cells.push_back(cell);
 //   r.cells.front().motors[1][0];           // motor 2's lower end, radians
 //
 // No dependency: the front ends (the tool's text and JSON, wrist_atlas_output.hpp) read it without
