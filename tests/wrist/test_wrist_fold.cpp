@@ -92,7 +92,8 @@ TEST_CASE("wrist cap: the base x gear train wrist's radius is the polar distance
   };
   const std::vector<Case> cases{{1.0, 0.5, 2, 1, 0.6435, 0.0},  {1.0, 0.5, -3, 2, 1.2, 2.0},   {1.2, 0.4, 3, 1, 0.2, -1.0},
                                 {0.9, 0.7, -1, 1, 1.3, 0.5},    {2.0, 0.6, 5, 3, 2.0, 3.0},    {0.6, 1.1, 1, 2, 2.5, 1.0},
-                                {1.5, 1.4, -2, 3, 0.05, -2.5},  {2.4, 0.3, 4, 1, 2.75, 0.3}};
+                                {1.5, 1.4, -2, 3, 0.05, -2.5},  {2.4, 0.3, 4, 1, 2.75, 0.3},
+                                {1.0, 0.5, -3, 2, 0.0, 0.0},    {0.6, 1.1, 5, 2, 0.0, 0.0}};  // home on the axis: whole circles nearest
   for (const Case& c : cases) {
     const Wrist wrist({{0.0, 0.0}, {c.a2, 0.0}, {c.a3, 0.0}},
                       {{ChainRate(1), ChainRate(0)}, {ChainRate(0), ChainRate(1)}, {ChainRate(0), ChainRate(c.p, c.q)}});
@@ -148,6 +149,32 @@ TEST_CASE("wrist cap: random 2-motor wrists against the grid's sign changes of t
   }
   CHECK(certified >= wrists - 2);  // a degenerate fold (a whole arc at the nearest distance) may stop one
   CHECK(counted >= wrists - 3);
+}
+
+TEST_CASE("wrist cap: a base motor and home on its axis: the grid's sign changes on the whole torus agree", "[wrist][cap]") {
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> num(1, 5), den(1, 5);
+  for (int mechanism = 0; mechanism < 8; ++mechanism) {
+    WristModel m = random_cap_wrist(rng, 120);
+    m.coupling[0][0] = {mechanism % 2 == 0 ? num(rng) : -num(rng), den(rng)};  // motor 1 turns the first joint only
+    for (std::size_t i = 1; i < m.coupling.size(); ++i) m.coupling[i][0] = {0, 1};
+    bool rank_two = false;
+    for (std::size_t i = 1; i < m.coupling.size(); ++i) rank_two = rank_two || m.coupling[i][1].first != 0;
+    if (!rank_two) m.coupling[1][1] = {1, 1};
+    const Wrist wrist = cap_wrist(m);
+    const Eigen::Vector3d home(0, 0, mechanism % 3 == 0 ? -1.0 : 1.0);
+    const WristCapResult r = wrist_cap(wrist, home, 400000);
+    const std::vector<long double> angles = grid_fold_angles(m, 0.02, home);
+    REQUIRE(!angles.empty());
+    const double least = double(*std::min_element(angles.begin(), angles.end()));
+    INFO("wrist " << mechanism << " coupling " << wrist.coupling_text() << " twists " << wrist.twists_text() << ": [" << r.lower << ", "
+                  << r.upper << "] grid least " << least << " " << r.why);
+    CHECK(r.radius_certified);
+    CHECK(r.upper - r.lower <= 1e-9);
+    CHECK(r.lower <= least + 1e-12);
+    CHECK(r.upper >= least - 2.01 * 0.02);
+    CHECK(r.boxes < 100000);  // one-dimensional: no whole circle to tile
+  }
 }
 
 TEST_CASE("wrist critical: D's enclosure holds the reference determinant's sign, and proved fold points are on it", "[wrist][cap]") {

@@ -24,7 +24,10 @@
 // on the fold: from the centre of each box taken, Newton along grad D in doubles, then the Krawczyk
 // step of interval/krawczyk.hpp on that line (WristCritical::fold_point_at); the angle to the box
 // it proves, rounded up. The box of least lower bound is taken next; the search stops when the best
-// upper bound is within kWristCapWidth of it.
+// upper bound is within kWristCapWidth of it. A motor that turns the first joint only, with home
+// on the z axis (exactly), changes neither D nor the angle (P(u) = Rz(C_1j u_j) P(u with u_j = 0)):
+// that motor is held at 0 and the search is one-dimensional (a whole fold circle about home would
+// otherwise lie at the nearest distance along its length).
 // Guarantee: the nearest fold point is at an angle in [lower, upper] from home (radians); when
 // radius_certified, upper - lower <= kWristCapWidth. count: wrist_ik's certified count at home.
 // Cost: refused up front like wrist_ik (check_wrist_ik_cost: InvalidInput "coupling" beyond
@@ -127,7 +130,18 @@ class WristCapSearch {
       lo_[j] = -kWristStartOffset * periods_[j];
       hi_[j] = lo_[j] + period_[j].sup();
       pieces_[j] = static_cast<std::size_t>(std::max(1.0, std::ceil(periods_[j] * scale_[j] / kWristStartWidth)));
+      about_axis_[j] = turns_first_joint_only(wrist, j) && h.x() == 0 && h.y() == 0;
+      if (about_axis_[j]) pieces_[j] = 1;
     }
+  }
+
+  /// Whether motor j turns the first joint only: then P(u) = Rz(C_1j u_j) P(u with u_j = 0) and D
+  /// does not depend on u_j (omega_j = C_1j z is fixed by Rz), and neither does the angle to a home
+  /// on the z axis: the search runs on u_j = 0 alone.
+  static bool turns_first_joint_only(const Wrist& wrist, std::size_t j) {
+    for (std::size_t i = 1; i < wrist.joints(); ++i)
+      if (!wrist.coupling(i, j).is_zero()) return false;
+    return true;
   }
 
   WristCapResult run() {
@@ -198,6 +212,7 @@ class WristCapSearch {
       }
   }
   Interval piece(std::size_t j, std::size_t a) const {
+    if (about_axis_[j]) return Interval(0.0);
     const double step = (hi_[j] - lo_[j]) / static_cast<double>(pieces_[j]);
     const double from = a == 0 ? lo_[j] : lo_[j] + step * static_cast<double>(a);
     const double to = a + 1 == pieces_[j] ? hi_[j] : lo_[j] + step * static_cast<double>(a + 1);
@@ -285,6 +300,7 @@ class WristCapSearch {
   std::array<double, 2> scale_{}, periods_{}, lo_{}, hi_{};
   std::array<Interval, 2> period_;
   std::array<std::size_t, 2> pieces_{};
+  std::array<bool, 2> about_axis_{};
   std::priority_queue<Item, std::vector<Item>, wrist_cap_detail::LeastLowerFirst> queue_;
   double best_hi_ = 3.1415926535897936, best_lo_ = 3.1415926535897936;
   Box best_box_;
