@@ -177,6 +177,21 @@ TEST_CASE("wrist cap: a base motor and home on its axis: the grid's sign changes
   }
 }
 
+TEST_CASE("wrist cap: a search stopped at its budget keeps a valid bracket and says why", "[wrist][cap]") {
+  const Wrist wrist({{0.0, 0.0}, {1.0, 0.0}, {0.5, 0.0}}, {{ChainRate(1), ChainRate(0)}, {ChainRate(0), ChainRate(1)}, {ChainRate(0), ChainRate(2)}});
+  const double polar = 0.9;  // the fold z = cos 1.5 is nearest: 0.6 away
+  const WristCapResult r = wrist_cap(wrist, Eigen::Vector3d(std::sin(polar), 0, std::cos(polar)), 60);
+  INFO("[" << r.lower << ", " << r.upper << "] " << r.why);
+  CHECK(!r.radius_certified);
+  CHECK(!r.certified);
+  CHECK(r.why.find("budget") != std::string::npos);
+  CHECK(r.lower <= 0.6 + 1e-15);
+  CHECK(r.upper >= 0.6 - 1e-15);
+  CHECK(r.upper - r.lower > 1e-9);
+  REQUIRE(r.count);
+  CHECK(*r.count == 4);  // the count does not depend on the bracket
+}
+
 TEST_CASE("wrist critical: D's enclosure holds the reference determinant's sign, and proved fold points are on it", "[wrist][cap]") {
   std::mt19937 rng(17);
   for (int mechanism = 0; mechanism < 20; ++mechanism) {
