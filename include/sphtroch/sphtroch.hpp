@@ -4,7 +4,8 @@
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
 //     gear train, window means, the worst window mean, the time to epsilon, the report and its JSON),
-//     wrist/'s model, targets, typed options and reports (geared wrists with 2 or 3 motors).
+//     wrist/'s model, targets, typed options and reports, the cap's and the fold atlas's results and reports (geared
+//     wrists with 2 or 3 motors).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
 //   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains read
 //     from URDF; io/urdf_writer.hpp writes them without it).
@@ -14,7 +15,7 @@
 //     events' types and closed forms, is Eigen only), tolerance/ (the certified topology margin,
 //     box topology and node enclosures of a tolerance box), synthesis/'s precision points
 //     (fixed frame, free axis) and wrist/'s certified inverse kinematics (every solution on the
-//     motor torus).
+//     motor torus), fold function, fold-free cap about home and fold atlas.
 //   sphtroch::exact (CGAL, GMP, MPFR, nlohmann-json; defines SPHTROCH_HAVE_EXACT and links
 //     sphtroch::interval): adds exact/: the exact crossing search, the polyline census, classify(),
 //     the lazy Analysis, the classification output (text/JSON), scenes, and the reports of the
@@ -137,6 +138,10 @@
 #endif
 
 #include "sphtroch/wrist/wrist.hpp"
+#include "sphtroch/wrist/wrist_atlas_output.hpp"
+#include "sphtroch/wrist/wrist_atlas_result.hpp"
+#include "sphtroch/wrist/wrist_cap_output.hpp"
+#include "sphtroch/wrist/wrist_cap_result.hpp"
 #include "sphtroch/wrist/wrist_ik_output.hpp"
 #include "sphtroch/wrist/wrist_ik_result.hpp"
 #include "sphtroch/wrist/wrist_target.hpp"
@@ -161,6 +166,9 @@
 #include "sphtroch/tolerance/topology_margin.hpp"
 #include "sphtroch/synthesis/free_axis_points.hpp"
 #include "sphtroch/synthesis/precision_points.hpp"
+#include "sphtroch/wrist/wrist_atlas.hpp"
+#include "sphtroch/wrist/wrist_cap.hpp"
+#include "sphtroch/wrist/wrist_critical.hpp"
 #include "sphtroch/wrist/wrist_enclosure.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_search.hpp"

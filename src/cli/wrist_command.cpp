@@ -1,9 +1,17 @@
-// sphtroch wrist ik — every inverse-kinematics solution of a geared spherical wrist with 2 motors
+// sphtroch wrist ik, wrist cap, wrist atlas — every inverse-kinematics solution of a geared spherical wrist with 2 motors
 // (pointing its tool axis) or 3 (holding a frame), each certified the only root in its box, the
 // list certified complete or exit 3 naming what is undecided (sphtroch/wrist/wrist_ik.hpp); text
-// or --json (sphtroch/wrist/wrist_ik_output.hpp). CGAL's interval headers only (sphtroch::interval).
+// or --json (sphtroch/wrist/wrist_ik_output.hpp); the largest cap about a home direction with no
+// fold of a 2-motor wrist inside, its radius a certified bracket, and the count inside it
+// (sphtroch/wrist/wrist_cap.hpp, wrist_cap_output.hpp); the critical curve enclosed in cells and
+// the fold polylines (sphtroch/wrist/wrist_atlas.hpp, wrist_atlas_output.hpp). CGAL's interval headers only (sphtroch::interval).
 #include "cli_common.hpp"
 
+#include "sphtroch/io/parse.hpp"
+#include "sphtroch/wrist/wrist_atlas.hpp"
+#include "sphtroch/wrist/wrist_atlas_output.hpp"
+#include "sphtroch/wrist/wrist_cap.hpp"
+#include "sphtroch/wrist/wrist_cap_output.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_output.hpp"
 #include "sphtroch/wrist/wrist_text.hpp"
@@ -16,7 +24,7 @@ namespace {
 
 struct WristIkOptions {
   WristText wrist;
-  std::string output;
+  std::string output, width;
   bool json = false;
 };
 
@@ -33,17 +41,82 @@ void run_wrist_ik(const WristIkOptions& o) {
   if (!r.certified) throw UncertifiedResult{"wrist ik: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
 }
 
+void run_wrist_cap(const WristIkOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {});
+  const Wrist wrist = o.wrist.wrist();
+  const Vector3d home = o.wrist.home_direction();
+  const WristCapResult r = wrist_cap(wrist, home);  // refuses bad input and cost before any output
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << wrist_cap_json(wrist, home, r).dump(2) << "\n";
+    else out << wrist_cap_text(wrist, home, r);
+  });
+  if (!r.certified) throw UncertifiedResult{"wrist cap: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
+}
+
+/// The options every wrist subcommand shares: the wrist itself.
+void add_wrist_options(CLI::App& cmd, WristText& w) {
+  cmd.add_option("--twists", w.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2), k <= 6");
+  cmd.add_option("--coupling", w.coupling, "the k x m coupling by rows: \"c11,c12;c21,c22;...\", exact (p/q, decimals, 0), rank m");
+  cmd.add_option("--phases", w.phases, "P1,...,Pk: each joint's angle with every motor at 0, radians (default all 0)");
+  cmd.add_option("--axis", w.axis, "the tool axis X,Y,Z in the last body (default 0,0,1; pointing only)");
+}
+
+void register_wrist_cap(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<WristIkOptions>();
+  CLI::App* cmd = wrist.add_subcommand("cap", "the largest cap about a home direction with no fold inside (2 motors), certified, and its IK count");
+  add_wrist_options(*cmd, o->wrist);
+  cmd->add_option("--home", o->wrist.home, "X,Y,Z: the cap's centre, a unit vector");
+  cmd->add_flag("--json", o->json, "print one JSON object instead of text");
+  add_output_option(*cmd, o->output, "the report");
+  cmd->footer("The fold: det[P, dP/du1, dP/du2] = 0. The radius is the angle from home to the nearest fold point, a bracket\n"
+              "[lower, upper] of width <= 1e-9 rad (interval branch and bound, fold points proved by the Krawczyk test);\n"
+              "the count is wrist ik's at home. Exit 3 when the bracket or the count is not certified. 2 motors only;\n"
+              "refused up front when the torus needs more than " + number_text(kMaxWristStartBoxes) + " start boxes (docs/wrists.md).\n"
+              "Example: sphtroch wrist cap --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --home 0.6,0,0.8 --json");
+  actions.emplace_back(cmd, [o] { run_wrist_cap(*o); });
+}
+
+/// --width as typed: a finite number ("" = the default); its range is wrist_fold_atlas's.
+double atlas_width(const std::string& text) {
+  if (text.empty()) return kWristAtlasDefaultWidth;
+  const std::optional<double> w = detail::strict_double(detail::trim(text));
+  if (!w) throw InvalidInput("width", text, "not a finite number", "radians of joint motion per cell, 0.001 to 1 (default 0.05)");
+  return *w;
+}
+
+void run_wrist_atlas(const WristIkOptions& o) {
+  check_distinct_files({{o.output, "--output"}}, {});
+  const Wrist wrist = o.wrist.wrist();
+  const WristAtlasResult r = wrist_fold_atlas(wrist, atlas_width(o.width));  // refuses bad input and cost before any output
+  write_output(o.output, [&](std::ostream& out) {
+    if (o.json) out << wrist_atlas_json(wrist, r).dump(2) << "\n";
+    else out << wrist_atlas_text(wrist, r);
+  });
+  if (!r.certified) throw UncertifiedResult{"wrist atlas: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
+}
+
+void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action>>& actions) {
+  auto o = std::make_shared<WristIkOptions>();
+  CLI::App* cmd = wrist.add_subcommand("atlas", "the critical curve det = 0 on the motor torus (2 motors), certified cells, and the fold polylines");
+  add_wrist_options(*cmd, o->wrist);
+  cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
+  cmd->add_flag("--json", o->json, "print one JSON object instead of text");
+  add_output_option(*cmd, o->output, "the report");
+  cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"
+              "point proved in each by the Krawczyk test, and the fold set drawn as polylines through them; exit 3 when a\n"
+              "cell has no proved point. 2 motors only (docs/wrists.md).\n"
+              "Example: sphtroch wrist atlas --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --json");
+  actions.emplace_back(cmd, [o] { run_wrist_atlas(*o); });
+}
+
 }  // namespace
 
 void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& actions) {
-  CLI::App* wrist = app.add_subcommand("wrist", "a geared spherical wrist with 2 or 3 motors: its inverse kinematics (wrist ik)");
+  CLI::App* wrist = app.add_subcommand("wrist", "a geared spherical wrist with 2 or 3 motors: its inverse kinematics (wrist ik), its fold-free cap about home (wrist cap), its fold curve (wrist atlas)");
   wrist->require_subcommand(1);
   auto o = std::make_shared<WristIkOptions>();
   CLI::App* cmd = wrist->add_subcommand("ik", "every motor-angle solution pointing the tool (2 motors) or holding a frame (3), certified");
-  cmd->add_option("--twists", o->wrist.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2), k <= 6");
-  cmd->add_option("--coupling", o->wrist.coupling, "the k x m coupling by rows: \"c11,c12;c21,c22;...\", exact (p/q, decimals, 0), rank m");
-  cmd->add_option("--phases", o->wrist.phases, "P1,...,Pk: each joint's angle with every motor at 0, radians (default all 0)");
-  cmd->add_option("--axis", o->wrist.axis, "the tool axis X,Y,Z in the last body (default 0,0,1; pointing only)");
+  add_wrist_options(*cmd, o->wrist);
   cmd->add_option("--target", o->wrist.target, "X,Y,Z: point the tool axis along this unit vector (2 motors)");
   cmd->add_option("--target-frame", o->wrist.target_frame,
                   "hold this frame (3 motors): a unit quaternion w,x,y,z or a rotation matrix by rows (9 numbers)");
@@ -56,6 +129,8 @@ void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
               number_text(kMaxWristStartBoxes) + " start boxes (docs/wrists.md).\n"
               "Example: sphtroch wrist ik --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --target 0.6,0,0.8 --json");
   actions.emplace_back(cmd, [o] { run_wrist_ik(*o); });
+  register_wrist_cap(*wrist, actions);
+  register_wrist_atlas(*wrist, actions);
 }
 
 }  // namespace sphtroch::cli

@@ -3,10 +3,14 @@
 // long double says; the 3R wrist's two frames), the text report, exit 3 with one line on a fold,
 // and bad input: exit 2, one line on stderr naming the option, nothing on stdout (a rank-deficient
 // coupling, rows != k, a zero denominator, a non-unit target, NaN, a problem beyond the cost bound).
+// `sphtroch wrist cap`: the JSON's fields against the base x gear train's fold circle, the text,
+// home on a fold (radius 0, said), and its refusals (--home not unit, NaN, missing; 3 motors; cost).
+// `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "wrist/wrist_reference.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -101,4 +105,110 @@ TEST_CASE("wrist ik: bad input exits 2 with one line naming the option and nothi
   }
   const Result cost = run("wrist ik --twists 1,1,1 --coupling '5,1/1000;3,999/1000;1,7' --target 0,0,1", dir);
   CHECK(contains(cost.err, "start boxes"));
+}
+
+TEST_CASE("wrist cap --json: the base x gear train wrist's cap, its fold point and count", "[wrist][cli]") {
+  TempDir dir;
+  // Twists 0, 1, 0.5, n = 2; home at polar angle acos 0.8 ~ 0.6435: the fold z = cos 0.5 is nearest.
+  const Result r = run("wrist cap --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --home 0.6,0,0.8 --json", dir);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const double expected = std::acos(0.8L) - 0.5L;
+  CHECK(j["certified"] == true);
+  CHECK(j["home_on_fold"] == false);
+  CHECK(j["count"] == 4);
+  CHECK(j["radius"]["lower"].get<double>() <= expected);
+  CHECK(j["radius"]["upper"].get<double>() >= expected);
+  CHECK(j["radius"]["upper"].get<double>() - j["radius"]["lower"].get<double>() <= 1e-9);
+  CHECK(j["radius"]["width"].get<double>() <= 1e-9);
+  REQUIRE(j["nearest_fold_point"].size() == 3);
+  CHECK(std::fabs(j["nearest_fold_point"][2].get<double>() - std::cos(0.5)) < 1e-12);
+  const WristModel m{{0.0, 1.0, 0.5}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 1}}}};
+  const std::vector<long double> u = motors_of(j);
+  const Vec3L p = m.point(u), q(j["nearest_fold_point"][0].get<double>(), j["nearest_fold_point"][1].get<double>(),
+                                j["nearest_fold_point"][2].get<double>());
+  CHECK(double((p - q).norm()) < 1e-12);
+  CHECK(j["motors_radius"].get<double>() < 1e-12);
+  CHECK(j["wrist"]["periods"].size() == 2);
+  CHECK(j["certificate"]["why"] == "");
+  const Result text = run("wrist cap --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --home 0.6,0,0.8", dir);
+  CHECK(text.status == 0);
+  CHECK(contains(text.out, "cap radius: in ["));
+  CHECK(contains(text.out, "count inside the cap: 4"));
+}
+
+TEST_CASE("wrist cap: home on a fold has radius 0 and says so", "[wrist][cli]") {
+  TempDir dir;
+  // Twists pi/2, pi/4 (identity coupling): the fold circle z = cos(pi/4) passes through home.
+  const Result r = run("wrist cap --twists 1.5707963267948966,0.7853981633974483 --coupling '1,0;0,1' "
+                       "--home 0.7071067811865476,0,0.7071067811865476 --json", dir);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["home_on_fold"] == true);
+  CHECK(j["radius"]["lower"].get<double>() == 0.0);
+  CHECK(j["radius"]["upper"].get<double>() <= 1e-9);
+  const Result text = run("wrist cap --twists 1.5707963267948966,0.7853981633974483 --coupling '1,0;0,1' "
+                          "--home 0.7071067811865476,0,0.7071067811865476", dir);
+  CHECK(contains(text.out, "home is on a fold"));
+}
+
+TEST_CASE("wrist cap: bad input exits 2 with one line naming the option and nothing on stdout", "[wrist][cli]") {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --home 1,1,1", "--home"},        // not unit
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --home nan,0,1", "--home"},      // NaN
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2' --home 0,1", "--home"},          // two numbers
+      {"--twists 1,1,1 --coupling '1,0;0,1;0,2'", "--home"},                     // missing
+      {"--twists 1,1,1 --coupling '1,0,0;0,1,0;0,0,1' --home 0,0,1", "--coupling"},  // m = 3
+      {"--twists 1,1,1 --coupling '5,1/1000;3,999/1000;1,7' --home 0,0,1", "--coupling"},  // beyond the cost bound
+  };
+  for (const auto& [args, option] : cases) {
+    const Result r = run("wrist cap " + args, dir);
+    INFO(args << "\n" << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, option));
+  }
+}
+
+TEST_CASE("wrist atlas --json: the base x gear train wrist's fold polylines on its circles, and refusals", "[wrist][cli]") {
+  TempDir dir;
+  const Result r = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1 --json", dir);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == true);
+  CHECK(j["cells_without_point"] == 0);
+  CHECK(j["cell_width"].get<double>() <= 0.1);
+  CHECK(j["enclosure"].get<double>() > 0);
+  REQUIRE(j["polylines"].size() == 4);  // n u2 = 0, pi, 2 pi, 3 pi
+  for (const auto& l : j["polylines"]) {
+    CHECK(l["closed"] == true);
+    CHECK(l["points"].size() == l["motors"].size());
+    for (const auto& p : l["points"]) {
+      const double z = p[2].get<double>();
+      CHECK(std::min(std::fabs(z - std::cos(0.5)), std::fabs(z - std::cos(1.5))) < 1e-12);
+    }
+  }
+  REQUIRE(!j["cells"].empty());
+  CHECK(j["cells"][0]["motors"].size() == 2);
+  CHECK(j["cells"][0]["image"].size() == 3);
+  CHECK(j["wrist"]["periods"].size() == 2);
+  const Result text = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1", dir);
+  CHECK(text.status == 0);
+  CHECK(contains(text.out, "fold polylines: 4"));
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0", "--width"},
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width abc", "--width"},
+           {"--twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width nan", "--width"},
+           {"--twists 1,1,1 --coupling '1,0,0;0,1,0;0,0,1'", "--coupling"}}) {
+    const Result bad = run("wrist atlas " + args, dir);
+    INFO(args << "\n" << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+    CHECK(contains(bad.err, option));
+  }
 }

@@ -1,13 +1,15 @@
 // tests/wrist/wrist_reference.hpp — the wrist written again for the tests, independently of
 // include/sphtroch/wrist/: the frame as a product of Eigen AngleAxis rotations in long double, and
 // an inverse-kinematics count by a dense torus grid, Gauss-Newton and de-duplication (no
-// intervals, no Krawczyk).
+// intervals, no Krawczyk); the fold determinant det[P, dP/du_1, dP/du_2] by differentiating the
+// product of rotation matrices factor by factor (no angular velocities).
 #pragma once
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -79,6 +81,70 @@ struct WristModel {
     for (int j = 0; j < 2; ++j) jac.col(j) = omega[j].cross(p);
   }
 };
+
+/// det[P, dP/du_1, dP/du_2] of a 2-motor wrist in S: F = prod_i Rz(theta_i) Rx(A_i), dF/du_j =
+/// sum_i C_ij (prod_{i' < i} ...) Rz'(theta_i) Rx(A_i) (prod_{i' > i} ...), Rz' = d Rz / d theta,
+/// each product multiplied out; P = F a, dP/du_j = (dF/du_j) a.
+template <typename S>
+S fold_det(const WristModel& w, const S (&u)[2]) {
+  using M = Eigen::Matrix<S, 3, 3>;
+  using V = Eigen::Matrix<S, 3, 1>;
+  const std::size_t k = w.twist.size();
+  std::vector<M> rz(k), drz(k), rx(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    S theta = S(w.phase[i]);
+    for (std::size_t j = 0; j < 2; ++j) theta += S(w.coupling[i][j].first) * u[j] / S(w.coupling[i][j].second);
+    const S c = std::cos(theta), s = std::sin(theta), ca = std::cos(S(w.twist[i])), sa = std::sin(S(w.twist[i]));
+    rz[i] << c, -s, 0, s, c, 0, 0, 0, 1;
+    drz[i] << -s, -c, 0, c, -s, 0, 0, 0, 0;
+    rx[i] << 1, 0, 0, 0, ca, -sa, 0, sa, ca;
+  }
+  const V a = w.axis.cast<S>().normalized();
+  M f = M::Identity();
+  for (std::size_t i = 0; i < k; ++i) f = M(f * rz[i] * rx[i]);
+  V d[2] = {V::Zero(), V::Zero()};
+  for (std::size_t i = 0; i < k; ++i) {
+    M g = M::Identity();
+    for (std::size_t l = 0; l < k; ++l) g = M(g * (l == i ? drz[l] : rz[l]) * rx[l]);
+    const V dp = g * a;
+    for (std::size_t j = 0; j < 2; ++j) d[j] += (S(w.coupling[i][j].first) / S(w.coupling[i][j].second)) * dp;
+  }
+  M m;
+  m << f * a, d[0], d[1];
+  return m.determinant();
+}
+
+/// The points of a dense grid's edges (spacing h radians of joint motion per motor, wrapping round
+/// the torus) where fold_det changes sign, each bisected 60 times along its edge: (u_1, u_2), motor
+/// j in [0, T_j).
+inline std::vector<std::array<long double, 2>> fold_sign_changes(const WristModel& m, double h) {
+  std::size_t n[2];
+  for (std::size_t j = 0; j < 2; ++j) n[j] = static_cast<std::size_t>(std::ceil(double(m.period(j)) * m.speed(j) / h));
+  const auto at = [&](double a, double b) {
+    const double u[2] = {double(m.period(0)) * a / double(n[0]), double(m.period(1)) * b / double(n[1])};
+    return fold_det<double>(m, u);
+  };
+  std::vector<double> det(n[0] * n[1]);
+  for (std::size_t a = 0; a < n[0]; ++a)
+    for (std::size_t b = 0; b < n[1]; ++b) det[a * n[1] + b] = at(double(a), double(b));
+  std::vector<std::array<long double, 2>> out;
+  for (std::size_t a = 0; a < n[0]; ++a)
+    for (std::size_t b = 0; b < n[1]; ++b)
+      for (int dir = 0; dir < 2; ++dir) {
+        const double d0 = det[a * n[1] + b];
+        const double d1 = dir == 0 ? det[((a + 1) % n[0]) * n[1] + b] : det[a * n[1] + (b + 1) % n[1]];
+        if ((d0 > 0) == (d1 > 0)) continue;
+        double lo = 0, hi = 1;  // along the edge, det's sign at lo is d0's
+        for (int it = 0; it < 60; ++it) {
+          const double t = 0.5 * (lo + hi);
+          const double d = dir == 0 ? at(double(a) + t, double(b)) : at(double(a), double(b) + t);
+          ((d > 0) == (d0 > 0) ? lo : hi) = t;
+        }
+        const double t = 0.5 * (lo + hi);
+        out.push_back({m.period(0) * (double(a) + (dir == 0 ? t : 0)) / n[0], m.period(1) * (double(b) + (dir == 1 ? t : 0)) / n[1]});
+      }
+  return out;
+}
 
 /// The pointing solutions of a 2-motor wrist counted without intervals: P on a grid of spacing
 /// h / sum_i |C_ij| per motor (computed once, in doubles); for a target t, Gauss-Newton on P(u) - t from every

@@ -12,7 +12,9 @@
 //   f.frame[2][2];   // contains F_zz(u) for every u of the box
 //
 // Contract: for every u in the box U, column c of F(u) lies in pose(U).frame[c] and omega_j(u) in
-// pose(U).omega[j] (componentwise). How: the joint angles sum_j C_ij U_j + phi_i in intervals (C_ij
+// pose(U).omega[j] (componentwise); with pose_with_rates, d omega_j / d u_l (u) lies in
+// omega_rate[j][l] as well (d Z_i / d u_l = Omega_{i-1,l} x Z_i, Omega_{i-1,l} = sum_{i' < i} C_i'l Z_i',
+// so d omega_j / d u_l = sum_i C_ij Omega_{i-1,l} x Z_i). How: the joint angles sum_j C_ij U_j + phi_i in intervals (C_ij
 // = p / q enclosed), their sines and cosines by interval_sincos_in_nearest_mode (interval/interval.hpp),
 // then R_i = R_{i-1} Rz(theta_i) Rx(A_i) multiplied out, the axes Z_i = R_{i-1} z on the way. The
 // natural extension: widths grow with the box, the callers intersect it with mean-value forms.
@@ -34,11 +36,13 @@
 
 namespace sphtroch {
 
-/// F's columns and omega_1 .. omega_m (unused ones 0), in T = double or Interval.
+/// F's columns and omega_1 .. omega_m (unused ones 0), in T = double or Interval; omega_rate[j][l]
+/// = d omega_j / d u_l (pose_with_rates only; 0 otherwise).
 template <typename T>
 struct WristPose {
   std::array<Vec3<T>, 3> frame;
   std::array<Vec3<T>, 3> omega;
+  std::array<std::array<Vec3<T>, 3>, 3> omega_rate;
 };
 
 class WristEnclosure {
@@ -74,10 +78,20 @@ class WristEnclosure {
   WristPose<double> pose_at(const std::array<double, M>& u) const {
     return pose_in<M, double>(u);
   }
+  /// pose(), with d omega_j / d u_l enclosed too. REQUIRES rounding upward, M == motors().
+  template <std::size_t M>
+  WristPose<Interval> pose_with_rates(const std::array<Interval, M>& u) const {
+    return pose_in<M, Interval>(u, true);
+  }
+  /// pose_at(), with d omega_j / d u_l too (doubles, an estimate).
+  template <std::size_t M>
+  WristPose<double> pose_with_rates_at(const std::array<double, M>& u) const {
+    return pose_in<M, double>(u, true);
+  }
 
  private:
   template <std::size_t M, typename T>
-  WristPose<T> pose_in(const std::array<T, M>& u) const {
+  WristPose<T> pose_in(const std::array<T, M>& u, bool rates = false) const {
     const Coefficients<T>& c = coefficients<T>();
     const std::size_t k = c.phase.size();
     std::vector<T> angle(k);
@@ -90,7 +104,10 @@ class WristEnclosure {
     std::array<Vec3<T>, 3> r = identity<T>();
     WristPose<T> out;
     for (auto& w : out.omega) w = {T(0.0), T(0.0), T(0.0)};
+    for (auto& row : out.omega_rate)
+      for (auto& w : row) w = {T(0.0), T(0.0), T(0.0)};
     for (std::size_t i = 0; i < k; ++i) {
+      if (rates) add_rates<M>(c, i, r[2], out);  // before omega takes joint i: Omega_{i-1,l}
       for (std::size_t j = 0; j < M; ++j)
         for (int x = 0; x < 3; ++x) out.omega[j][x] += c.rate[i][j] * r[2][x];  // Z_i = R_{i-1} z
       r = times_stage(r, trig[i], c.twist[i]);
@@ -105,6 +122,16 @@ class WristEnclosure {
     std::vector<T> phase;
     std::vector<std::pair<T, T>> twist;  // (sin, cos)
   };
+
+  /// omega_rate[j][l] += C_ij Omega_{i-1,l} x Z_i (out.omega holds Omega_{i-1,l} when called).
+  template <std::size_t M, typename T>
+  static void add_rates(const Coefficients<T>& c, std::size_t i, const Vec3<T>& z, WristPose<T>& out) {
+    for (std::size_t l = 0; l < M; ++l) {
+      const Vec3<T> v = cross(out.omega[l], z);
+      for (std::size_t j = 0; j < M; ++j)
+        for (int x = 0; x < 3; ++x) out.omega_rate[j][l][x] += c.rate[i][j] * v[x];
+    }
+  }
 
   template <typename T>
   const Coefficients<T>& coefficients() const {

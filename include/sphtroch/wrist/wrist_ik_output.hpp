@@ -28,10 +28,12 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace sphtroch {
 
-inline nlohmann::json wrist_json(const Wrist& wrist, const WristIkResult& r) {
+/// The wrist block: twists, phases, coupling, axis and the periods T_j (radians).
+inline nlohmann::json wrist_json(const Wrist& wrist, const std::vector<double>& periods) {
   nlohmann::json twists = nlohmann::json::array(), phases = nlohmann::json::array(), coupling = nlohmann::json::array();
   for (std::size_t i = 0; i < wrist.joints(); ++i) {
     twists.push_back(wrist.joint(i).twist);
@@ -41,8 +43,10 @@ inline nlohmann::json wrist_json(const Wrist& wrist, const WristIkResult& r) {
     coupling.push_back(row);
   }
   const Vector3d& a = wrist.axis();
-  return {{"twists", twists}, {"phases", phases}, {"coupling", coupling}, {"axis", {a.x(), a.y(), a.z()}}, {"periods", r.periods}};
+  return {{"twists", twists}, {"phases", phases}, {"coupling", coupling}, {"axis", {a.x(), a.y(), a.z()}}, {"periods", periods}};
 }
+
+inline nlohmann::json wrist_json(const Wrist& wrist, const WristIkResult& r) { return wrist_json(wrist, r.periods); }
 
 inline nlohmann::json wrist_target_json(const WristTarget& t) {
   if (t.kind == WristTarget::Kind::pointing)

@@ -14,7 +14,8 @@
 // target: `target` "X,Y,Z" (a unit vector: pointing, 2 motors) or `target_frame`, 4 numbers
 // w,x,y,z (a unit quaternion) or 9 (a rotation matrix by rows) (orientation, 3 motors); exactly one
 // of them, of the wrist's kind. Errors (InvalidInput) name the option without "--": "twists",
-// "coupling", "phases", "axis", "target", "target-frame", with the item, the problem and the valid forms.
+// "coupling", "phases", "axis", "target", "target-frame", "home", with the item, the problem and the
+// valid forms. `home` (wrist cap): "X,Y,Z", three finite numbers.
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
@@ -33,7 +34,15 @@ namespace sphtroch {
 
 struct WristText {
   std::string twists, coupling, phases, axis;  ///< phases "" = all 0; axis "" = 0,0,1
-  std::string target, target_frame;            ///< exactly one
+  std::string target, target_frame;            ///< exactly one (wrist ik)
+  std::string home;                             ///< wrist cap: the home direction X,Y,Z
+
+  /// The home direction as typed: three finite numbers (its length is checked by wrist_cap,
+  /// naming "home": within 1e-6 of unit).
+  Vector3d home_direction() const {
+    if (detail::trim(home).empty()) throw InvalidInput("home", home, "missing", "X,Y,Z: a unit vector (|h| within 1e-6 of 1)");
+    return numbers(home, "home", {3});
+  }
 
   Wrist wrist() const {
     const std::vector<std::string> a = items(twists, "twists"), p = items(phases, "phases");
