@@ -14,6 +14,7 @@ from ._sphtroch import (  # noqa: F401
     GearTrain,
     InvalidInput,
     UncertifiedResult,
+    Wrist,
     __version__,
     atlas,
     boundaries,
@@ -34,4 +35,4 @@ from ._arrays import PointSet, attach as _attach
 _attach(GearTrain, _doc)
 _plot.attach(GearTrain, _doc)
 
-__all__ = ["Chain", "Clinostat", "GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "fit_text", "identify", "scene", "synth_points", "synth_points_text", "__version__"]
+__all__ = ["Chain", "Clinostat", "GearTrain", "InvalidInput", "PointSet", "UncertifiedResult", "Wrist", "atlas", "boundaries", "boundary_loci", "classify_a3_range", "crossings", "fit", "fit_text", "identify", "scene", "synth_points", "synth_points_text", "__version__"]

@@ -570,6 +570,47 @@ class Chain:
         """Consistent with ==."""
     def __reduce__(self) -> Any: ...
 
+class Wrist:
+    """A geared spherical wrist with 2 or 3 motors (docs/wrists.md), as `sphtroch wrist` reads it:
+    k revolute joints (1 <= k <= 6) about intersecting axes, joint i at theta_i = sum_j C_ij u_j + P_i
+    for motor angles u = (u_1, .., u_m), each joint followed by a fixed twist; the last body's frame
+    F(u) = Rz(theta_1) Rx(A1) ... Rz(theta_k) Rx(Ak) and the tool axis P(u) = F(u) axis.
+
+    twists: k angles in [0, pi] (radians or the angle text "pi/2"); coupling: k rows of m exact
+    rates (int, Fraction, text "3/2", or a float that is a short decimal), rank m, m = 2 or 3;
+    phases: k angles (default all 0); axis: the tool axis in the last body (default z; pointing
+    only). Each may also be the CLI's text ("0,1,0.5", "1,0;0,1;0,3/2").
+    Immutable; picklable (kept as the CLI's text). Raises InvalidInput naming "twists", "coupling",
+    "phases" or "axis" as `sphtroch wrist` does (a rank-deficient coupling, rows != k, NaN, ...).
+    """
+
+    def __init__(self, twists: Union[Sequence[Angle], str], coupling: Union[Sequence[Sequence[RatioLike]], str],
+                 phases: Union[Sequence[Angle], str, None] = None, axis: Union[Sequence[float], str, None] = None) -> None: ...
+    @property
+    def motors(self) -> int:
+        """m, the number of motors (the coupling's columns)."""
+    @property
+    def periods(self) -> List[float]:
+        """T_1, .., T_m: motor j's period 2 pi L_j, L_j the lcm of the denominators in column j."""
+    def ik(self, target: Union[Sequence[float], str, None] = None, *,
+           frame: Union[Sequence[float], Sequence[Sequence[float]], str, None] = None) -> Dict[str, Any]:
+        """Every inverse-kinematics solution on the motor torus, each proved the only root in its
+        box: the object `sphtroch wrist ik --json` prints ({"count", "certified", "solutions":
+        [{"motors", "box_radius"}], "on_fold", "wrist", "target", ...}). target: a unit vector X,Y,Z
+        to point the tool axis along (2 motors); frame: a unit quaternion w,x,y,z or a rotation
+        matrix (9 numbers by rows, or 3 x 3) to hold (3 motors). "certified": False where the tool
+        exits 3 (a target on a fold: a double root). Raises InvalidInput naming "target",
+        "target-frame" or "coupling" (a problem too large, refused up front with its cost)."""
+    def cap(self, home: Union[Sequence[float], str]) -> Dict[str, Any]:
+        """The largest spherical cap about home with no fold inside (2 motors): the object
+        `sphtroch wrist cap --json` prints ({"radius": {"lower", "upper", "width"}, "count",
+        "certified", "home_on_fold", ...}; radians). Raises InvalidInput naming "home" or "coupling"."""
+    def atlas(self, width: Optional[float] = None) -> Dict[str, Any]:
+        """The fold curve of a 2-motor wrist: the object `sphtroch wrist atlas --json` prints (the
+        critical cells of the motor torus, every other cell proved fold-free, and the fold polylines
+        on the sphere). width: the cells' size in radians of joint motion (0.001 to 1; default 0.05).
+        Raises InvalidInput naming "width" or "coupling"."""
+
 class PointSet:
     """Nodes or cusps of a train as NumPy arrays (GearTrain.node_set(), cusp_set()), row i the i-th
     dict of nodes() / cusps() (len(), [i] and iteration give those dicts). Radians.

@@ -11,12 +11,14 @@
 #include "sphtroch/machine/clinostat_text.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <chrono>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sphtroch::python {
 
@@ -364,6 +366,53 @@ PlotOptions plot_options_arg(py::handle view, py::handle size, py::handle labels
   options.markers = parse_mark_mode(text_arg(markers, "markers", "auto, all, none"));
   options.style = parse_plot_style(text_arg(style, "style", "curve, density"));
   return options;
+}
+
+
+const char* const kExactRateForms =
+    "exact rates: int, fractions.Fraction, text (\"-2/3\", \"1.5\", \"0\") or a float that is a short decimal, |p|, q <= 1e6 in lowest terms";
+
+std::string exact_rate_text(py::handle v, const std::string& field) {
+  if (py::isinstance<py::str>(v)) return text_arg(v, field, kExactRateForms);
+  if (not_a_real(v)) throw InvalidInput(field, repr_of(v), "not a rate", kExactRateForms);  // bool, None, complex, ...
+  if (PyIndex_Check(v.ptr()) && !py::isinstance<py::array>(v)) {
+    PyObject* i = PyNumber_Index(v.ptr());
+    if (i != nullptr) return py::str(py::reinterpret_steal<py::object>(i)).cast<std::string>();
+    PyErr_Clear();
+  }
+  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
+    const py::object p = v.attr("numerator"), q = v.attr("denominator");
+    if (PyIndex_Check(p.ptr()) && PyIndex_Check(q.ptr()) && !PyBool_Check(v.ptr()))
+      return py::str(py::int_(p)).cast<std::string>() + "/" + py::str(py::int_(q)).cast<std::string>();
+  }
+  return repr_of(py::float_(real_arg(v, field, kExactRateForms)));
+}
+
+std::string list_text(py::handle v, const std::string& field, const std::string& valid,
+                      const std::function<std::string(py::handle)>& item, std::size_t max_items, const char* separator) {
+  if (py::isinstance<py::str>(v)) return text_arg(v, field, valid);
+  if (py::isinstance<py::bytes>(v) || !PySequence_Check(v.ptr()) || py::isinstance<py::dict>(v))
+    throw InvalidInput(field, repr_of(v), "not a list", valid);
+  if (py::isinstance<py::array>(v) && py::reinterpret_borrow<py::array>(v).ndim() != 1)
+    throw InvalidInput(field, shape_text(py::reinterpret_borrow<py::array>(v)), "not a 1-D list", valid);
+  std::vector<py::object> items;
+  try {  // a sequence whose len() or [] raises is a bad argument, not the caller's exception
+    const py::sequence seq = py::reinterpret_borrow<py::sequence>(v);
+    const std::size_t n = seq.size();
+    if (n > max_items)
+      throw InvalidInput(field, std::to_string(n) + " items", "too many items", valid + " (at most " + std::to_string(max_items) + ")");
+    for (std::size_t i = 0; i < n; ++i) items.push_back(seq[i]);
+  } catch (const py::error_already_set& e) {
+    const std::string raised = py::str(e.type().attr("__name__")).cast<std::string>() + " " + py::str(e.value()).cast<std::string>();
+    throw InvalidInput(field, repr_of(py::type::of(v)), "not a list (it raised " + raised + ")", valid);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string one = item(items[i]);
+    if (one.find_first_of(",;") != std::string::npos) throw InvalidInput(field, repr_of(items[i]), "one item holds a separator", valid);
+    text += (i ? separator : "") + one;
+  }
+  return text;
 }
 
 }  // namespace sphtroch::python

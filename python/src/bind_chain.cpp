@@ -31,53 +31,6 @@ struct Chain {
   std::string twists, rates, phases;
 };
 
-const char* const kRateForms =
-    "exact rates: int, fractions.Fraction, text (\"-2/3\", \"1.5\", \"0\") or a float that is a short decimal, |p|, q <= 1e6 in lowest terms";
-
-/// One rate as the CLI's text: a str as given, an integer's digits, a Fraction's "p/q", a float's repr.
-std::string rate_text(py::handle v) {
-  if (py::isinstance<py::str>(v)) return text_arg(v, "rates", kRateForms);
-  if (not_a_real(v)) throw InvalidInput("rates", repr_of(v), "not a rate", kRateForms);  // bool, None, complex, ...
-  if (PyIndex_Check(v.ptr()) && !py::isinstance<py::array>(v)) {
-    PyObject* i = PyNumber_Index(v.ptr());
-    if (i != nullptr) return py::str(py::reinterpret_steal<py::object>(i)).cast<std::string>();
-    PyErr_Clear();
-  }
-  if (py::hasattr(v, "numerator") && py::hasattr(v, "denominator") && !py::isinstance<py::float_>(v)) {
-    const py::object p = v.attr("numerator"), q = v.attr("denominator");
-    if (PyIndex_Check(p.ptr()) && PyIndex_Check(q.ptr()) && !PyBool_Check(v.ptr()))
-      return py::str(py::int_(p)).cast<std::string>() + "/" + py::str(py::int_(q)).cast<std::string>();
-  }
-  return repr_of(py::float_(real_arg(v, "rates", kRateForms)));
-}
-
-/// A list argument as the CLI's comma-separated text: a str is that text already; a sequence
-/// (list, tuple, 1-D array) gives one item per element, each turned into text by `item`.
-template <typename ItemText>
-std::string list_text(py::handle v, const std::string& field, const std::string& valid, ItemText item) {
-  if (py::isinstance<py::str>(v)) return text_arg(v, field, valid);
-  if (py::isinstance<py::bytes>(v) || !PySequence_Check(v.ptr()) || py::isinstance<py::dict>(v))
-    throw InvalidInput(field, repr_of(v), "not a list", valid);
-  if (py::isinstance<py::array>(v) && py::reinterpret_borrow<py::array>(v).ndim() != 1)
-    throw InvalidInput(field, shape_text(py::reinterpret_borrow<py::array>(v)), "not a 1-D list", valid);
-  std::vector<py::object> items;
-  try {  // a sequence whose len() or [] raises is a bad argument, not the caller's exception
-    const py::sequence seq = py::reinterpret_borrow<py::sequence>(v);
-    const std::size_t n = seq.size();
-    if (n > RotationChain::kMaxStages) throw InvalidInput(field, std::to_string(n) + " items", "not a chain length", "1 to 16 stages");
-    for (std::size_t i = 0; i < n; ++i) items.push_back(seq[i]);
-  } catch (const py::error_already_set& e) {
-    const std::string raised = py::str(e.type().attr("__name__")).cast<std::string>() + " " + py::str(e.value()).cast<std::string>();
-    throw InvalidInput(field, repr_of(py::type::of(v)), "not a list (it raised " + raised + ")", valid);
-  }
-  std::string text;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string one = item(items[i]);
-    if (one.find(',') != std::string::npos) throw InvalidInput(field, repr_of(items[i]), "one item holds a comma", valid);
-    text += (i ? "," : "") + one;
-  }
-  return text;
-}
 
 Chain make_chain(py::handle twists, py::handle rates, py::handle phases) {
   const auto angle_text = [](const char* field) {
@@ -89,10 +42,13 @@ Chain make_chain(py::handle twists, py::handle rates, py::handle phases) {
   };
   Chain c{RotationChain({{0.0, ChainRate(1), 0.0}}), "", "", ""};
   ChainText text;
-  text.twists = c.twists = list_text(twists, "twists", "a list of k angles in [0, pi] (radians or text), or the CLI's \"A1,...,Ak\"", angle_text("twists"));
-  text.rates = c.rates = list_text(rates, "rates", std::string("a list of k ") + kRateForms + ", or the CLI's \"N1,...,Nk\"", rate_text);
+  text.twists = c.twists = list_text(twists, "twists", "a list of k angles in [0, pi] (radians or text), or the CLI's \"A1,...,Ak\"", angle_text("twists"),
+                                     RotationChain::kMaxStages);
+  text.rates = c.rates = list_text(rates, "rates", std::string("a list of k ") + kExactRateForms + ", or the CLI's \"N1,...,Nk\"",
+                                   [](py::handle v) { return exact_rate_text(v, "rates"); }, RotationChain::kMaxStages);
   if (!phases.is_none())
-    text.phases = c.phases = list_text(phases, "phases", "a list of k angles (radians or text), or the CLI's \"P1,...,Pk\"", angle_text("phases"));
+    text.phases = c.phases = list_text(phases, "phases", "a list of k angles (radians or text), or the CLI's \"P1,...,Pk\"", angle_text("phases"),
+                                     RotationChain::kMaxStages);
   c.chain = text.chain();
   return c;
 }

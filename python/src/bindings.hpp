@@ -1,7 +1,7 @@
 // python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
 // the argument converters (arguments.cpp), the exception classes (bind_errors.cpp) and one bind_*
 // function in each of six topic files (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp,
-// bind_synthesis.cpp, bind_clinostat.cpp, bind_chain.cpp), called by module.cpp.
+// bind_synthesis.cpp, bind_clinostat.cpp, bind_chain.cpp, bind_wrist.cpp), called by module.cpp.
 // The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
 //
 // Decisions
@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -89,6 +90,16 @@ using RealArray = py::array_t<double, py::array::c_style | py::array::forcecast>
 RealArray real_array_arg(py::handle v, const std::string& field, const std::string& valid);
 /// "array of shape (N, 3)", an array's shape as InvalidInput's value.
 std::string shape_text(const py::array& a);
+/// The exact rates a chain or a wrist's coupling takes, as InvalidInput's valid forms.
+extern const char* const kExactRateForms;
+/// One exact rate as the CLI's text (io/chain_text.hpp reads it): a str as given, an integer's
+/// digits, a Fraction's "p/q", a float's repr; InvalidInput(field) for bool, None, complex, text arrays.
+std::string exact_rate_text(py::handle v, const std::string& field);
+/// A list argument as the CLI's text: a str is that text already; a sequence (list, tuple, 1-D
+/// array) of at most max_items gives one item per element, turned into text by `item` and joined
+/// by `separator`; an item holding ',' or ';' is refused. InvalidInput(field, .., valid) otherwise.
+std::string list_text(py::handle v, const std::string& field, const std::string& valid,
+                      const std::function<std::string(py::handle)>& item, std::size_t max_items, const char* separator = ",");
 /// An angle: radians as a real number, or the CLI's text; `text` receives the text kept for reports.
 double angle_arg(py::handle v, const std::string& field, std::string& text);
 /// a3: an angle, or the CLI's cone references ("ap", "pi-ap+1e-6").
@@ -189,5 +200,6 @@ void bind_crossings(py::module_& m);   // crossings
 void bind_synthesis(py::module_& m);   // identify
 void bind_clinostat(py::module_& m);   // class Clinostat: gravity, window means, time to epsilon, coverage
 void bind_chain(py::module_& m);       // class Chain: a rotation chain's trace, kinematics, classify, nodes, cusps, report
+void bind_wrist(py::module_& m);       // class Wrist: a geared wrist's ik, cap, atlas
 
 }  // namespace sphtroch::python

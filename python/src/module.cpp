@@ -33,6 +33,7 @@ PYBIND11_MODULE(_sphtroch, m) {
   python::bind_synthesis(m);
   python::bind_clinostat(m);
   python::bind_chain(m);
+  python::bind_wrist(m);
   // The stub's docstring of `name`, for the package's pure-Python parts (python/sphtroch/_arrays.py).
   m.def("_doc", [](const std::string& name) { return std::string(python::python_doc(name.c_str())); });
 }
