@@ -28,7 +28,7 @@ SECTIONS = [  # (anchor, title): the order of the table; every row of performanc
     ("crossings", "Crossings and classify"), ("io", "Files and pipes"), ("atlas", "Atlas"), ("boundaries", "Boundaries"),
     ("tolerance", "Tolerance"),
     ("identify", "Identify"), ("synth-points", "Precision points"), ("free-axis", "Precision points, free axis"),
-    ("fit", "Fit"), ("clinostat", "Clinostats"), ("chain", "Rotation chains"), ("explorer", "Explorer"), ("python", "Python"), ("compile", "Compile time"),
+    ("fit", "Fit"), ("clinostat", "Clinostats"), ("chain", "Rotation chains"), ("wrist", "Geared wrists"), ("explorer", "Explorer"), ("python", "Python"), ("compile", "Compile time"),
     ("ci", "Continuous integration"),
 ]
 

@@ -409,7 +409,8 @@ std::string list_text(py::handle v, const std::string& field, const std::string&
   std::string text;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const std::string one = item(items[i]);
-    if (one.find_first_of(",;") != std::string::npos) throw InvalidInput(field, repr_of(items[i]), "one item holds a separator", valid);
+    if (one.find(separator) != std::string::npos || one.find(';') != std::string::npos)
+      throw InvalidInput(field, repr_of(items[i]), "one item holds a separator", valid);
     text += (i ? separator : "") + one;
   }
   return text;

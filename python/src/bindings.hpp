@@ -1,6 +1,6 @@
 // python/src/bindings.hpp — what the binding files of the extension module sphtroch._sphtroch share:
 // the argument converters (arguments.cpp), the exception classes (bind_errors.cpp) and one bind_*
-// function in each of six topic files (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp,
+// function in each of seven topic files (bind_gear_train.cpp, bind_design_map.cpp, bind_crossings.cpp,
 // bind_synthesis.cpp, bind_clinostat.cpp, bind_chain.cpp, bind_wrist.cpp), called by module.cpp.
 // The Python contract (names, arguments, returned dicts) is python/sphtroch/__init__.pyi.
 //
@@ -97,7 +97,7 @@ extern const char* const kExactRateForms;
 std::string exact_rate_text(py::handle v, const std::string& field);
 /// A list argument as the CLI's text: a str is that text already; a sequence (list, tuple, 1-D
 /// array) of at most max_items gives one item per element, turned into text by `item` and joined
-/// by `separator`; an item holding ',' or ';' is refused. InvalidInput(field, .., valid) otherwise.
+/// by `separator`; an item holding the separator or ';' is refused. InvalidInput(field, .., valid) otherwise.
 std::string list_text(py::handle v, const std::string& field, const std::string& valid,
                       const std::function<std::string(py::handle)>& item, std::size_t max_items, const char* separator = ",");
 /// An angle: radians as a real number, or the CLI's text; `text` receives the text kept for reports.

@@ -55,17 +55,19 @@ void run_wrist_cap(const WristIkOptions& o) {
 
 /// The options every wrist subcommand shares: the wrist itself.
 void add_wrist_options(CLI::App& cmd, WristText& w) {
-  cmd.add_option("--twists", w.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2), k <= 6");
-  cmd.add_option("--coupling", w.coupling, "the k x m coupling by rows: \"c11,c12;c21,c22;...\", exact (p/q, decimals, 0), rank m");
-  cmd.add_option("--phases", w.phases, "P1,...,Pk: each joint's angle with every motor at 0, radians (default all 0)");
-  cmd.add_option("--axis", w.axis, "the tool axis X,Y,Z in the last body (default 0,0,1; pointing only)");
+  cmd.add_option("--twists", w.twists, "A1,...,Ak: the twist after each joint, radians in [0, pi] (any angle form: pi/2), k <= 6")
+      ->type_name("A1,...,Ak");
+  cmd.add_option("--coupling", w.coupling, "the k x m coupling by rows: \"c11,c12;c21,c22;...\", exact (p/q, decimals, 0), rank m")
+      ->type_name("C11,C12;C21,C22;...");
+  cmd.add_option("--phases", w.phases, "P1,...,Pk: each joint's angle with every motor at 0, radians (default all 0)")->type_name("P1,...,Pk");
+  cmd.add_option("--axis", w.axis, "the tool axis X,Y,Z in the last body (default 0,0,1; pointing only)")->type_name("X,Y,Z");
 }
 
 void register_wrist_cap(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action>>& actions) {
   auto o = std::make_shared<WristIkOptions>();
   CLI::App* cmd = wrist.add_subcommand("cap", "the largest cap about a home direction with no fold inside (2 motors), certified, and its IK count");
   add_wrist_options(*cmd, o->wrist);
-  cmd->add_option("--home", o->wrist.home, "X,Y,Z: the cap's centre, a unit vector");
+  cmd->add_option("--home", o->wrist.home, "X,Y,Z: the cap's centre, a unit vector")->type_name("X,Y,Z");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
   add_output_option(*cmd, o->output, "the report");
   cmd->footer("The fold: det[P, dP/du1, dP/du2] = 0. The radius is the angle from home to the nearest fold point, a bracket\n"
@@ -99,7 +101,7 @@ void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Acti
   auto o = std::make_shared<WristIkOptions>();
   CLI::App* cmd = wrist.add_subcommand("atlas", "the critical curve det = 0 on the motor torus (2 motors), certified cells, and the fold polylines");
   add_wrist_options(*cmd, o->wrist);
-  cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
+  cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)")->type_name("RAD");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
   add_output_option(*cmd, o->output, "the report");
   cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"
@@ -117,9 +119,10 @@ void register_wrist(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>& ac
   auto o = std::make_shared<WristIkOptions>();
   CLI::App* cmd = wrist->add_subcommand("ik", "every motor-angle solution pointing the tool (2 motors) or holding a frame (3), certified");
   add_wrist_options(*cmd, o->wrist);
-  cmd->add_option("--target", o->wrist.target, "X,Y,Z: point the tool axis along this unit vector (2 motors)");
+  cmd->add_option("--target", o->wrist.target, "X,Y,Z: point the tool axis along this unit vector (2 motors)")->type_name("X,Y,Z");
   cmd->add_option("--target-frame", o->wrist.target_frame,
-                  "hold this frame (3 motors): a unit quaternion w,x,y,z or a rotation matrix by rows (9 numbers)");
+                  "hold this frame (3 motors): a unit quaternion w,x,y,z or a rotation matrix by rows (9 numbers)")
+      ->type_name("W,X,Y,Z|R11,...,R33");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
   add_output_option(*cmd, o->output, "the report");
   cmd->footer("theta_i = sum_j C_ij u_j + P_i, F(u) = Rz(theta_1) Rx(A1) ... Rz(theta_k) Rx(Ak), P(u) = F(u) axis.\n"

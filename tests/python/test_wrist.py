@@ -78,7 +78,7 @@ def test_base_times_gear_train_counts_2p_inside_the_zone_and_0_outside(p, q):
     a2, a3 = 1.0, 0.5
     w = sphtroch.Wrist([0, a2, a3], [[1, 0], [0, 1], [0, fractions.Fraction(p, q)]])
     z_lo, z_hi = math.cos(a2 + a3), math.cos(a2 - a3)  # Eqs. 14/15: the train's z-extremes
-    rng = np.random.default_rng(p * 10 + q)
+    rng = np.random.default_rng(abs(p) * 10 + q)
     for _ in range(6):
         z = rng.uniform(z_lo + 0.02, z_hi - 0.02)
         phi = rng.uniform(0, 2 * math.pi)
