@@ -46,7 +46,8 @@ namespace sphtroch {
 struct WorstWindowMean {
   double window_s = 0;
   double lower = 0, upper = 0;  ///< M(W) in [lower, upper], units of g0
-  double start_s = 0;           ///< a start time in [0, T) whose window mean has |mean| >= lower
+  double start_s = 0;           ///< a start time in [0, T) whose window mean has |mean| >= lower (the
+                                ///< smallest's search: <= upper)
   bool certified = false;       ///< upper - lower <= the width asked
 };
 
@@ -158,6 +159,17 @@ class WindowMeanFunction {
   double upper(const Value& v, double h) const {
     return std::max((v.m + v.dm * h).norm(), (v.m - v.dm * h).norm()) + l2_ * h * h / 2 + rounding_ + rounding_slope_ * h;
   }
+  /// |m(tc)| rounded up: an upper bound on the smallest |m|.
+  double upper(const Value& v) const { return v.m.norm() + rounding_; }
+  /// A lower bound on |m| over [tc - h, tc + h]: |m(tc + d)| >= |m(tc) + m'(tc) d| - L2 h^2 / 2
+  /// (Taylor), and the smallest |m + m' d| over |d| <= h is the distance from 0 to that segment,
+  /// at d = -m.m' / |m'|^2 clamped to [-h, h]. A d rounded off the minimiser (~1e-16 h) raises
+  /// the distance by at most |m'| 1e-16 h: within rounding_slope_ h, taken off with the rest.
+  double lower(const Value& v, double h) const {
+    const double slope2 = v.dm.squaredNorm();
+    const double d = slope2 > 0 ? std::clamp(-v.m.dot(v.dm) / slope2, -h, h) : 0.0;
+    return std::max(0.0, (v.m + v.dm * d).norm() - l2_ * h * h / 2 - rounding_ - rounding_slope_ * h);
+  }
 
  private:
   const GravitySeries& g_;
@@ -165,49 +177,66 @@ class WindowMeanFunction {
   double l2_ = 0, typical_frequency_ = 0, rounding_ = 0, rounding_slope_ = 0;
 };
 
-/// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
+/// Which extreme of |m| over one period a search brackets: the sup (M(W)) or the inf (the lower
+/// edge of the window band, window_band.hpp).
+enum class WindowExtreme { largest, smallest };
+
+/// Best-first branch and bound of one extreme of |m| over one period; stop(lower, upper) ends it
+/// early. Largest: a piece's bound is WindowMeanFunction::upper (the piece of largest bound
+/// first), the bracket [largest |m| evaluated less rounding, largest bound]. Smallest: a piece's
+/// bound is WindowMeanFunction::lower (the piece of smallest bound first), the bracket [smallest
+/// bound, smallest |m| evaluated plus rounding]. start_s: the start of the window evaluated at
+/// the bracket's found end.
 template <typename Stop>
-WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
+WorstWindowMean search_window_extreme(const GravitySeries& g, double w, double width, WindowExtreme side, Stop stop,
+                                      double* work = nullptr) {
   if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", report_number(w), "not a positive window", "seconds > 0");
   WorstWindowMean out;
   out.window_s = w;
-  if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: M(W) = |c|
+  if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: every window mean is c
     out.lower = out.upper = g.period_mean().norm();
     out.certified = true;
     return out;
   }
+  const bool largest = side == WindowExtreme::largest;
   const double period = *g.period_s();
   const WindowMeanFunction f(g, w);
   struct Piece {
-    double centre, half, upper;
-    bool operator<(const Piece& o) const { return upper < o.upper; }
+    double centre, half, bound, key;  // key: the bound signed so that the most promising piece is on top
+    bool operator<(const Piece& o) const { return key < o.key; }
   };
   std::priority_queue<Piece> pieces;
-  double best_at = 0;
+  double found = largest ? 0.0 : std::numeric_limits<double>::infinity(), found_at = 0;
   const auto add = [&](double centre, double half) {
     if (work) *work += 1;
     const WindowMeanFunction::Value v = f.at(centre);
-    const double low = f.lower(v);
-    if (low > out.lower) {
-      out.lower = low;
-      best_at = centre;
+    const double point = largest ? f.lower(v) : f.upper(v);
+    if (largest ? point > found : point < found) {
+      found = point;
+      found_at = centre;
     }
-    pieces.push({centre, half, f.upper(v, half)});
+    const double bound = largest ? f.upper(v, half) : f.lower(v, half);
+    pieces.push({centre, half, bound, largest ? bound : -bound});
+  };
+  const auto bracket = [&](double bound) {  // the queue's top bound and the extreme found
+    out.lower = largest ? found : bound;
+    out.upper = largest ? std::min(bound, g.norm_bound()) : found;  // a mean of unit vectors is at most 1 long
   };
   const double count = std::clamp(std::ceil(period * f.typical_frequency() / 0.5), 8.0, worst_window_mean_cost(g));
   const double half = period / count / 2;
   for (double k = 0; k < count; ++k) {
     add((2 * k + 1) * half, half);
-    if (stop(out.lower, std::numeric_limits<double>::infinity())) {  // proven above already
-      out.upper = std::numeric_limits<double>::infinity();
-      out.start_s = detail::start_in_period(best_at - w / 2, period);
+    out.lower = largest ? found : 0.0;  // the other side unknown yet
+    out.upper = largest ? std::numeric_limits<double>::infinity() : found;
+    if (stop(out.lower, out.upper)) {  // one side proven already
+      out.start_s = detail::start_in_period(found_at - w / 2, period);
       return out;
     }
   }
   const double finest = std::max(1e-12, period * 1e-15);
   while (true) {
     const Piece top = pieces.top();
-    out.upper = std::min(top.upper, g.norm_bound());  // a mean of unit vectors is at most 1 long
+    bracket(top.bound);
     if (out.upper - out.lower <= width || stop(out.lower, out.upper)) break;
     if (top.half < finest || pieces.size() > kMaxWindowPieces) break;  // cannot refine further (resolution or
                                                                        // memory): left uncertified
@@ -215,10 +244,17 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
     add(top.centre - top.half / 2, top.half / 2);
     add(top.centre + top.half / 2, top.half / 2);
   }
-  out.upper = std::max(out.upper, out.lower);
+  if (largest) out.upper = std::max(out.upper, out.lower);
+  else out.lower = std::min(out.lower, out.upper);
   out.certified = out.upper - out.lower <= width;
-  out.start_s = detail::start_in_period(best_at - w / 2, period);
+  out.start_s = detail::start_in_period(found_at - w / 2, period);
   return out;
+}
+
+/// Best-first search of sup |m| over one period (M(W)); stop(lower, upper) ends it early.
+template <typename Stop>
+WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
+  return search_window_extreme(g, w, width, WindowExtreme::largest, stop, work);
 }
 
 /// sup |F| over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k cos(j x + l y) +
