@@ -108,6 +108,10 @@ class TorusGramBound {
   std::vector<double> centre_, sigma_;
 };
 
+/// Which extreme of |m| over one period a search brackets: the sup (M(W)) or the inf (the lower
+/// edge of the window band, window_band.hpp).
+enum class WindowExtreme { largest, smallest };
+
 namespace detail {
 
 /// t reduced into [0, period) seconds, zero unsigned (fmod of a negative multiple of the period
@@ -176,10 +180,6 @@ class WindowMeanFunction {
   std::vector<double> sincs_;  // s_k = sinc(W_k W / 2), one per oscillating harmonic
   double l2_ = 0, typical_frequency_ = 0, rounding_ = 0, rounding_slope_ = 0;
 };
-
-/// Which extreme of |m| over one period a search brackets: the sup (M(W)) or the inf (the lower
-/// edge of the window band, window_band.hpp).
-enum class WindowExtreme { largest, smallest };
 
 /// Best-first branch and bound of one extreme of |m| over one period; stop(lower, upper) ends it
 /// early. Largest: a piece's bound is WindowMeanFunction::upper (the piece of largest bound

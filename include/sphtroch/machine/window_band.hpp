@@ -1,0 +1,103 @@
+// sphtroch/machine/window_band.hpp — the window band: the smallest and the largest |mean gravity|
+// over a window of W seconds, whatever time the window starts, each certified as a bracket; and
+// whether every window mean lies within a target G +- D.
+//
+//   sphtroch::ClinostatSettings s;
+//   s.tilt_deg = 67.7901;
+//   s.outer = sphtroch::Rpm(5);
+//   s.inner = sphtroch::Rpm(5, 100);
+//   const sphtroch::GravitySeries g = sphtroch::GravitySeries::of_gravity(sphtroch::Clinostat(s));
+//   const sphtroch::WindowBand b = sphtroch::window_band(g, 600.0);
+//   b.min.lower, b.min.upper;   // min over t0 of |mean over [t0, t0 + 600 s]| lies in here (g0)
+//   b.max.lower, b.max.upper;   // the max: M(600 s) (worst_window_mean.hpp)
+//   sphtroch::window_target(g, b, 0.241, 0.006).inside;   // true: every window mean in [0.235, 0.247]
+//
+// Method: both extremes by the one branch and bound of worst_window_mean.hpp over the window's
+// centre in one period (detail::search_window_extreme), with its proven bounds: the max by the
+// Taylor upper bound of a piece, the min by the lower bound |m(tc) + m'(tc) d| >= the distance
+// from 0 to the segment {m(tc) + m'(tc) d : |d| <= h}, less L2 h^2 / 2 and rounding. |m| is not
+// smooth where m = 0, but the bound is of the vector m (smooth), not of |m|: a window mean that
+// passes through 0 gives pieces whose lower bound is 0 and evaluations that come within the
+// width of 0, so a minimum of 0 is bracketed as [0, upper], upper <= the width (1e-9).
+// Cost: two searches of M(W)'s cost (worst_window_mean_cost refuses a period too long up front).
+#pragma once
+
+#include "sphtroch/core/errors.hpp"
+#include "sphtroch/core/number_text.hpp"
+#include "sphtroch/machine/gravity_series.hpp"
+#include "sphtroch/machine/worst_window_mean.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace sphtroch {
+
+/// The band of |window mean| over every start time, units of g0.
+struct WindowBand {
+  double window_s = 0;
+  WorstWindowMean min;     ///< min over t0 in [lower, upper]; start_s: a start whose |mean| <= upper
+  WorstWindowMean max;     ///< max over t0 (M(W)) in [lower, upper]; start_s: a start whose |mean| >= lower
+  bool certified = false;  ///< both brackets within the width asked
+  const char* bound = "period";  ///< the search covers one period of the window's start
+};
+
+/// The band for window W: each bracket at most `width` wide when certified. Throws
+/// InvalidInput("window") unless W > 0 and finite, InvalidInput("outer") when the period is too
+/// long to search (worst_window_mean_cost).
+inline WindowBand window_band(const GravitySeries& g, double window_s, double width = 1e-9) {
+  const auto never = [](double, double) { return false; };
+  WindowBand b;
+  b.window_s = window_s;
+  b.max = detail::search_window_extreme(g, window_s, width, WindowExtreme::largest, never);
+  b.min = detail::search_window_extreme(g, window_s, width, WindowExtreme::smallest, never);
+  b.certified = b.min.certified && b.max.certified;
+  return b;
+}
+
+/// Whether every window mean's length lies in [g - tolerance, g + tolerance] (closed).
+struct WindowTarget {
+  double g = 0, tolerance = 0;   ///< units of g0
+  std::optional<bool> inside;    ///< empty: not decided (an extreme within rounding of an end)
+  std::optional<double> start_s; ///< when outside: a start time whose window mean leaves the target
+};
+
+namespace detail {
+
+/// Searches one extreme again (width 0) until its side of `limit` is proven: the largest above
+/// (lower > limit) or not (upper <= limit); the smallest below (upper < limit) or not (lower >= limit).
+inline WorstWindowMean refine_against(const GravitySeries& g, double w, WindowExtreme side, double limit) {
+  if (side == WindowExtreme::largest)
+    return search_window_extreme(g, w, 0.0, side, [limit](double lower, double upper) { return lower > limit || upper <= limit; });
+  return search_window_extreme(g, w, 0.0, side, [limit](double lower, double upper) { return upper < limit || lower >= limit; });
+}
+
+}  // namespace detail
+
+/// The target G +- D against the band `b` of series g: outside when max.lower > G + D or min.upper
+/// < G - D (proven, with the start reaching it), inside when max.upper <= G + D and min.lower >= G
+/// - D; an end within the brackets is searched again against that limit until one side is
+/// proven, else left undecided. Throws InvalidInput("target-g") unless G is finite and >= 0,
+/// InvalidInput("tolerance") unless D is finite and >= 0.
+inline WindowTarget window_target(const GravitySeries& g, const WindowBand& b, double target, double tolerance) {
+  if (!std::isfinite(target) || target < 0) throw InvalidInput("target-g", report_number(target), "not a gravity", "a finite number >= 0, units of g0");
+  if (!std::isfinite(tolerance) || tolerance < 0)
+    throw InvalidInput("tolerance", report_number(tolerance), "not a tolerance", "a finite number >= 0, units of g0");
+  WindowTarget out;
+  out.g = target, out.tolerance = tolerance;
+  const double high = target + tolerance, low = target - tolerance;
+  WorstWindowMean max = b.max, min = b.min;
+  if (!(max.lower > high) && max.upper > high) max = detail::refine_against(g, b.window_s, WindowExtreme::largest, high);
+  if (max.lower > high) {
+    out.inside = false, out.start_s = max.start_s;
+    return out;
+  }
+  if (!(min.upper < low) && min.lower < low) min = detail::refine_against(g, b.window_s, WindowExtreme::smallest, low);
+  if (min.upper < low) {
+    out.inside = false, out.start_s = min.start_s;
+    return out;
+  }
+  if (max.upper <= high && min.lower >= low) out.inside = true;
+  return out;
+}
+
+}  // namespace sphtroch
