@@ -19,10 +19,12 @@
 // "rotation"} or null (then "train_note"); "averaged"; "period_s" (null: none); "mean_over_period";
 // with --window "worst_window_mean" {"window_s", "lower", "upper", "start_s", "certified"}; with
 // --epsilon "time_to_epsilon" {"epsilon", "resolution_s", "first_s", "stays_below_from_s",
-// "above_s", "reason", "certified"}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
+// "above_s", "reason", "certified"}; with --band "window_band" {"window_s", "min": {"lower", "upper",
+// "start_s"}, "max": {...}, "certified", "bound": "period"}; with --target-g "target" {"g",
+// "tolerance", "inside" (null: not decided), "start_s" (null unless outside)}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
 // "magnitude"}]; with --coverage "coverage" {"start_s", "duration_s", "nside",
 // "order", "fraction", "dwell_cv", "bound_s", "dwell_s"}.
-// Cost: M(W) and the time to epsilon are refused up front when the period is too long to search
+// Cost: M(W), the band and the time to epsilon are refused up front when the period is too long to search
 // (worst_window_mean_cost throws CostLimitExceeded); the rest is closed form.
 #pragma once
 
@@ -35,6 +37,7 @@
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
+#include "sphtroch/machine/window_band.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
 #include <nlohmann/json.hpp>
@@ -56,6 +59,9 @@ struct ClinostatRequest {
   double start = 0;                ///< start of the dwell map and of the running means, seconds
   int nside = 8;                   ///< HEALPix nside of the dwell map
   std::vector<double> running_mean_s;  ///< the running means from start over these durations, seconds
+  bool band = false;               ///< the window band of `window` (window_band.hpp)
+  std::optional<double> target_g;  ///< with band: whether every window mean lies in target_g +- tolerance, g0
+  double tolerance = 0;            ///< units of g0
 };
 
 /// A report's numbers, computed once for the text, the JSON and the picture.
@@ -69,16 +75,29 @@ struct ClinostatReport {
   std::optional<TimeToEpsilon> time_to;
   std::optional<DwellMap> dwell;  ///< the caller's, when coverage was asked
   std::vector<RunningMean> running;  ///< of request.running_mean_s (running_mean.hpp)
+  std::optional<WindowBand> band;    ///< with request.band
+  std::optional<WindowTarget> target;  ///< with request.target_g
 };
 
 /// The report of machine m for q; `dwell` is the dwell map of q.coverage when asked (the caller
-/// computes it: HEALPix). Throws CostLimitExceeded before any search when the period is too long.
+/// computes it: HEALPix). Throws InvalidInput("outer") before any search when the period is too
+/// long, InvalidInput("band") for a band without a window, InvalidInput("target-g") for a target
+/// without a band (and window_target's errors for its values).
 inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatRequest& q, std::optional<DwellMap> dwell = std::nullopt) {
+  if (q.band && !q.window) throw InvalidInput("band", "true", "a band needs a window", "--window S --band");
+  if (q.target_g && !q.band) throw InvalidInput("target-g", report_number(*q.target_g), "a target needs the band", "--window S --band --target-g G --tolerance D");
   ClinostatReport r{m.settings(), q, clinostat_train(m),
                     m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m), m.has_offset(),
                     std::nullopt, std::nullopt, std::move(dwell), {}};
   if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
-  if (q.window) r.worst = worst_window_mean(r.series, *q.window);
+  if (q.target_g) check_window_target(*q.target_g, q.tolerance);  // before any search
+  if (q.band) {
+    r.band = window_band(r.series, *q.window);
+    r.worst = r.band->max;  // the band's max is M(W), the same search
+    if (q.target_g) r.target = window_target(r.series, *r.band, *q.target_g, q.tolerance);
+  } else if (q.window) {
+    r.worst = worst_window_mean(r.series, *q.window);
+  }
   if (q.epsilon) r.time_to = time_to_epsilon(r.series, *q.epsilon, q.resolution);
   if (!q.running_mean_s.empty()) r.running = running_means(r.series, q.start, q.running_mean_s);
   return r;
@@ -86,13 +105,16 @@ inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatReque
 
 /// Whether every bracket and comparison of the report is certified (else the CLI exits 3).
 inline bool clinostat_report_certified(const ClinostatReport& r) {
-  return !(r.worst && !r.worst->certified) && !(r.time_to && !r.time_to->certified);
+  return !(r.worst && !r.worst->certified) && !(r.time_to && !r.time_to->certified) && !(r.band && !r.band->certified) &&
+         !(r.target && !r.target->inside);
 }
 
 /// Why the report is not certified ("" when it is).
 inline std::string clinostat_report_uncertified(const ClinostatReport& r) {
   if (r.worst && !r.worst->certified) return "the worst window mean's bracket is wider than 1e-9";
   if (r.time_to && !r.time_to->certified) return r.time_to->reason;
+  if (r.band && !r.band->certified) return "the window band's brackets are wider than 1e-9";
+  if (r.target && !r.target->inside) return "the target is not certified: an extreme of the window means is within rounding of its end";
   return "";
 }
 
@@ -107,6 +129,16 @@ inline nlohmann::json train_json(const ClinostatTrain& ct) {
   for (int i = 0; i < 3; ++i) rows.push_back(vector_json(ct.rotation.row(i).transpose()));
   return {{"n", ct.train->ratio().str()}, {"a2", ct.train->a2()}, {"a3", ct.train->a3()}, {"phase", ct.train->phase()},
           {"theta2_at_0", ct.theta2_at_0}, {"theta2_rate", ct.theta2_rate}, {"rotation", rows}};
+}
+
+inline nlohmann::json band_json(const WindowBand& b) {
+  const auto end = [](const WorstWindowMean& m) { return nlohmann::json{{"lower", m.lower}, {"upper", m.upper}, {"start_s", m.start_s}}; };
+  return {{"window_s", b.window_s}, {"min", end(b.min)}, {"max", end(b.max)}, {"certified", b.certified}, {"bound", b.bound}};
+}
+
+inline nlohmann::json target_json(const WindowTarget& t) {
+  return {{"g", t.g}, {"tolerance", t.tolerance}, {"inside", t.inside ? nlohmann::json(*t.inside) : nlohmann::json(nullptr)},
+          {"start_s", or_null(t.start_s)}};
 }
 
 inline std::string degrees(double radians) { return report_number(radians * 180 / Constants<double>::pi()); }
@@ -125,6 +157,8 @@ inline nlohmann::json clinostat_report_json(const ClinostatReport& r) {
   if (r.worst)
     out["worst_window_mean"] = {{"window_s", r.worst->window_s}, {"lower", r.worst->lower}, {"upper", r.worst->upper},
                                 {"start_s", r.worst->start_s}, {"certified", r.worst->certified}};
+  if (r.band) out["window_band"] = d::band_json(*r.band);
+  if (r.target) out["target"] = d::target_json(*r.target);
   if (r.time_to)
     out["time_to_epsilon"] = {{"epsilon", r.time_to->epsilon}, {"resolution_s", r.request.resolution},
                               {"first_s", d::or_null(r.time_to->first_s)}, {"stays_below_from_s", d::or_null(r.time_to->stays_below_from_s)},
@@ -161,7 +195,26 @@ inline void write_clinostat_machine_text(std::ostream& out, const ClinostatRepor
       << (r.train.theta2_rate < 0 ? " - " : " + ") << report_number(std::fabs(r.train.theta2_rate)) << " t rad (t in s; --json gives the rotation)\n";
 }
 
-/// The period, the mean, M(W), the time to epsilon and the coverage (the rest of the text).
+/// The window band and the target, when asked (lines of the text).
+inline void write_clinostat_band_text(std::ostream& out, const ClinostatReport& r) {
+  if (r.band) {
+    const WindowBand& b = *r.band;
+    out << "window band, W = " << report_number(b.window_s) << " s: every window mean's |mean| lies between min in ["
+        << report_number(b.min.lower) << ", " << report_number(b.min.upper) << "] g0 (the window starting at "
+        << report_number(b.min.start_s) << " s) and max in [" << report_number(b.max.lower) << ", " << report_number(b.max.upper)
+        << "] g0 (starting at " << report_number(b.max.start_s) << " s)"
+        << (b.certified ? "" : " (NOT CERTIFIED: a bracket is wider than 1e-9)") << "\n";
+  }
+  if (r.target) {
+    const WindowTarget& t = *r.target;
+    out << "target " << report_number(t.g) << " +- " << report_number(t.tolerance) << " g0: ";
+    if (!t.inside) out << "not certified: an extreme of the window means is within rounding of an end of the target\n";
+    else if (*t.inside) out << "every window mean lies inside (certified)\n";
+    else out << "the window starting at " << report_number(*t.start_s) << " s leaves it (certified)\n";
+  }
+}
+
+/// The period, the mean, M(W), the band, the time to epsilon and the coverage (the rest of the text).
 inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatReport& r) {
   if (r.series.period_s())
     out << "period: " << report_number(*r.series.period_s()) << " s (" << report_number(*r.series.period_s() / 60)
@@ -175,6 +228,7 @@ inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatRepor
     out << "worst window mean, W = " << report_number(r.worst->window_s) << " s: M(W) in [" << report_number(r.worst->lower) << ", "
         << report_number(r.worst->upper) << "] g0, reached by the window starting at " << report_number(r.worst->start_s) << " s"
         << (r.worst->certified ? "" : " (NOT CERTIFIED: the bracket is wider than 1e-9)") << "\n";
+  write_clinostat_band_text(out, r);
   if (r.time_to) {
     out << "time to epsilon = " << report_number(r.time_to->epsilon) << " g0 (windows in steps of " << report_number(r.request.resolution) << " s): ";
     if (r.time_to->first_s)

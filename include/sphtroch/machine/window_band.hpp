@@ -13,7 +13,7 @@
 //   sphtroch::window_target(g, b, 0.241, 0.006).inside;   // true: every window mean in [0.235, 0.247]
 //
 // Method: both extremes by the one branch and bound of worst_window_mean.hpp over the window's
-// centre in one period (detail::search_window_extreme), with its proven bounds: the max by the
+// centre in one period (window_mean_extreme), with its proven bounds: the max by the
 // Taylor upper bound of a piece, the min by the lower bound |m(tc) + m'(tc) d| >= the distance
 // from 0 to the segment {m(tc) + m'(tc) d : |d| <= h}, less L2 h^2 / 2 and rounding. |m| is not
 // smooth where m = 0, but the bound is of the vector m (smooth), not of |m|: a window mean that
@@ -48,8 +48,8 @@ inline WindowBand window_band(const GravitySeries& g, double window_s, double wi
   const auto never = [](double, double) { return false; };
   WindowBand b;
   b.window_s = window_s;
-  b.max = detail::search_window_extreme(g, window_s, width, WindowExtreme::largest, never);
-  b.min = detail::search_window_extreme(g, window_s, width, WindowExtreme::smallest, never);
+  b.max = window_mean_extreme(g, window_s, WindowExtreme::largest, width, never);
+  b.min = window_mean_extreme(g, window_s, WindowExtreme::smallest, width, never);
   b.certified = b.min.certified && b.max.certified;
   return b;
 }
@@ -67,21 +67,26 @@ namespace detail {
 /// (lower > limit) or not (upper <= limit); the smallest below (upper < limit) or not (lower >= limit).
 inline WorstWindowMean refine_against(const GravitySeries& g, double w, WindowExtreme side, double limit) {
   if (side == WindowExtreme::largest)
-    return search_window_extreme(g, w, 0.0, side, [limit](double lower, double upper) { return lower > limit || upper <= limit; });
-  return search_window_extreme(g, w, 0.0, side, [limit](double lower, double upper) { return upper < limit || lower >= limit; });
+    return window_mean_extreme(g, w, side, 0.0, [limit](double lower, double upper) { return lower > limit || upper <= limit; });
+  return window_mean_extreme(g, w, side, 0.0, [limit](double lower, double upper) { return upper < limit || lower >= limit; });
 }
 
 }  // namespace detail
 
-/// The target G +- D against the band `b` of series g: outside when max.lower > G + D or min.upper
-/// < G - D (proven, with the start reaching it), inside when max.upper <= G + D and min.lower >= G
-/// - D; an end within the brackets is searched again against that limit until one side is
-/// proven, else left undecided. Throws InvalidInput("target-g") unless G is finite and >= 0,
-/// InvalidInput("tolerance") unless D is finite and >= 0.
-inline WindowTarget window_target(const GravitySeries& g, const WindowBand& b, double target, double tolerance) {
+/// Throws InvalidInput("target-g") unless G is finite and >= 0, InvalidInput("tolerance") unless
+/// D is finite and >= 0 (units of g0).
+inline void check_window_target(double target, double tolerance) {
   if (!std::isfinite(target) || target < 0) throw InvalidInput("target-g", report_number(target), "not a gravity", "a finite number >= 0, units of g0");
   if (!std::isfinite(tolerance) || tolerance < 0)
     throw InvalidInput("tolerance", report_number(tolerance), "not a tolerance", "a finite number >= 0, units of g0");
+}
+
+/// The target G +- D against the band `b` of series g: outside when max.lower > G + D or min.upper
+/// < G - D (proven, with the start reaching it), inside when max.upper <= G + D and min.lower >= G
+/// - D; an end within the brackets is searched again against that limit until one side is
+/// proven, else left undecided. Throws as check_window_target.
+inline WindowTarget window_target(const GravitySeries& g, const WindowBand& b, double target, double tolerance) {
+  check_window_target(target, tolerance);
   WindowTarget out;
   out.g = target, out.tolerance = tolerance;
   const double high = target + tolerance, low = target - tolerance;

@@ -341,6 +341,16 @@ inline WorstWindowMean worst_window_mean(const GravitySeries& g, double window_s
   return detail::search_worst_window_mean(g, window_s, width, [](double, double) { return false; });
 }
 
+/// One extreme over every start time of |mean over [t0, t0 + W]|: the largest (M(W)) or the
+/// smallest, as a bracket of width <= `width` (certified) unless the search hits its resolution;
+/// stop(lower, upper) ends the search early (then certified says whether the width was reached).
+/// Throws InvalidInput("window") unless W > 0 and finite, InvalidInput("outer") when the period
+/// is too long (worst_window_mean_cost).
+template <typename Stop>
+WorstWindowMean window_mean_extreme(const GravitySeries& g, double window_s, WindowExtreme side, double width, Stop stop) {
+  return detail::search_window_extreme(g, window_s, width, side, stop);
+}
+
 /// Whether M(W) <= epsilon: below (upper <= epsilon), above (lower > epsilon) or undecided (M(W)
 /// within rounding of epsilon). Stops as soon as one side is proven; first tries the bound over
 /// all frame angles (detail::torus_below), whose cost does not grow with the period.
