@@ -47,7 +47,7 @@ double parse_time(const std::string& text, const std::string& field) {
 /// A gravity in g0: a finite number >= 0 (the target and its tolerance).
 double parse_gravity(const std::string& text, const std::string& field) {
   const std::optional<double> v = parse_number(text);
-  if (!v || !std::isfinite(*v) || *v < 0 || *v > 1e9) throw InvalidInput(field, text, "not a gravity", "a finite number in [0, 1e9], units of g0");
+  if (!v || !std::isfinite(*v) || *v < 0 || *v > 1e9) throw InvalidInput(field, text, "not a finite number >= 0", "a finite number in [0, 1e9], units of g0");
   return *v;
 }
 

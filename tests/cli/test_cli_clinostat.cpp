@@ -472,3 +472,90 @@ TEST_CASE("clinostat --running-mean: the mean over [start, start + T] as --trace
     CHECK(count_lines(bad.err) == 1);
   }
 }
+
+namespace {
+
+/// |mean over [t0, t0 + W]| of model_gravity by composite Simpson (panels of at most 0.05 s: the
+/// frames turn at most 5.05 rpm, so the rule's error is below 1e-12 g0).
+double model_window_mean(double outer, double inner, double tilt, double t0, double w) {
+  const int panels = 2 * static_cast<int>(std::ceil(w / 0.1));
+  const double h = w / panels;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int k = 0; k <= panels; ++k)
+    sum += ((k == 0 || k == panels) ? 1.0 : (k % 2 ? 4.0 : 2.0)) * model_gravity(outer, inner, tilt, 90, t0 + k * h);
+  return (sum * h / 3 / w).norm();
+}
+
+}  // namespace
+
+TEST_CASE("clinostat --band: the Mars preset's window band and target against a scan of the rotation model", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string mars = "clinostat --tilt 67.7901 --outer 5 --inner 0.05 --window 600 --band";
+  // The scan: every 5 s of the period of 1200 s (|d mean / d t0| <= 2 / W: within 1/60 g0 of the extremes).
+  double low = 1, high = 0;
+  for (double t0 = 0; t0 < 1200; t0 += 5) {
+    const double m = model_window_mean(5, 0.05, 67.7901, t0, 600);
+    low = std::min(low, m), high = std::max(high, m);
+  }
+  const Result r = run(mars + " --target-g 0.241 --tolerance 0.008 --json", dir);
+  REQUIRE(r.status == 0);
+  const json j = json::parse(r.out);
+  const json& b = j["window_band"];
+  CHECK(b["window_s"] == 600.0);
+  CHECK(b["certified"] == true);
+  CHECK(b["bound"] == "period");
+  for (const char* end : {"min", "max"}) {
+    CHECK(b[end]["upper"].get<double>() - b[end]["lower"].get<double>() <= 1e-9);
+    CHECK(b[end]["lower"].get<double>() <= b[end]["upper"].get<double>());
+  }
+  CHECK(b["min"]["lower"].get<double>() <= low + 1e-12);
+  CHECK(b["max"]["upper"].get<double>() >= high - 1e-12);
+  // The starts reached: the model's window there is at the bracket's found end.
+  CHECK(model_window_mean(5, 0.05, 67.7901, b["min"]["start_s"], 600) <= b["min"]["upper"].get<double>() + 1e-12);
+  CHECK(model_window_mean(5, 0.05, 67.7901, b["max"]["start_s"], 600) >= b["max"]["lower"].get<double>() - 1e-12);
+  CHECK(j["worst_window_mean"]["upper"] == b["max"]["upper"]);  // the max is M(W)
+  // Inside: the scan's extremes within [0.233, 0.249] by more than the scan's step allows.
+  REQUIRE(low > 0.233 + 0.02 / 60);
+  REQUIRE(high < 0.249 - 0.02 / 60);
+  CHECK(j["target"] == json{{"g", 0.241}, {"tolerance", 0.008}, {"inside", true}, {"start_s", nullptr}});
+  // Outside: the scan's max is above 0.245 by more than its step.
+  REQUIRE(high > 0.245 + 0.02 / 60);
+  const Result out = run(mars + " --target-g 0.241 --tolerance 0.004 --json", dir);
+  REQUIRE(out.status == 0);
+  const json t = json::parse(out.out)["target"];
+  CHECK(t["inside"] == false);
+  const double leaves = model_window_mean(5, 0.05, 67.7901, t["start_s"], 600);
+  CHECK((leaves > 0.245 || leaves < 0.237));
+  // The text says both.
+  const Result text = run(mars + " --target-g 0.241 --tolerance 0.004", dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "window band, W = 600 s: every window mean's |mean| lies between min in [0.2347"));
+  CHECK(contains(text.out, "target 0.241 +- 0.004 g0: the window starting at "));
+  CHECK(contains(text.out, " s leaves it (certified)"));
+  const Result in_text = run(mars + " --target-g 0.241 --tolerance 0.008", dir);
+  CHECK(contains(in_text.out, "target 0.241 +- 0.008 g0: every window mean lies inside (certified)"));
+}
+
+TEST_CASE("clinostat --band and --target-g: refusals name the option, exit 2, nothing on stdout", "[cli][clinostat]") {
+  TempDir dir;
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--band", "--band"}, {"--window 60 --target-g 0.1 --tolerance 0.1", "--target-g"},
+           {"--window 60 --band --target-g 0.1 --tolerance -0.1", "--tolerance"},
+           {"--window 60 --band --target-g 0.1 --tolerance nan", "--tolerance"},
+           {"--window 60 --band --target-g nan --tolerance 0.1", "--target-g"},
+           {"--window 60 --band --target-g 0.1", "--tolerance"}, {"--window 60 --band --tolerance 0.1", "--tolerance"},
+           {"--trace --duration 10 --band", "--band"}}) {
+    const Result bad = run("clinostat --outer 1 --inner 2 " + args, dir, true);
+    INFO(args << " -> " << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+    CHECK(contains(bad.err, option));
+  }
+  // A period too long to search (decimal speeds): refused up front, naming the cost.
+  const Result wide = run("clinostat --outer 1.414214 --inner 1 --window 600 --band", dir, true);
+  CHECK(wide.status == 2);
+  CHECK(wide.out.empty());
+  CHECK(count_lines(wide.err) == 1);
+  CHECK(contains(wide.err, "pieces to search"));
+}

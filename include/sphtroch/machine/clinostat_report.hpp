@@ -88,7 +88,7 @@ inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatReque
   if (q.target_g && !q.band) throw InvalidInput("target-g", report_number(*q.target_g), "a target needs the band", "--window S --band --target-g G --tolerance D");
   ClinostatReport r{m.settings(), q, clinostat_train(m),
                     m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m), m.has_offset(),
-                    std::nullopt, std::nullopt, std::move(dwell), {}};
+                    std::nullopt, std::nullopt, std::move(dwell), {}, std::nullopt, std::nullopt};
   if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
   if (q.target_g) check_window_target(*q.target_g, q.tolerance);  // before any search
   if (q.band) {

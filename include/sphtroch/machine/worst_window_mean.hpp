@@ -61,7 +61,8 @@ inline double worst_window_mean_cost(const GravitySeries& g) {
   const double pieces = std::ceil(*g.period_s() * fastest / 0.5);
   if (pieces > kMaxWindowPieces)
     throw InvalidInput("outer", g.machine().settings().outer.str(),
-                       "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean",
+                       "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean and the band: " +
+                           number_text(pieces) + " pieces to search, at most 4e6",
                        "speeds whose period has at most ~318000 turns of |outer| + |inner|");
   return std::max(8.0, pieces);
 }
