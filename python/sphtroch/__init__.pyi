@@ -260,6 +260,31 @@ class RunningMean(TypedDict):
     mean: List[float]
     magnitude: float
 
+class WindowBandEnd(TypedDict):
+    """One end of ClinostatReport's "window_band": the bracket [lower, upper] (g0) and a start
+    time reaching it (for "min" its window's |mean| <= upper, for "max" >= lower)."""
+    lower: float
+    upper: float
+    start_s: float
+
+class WindowBand(TypedDict):
+    """ClinostatReport's "window_band" (report(window=W, band=True), `--band`): the smallest and the
+    largest |mean| over every window of W s, each bracket at most 1e-9 wide when "certified"."""
+    window_s: float
+    min: WindowBandEnd
+    max: WindowBandEnd
+    certified: bool
+    bound: Literal["period"]
+
+class WindowTarget(TypedDict):
+    """ClinostatReport's "target" (report(..., target_g=G, tolerance=D)): whether every window
+    mean's |mean| lies in [G - D, G + D]; None: not decided (the CLI exits 3). "start_s": a start
+    whose window leaves the target (only when "inside" is False)."""
+    g: float
+    tolerance: float
+    inside: Optional[bool]
+    start_s: Optional[float]
+
 class ClinostatReport(TypedDict):
     """Clinostat.report(): the object `sphtroch clinostat --json` prints (docs/clinostat.md)."""
     train: Optional[ClinostatReportTrain]
@@ -268,6 +293,8 @@ class ClinostatReport(TypedDict):
     period_s: Optional[float]
     mean_over_period: List[float]
     worst_window_mean: NotRequired[WorstWindowMean]
+    window_band: NotRequired[WindowBand]
+    target: NotRequired[WindowTarget]
     time_to_epsilon: NotRequired[TimeToEpsilon]
     running_mean: NotRequired[List[RunningMean]]
     coverage: NotRequired[ClinostatCoverage]
@@ -708,16 +735,19 @@ class Clinostat:
         it)}."""
     def report(self, *, window: Optional[Real] = None, epsilon: Optional[Real] = None, resolution: Optional[Real] = None,
                coverage: Optional[Real] = None, nside: Count = 8, start: Real = 0.0,
-               running_mean: Optional[Sequence[Real]] = None) -> ClinostatReport:
+               running_mean: Optional[Sequence[Real]] = None, band: Flag = False, target_g: Optional[Real] = None,
+               tolerance: Optional[Real] = None) -> ClinostatReport:
         """The whole report as the object `sphtroch clinostat --outer O --inner I ... --window W
         --epsilon E --resolution S --coverage D --nside K --start T --json` prints, member for member
         and double for double (machine/clinostat_report.hpp writes it for both): "train" (or None
         and "train_note"), "averaged", "period_s", "mean_over_period", and with window
         "worst_window_mean", with epsilon "time_to_epsilon", with running_mean (durations T, s)
         "running_mean" (the mean over [start, start + T] for each T, `--running-mean`), with
-        coverage "coverage" (HEALPix). Ranges as worst_window_mean(), time_to() (resolution only
-        with epsilon; default 1 s) and coverage(). Raises InvalidInput as those do, naming the CLI's
-        options."""
+        coverage "coverage" (HEALPix), with band=True (needs window) "window_band" (the certified
+        min and max of |window mean| over every start, `--band`), with target_g=G and tolerance=D
+        (need band; finite, >= 0, g0) "target" (whether every window mean lies in G +- D). Ranges as
+        worst_window_mean(), time_to() (resolution only with epsilon; default 1 s) and coverage().
+        Raises InvalidInput as those do, naming the CLI's options."""
     def _repr_svg_(self) -> Optional[str]:
         """Jupyter's picture: the train's (GearTrain._repr_svg_), or None without a train (Jupyter
         then shows the repr)."""

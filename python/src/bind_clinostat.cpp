@@ -239,8 +239,19 @@ DwellMap dwell_map_of(const py::dict& d) {
 /// Clinostat.report(...): machine/clinostat_report.hpp's JSON object, the one `sphtroch clinostat
 /// --json` prints, read by Python's json module (so the dict is that object, member for member).
 py::object report(const Machine& self, py::handle window, py::handle epsilon, py::handle resolution, py::handle coverage,
-                  py::handle nside, py::handle start, py::handle running_mean) {
+                  py::handle nside, py::handle start, py::handle running_mean, py::handle band, py::handle target_g, py::handle tolerance) {
   ClinostatRequest q;
+  q.band = flag_arg(band, "band");
+  if (q.band && window.is_none()) throw InvalidInput("band", "True", "only with window", "window=W, band=True");
+  if (!target_g.is_none() && !q.band) throw InvalidInput("target-g", repr_of(target_g), "only with band", "window=W, band=True, target_g=G, tolerance=D");
+  if (target_g.is_none() != tolerance.is_none())
+    throw InvalidInput(target_g.is_none() ? "tolerance" : "target-g", repr_of(target_g.is_none() ? tolerance : target_g),
+                       "target_g and tolerance go together", "window=W, band=True, target_g=G, tolerance=D");
+  if (!target_g.is_none()) {
+    q.target_g = real_arg(target_g, "target-g", "a finite number >= 0, units of g0");
+    q.tolerance = real_arg(tolerance, "tolerance", "a finite number >= 0, units of g0");
+    check_window_target(*q.target_g, q.tolerance);
+  }
   q.start = time_arg(start, "start");
   if (!running_mean.is_none())
     for (const py::handle t : running_mean)
@@ -327,7 +338,8 @@ void bind_clinostat(py::module_& m) {
            doc("Clinostat.coverage_summary"))
       .def("report", checked(&report), py::kw_only(), py::arg("window") = py::none(), py::arg("epsilon") = py::none(),
            py::arg("resolution") = py::none(), py::arg("coverage") = py::none(), py::arg("nside") = 8, py::arg("start") = 0.0,
-           py::arg("running_mean") = py::none(), doc("Clinostat.report"))
+           py::arg("running_mean") = py::none(), py::arg("band") = false, py::arg("target_g") = py::none(),
+           py::arg("tolerance") = py::none(), doc("Clinostat.report"))
       .def("_repr_svg_", checked(+[](M c) -> py::object {
         return c.gear_train ? py::cast(*c.gear_train).attr("_repr_svg_")() : py::object(py::none());
       }), doc("Clinostat._repr_svg_"))
