@@ -138,7 +138,8 @@ void run_trace(const ClinostatOptions& o, const Clinostat& m) {
                                     std::pair{!o.coverage.empty(), "--coverage"}, std::pair{o.json, "--json"},
                                     std::pair{!o.plot.empty(), "--plot"}, std::pair{!o.running_mean.empty(), "--running-mean"},
                                     std::pair{o.band, "--band"}, std::pair{!o.target_g.empty(), "--target-g"},
-                                    std::pair{!o.tolerance.empty(), "--tolerance"}})
+                                    std::pair{!o.tolerance.empty(), "--tolerance"},
+                                    std::pair{!o.machine.gravity.empty(), "--gravity"}})
     if (given) throw UsageError{std::string(name) + ": not with --trace; valid: --trace --duration S --samples N [-o FILE]"};
   if (o.duration.empty()) throw UsageError{"--trace needs --duration S; valid: --trace --duration S --samples N [-o FILE]"};
   const double duration = parse_positive(o.duration, "duration", Clinostat::kMaxTime, "seconds in (0, 1e12]");
@@ -193,6 +194,8 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "Convention (docs/clinostat.md): lab Z up, gravity (0,0,-1) g0; outer axis u = (sin tilt, 0, cos tilt);\n"
       "inner axis v = cos(frame) u + sin(frame) (-cos tilt, 0, sin tilt), carried by the outer frame;\n"
       "sample frame R(t) = Rot(u, phi_o(t)) Rot(v, phi_i(t)); the sample feels g_s = R^T (0,0,-1).\n"
+      "--gravity G: the environment's gravity (g0; default 1): every mean, bracket and running mean is of\n"
+      "G g_s (with --offset of R^T(G (0,0,-1) - a/g0)); --epsilon, --target-g, --tolerance stay in g0 as typed.\n"
       "Speeds are read exactly (1.33 = 133/100 rpm). With --offset the averages are of the effective\n"
       "gravity R^T((0,0,-1) - a/g0) at that point; the gear train and the coverage are of g_s.\n"
       "--window W: M(W), the largest |mean| over every window of W s (certified bracket, width <= 1e-9).\n"
@@ -215,6 +218,8 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)")->type_name("DEG");
   cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
   cmd->add_option("--phase-inner", o->machine.phase_inner, "inner frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
+  cmd->add_option("--gravity", o->machine.gravity, "the environment's gravity G, units of g0 in (0, 1000] (default 1): scales every gravity figure")
+      ->type_name("G");
   cmd->add_option("--offset", o->machine.offset, "the sample point X,Y,Z in metres (sample frame; default the centre)")->type_name("X,Y,Z");
   cmd->add_option("--window", o->window, "M(W) for this window length, seconds")->type_name("S");
   cmd->add_flag("--band", o->band, "with --window: the certified min and max of |window mean| over every start time");

@@ -559,3 +559,31 @@ TEST_CASE("clinostat --band and --target-g: refusals name the option, exit 2, no
   CHECK(count_lines(wide.err) == 1);
   CHECK(contains(wide.err, "pieces to search"));
 }
+
+TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one; refusals", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string mars = "clinostat --tilt 67.7901 --outer 5 --inner 0.05 --window 600 --band --running-mean 300 --json";
+  const Result unit = run(mars, dir), half = run(mars + " --gravity 0.5", dir);
+  REQUIRE(unit.status == 0);
+  REQUIRE(half.status == 0);
+  const json u = json::parse(unit.out), h = json::parse(half.out);
+  CHECK(!u.contains("gravity_g0"));
+  CHECK(h["gravity_g0"] == 0.5);
+  // The brackets of G g_s hold half the unit brackets (each within 1e-9 of the truth).
+  for (const char* end : {"min", "max"})
+    for (const char* side : {"lower", "upper"})
+      CHECK(std::fabs(h["window_band"][end][side].get<double>() - 0.5 * u["window_band"][end][side].get<double>()) <= 1e-9);
+  CHECK(std::fabs(h["running_mean"][0]["magnitude"].get<double>() - 0.5 * u["running_mean"][0]["magnitude"].get<double>()) <= 1e-15);
+  // The running mean against the model: G times the Simpson mean of the unit gravity.
+  CHECK(std::fabs(h["running_mean"][0]["magnitude"].get<double>() - 0.5 * model_window_mean(5, 0.05, 67.7901, 0, 300)) <= 1e-12);
+  const Result text = run("clinostat --tilt 67.7901 --outer 5 --inner 0.05 --gravity 0.5", dir);
+  CHECK(contains(text.out, "environment's gravity: 0.5 g0"));
+  for (const std::string& bad : {"--gravity 0", "--gravity -1", "--gravity nan", "--gravity 1001", "--gravity 0.5 --trace --duration 10"}) {
+    const Result r = run("clinostat --outer 1 --inner 2 " + bad, dir, true);
+    INFO(bad << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "--gravity"));
+  }
+}

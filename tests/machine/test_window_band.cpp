@@ -212,3 +212,30 @@ TEST_CASE("window band: the target refuses a negative or NaN tolerance and gravi
   CHECK(test::expect_invalid([&] { window_target(g, b, -1, 0.1); }).field() == "target-g");
   CHECK_THROWS_AS(window_band(g, -1), InvalidInput);
 }
+
+TEST_CASE("window band: the environment's gravity G scales every window mean (G g_s), the target stays in g0", "[window_band]") {
+  ClinostatSettings s;
+  s.tilt_deg = 67.7901;
+  s.outer = Rpm(5);
+  s.inner = Rpm(5, 100);
+  s.gravity_g0 = 0.5;
+  const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+  CHECK(g.norm_bound() == 0.5);
+  const WindowBand b = window_band(g, 600);
+  REQUIRE(b.certified);
+  // The scan of the unit model, times G, lies in the brackets, and the starts reach their ends.
+  const Scan scan = scan_starts(s, 1200, 600, 2400);
+  CHECK(static_cast<double>(0.5L * scan.min) >= b.min.lower - 1e-11);
+  CHECK(static_cast<double>(0.5L * scan.max) <= b.max.upper + 1e-11);
+  CHECK(static_cast<double>(0.5L * model_mean(s, b.min.start_s, 600)) <= b.min.upper + 1e-11);
+  CHECK(static_cast<double>(0.5L * model_mean(s, b.max.start_s, 600)) >= b.max.lower - 1e-11);
+  CHECK(b.max.upper < 0.124);  // half of the unit band's 0.2465
+  // 0.12 +- 0.004 g0 holds every window at G = 0.5 (the unit band halved: [0.1174, 0.1233]).
+  const WindowTarget t = window_target(g, b, 0.12, 0.004);
+  REQUIRE(t.inside);
+  CHECK(*t.inside);
+  s.gravity_g0 = 0;
+  CHECK(test::expect_invalid([&] { Clinostat m(s); }).field() == "gravity");
+  s.gravity_g0 = std::nan("");
+  CHECK(test::expect_invalid([&] { Clinostat m(s); }).field() == "gravity");
+}

@@ -16,7 +16,7 @@
 //   std::string j = sphtroch::clinostat_report_json(r).dump(2);   // `sphtroch clinostat --json`
 //
 // JSON (docs/clinostat.md): "train" {"n", "a2", "a3", "phase", "theta2_at_0", "theta2_rate",
-// "rotation"} or null (then "train_note"); "averaged"; "period_s" (null: none); "mean_over_period";
+// "rotation"} or null (then "train_note"); "averaged"; "gravity_g0" (only when not 1); "period_s" (null: none); "mean_over_period";
 // with --window "worst_window_mean" {"window_s", "lower", "upper", "start_s", "certified"}; with
 // --epsilon "time_to_epsilon" {"epsilon", "resolution_s", "first_s", "stays_below_from_s",
 // "above_s", "reason", "certified"}; with --band "window_band" {"window_s", "min": {"lower", "upper",
@@ -152,6 +152,7 @@ inline nlohmann::json clinostat_report_json(const ClinostatReport& r) {
   out["train"] = d::train_json(r.train);
   if (!r.train.train) out["train_note"] = r.train.reason;
   out["averaged"] = r.effective ? "effective gravity at the offset" : "gravity";
+  if (r.settings.gravity_g0 != 1) out["gravity_g0"] = r.settings.gravity_g0;
   out["period_s"] = d::or_null(r.series.period_s());
   out["mean_over_period"] = d::vector_json(r.series.period_mean());
   if (r.worst)
@@ -221,6 +222,8 @@ inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatRepor
         << " min): both frames back at their start\n";
   else
     out << "period: none (the gravity does not move in the sample)\n";
+  if (r.settings.gravity_g0 != 1)
+    out << "environment's gravity: " << report_number(r.settings.gravity_g0) << " g0 (every mean and bracket below is of it)\n";
   const Vector3d c = r.series.period_mean();
   out << "mean " << (r.effective ? "effective gravity" : "gravity") << " over a period: (" << report_number(c.x()) << ", "
       << report_number(c.y()) << ", " << report_number(c.z()) << ") g0, |mean| = " << report_number(c.norm()) << " g0\n";

@@ -22,8 +22,8 @@
 // 1e-15 per harmonic, so 1e-15 sum A_k (1 + h |W_k|); both are added to every upper bound and
 // taken from every lower bound. The
 // intervals are split best first (largest upper bound) until upper - lower <= the width asked.
-// For g_s (unit vectors) the upper bound is also at most 1: a very short window, whose mean is
-// within rounding of 1 long everywhere, is then certified at once.
+// For G g_s (G times unit vectors) the upper bound is also at most G: a very short window, whose
+// mean is within rounding of G long everywhere, is then certified at once.
 // Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
 // Cost: the period split into pieces of 0.5 / sqrt(L2 / L0) s (L0 = |c| + sum |s_k| A_k: the
 // window damps the fast harmonics, so long windows start from few pieces; at most the refusal's
@@ -221,7 +221,7 @@ WorstWindowMean search_window_extreme(const GravitySeries& g, double w, double w
   };
   const auto bracket = [&](double bound) {  // the queue's top bound and the extreme found
     out.lower = largest ? found : bound;
-    out.upper = largest ? std::min(bound, g.norm_bound()) : found;  // a mean of unit vectors is at most 1 long
+    out.upper = largest ? std::min(bound, g.norm_bound()) : found;  // a mean of G g_s is at most G long
   };
   const double count = std::clamp(std::ceil(period * f.typical_frequency() / 0.5), 8.0, worst_window_mean_cost(g));
   const double half = period / count / 2;
