@@ -125,6 +125,7 @@
 #include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
+#include "sphtroch/machine/window_band.hpp"
 #if defined(SPHTROCH_HAVE_HEALPIX)
 #include "sphtroch/machine/dwell_map.hpp"
 #endif
