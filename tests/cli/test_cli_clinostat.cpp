@@ -475,15 +475,20 @@ TEST_CASE("clinostat --running-mean: the mean over [start, start + T] as --trace
 
 namespace {
 
-/// |mean over [t0, t0 + W]| of model_gravity by composite Simpson (panels of at most 0.05 s: the
-/// frames turn at most 5.05 rpm, so the rule's error is below 1e-12 g0).
+/// |mean over [t0, t0 + W]| of model_gravity by composite 4-point Gauss-Legendre (panels of at
+/// most 0.2 s: the frames turn at most 5.05 rpm, 0.11 rad per panel, so the rule's error is
+/// ~1e-17 of the mean).
 double model_window_mean(double outer, double inner, double tilt, double t0, double w) {
-  const int panels = 2 * static_cast<int>(std::ceil(w / 0.1));
+  const double x[2] = {0.3399810435848563, 0.8611363115940526}, c[2] = {0.6521451548625461, 0.3478548451374538};
+  const int panels = static_cast<int>(std::ceil(w / 0.2));
   const double h = w / panels;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int k = 0; k <= panels; ++k)
-    sum += ((k == 0 || k == panels) ? 1.0 : (k % 2 ? 4.0 : 2.0)) * model_gravity(outer, inner, tilt, 90, t0 + k * h);
-  return (sum * h / 3 / w).norm();
+  for (int k = 0; k < panels; ++k) {
+    const double mid = t0 + (k + 0.5) * h;
+    for (int i = 0; i < 2; ++i)
+      sum += c[i] * (model_gravity(outer, inner, tilt, 90, mid - x[i] * h / 2) + model_gravity(outer, inner, tilt, 90, mid + x[i] * h / 2));
+  }
+  return (sum * h / 2 / w).norm();
 }
 
 }  // namespace
@@ -586,4 +591,22 @@ TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one
     CHECK(count_lines(r.err) == 1);
     CHECK(contains(r.err, "--gravity"));
   }
+}
+
+TEST_CASE("clinostat --target-g: an end within rounding of an extreme is not decided: exit 3, and the output says so", "[cli][clinostat]") {
+  // One horizontal axis at 10 rpm, the sample at 7.395464443117222 m on y: the centripetal term
+  // w^2 r / g0 equals sinc(w W / 2) for W = 2 s, so some window mean is 0 (within rounding); the
+  // target's lower end 0.9 - 0.8999999999999999 = 1.1e-16 cannot be told from it.
+  TempDir dir;
+  const std::string machine = "clinostat --outer 10 --inner 0 --offset 0,7.395464443117222,0 --window 2 --band";
+  const Result j = run(machine + " --target-g 0.9 --tolerance 0.8999999999999999 --json", dir);
+  CHECK(j.status == 3);
+  const json t = json::parse(j.out);
+  CHECK(t["window_band"]["min"]["lower"] == 0.0);
+  CHECK(t["window_band"]["min"]["upper"].get<double>() <= 1e-9);
+  CHECK(t["target"]["inside"].is_null());
+  CHECK(contains(j.err, "not certified"));
+  const Result text = run(machine + " --target-g 0.9 --tolerance 0.8999999999999999", dir);
+  CHECK(text.status == 3);
+  CHECK(contains(text.out, "target 0.9 +- 0.8999999999999999 g0: not certified"));
 }

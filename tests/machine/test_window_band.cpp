@@ -160,6 +160,12 @@ TEST_CASE("window band: a window mean through 0 gives the min bracket [0, <= 1e-
   CHECK(b.min.upper <= 1e-9);
   CHECK(b.max.lower <= 2 * sinc + 1e-12);
   CHECK(b.max.upper >= 2 * sinc - 1e-12);
+  // A target whose lower end is 1 ulp of 0.9 above 0 (the true smallest, 0, within rounding of it):
+  // not decided, and said so (inside empty); its upper end 1.8 is above the max, so no window
+  // leaves by the top.
+  const WindowTarget t = window_target(g, b, 0.9, std::nextafter(0.9, 0.0));
+  CHECK(!t.inside);
+  CHECK(!t.start_s);
   // Without the offset the smallest and the largest are both s (a circle about 0).
   const WindowBand circle = window_band(GravitySeries::of_gravity(Clinostat(s)), window);
   CHECK(circle.min.lower <= sinc + 1e-12);
