@@ -10,7 +10,9 @@
 //   const sphtroch::WindowBand b = sphtroch::window_band(g, 600.0);
 //   b.min.lower, b.min.upper;   // min over t0 of |mean over [t0, t0 + 600 s]| lies in here (g0)
 //   b.max.lower, b.max.upper;   // the max: M(600 s) (worst_window_mean.hpp)
-//   sphtroch::window_target(g, b, 0.241, 0.006).inside;   // true: every window mean in [0.235, 0.247]
+//   b.min.lower;                // 0.2347483080: every 10-minute mean is in about [0.235, 0.247] g0
+//   sphtroch::window_target(g, b, 0.241, 0.007).inside;   // true: every window mean in [0.234, 0.248]
+//   sphtroch::window_target(g, b, 0.241, 0.004).start_s;  // 510 s: its window's mean, 0.2465 g0, is above 0.245
 //
 // Method: both extremes by the one branch and bound of worst_window_mean.hpp over the window's
 // centre in one period (window_mean_extreme), with its proven bounds: the max by the
@@ -19,7 +21,10 @@
 // smooth where m = 0, but the bound is of the vector m (smooth), not of |m|: a window mean that
 // passes through 0 gives pieces whose lower bound is 0 and evaluations that come within the
 // width of 0, so a minimum of 0 is bracketed as [0, upper], upper <= the width (1e-9).
-// Cost: two searches of M(W)'s cost (worst_window_mean_cost refuses a period too long up front).
+// Cost: two searches over one period, each bounded as M(W)'s (worst_window_mean_cost refuses a
+// period too long up front, naming the pieces it would need); the min's search costs more than
+// the max's where |m| is nearly flat over the period (tilted frames), since fewer pieces prune.
+// No bound over the motor torus: its ends would not be certified to 1e-9 (docs/clinostat.md).
 #pragma once
 
 #include "sphtroch/core/errors.hpp"
