@@ -245,3 +245,46 @@ TEST_CASE("window band: the environment's gravity G scales every window mean (G 
   s.gravity_g0 = std::nan("");
   CHECK(test::expect_invalid([&] { Clinostat m(s); }).field() == "gravity");
 }
+
+TEST_CASE("window band over the torus (a period too long to search): the brackets hold a scan of the model and the starts reach them",
+          "[window_band]") {
+  for (const auto& [outer, tilt, frame] : {std::tuple{"1414214/1000000", 90.0, 90.0}, std::tuple{"1414214/1000000", 75.0, 80.0}}) {
+    ClinostatSettings s;
+    s.outer = Rpm(1414214, 1000000);
+    s.inner = Rpm(1);
+    s.tilt_deg = tilt, s.frame_angle_deg = frame;
+    const GravitySeries g = GravitySeries::of_gravity(Clinostat(s));
+    CHECK_THROWS_AS(worst_window_mean_cost(g), InvalidInput);
+    const WindowBand b = window_band_torus(g, 600);
+    INFO(outer << " tilt " << tilt << " frame " << frame << ": min [" << b.min.lower << ", " << b.min.upper << "] max [" << b.max.lower
+               << ", " << b.max.upper << "]");
+    CHECK(std::string(b.bound) == "torus");
+    CHECK(b.min.lower <= b.min.upper);
+    CHECK(b.max.lower <= b.max.upper);
+    CHECK(b.min.upper <= b.max.upper);
+    // A scan of the model at starts spread over a day and at a million seconds.
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> start(0, 1e6);
+    for (int k = 0; k < 300; ++k) {
+      const double t0 = k < 150 ? 86400.0 * k / 150 : start(rng);
+      const long double m = model_mean(s, t0, 600);
+      CHECK(static_cast<double>(m) >= b.min.lower - 1e-11);
+      CHECK(static_cast<double>(m) <= b.max.upper + 1e-11);
+    }
+    CHECK(static_cast<double>(model_mean(s, b.min.start_s, 600)) <= b.min.upper + 1e-11);
+    CHECK(static_cast<double>(model_mean(s, b.max.start_s, 600)) >= b.max.lower - 1e-11);
+    // The torus' ends close in on the path's: within 1e-3 g0 (the path is dense on the torus).
+    CHECK(b.min.upper - b.min.lower < 1e-3);
+    CHECK(b.max.upper - b.max.lower < 1e-3);
+    // A target around the band with a margin is decided inside, one inside the band outside.
+    const double mid = (b.min.lower + b.max.upper) / 2, half = (b.max.upper - b.min.lower) / 2;
+    const WindowTarget in = window_target(g, b, mid, half + 1e-3);
+    REQUIRE(in.inside);
+    CHECK(*in.inside);
+    if (b.max.lower - b.min.upper > 1e-3) {
+      const WindowTarget out = window_target(g, b, mid, (b.max.lower - b.min.upper) / 2 - 1e-4);
+      REQUIRE(out.inside);
+      CHECK(!*out.inside);
+    }
+  }
+}

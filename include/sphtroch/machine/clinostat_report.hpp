@@ -20,12 +20,13 @@
 // with --window "worst_window_mean" {"window_s", "lower", "upper", "start_s", "certified"}; with
 // --epsilon "time_to_epsilon" {"epsilon", "resolution_s", "first_s", "stays_below_from_s",
 // "above_s", "reason", "certified"}; with --band "window_band" {"window_s", "min": {"lower", "upper",
-// "start_s"}, "max": {...}, "certified", "bound": "period"}; with --target-g "target" {"g",
+// "start_s"}, "max": {...}, "certified", "bound": "period" or "torus" (a period too long to search)}; with --target-g "target" {"g",
 // "tolerance", "inside" (null: not decided), "start_s" (null unless outside)}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
 // "magnitude"}]; with --coverage "coverage" {"start_s", "duration_s", "nside",
 // "order", "fraction", "dwell_cv", "bound_s", "dwell_s"}.
-// Cost: M(W), the band and the time to epsilon are refused up front when the period is too long to search
-// (worst_window_mean_cost throws CostLimitExceeded); the rest is closed form.
+// Cost: M(W) and the time to epsilon are refused up front when the period is too long to search
+// (worst_window_mean_cost throws InvalidInput("outer")); the band is then bounded over the motor
+// torus (window_band_torus, fixed cost); the rest is closed form.
 #pragma once
 
 #include "sphtroch/core/number_text.hpp"
@@ -89,10 +90,16 @@ inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatReque
   ClinostatReport r{m.settings(), q, clinostat_train(m),
                     m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m), m.has_offset(),
                     std::nullopt, std::nullopt, std::move(dwell), {}, std::nullopt, std::nullopt};
-  if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
+  bool torus = false;  // the band of a period too long to search: bounds over the torus
+  if (q.band) try {
+      worst_window_mean_cost(r.series);
+    } catch (const InvalidInput&) {
+      torus = true;
+    }
+  if (q.epsilon || (q.window && !q.band)) worst_window_mean_cost(r.series);  // refuse a period too long up front
   if (q.target_g) check_window_target(*q.target_g, q.tolerance);  // before any search
   if (q.band) {
-    r.band = window_band(r.series, *q.window);
+    r.band = torus ? window_band_torus(r.series, *q.window) : window_band(r.series, *q.window);
     r.worst = r.band->max;  // the band's max is M(W), the same search
     if (q.target_g) r.target = window_target(r.series, *r.band, *q.target_g, q.tolerance);
   } else if (q.window) {
@@ -113,7 +120,9 @@ inline bool clinostat_report_certified(const ClinostatReport& r) {
 inline std::string clinostat_report_uncertified(const ClinostatReport& r) {
   if (r.worst && !r.worst->certified) return "the worst window mean's bracket is wider than 1e-9";
   if (r.time_to && !r.time_to->certified) return r.time_to->reason;
-  if (r.band && !r.band->certified) return "the window band's brackets are wider than 1e-9";
+  if (r.band && !r.band->certified)
+    return std::string("the window band's brackets are wider than 1e-9") +
+           (std::string(r.band->bound) == "torus" ? " (the period is too long to search: bounds over the motor torus)" : "");
   if (r.target && !r.target->inside) return "the target is not certified: an extreme of the window means is within rounding of its end";
   return "";
 }
@@ -204,7 +213,12 @@ inline void write_clinostat_band_text(std::ostream& out, const ClinostatReport& 
         << report_number(b.min.lower) << ", " << report_number(b.min.upper) << "] g0 (the window starting at "
         << report_number(b.min.start_s) << " s) and max in [" << report_number(b.max.lower) << ", " << report_number(b.max.upper)
         << "] g0 (starting at " << report_number(b.max.start_s) << " s)"
-        << (b.certified ? "" : " (NOT CERTIFIED: a bracket is wider than 1e-9)") << "\n";
+        << (b.certified ? ""
+            : std::string(b.bound) == "torus"
+                ? " (NOT CERTIFIED to 1e-9: the period is too long to search; each bracket holds its end: the bound over every"
+                  " pair of frame angles and the path's sampled starts)"
+                : " (NOT CERTIFIED: a bracket is wider than 1e-9)")
+        << "\n";
   }
   if (r.target) {
     const WindowTarget& t = *r.target;

@@ -32,8 +32,11 @@
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <string>
 
 namespace sphtroch {
 
@@ -55,6 +58,38 @@ inline WindowBand window_band(const GravitySeries& g, double window_s, double wi
   b.window_s = window_s;
   b.max = window_mean_extreme(g, window_s, WindowExtreme::largest, width, never);
   b.min = window_mean_extreme(g, window_s, WindowExtreme::smallest, width, never);
+  b.certified = b.min.certified && b.max.certified;
+  return b;
+}
+
+/// The band of a period too long to search (worst_window_mean_cost refuses it), bound "torus":
+/// max.upper and min.lower bound the window means over every pair of frame angles (the torus,
+/// torus_window_extreme), so over every start; max.lower and min.upper are the largest and the
+/// smallest |window mean| of kTorusBandStarts starts spread over one period (the path's own
+/// values, rounding allowed for), each with its start. The brackets are proven but not 1e-9 wide
+/// in general (certified says whether they are): the path need not reach the torus' extremes.
+constexpr int kTorusBandStarts = 1 << 16;
+inline WindowBand window_band_torus(const GravitySeries& g, double window_s, double width = 1e-9) {
+  WindowBand b;
+  b.window_s = window_s;
+  b.bound = "torus";
+  b.min.window_s = b.max.window_s = window_s;
+  b.min.upper = std::numeric_limits<double>::infinity();
+  double sizes = 1 + g.period_mean().norm();  // the window mean's rounding is within 1e-14 (1 + |c| + sum A_k)
+  for (const GravityHarmonic& h : g.oscillating()) sizes += h.amplitude;
+  const double period = g.period_s().value_or(1.0);
+  for (int k = 0; k < kTorusBandStarts; ++k) {
+    const double t0 = period * k / kTorusBandStarts, m = g.window_mean(t0, window_s).norm();
+    if (m - 1e-14 * sizes > b.max.lower) b.max.lower = m - 1e-14 * sizes, b.max.start_s = t0;
+    if (m + 1e-14 * sizes < b.min.upper) b.min.upper = m + 1e-14 * sizes, b.min.start_s = t0;
+  }
+  b.max.lower = std::max(0.0, b.max.lower);
+  const auto top = torus_window_extreme(g, window_s, WindowExtreme::largest, width);
+  const auto bottom = torus_window_extreme(g, window_s, WindowExtreme::smallest, width);
+  b.max.upper = std::max(b.max.lower, std::min(top.upper, g.norm_bound()));
+  b.min.lower = std::min(b.min.upper, bottom.lower);
+  b.max.certified = b.max.upper - b.max.lower <= width;
+  b.min.certified = b.min.upper - b.min.lower <= width;
   b.certified = b.min.certified && b.max.certified;
   return b;
 }
@@ -89,19 +124,20 @@ inline void check_window_target(double target, double tolerance) {
 /// The target G +- D against the band `b` of series g: outside when max.lower > G + D or min.upper
 /// < G - D (proven, with the start reaching it), inside when max.upper <= G + D and min.lower >= G
 /// - D; an end within the brackets is searched again against that limit until one side is
-/// proven, else left undecided. Throws as check_window_target.
+/// proven (a "period" band; a "torus" band's brackets are all there is), else left undecided. Throws as check_window_target.
 inline WindowTarget window_target(const GravitySeries& g, const WindowBand& b, double target, double tolerance) {
   check_window_target(target, tolerance);
   WindowTarget out;
   out.g = target, out.tolerance = tolerance;
   const double high = target + tolerance, low = target - tolerance;
   WorstWindowMean max = b.max, min = b.min;
-  if (!(max.lower > high) && max.upper > high) max = detail::refine_against(g, b.window_s, WindowExtreme::largest, high);
+  const bool searchable = std::string(b.bound) == "period";  // the torus' ends are not searched again
+  if (searchable && !(max.lower > high) && max.upper > high) max = detail::refine_against(g, b.window_s, WindowExtreme::largest, high);
   if (max.lower > high) {
     out.inside = false, out.start_s = max.start_s;
     return out;
   }
-  if (!(min.upper < low) && min.lower < low) min = detail::refine_against(g, b.window_s, WindowExtreme::smallest, low);
+  if (searchable && !(min.upper < low) && min.lower < low) min = detail::refine_against(g, b.window_s, WindowExtreme::smallest, low);
   if (min.upper < low) {
     out.inside = false, out.start_s = min.start_s;
     return out;

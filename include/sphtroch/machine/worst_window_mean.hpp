@@ -258,19 +258,22 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
   return search_window_extreme(g, w, width, WindowExtreme::largest, stop, work);
 }
 
-/// sup |F| over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k cos(j x + l y) +
-/// b_k sin(j x + l y)), bracketed: the window mean at any start lies on it, so M(W) <= upper, at a
-/// cost independent of the period (lower bounds sup |F|, not M(W): the path may miss the torus'
-/// highest point). A box of half-widths (hx, hy) about (x, y) is bounded by the largest |F + F_x
-/// dx + F_y dy| over its corners (convex in d) plus sum_k |s_k| A_k (|j| hx + |l| hy)^2 / 2 (the
-/// second derivative along d) and rounding. Best first; stop(lower, upper) ends it early, else
-/// it ends at kMaxTorusBoxes boxes.
+/// sup |F| (or inf |F|) over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k
+/// cos(j x + l y) + b_k sin(j x + l y)), bracketed: the window mean at any start lies on it, so
+/// M(W) <= the sup's upper and the smallest window mean >= the inf's lower, at a cost independent
+/// of the period (the other end bounds the torus' extreme, not the path's: the path may miss it).
+/// A box of half-widths (hx, hy) about (x, y), second derivative along d bounded by sum_k |s_k|
+/// A_k (|j| hx + |l| hy)^2 / 2, plus rounding: for the sup, bounded above by the largest |F + F_x
+/// dx + F_y dy| over its corners (convex in d); for the inf, below by the larger of |F| - |F_x|
+/// hx - |F_y| hy and |n . F| (n the unit normal of F_x, F_y: F + F_x dx + F_y dy keeps that
+/// component; at the inf F is along n, so the bound closes quadratically). Best first; stop(lower,
+/// upper) ends it early, else it ends at kMaxTorusBoxes boxes.
 constexpr int kMaxTorusBoxes = 4096;
 struct TorusBracket {
   double lower = 0, upper = 0;
 };
 template <typename Stop>
-TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* work = nullptr) {
+TorusBracket torus_extreme(const GravitySeries& g, double w, WindowExtreme side, Stop stop, double* work = nullptr) {
   struct Term {
     int j, l;
     double s;
@@ -285,12 +288,14 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
   double amplitudes = 0;
   for (const GravityHarmonic& h : g.oscillating()) amplitudes += h.amplitude;
   const double rounding = 1e-14 * (size + 1) + 1e-15 * amplitudes;  // and the sincs' absolute error
+  const bool largest = side == WindowExtreme::largest;
   struct Box {
-    double x, y, half, upper;
-    bool operator<(const Box& o) const { return upper < o.upper; }
+    double x, y, half, bound, key;  // key: the bound signed so that the most promising box is on top
+    bool operator<(const Box& o) const { return key < o.key; }
   };
   std::priority_queue<Box> boxes;
   TorusBracket out;
+  double found = largest ? 0.0 : std::numeric_limits<double>::infinity();
   const auto add = [&](double x, double y, double half) {
     if (work) *work += 1;
     Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
@@ -305,18 +310,27 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
       const double reach = (std::abs(t.j) + std::abs(t.l)) * half;
       curvature += std::fabs(t.s) * t.h->amplitude * reach * reach / 2;
     }
-    double corner = 0;
-    for (const double sx : {-half, half})
-      for (const double sy : {-half, half}) corner = std::max(corner, (f + fx * sx + fy * sy).norm());
-    boxes.push({x, y, half, corner + curvature + rounding});
-    out.lower = std::max(out.lower, f.norm() - rounding);
+    double bound = 0;
+    if (largest) {
+      for (const double sx : {-half, half})
+        for (const double sy : {-half, half}) bound = std::max(bound, (f + fx * sx + fy * sy).norm());
+      bound += curvature + rounding;
+      found = std::max(found, f.norm() - rounding);
+    } else {
+      const Vector3d normal = fx.cross(fy);
+      const double across = normal.norm() > 0 ? std::fabs(normal.dot(f)) / normal.norm() : 0.0;
+      bound = std::max(0.0, std::max(f.norm() - (fx.norm() + fy.norm()) * half, across) - curvature - rounding);
+      found = std::min(found, f.norm() + rounding);
+    }
+    boxes.push({x, y, half, bound, largest ? bound : -bound});
   };
   const double pi = Constants<double>::pi();
   const int n = 4;
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) add((2 * a + 1) * pi / n, (2 * b + 1) * pi / n, pi / n);
   for (int count = n * n;; count += 4) {
-    out.upper = std::max(out.lower, boxes.top().upper);
+    out.lower = largest ? found : std::min(found, boxes.top().bound);
+    out.upper = largest ? std::max(found, boxes.top().bound) : found;
     if (count >= kMaxTorusBoxes || stop(out.lower, out.upper)) return out;
     const Box top = boxes.top();
     boxes.pop();
@@ -324,6 +338,12 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
     for (const double dx : {-q, q})
       for (const double dy : {-q, q}) add(top.x + dx, top.y + dy, q);
   }
+}
+
+/// sup |F| over the whole torus (torus_extreme's largest): `upper` bounds M(W).
+template <typename Stop>
+TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* work = nullptr) {
+  return torus_extreme(g, w, WindowExtreme::largest, stop, work);
 }
 
 /// True when sup |F| <= epsilon is proven over the whole torus (torus_bracket): M(W) <= epsilon
@@ -350,6 +370,13 @@ inline WorstWindowMean worst_window_mean(const GravitySeries& g, double window_s
 template <typename Stop>
 WorstWindowMean window_mean_extreme(const GravitySeries& g, double window_s, WindowExtreme side, double width, Stop stop) {
   return detail::search_window_extreme(g, window_s, width, side, stop);
+}
+
+/// One extreme of |F| over the whole torus of frame angles (detail::torus_extreme): {lower, upper}
+/// with upper - lower <= width or after kMaxTorusBoxes boxes. Largest: upper >= M(W); smallest:
+/// lower <= the smallest window mean, whatever the period.
+inline auto torus_window_extreme(const GravitySeries& g, double window_s, WindowExtreme side, double width) {
+  return detail::torus_extreme(g, window_s, side, [width](double lower, double upper) { return upper - lower <= width; });
 }
 
 /// Whether M(W) <= epsilon: below (upper <= epsilon), above (lower > epsilon) or undecided (M(W)
