@@ -269,12 +269,13 @@ class WindowBandEnd(TypedDict):
 
 class WindowBand(TypedDict):
     """ClinostatReport's "window_band" (report(window=W, band=True), `--band`): the smallest and the
-    largest |mean| over every window of W s, each bracket at most 1e-9 wide when "certified"."""
+    largest |mean| over every window of W s, each bracket at most 1e-9 wide when "certified"; "bound"
+    "torus" for a period too long to search (bounds over every pair of frame angles, not certified)."""
     window_s: float
     min: WindowBandEnd
     max: WindowBandEnd
     certified: bool
-    bound: Literal["period"]
+    bound: Literal["period", "torus"]
 
 class WindowTarget(TypedDict):
     """ClinostatReport's "target" (report(..., target_g=G, tolerance=D)): whether every window

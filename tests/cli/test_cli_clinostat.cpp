@@ -26,11 +26,18 @@ namespace {
 using namespace sphtroch::test;
 using nlohmann::json;
 
-Eigen::Vector3d model_gravity(double outer_rpm, double inner_rpm, double tilt_deg, double frame_deg, double t) {
+/// g_s(t) = (Rot(u, phi_o) Rot(v, phi_i))^T (0, 0, -1); the turns rpm t / 60 in long double with
+/// the whole turns removed (t up to 1e8 s keeps ~1e-12 rad).
+Eigen::Vector3d model_gravity(long double outer_rpm, long double inner_rpm, double tilt_deg, double frame_deg, long double t) {
   const double pi = 3.14159265358979323846, psi = tilt_deg * pi / 180, beta = frame_deg * pi / 180;
   const Eigen::Vector3d u(std::sin(psi), 0, std::cos(psi)), w(-std::cos(psi), 0, std::sin(psi));
   const Eigen::Vector3d v = std::cos(beta) * u + std::sin(beta) * w;
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(2 * pi * outer_rpm * t / 60, u) * Eigen::AngleAxisd(2 * pi * inner_rpm * t / 60, v)).toRotationMatrix();
+  const auto angle = [](long double rpm, long double time) {
+    long double turns = rpm * time / 60;
+    turns -= std::floor(turns);
+    return static_cast<double>(2 * 3.141592653589793238462643383279502884L * turns);
+  };
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(angle(outer_rpm, t), u) * Eigen::AngleAxisd(angle(inner_rpm, t), v)).toRotationMatrix();
   return r.transpose() * Eigen::Vector3d(0, 0, -1);
 }
 
@@ -478,15 +485,15 @@ namespace {
 /// |mean over [t0, t0 + W]| of model_gravity by composite 4-point Gauss-Legendre (panels of at
 /// most 0.2 s: the frames turn at most 5.05 rpm, 0.11 rad per panel, so the rule's error is
 /// ~1e-17 of the mean).
-double model_window_mean(double outer, double inner, double tilt, double t0, double w) {
+double model_window_mean(long double outer, long double inner, double tilt, long double t0, double w, double frame = 90) {
   const double x[2] = {0.3399810435848563, 0.8611363115940526}, c[2] = {0.6521451548625461, 0.3478548451374538};
   const int panels = static_cast<int>(std::ceil(w / 0.2));
   const double h = w / panels;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int k = 0; k < panels; ++k) {
-    const double mid = t0 + (k + 0.5) * h;
+    const long double mid = t0 + (k + 0.5L) * h;  // long double: a start of 3e7 s keeps its nodes to ~1e-12 s
     for (int i = 0; i < 2; ++i)
-      sum += c[i] * (model_gravity(outer, inner, tilt, 90, mid - x[i] * h / 2) + model_gravity(outer, inner, tilt, 90, mid + x[i] * h / 2));
+      sum += c[i] * (model_gravity(outer, inner, tilt, frame, mid - x[i] * h / 2) + model_gravity(outer, inner, tilt, frame, mid + x[i] * h / 2));
   }
   return (sum * h / 2 / w).norm();
 }
@@ -557,12 +564,40 @@ TEST_CASE("clinostat --band and --target-g: refusals name the option, exit 2, no
     CHECK(count_lines(bad.err) == 1);
     CHECK(contains(bad.err, option));
   }
-  // A period too long to search (decimal speeds): refused up front, naming the cost.
-  const Result wide = run("clinostat --outer 1.414214 --inner 1 --window 600 --band", dir, true);
+  // M(W) alone of a period too long to search (decimal speeds): refused up front, naming the cost.
+  const Result wide = run("clinostat --outer 1.414214 --inner 1 --window 600", dir, true);
   CHECK(wide.status == 2);
   CHECK(wide.out.empty());
   CHECK(count_lines(wide.err) == 1);
   CHECK(contains(wide.err, "pieces to search"));
+}
+
+TEST_CASE("clinostat --band of a period too long to search: bounds over the motor torus, not certified to 1e-9 (exit 3)", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string machine = "clinostat --outer 1.414214 --inner 1 --tilt 75 --frame-angle 80 --window 600 --band";
+  const Result r = run(machine + " --json", dir);
+  CHECK(r.status == 3);
+  CHECK(contains(r.err, "motor torus"));
+  const json b = json::parse(r.out)["window_band"];
+  CHECK(b["bound"] == "torus");
+  CHECK(b["certified"] == false);
+  const double min_lower = b["min"]["lower"], max_upper = b["max"]["upper"];
+  // The rotation model at starts over a day lies within the proven ends; the starts reach theirs.
+  for (double t0 = 0; t0 < 86400; t0 += 86400.0 / 60) {
+    const double m = model_window_mean(1.414214L, 1, 75, t0, 600, 80);
+    CHECK(m >= min_lower - 1e-12);
+    CHECK(m <= max_upper + 1e-12);
+  }
+  CHECK(model_window_mean(1.414214L, 1, 75, b["min"]["start_s"], 600, 80) <= b["min"]["upper"].get<double>() + 1e-12);
+  CHECK(model_window_mean(1.414214L, 1, 75, b["max"]["start_s"], 600, 80) >= b["max"]["lower"].get<double>() - 1e-12);
+  // A target with a margin around the proven ends is certified inside (the band itself still exits 3).
+  const double mid = (min_lower + max_upper) / 2, tolerance = (max_upper - min_lower) / 2 + 1e-3;
+  const Result t = run(machine + " --target-g " + shortest_g(mid) + " --tolerance " + shortest_g(tolerance) + " --json", dir);
+  CHECK(t.status == 3);
+  CHECK(json::parse(t.out)["target"]["inside"] == true);
+  const Result text = run(machine, dir);
+  CHECK(text.status == 3);
+  CHECK(contains(text.out, "NOT CERTIFIED to 1e-9: the period is too long to search"));
 }
 
 TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one; refusals", "[cli][clinostat]") {
