@@ -118,11 +118,11 @@ inline bool clinostat_report_certified(const ClinostatReport& r) {
 
 /// Why the report is not certified ("" when it is).
 inline std::string clinostat_report_uncertified(const ClinostatReport& r) {
-  if (r.worst && !r.worst->certified) return "the worst window mean's bracket is wider than 1e-9";
-  if (r.time_to && !r.time_to->certified) return r.time_to->reason;
-  if (r.band && !r.band->certified)
+  if (r.band && !r.band->certified)  // before M(W): with the band, M(W) is its max
     return std::string("the window band's brackets are wider than 1e-9") +
            (std::string(r.band->bound) == "torus" ? " (the period is too long to search: bounds over the motor torus)" : "");
+  if (r.worst && !r.worst->certified) return "the worst window mean's bracket is wider than 1e-9";
+  if (r.time_to && !r.time_to->certified) return r.time_to->reason;
   if (r.target && !r.target->inside) return "the target is not certified: an extreme of the window means is within rounding of its end";
   return "";
 }
