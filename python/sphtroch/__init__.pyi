@@ -291,6 +291,7 @@ class ClinostatReport(TypedDict):
     train: Optional[ClinostatReportTrain]
     train_note: NotRequired[str]
     averaged: str
+    gravity_g0: NotRequired[float]
     period_s: Optional[float]
     mean_over_period: List[float]
     worst_window_mean: NotRequired[WorstWindowMean]
@@ -645,13 +646,17 @@ class Clinostat:
     |phase| <= 1e6. offset: None (the centre) or the sample point (x, y, z) in metres, sample
     frame, |r| <= 10; with an offset, period, mean_over_period, window_mean, worst_window_mean and
     time_to are of the effective gravity R^T((0, 0, -1) - a / g0) there (as the CLI's averages),
-    while the train and the coverage are of g_s.
+    while the train and the coverage are of g_s. gravity_g0: the environment's gravity G in g0, (0,
+    1000] (the CLI's --gravity, named apart from the method gravity(); default 1): the averages (period, mean_over_period, window_mean,
+    worst_window_mean, time_to, report) are then of G g_s (with an offset, of R^T(G (0, 0, -1) -
+    a / g0)); epsilon and the target stay in g0; gravity() stays the direction g_s.
     Immutable. Raises InvalidInput whose field is the CLI's option: "outer", "inner", "tilt",
-    "frame-angle", "phase-outer", "phase-inner" or "offset".
+    "frame-angle", "phase-outer", "phase-inner", "offset" or "gravity".
     """
 
     def __init__(self, outer_rpm: RpmLike, inner_rpm: RpmLike, *, tilt: Real = 90.0, frame_angle: Real = 90.0,
-                 phase_outer: Real = 0.0, phase_inner: Real = 0.0, offset: Optional[Point3] = None) -> None: ...
+                 phase_outer: Real = 0.0, phase_inner: Real = 0.0, offset: Optional[Point3] = None,
+                 gravity_g0: Real = 1.0) -> None: ...
     @property
     def outer_rpm(self) -> str:
         """The outer frame's exact speed as text: "1.33" when a decimal, else "p/q" ("4/3")."""
@@ -673,6 +678,9 @@ class Clinostat:
     @property
     def offset(self) -> Optional[Tuple[float, float, float]]:
         """The sample point (x, y, z), metres, or None when none was given."""
+    @property
+    def gravity_g0(self) -> float:
+        """The environment's gravity G, units of g0 (1 unless given)."""
     @property
     def period(self) -> Optional[float]:
         """Seconds after which the averaged gravity repeats (both frames back where they started,
@@ -701,8 +709,9 @@ class Clinostat:
         angles are reduced exactly (whole turns removed in integers), so t = 1e6 s keeps ~1e-15.
         Raises InvalidInput("t")."""
     def effective_gravity(self, t: Union[Real, npt.ArrayLike]) -> npt.NDArray[np.float64]:
-        """The effective gravity R^T ((0, 0, -1) - a / g0) of the sample point at the times t, a its
-        acceleration; shapes as gravity(). Equal to gravity() without an offset."""
+        """The effective gravity R^T (G (0, 0, -1) - a / g0) of the sample point at the times t, a its
+        acceleration, G the environment's gravity; shapes as gravity(). Equal to G gravity() without
+        an offset."""
     def window_mean(self, t0: Real, window: Real) -> npt.NDArray[np.float64]:
         """The mean of the averaged gravity (the effective gravity with an offset, else g_s) over
         [t0, t0 + window] (3,), units of g0, in closed form (rounding ~1e-15). window: 0 .. 1e9 s
