@@ -132,6 +132,7 @@
 #include "sphtroch/machine/rpm.hpp"
 #include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
+#include "sphtroch/machine/window_band.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 #if defined(SPHTROCH_HAVE_HEALPIX)
 #include "sphtroch/machine/dwell_map.hpp"

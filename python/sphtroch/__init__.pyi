@@ -260,14 +260,43 @@ class RunningMean(TypedDict):
     mean: List[float]
     magnitude: float
 
+class WindowBandEnd(TypedDict):
+    """One end of ClinostatReport's "window_band": the bracket [lower, upper] (g0) and a start
+    time reaching it (for "min" its window's |mean| <= upper, for "max" >= lower)."""
+    lower: float
+    upper: float
+    start_s: float
+
+class WindowBand(TypedDict):
+    """ClinostatReport's "window_band" (report(window=W, band=True), `--band`): the smallest and the
+    largest |mean| over every window of W s, each bracket at most 1e-9 wide when "certified"; "bound"
+    "torus" for a period too long to search (bounds over every pair of frame angles, not certified)."""
+    window_s: float
+    min: WindowBandEnd
+    max: WindowBandEnd
+    certified: bool
+    bound: Literal["period", "torus"]
+
+class WindowTarget(TypedDict):
+    """ClinostatReport's "target" (report(..., target_g=G, tolerance=D)): whether every window
+    mean's |mean| lies in [G - D, G + D]; None: not decided (the CLI exits 3). "start_s": a start
+    whose window leaves the target (only when "inside" is False)."""
+    g: float
+    tolerance: float
+    inside: Optional[bool]
+    start_s: Optional[float]
+
 class ClinostatReport(TypedDict):
     """Clinostat.report(): the object `sphtroch clinostat --json` prints (docs/clinostat.md)."""
     train: Optional[ClinostatReportTrain]
     train_note: NotRequired[str]
     averaged: str
+    gravity_g0: NotRequired[float]
     period_s: Optional[float]
     mean_over_period: List[float]
     worst_window_mean: NotRequired[WorstWindowMean]
+    window_band: NotRequired[WindowBand]
+    target: NotRequired[WindowTarget]
     time_to_epsilon: NotRequired[TimeToEpsilon]
     running_mean: NotRequired[List[RunningMean]]
     coverage: NotRequired[ClinostatCoverage]
@@ -658,13 +687,17 @@ class Clinostat:
     |phase| <= 1e6. offset: None (the centre) or the sample point (x, y, z) in metres, sample
     frame, |r| <= 10; with an offset, period, mean_over_period, window_mean, worst_window_mean and
     time_to are of the effective gravity R^T((0, 0, -1) - a / g0) there (as the CLI's averages),
-    while the train and the coverage are of g_s.
+    while the train and the coverage are of g_s. gravity_g0: the environment's gravity G in g0, (0,
+    1000] (the CLI's --gravity, named apart from the method gravity(); default 1): the averages (period, mean_over_period, window_mean,
+    worst_window_mean, time_to, report) are then of G g_s (with an offset, of R^T(G (0, 0, -1) -
+    a / g0)); epsilon and the target stay in g0; gravity() stays the direction g_s.
     Immutable. Raises InvalidInput whose field is the CLI's option: "outer", "inner", "tilt",
-    "frame-angle", "phase-outer", "phase-inner" or "offset".
+    "frame-angle", "phase-outer", "phase-inner", "offset" or "gravity".
     """
 
     def __init__(self, outer_rpm: RpmLike, inner_rpm: RpmLike, *, tilt: Real = 90.0, frame_angle: Real = 90.0,
-                 phase_outer: Real = 0.0, phase_inner: Real = 0.0, offset: Optional[Point3] = None) -> None: ...
+                 phase_outer: Real = 0.0, phase_inner: Real = 0.0, offset: Optional[Point3] = None,
+                 gravity_g0: Real = 1.0) -> None: ...
     @property
     def outer_rpm(self) -> str:
         """The outer frame's exact speed as text: "1.33" when a decimal, else "p/q" ("4/3")."""
@@ -686,6 +719,9 @@ class Clinostat:
     @property
     def offset(self) -> Optional[Tuple[float, float, float]]:
         """The sample point (x, y, z), metres, or None when none was given."""
+    @property
+    def gravity_g0(self) -> float:
+        """The environment's gravity G, units of g0 (1 unless given)."""
     @property
     def period(self) -> Optional[float]:
         """Seconds after which the averaged gravity repeats (both frames back where they started,
@@ -714,8 +750,9 @@ class Clinostat:
         angles are reduced exactly (whole turns removed in integers), so t = 1e6 s keeps ~1e-15.
         Raises InvalidInput("t")."""
     def effective_gravity(self, t: Union[Real, npt.ArrayLike]) -> npt.NDArray[np.float64]:
-        """The effective gravity R^T ((0, 0, -1) - a / g0) of the sample point at the times t, a its
-        acceleration; shapes as gravity(). Equal to gravity() without an offset."""
+        """The effective gravity R^T (G (0, 0, -1) - a / g0) of the sample point at the times t, a its
+        acceleration, G the environment's gravity; shapes as gravity(). Equal to G gravity() without
+        an offset."""
     def window_mean(self, t0: Real, window: Real) -> npt.NDArray[np.float64]:
         """The mean of the averaged gravity (the effective gravity with an offset, else g_s) over
         [t0, t0 + window] (3,), units of g0, in closed form (rounding ~1e-15). window: 0 .. 1e9 s
@@ -749,16 +786,19 @@ class Clinostat:
         it)}."""
     def report(self, *, window: Optional[Real] = None, epsilon: Optional[Real] = None, resolution: Optional[Real] = None,
                coverage: Optional[Real] = None, nside: Count = 8, start: Real = 0.0,
-               running_mean: Optional[Sequence[Real]] = None) -> ClinostatReport:
+               running_mean: Optional[Sequence[Real]] = None, band: Flag = False, target_g: Optional[Real] = None,
+               tolerance: Optional[Real] = None) -> ClinostatReport:
         """The whole report as the object `sphtroch clinostat --outer O --inner I ... --window W
         --epsilon E --resolution S --coverage D --nside K --start T --json` prints, member for member
         and double for double (machine/clinostat_report.hpp writes it for both): "train" (or None
         and "train_note"), "averaged", "period_s", "mean_over_period", and with window
         "worst_window_mean", with epsilon "time_to_epsilon", with running_mean (durations T, s)
         "running_mean" (the mean over [start, start + T] for each T, `--running-mean`), with
-        coverage "coverage" (HEALPix). Ranges as worst_window_mean(), time_to() (resolution only
-        with epsilon; default 1 s) and coverage(). Raises InvalidInput as those do, naming the CLI's
-        options."""
+        coverage "coverage" (HEALPix), with band=True (needs window) "window_band" (the certified
+        min and max of |window mean| over every start, `--band`), with target_g=G and tolerance=D
+        (need band; finite, >= 0, g0) "target" (whether every window mean lies in G +- D). Ranges as
+        worst_window_mean(), time_to() (resolution only with epsilon; default 1 s) and coverage().
+        Raises InvalidInput as those do, naming the CLI's options."""
     def _repr_svg_(self) -> Optional[str]:
         """Jupyter's picture: the train's (GearTrain._repr_svg_), or None without a train (Jupyter
         then shows the repr)."""

@@ -66,7 +66,7 @@ Train python_train(const GearTrain& g) {
 }
 
 Machine make_machine(py::handle outer, py::handle inner, py::handle tilt, py::handle frame_angle, py::handle phase_outer,
-                     py::handle phase_inner, py::handle offset) {
+                     py::handle phase_inner, py::handle offset, py::handle gravity) {
   ClinostatText text;
   text.outer = rpm_text_arg(outer, "outer");
   text.inner = rpm_text_arg(inner, "inner");
@@ -75,6 +75,7 @@ Machine make_machine(py::handle outer, py::handle inner, py::handle tilt, py::ha
   text.phase_outer = degrees_text(phase_outer, "phase-outer", "|phase| <= 1e6 degrees");
   text.phase_inner = degrees_text(phase_inner, "phase-inner", "|phase| <= 1e6 degrees");
   text.offset = offset_text(offset);
+  text.gravity = number_text(real_arg(gravity, "gravity", "(0, 1000] g0"));  // its range: Clinostat's constructor
   const Clinostat m(text.settings());  // InvalidInput naming the CLI's option
   GravitySeries averaged = m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m);
   ClinostatTrain train = clinostat_train(m);  // empty with the reason where no GearTrain draws the path
@@ -239,8 +240,19 @@ DwellMap dwell_map_of(const py::dict& d) {
 /// Clinostat.report(...): machine/clinostat_report.hpp's JSON object, the one `sphtroch clinostat
 /// --json` prints, read by Python's json module (so the dict is that object, member for member).
 py::object report(const Machine& self, py::handle window, py::handle epsilon, py::handle resolution, py::handle coverage,
-                  py::handle nside, py::handle start, py::handle running_mean) {
+                  py::handle nside, py::handle start, py::handle running_mean, py::handle band, py::handle target_g, py::handle tolerance) {
   ClinostatRequest q;
+  q.band = flag_arg(band, "band");
+  if (q.band && window.is_none()) throw InvalidInput("band", "True", "only with window", "window=W, band=True");
+  if (!target_g.is_none() && !q.band) throw InvalidInput("target-g", repr_of(target_g), "only with band", "window=W, band=True, target_g=G, tolerance=D");
+  if (target_g.is_none() != tolerance.is_none())
+    throw InvalidInput(target_g.is_none() ? "tolerance" : "target-g", repr_of(target_g.is_none() ? tolerance : target_g),
+                       "target_g and tolerance go together", "window=W, band=True, target_g=G, tolerance=D");
+  if (!target_g.is_none()) {
+    q.target_g = real_arg(target_g, "target-g", "a finite number >= 0, units of g0");
+    q.tolerance = real_arg(tolerance, "tolerance", "a finite number >= 0, units of g0");
+    check_window_target(*q.target_g, q.tolerance);
+  }
   q.start = time_arg(start, "start");
   if (!running_mean.is_none())
     for (const py::handle t : running_mean)
@@ -288,7 +300,8 @@ std::string machine_repr(const Machine& self) {
   const std::string offset = self.offset_given ? "(" + real(r.x()) + ", " + real(r.y()) + ", " + real(r.z()) + ")" : "None";
   return "Clinostat(outer_rpm=" + repr_of(py::str(s.outer.str())) + ", inner_rpm=" + repr_of(py::str(s.inner.str())) +
          ", tilt=" + real(s.tilt_deg) + ", frame_angle=" + real(s.frame_angle_deg) + ", phase_outer=" + real(s.phase_outer_deg) +
-         ", phase_inner=" + real(s.phase_inner_deg) + ", offset=" + offset + ")";
+         ", phase_inner=" + real(s.phase_inner_deg) + ", offset=" + offset +
+         (s.gravity_g0 != 1 ? ", gravity_g0=" + real(s.gravity_g0) : std::string()) + ")";
 }
 
 }  // namespace
@@ -298,7 +311,7 @@ void bind_clinostat(py::module_& m) {
   py::class_<Machine>(m, "Clinostat", doc("Clinostat"))
       .def(py::init(&make_machine), py::arg("outer_rpm"), py::arg("inner_rpm"), py::kw_only(), py::arg("tilt") = 90.0,
            py::arg("frame_angle") = 90.0, py::arg("phase_outer") = 0.0, py::arg("phase_inner") = 0.0, py::arg("offset") = py::none(),
-           doc("Clinostat.__init__"))
+           py::arg("gravity_g0") = 1.0, doc("Clinostat.__init__"))
       .def_property_readonly("outer_rpm", checked(+[](M c) { return c.machine.settings().outer.str(); }), doc("Clinostat.outer_rpm"))
       .def_property_readonly("inner_rpm", checked(+[](M c) { return c.machine.settings().inner.str(); }), doc("Clinostat.inner_rpm"))
       .def_property_readonly("tilt", checked(+[](M c) { return c.machine.settings().tilt_deg; }), doc("Clinostat.tilt"))
@@ -309,6 +322,7 @@ void bind_clinostat(py::module_& m) {
         const Vector3d& r = c.machine.settings().offset_m;
         return c.offset_given ? py::object(py::make_tuple(r.x(), r.y(), r.z())) : py::object(py::none());
       }), doc("Clinostat.offset"))
+      .def_property_readonly("gravity_g0", checked(+[](M c) { return c.machine.settings().gravity_g0; }), doc("Clinostat.gravity_g0"))
       .def_property_readonly("period", checked(+[](M c) { return or_none(c.averaged.period_s()); }), doc("Clinostat.period"))
       .def_property_readonly("mean_over_period", checked(+[](M c) { return vector_array(c.averaged.period_mean()); }),
                              doc("Clinostat.mean_over_period"))
@@ -327,7 +341,8 @@ void bind_clinostat(py::module_& m) {
            doc("Clinostat.coverage_summary"))
       .def("report", checked(&report), py::kw_only(), py::arg("window") = py::none(), py::arg("epsilon") = py::none(),
            py::arg("resolution") = py::none(), py::arg("coverage") = py::none(), py::arg("nside") = 8, py::arg("start") = 0.0,
-           py::arg("running_mean") = py::none(), doc("Clinostat.report"))
+           py::arg("running_mean") = py::none(), py::arg("band") = false, py::arg("target_g") = py::none(),
+           py::arg("tolerance") = py::none(), doc("Clinostat.report"))
       .def("_repr_svg_", checked(+[](M c) -> py::object {
         return c.gear_train ? py::cast(*c.gear_train).attr("_repr_svg_")() : py::object(py::none());
       }), doc("Clinostat._repr_svg_"))

@@ -27,8 +27,8 @@ constexpr int kMaxPlotNside = 32;
 
 struct ClinostatOptions {
   ClinostatText machine;
-  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output, plot, running_mean;
-  bool json = false, trace = false;
+  std::string window, epsilon, resolution, coverage, nside, start, duration, samples, output, plot, running_mean, target_g, tolerance;
+  bool json = false, trace = false, band = false;
 };
 
 double parse_positive(const std::string& text, const std::string& field, double max, const std::string& valid) {
@@ -42,6 +42,29 @@ double parse_time(const std::string& text, const std::string& field) {
   const std::optional<double> v = parse_number(text);
   if (!v || std::fabs(*v) > Clinostat::kMaxTime) throw InvalidInput(field, text, "not a finite time", "|t| <= 1e12 seconds");
   return *v;
+}
+
+/// A gravity in g0: a finite number >= 0 (the target and its tolerance).
+double parse_gravity(const std::string& text, const std::string& field) {
+  const std::optional<double> v = parse_number(text);
+  if (!v || !std::isfinite(*v) || *v < 0 || *v > 1e9) throw InvalidInput(field, text, "not a finite number >= 0", "a finite number in [0, 1e9], units of g0");
+  return *v;
+}
+
+/// --band, --target-g and --tolerance: the band needs --window, the target the band, both of its values.
+void read_band(const ClinostatOptions& o, ClinostatRequest& r) {
+  if (o.band && o.window.empty()) throw UsageError{"--band: only with --window; valid: --window S --band"};
+  if (!o.target_g.empty() && !o.band)
+    throw UsageError{"--target-g = " + o.target_g + ": only with --band; valid: --window S --band --target-g G --tolerance D"};
+  if (!o.tolerance.empty() && o.target_g.empty())
+    throw UsageError{"--tolerance = " + o.tolerance + ": only with --target-g; valid: --window S --band --target-g G --tolerance D"};
+  if (!o.target_g.empty() && o.tolerance.empty())
+    throw UsageError{"--target-g = " + o.target_g + ": needs --tolerance; valid: --window S --band --target-g G --tolerance D"};
+  r.band = o.band;
+  if (!o.target_g.empty()) {
+    r.target_g = parse_gravity(o.target_g, "target-g");
+    r.tolerance = parse_gravity(o.tolerance, "tolerance");
+  }
 }
 
 /// What the report computes, read and checked before any of it runs.
@@ -59,6 +82,7 @@ ClinostatRequest read_request(const ClinostatOptions& o) {
     r.nside = static_cast<int>(parse_count(o.nside, "nside", 1, 1024));
     if ((r.nside & (r.nside - 1)) != 0) throw InvalidInput("nside", o.nside, "not a power of two", "1, 2, 4, ..., 1024");
   }
+  read_band(o, r);
   r.start = parse_time(o.start, "start");
   for (const std::string& item : split_list(o.running_mean))
     r.running_mean_s.push_back(parse_positive(item, "running-mean", Clinostat::kMaxTime, "T1,T2,...: durations in (0, 1e12] seconds"));
@@ -112,7 +136,10 @@ void run_report(const ClinostatOptions& o, const Clinostat& m) {
 void run_trace(const ClinostatOptions& o, const Clinostat& m) {
   for (const auto& [given, name] : {std::pair{!o.window.empty(), "--window"}, std::pair{!o.epsilon.empty(), "--epsilon"},
                                     std::pair{!o.coverage.empty(), "--coverage"}, std::pair{o.json, "--json"},
-                                    std::pair{!o.plot.empty(), "--plot"}, std::pair{!o.running_mean.empty(), "--running-mean"}})
+                                    std::pair{!o.plot.empty(), "--plot"}, std::pair{!o.running_mean.empty(), "--running-mean"},
+                                    std::pair{o.band, "--band"}, std::pair{!o.target_g.empty(), "--target-g"},
+                                    std::pair{!o.tolerance.empty(), "--tolerance"},
+                                    std::pair{!o.machine.gravity.empty(), "--gravity"}})
     if (given) throw UsageError{std::string(name) + ": not with --trace; valid: --trace --duration S --samples N [-o FILE]"};
   if (o.duration.empty()) throw UsageError{"--trace needs --duration S; valid: --trace --duration S --samples N [-o FILE]"};
   const double duration = parse_positive(o.duration, "duration", Clinostat::kMaxTime, "seconds in (0, 1e12]");
@@ -167,9 +194,14 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
       "Convention (docs/clinostat.md): lab Z up, gravity (0,0,-1) g0; outer axis u = (sin tilt, 0, cos tilt);\n"
       "inner axis v = cos(frame) u + sin(frame) (-cos tilt, 0, sin tilt), carried by the outer frame;\n"
       "sample frame R(t) = Rot(u, phi_o(t)) Rot(v, phi_i(t)); the sample feels g_s = R^T (0,0,-1).\n"
+      "--gravity G: the environment's gravity (g0; default 1): every mean, bracket and running mean is of\n"
+      "G g_s (with --offset of R^T(G (0,0,-1) - a/g0)); --epsilon, --target-g, --tolerance stay in g0 as typed.\n"
       "Speeds are read exactly (1.33 = 133/100 rpm). With --offset the averages are of the effective\n"
       "gravity R^T((0,0,-1) - a/g0) at that point; the gear train and the coverage are of g_s.\n"
       "--window W: M(W), the largest |mean| over every window of W s (certified bracket, width <= 1e-9).\n"
+      "--band (with --window W): the smallest and the largest |mean| over every window of W s, each a\n"
+      "certified bracket (width <= 1e-9) with a start time reaching it; --target-g G --tolerance D: whether\n"
+      "every window mean lies in [G - D, G + D] (certified yes, or no with a start time that leaves it).\n"
       "--epsilon E: the shortest window (a multiple of --resolution) with M(W) <= E, and the one from\n"
       "which every longer window is below (M is not monotone).\n"
       "--running-mean T1,T2,...: the mean over [--start, --start + T] for each T (closed form).\n"
@@ -186,8 +218,13 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)")->type_name("DEG");
   cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
   cmd->add_option("--phase-inner", o->machine.phase_inner, "inner frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
+  cmd->add_option("--gravity", o->machine.gravity, "the environment's gravity G, units of g0 in (0, 1000] (default 1): scales every gravity figure")
+      ->type_name("G");
   cmd->add_option("--offset", o->machine.offset, "the sample point X,Y,Z in metres (sample frame; default the centre)")->type_name("X,Y,Z");
   cmd->add_option("--window", o->window, "M(W) for this window length, seconds")->type_name("S");
+  cmd->add_flag("--band", o->band, "with --window: the certified min and max of |window mean| over every start time");
+  cmd->add_option("--target-g", o->target_g, "with --band: whether every window mean lies in G +- --tolerance, units of g0")->type_name("G");
+  cmd->add_option("--tolerance", o->tolerance, "with --target-g: the half-width D of the target, units of g0 (>= 0)")->type_name("D");
   cmd->add_option("--epsilon", o->epsilon, "the time to epsilon for this bound, units of g0")->type_name("G0");
   cmd->add_option("--resolution", o->resolution, "the step of W for --epsilon, seconds (default 1)")->type_name("S");
   cmd->add_option("--coverage", o->coverage, "the dwell map over this many seconds")->type_name("S");

@@ -26,11 +26,18 @@ namespace {
 using namespace sphtroch::test;
 using nlohmann::json;
 
-Eigen::Vector3d model_gravity(double outer_rpm, double inner_rpm, double tilt_deg, double frame_deg, double t) {
+/// g_s(t) = (Rot(u, phi_o) Rot(v, phi_i))^T (0, 0, -1); the turns rpm t / 60 in long double with
+/// the whole turns removed (t up to 1e8 s keeps ~1e-12 rad).
+Eigen::Vector3d model_gravity(long double outer_rpm, long double inner_rpm, double tilt_deg, double frame_deg, long double t) {
   const double pi = 3.14159265358979323846, psi = tilt_deg * pi / 180, beta = frame_deg * pi / 180;
   const Eigen::Vector3d u(std::sin(psi), 0, std::cos(psi)), w(-std::cos(psi), 0, std::sin(psi));
   const Eigen::Vector3d v = std::cos(beta) * u + std::sin(beta) * w;
-  const Eigen::Matrix3d r = (Eigen::AngleAxisd(2 * pi * outer_rpm * t / 60, u) * Eigen::AngleAxisd(2 * pi * inner_rpm * t / 60, v)).toRotationMatrix();
+  const auto angle = [](long double rpm, long double time) {
+    long double turns = rpm * time / 60;
+    turns -= std::floor(turns);
+    return static_cast<double>(2 * 3.141592653589793238462643383279502884L * turns);
+  };
+  const Eigen::Matrix3d r = (Eigen::AngleAxisd(angle(outer_rpm, t), u) * Eigen::AngleAxisd(angle(inner_rpm, t), v)).toRotationMatrix();
   return r.transpose() * Eigen::Vector3d(0, 0, -1);
 }
 
@@ -471,4 +478,170 @@ TEST_CASE("clinostat --running-mean: the mean over [start, start + T] as --trace
     CHECK(contains(bad.err, option));
     CHECK(count_lines(bad.err) == 1);
   }
+}
+
+namespace {
+
+/// |mean over [t0, t0 + W]| of model_gravity by composite 4-point Gauss-Legendre (panels of at
+/// most 0.2 s: the frames turn at most 5.05 rpm, 0.11 rad per panel, so the rule's error is
+/// ~1e-17 of the mean).
+double model_window_mean(long double outer, long double inner, double tilt, long double t0, double w, double frame = 90) {
+  const double x[2] = {0.3399810435848563, 0.8611363115940526}, c[2] = {0.6521451548625461, 0.3478548451374538};
+  const int panels = static_cast<int>(std::ceil(w / 0.2));
+  const double h = w / panels;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int k = 0; k < panels; ++k) {
+    const long double mid = t0 + (k + 0.5L) * h;  // long double: a start of 3e7 s keeps its nodes to ~1e-12 s
+    for (int i = 0; i < 2; ++i)
+      sum += c[i] * (model_gravity(outer, inner, tilt, frame, mid - x[i] * h / 2) + model_gravity(outer, inner, tilt, frame, mid + x[i] * h / 2));
+  }
+  return (sum * h / 2 / w).norm();
+}
+
+}  // namespace
+
+TEST_CASE("clinostat --band: the Mars preset's window band and target against a scan of the rotation model", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string mars = "clinostat --tilt 67.7901 --outer 5 --inner 0.05 --window 600 --band";
+  // The scan: every 5 s of the period of 1200 s (|d mean / d t0| <= 2 / W: within 1/60 g0 of the extremes).
+  double low = 1, high = 0;
+  for (double t0 = 0; t0 < 1200; t0 += 5) {
+    const double m = model_window_mean(5, 0.05, 67.7901, t0, 600);
+    low = std::min(low, m), high = std::max(high, m);
+  }
+  const Result r = run(mars + " --target-g 0.241 --tolerance 0.008 --json", dir);
+  REQUIRE(r.status == 0);
+  const json j = json::parse(r.out);
+  const json& b = j["window_band"];
+  CHECK(b["window_s"] == 600.0);
+  CHECK(b["certified"] == true);
+  CHECK(b["bound"] == "period");
+  for (const char* end : {"min", "max"}) {
+    CHECK(b[end]["upper"].get<double>() - b[end]["lower"].get<double>() <= 1e-9);
+    CHECK(b[end]["lower"].get<double>() <= b[end]["upper"].get<double>());
+  }
+  CHECK(b["min"]["lower"].get<double>() <= low + 1e-12);
+  CHECK(b["max"]["upper"].get<double>() >= high - 1e-12);
+  // The starts reached: the model's window there is at the bracket's found end.
+  CHECK(model_window_mean(5, 0.05, 67.7901, b["min"]["start_s"], 600) <= b["min"]["upper"].get<double>() + 1e-12);
+  CHECK(model_window_mean(5, 0.05, 67.7901, b["max"]["start_s"], 600) >= b["max"]["lower"].get<double>() - 1e-12);
+  CHECK(j["worst_window_mean"]["upper"] == b["max"]["upper"]);  // the max is M(W)
+  // Inside: the scan's extremes within [0.233, 0.249] by more than the scan's step allows.
+  REQUIRE(low > 0.233 + 0.02 / 60);
+  REQUIRE(high < 0.249 - 0.02 / 60);
+  CHECK(j["target"] == json{{"g", 0.241}, {"tolerance", 0.008}, {"inside", true}, {"start_s", nullptr}});
+  // Outside: the scan's max is above 0.245 by more than its step.
+  REQUIRE(high > 0.245 + 0.02 / 60);
+  const Result out = run(mars + " --target-g 0.241 --tolerance 0.004 --json", dir);
+  REQUIRE(out.status == 0);
+  const json t = json::parse(out.out)["target"];
+  CHECK(t["inside"] == false);
+  const double leaves = model_window_mean(5, 0.05, 67.7901, t["start_s"], 600);
+  CHECK((leaves > 0.245 || leaves < 0.237));
+  // The text says both.
+  const Result text = run(mars + " --target-g 0.241 --tolerance 0.004", dir);
+  REQUIRE(text.status == 0);
+  CHECK(contains(text.out, "window band, W = 600 s: every window mean's |mean| lies between min in [0.2347"));
+  CHECK(contains(text.out, "target 0.241 +- 0.004 g0: the window starting at "));
+  CHECK(contains(text.out, " s leaves it (certified)"));
+  const Result in_text = run(mars + " --target-g 0.241 --tolerance 0.008", dir);
+  CHECK(contains(in_text.out, "target 0.241 +- 0.008 g0: every window mean lies inside (certified)"));
+}
+
+TEST_CASE("clinostat --band and --target-g: refusals name the option, exit 2, nothing on stdout", "[cli][clinostat]") {
+  TempDir dir;
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--band", "--band"}, {"--window 60 --target-g 0.1 --tolerance 0.1", "--target-g"},
+           {"--window 60 --band --target-g 0.1 --tolerance -0.1", "--tolerance"},
+           {"--window 60 --band --target-g 0.1 --tolerance nan", "--tolerance"},
+           {"--window 60 --band --target-g nan --tolerance 0.1", "--target-g"},
+           {"--window 60 --band --target-g 0.1", "--tolerance"}, {"--window 60 --band --tolerance 0.1", "--tolerance"},
+           {"--trace --duration 10 --band", "--band"}}) {
+    const Result bad = run("clinostat --outer 1 --inner 2 " + args, dir, true);
+    INFO(args << " -> " << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+    CHECK(contains(bad.err, option));
+  }
+  // M(W) alone of a period too long to search (decimal speeds): refused up front, naming the cost.
+  const Result wide = run("clinostat --outer 1.414214 --inner 1 --window 600", dir, true);
+  CHECK(wide.status == 2);
+  CHECK(wide.out.empty());
+  CHECK(count_lines(wide.err) == 1);
+  CHECK(contains(wide.err, "pieces to search"));
+}
+
+TEST_CASE("clinostat --band of a period too long to search: bounds over the motor torus, not certified to 1e-9 (exit 3)", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string machine = "clinostat --outer 1.414214 --inner 1 --tilt 75 --frame-angle 80 --window 600 --band";
+  const Result r = run(machine + " --json", dir);
+  CHECK(r.status == 3);
+  CHECK(contains(r.err, "motor torus"));
+  const json b = json::parse(r.out)["window_band"];
+  CHECK(b["bound"] == "torus");
+  CHECK(b["certified"] == false);
+  const double min_lower = b["min"]["lower"], max_upper = b["max"]["upper"];
+  // The rotation model at starts over a day lies within the proven ends; the starts reach theirs.
+  for (double t0 = 0; t0 < 86400; t0 += 86400.0 / 60) {
+    const double m = model_window_mean(1.414214L, 1, 75, t0, 600, 80);
+    CHECK(m >= min_lower - 1e-12);
+    CHECK(m <= max_upper + 1e-12);
+  }
+  CHECK(model_window_mean(1.414214L, 1, 75, b["min"]["start_s"], 600, 80) <= b["min"]["upper"].get<double>() + 1e-12);
+  CHECK(model_window_mean(1.414214L, 1, 75, b["max"]["start_s"], 600, 80) >= b["max"]["lower"].get<double>() - 1e-12);
+  // A target with a margin around the proven ends is certified inside (the band itself still exits 3).
+  const double mid = (min_lower + max_upper) / 2, tolerance = (max_upper - min_lower) / 2 + 1e-3;
+  const Result t = run(machine + " --target-g " + shortest_g(mid) + " --tolerance " + shortest_g(tolerance) + " --json", dir);
+  CHECK(t.status == 3);
+  CHECK(json::parse(t.out)["target"]["inside"] == true);
+  const Result text = run(machine, dir);
+  CHECK(text.status == 3);
+  CHECK(contains(text.out, "NOT CERTIFIED to 1e-9: the period is too long to search"));
+}
+
+TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one; refusals", "[cli][clinostat]") {
+  TempDir dir;
+  const std::string mars = "clinostat --tilt 67.7901 --outer 5 --inner 0.05 --window 600 --band --running-mean 300 --json";
+  const Result unit = run(mars, dir), half = run(mars + " --gravity 0.5", dir);
+  REQUIRE(unit.status == 0);
+  REQUIRE(half.status == 0);
+  const json u = json::parse(unit.out), h = json::parse(half.out);
+  CHECK(!u.contains("gravity_g0"));
+  CHECK(h["gravity_g0"] == 0.5);
+  // The brackets of G g_s hold half the unit brackets (each within 1e-9 of the truth).
+  for (const char* end : {"min", "max"})
+    for (const char* side : {"lower", "upper"})
+      CHECK(std::fabs(h["window_band"][end][side].get<double>() - 0.5 * u["window_band"][end][side].get<double>()) <= 1e-9);
+  CHECK(std::fabs(h["running_mean"][0]["magnitude"].get<double>() - 0.5 * u["running_mean"][0]["magnitude"].get<double>()) <= 1e-15);
+  // The running mean against the model: G times the Simpson mean of the unit gravity.
+  CHECK(std::fabs(h["running_mean"][0]["magnitude"].get<double>() - 0.5 * model_window_mean(5, 0.05, 67.7901, 0, 300)) <= 1e-12);
+  const Result text = run("clinostat --tilt 67.7901 --outer 5 --inner 0.05 --gravity 0.5", dir);
+  CHECK(contains(text.out, "environment's gravity: 0.5 g0"));
+  for (const std::string& bad : {"--gravity 0", "--gravity -1", "--gravity nan", "--gravity 1001", "--gravity 0.5 --trace --duration 10"}) {
+    const Result r = run("clinostat --outer 1 --inner 2 " + bad, dir, true);
+    INFO(bad << " -> " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(count_lines(r.err) == 1);
+    CHECK(contains(r.err, "--gravity"));
+  }
+}
+
+TEST_CASE("clinostat --target-g: an end within rounding of an extreme is not decided: exit 3, and the output says so", "[cli][clinostat]") {
+  // One horizontal axis at 10 rpm, the sample at 7.395464443117222 m on y: the centripetal term
+  // w^2 r / g0 equals sinc(w W / 2) for W = 2 s, so some window mean is 0 (within rounding); the
+  // target's lower end 0.9 - 0.8999999999999999 = 1.1e-16 cannot be told from it.
+  TempDir dir;
+  const std::string machine = "clinostat --outer 10 --inner 0 --offset 0,7.395464443117222,0 --window 2 --band";
+  const Result j = run(machine + " --target-g 0.9 --tolerance 0.8999999999999999 --json", dir);
+  CHECK(j.status == 3);
+  const json t = json::parse(j.out);
+  CHECK(t["window_band"]["min"]["lower"] == 0.0);
+  CHECK(t["window_band"]["min"]["upper"].get<double>() <= 1e-9);
+  CHECK(t["target"]["inside"].is_null());
+  CHECK(contains(j.err, "not certified"));
+  const Result text = run(machine + " --target-g 0.9 --tolerance 0.8999999999999999", dir);
+  CHECK(text.status == 3);
+  CHECK(contains(text.out, "target 0.9 +- 0.8999999999999999 g0: not certified"));
 }

@@ -217,6 +217,14 @@ def test_the_report_is_the_clis_json_object(case):
     assert got == full
     assert set(got) == {"train", "averaged", "period_s", "mean_over_period", "worst_window_mean", "time_to_epsilon",
                         "coverage"} | ({"train_note"} if got["train"] is None else set())
+    band = c.report(window=window, band=True)
+    assert band == cli_json("clinostat", *options, "--window", str(window), "--band", "--json")
+    assert band["window_band"]["max"]["upper"] == band["worst_window_mean"]["upper"]
+    mid = (band["window_band"]["min"]["lower"] + band["window_band"]["max"]["upper"]) / 2
+    for tolerance in (mid, mid / 4):  # the target inside and (a band wider than 1e-9) outside or decided
+        target = c.report(window=window, band=True, target_g=mid, tolerance=tolerance)
+        assert target == cli_json("clinostat", *options, "--window", str(window), "--band", f"--target-g={mid!r}",
+                                  f"--tolerance={tolerance!r}", "--json")
     running = c.report(running_mean=[30, window], start=start)
     assert running == cli_json("clinostat", *options, "--running-mean", f"30,{window}", f"--start={start}", "--json")
     for m in running["running_mean"]:  # the mean of the sampled gravity (Simpson's rule on 20001 points)
@@ -228,11 +236,32 @@ def test_the_report_is_the_clis_json_object(case):
         assert np.abs(simpson / m["t_s"] - m["mean"]).max() < 1e-10
 
 
+def test_the_environments_gravity_scales_the_report_as_the_clis_gravity():
+    """Clinostat(..., gravity_g0=G).report() is `sphtroch clinostat ... --gravity G --json`'s object;
+    its means are G times the unit machine's (0.5: exactly, a power of two)."""
+    options = ["--outer", "5", "--inner", "0.05", "--tilt", "67.7901"]
+    half = sphtroch.Clinostat(5, "0.05", tilt=67.7901, gravity_g0=0.5)
+    unit = sphtroch.Clinostat(5, "0.05", tilt=67.7901)
+    assert half.gravity_g0 == 0.5 and unit.gravity_g0 == 1.0 and "gravity_g0=0.5" in repr(half) and "gravity" not in repr(unit)
+    got = half.report(window=600, band=True, target_g=0.12, tolerance=0.004, running_mean=[300])
+    assert got == cli_json("clinostat", *options, "--gravity", "0.5", "--window", "600", "--band", "--target-g", "0.12",
+                           "--tolerance", "0.004", "--running-mean", "300", "--json")
+    assert got["gravity_g0"] == 0.5 and got["target"]["inside"] is True
+    assert got["running_mean"][0]["magnitude"] == 0.5 * unit.report(running_mean=[300])["running_mean"][0]["magnitude"]
+    with pytest.raises(sphtroch.InvalidInput) as e:
+        sphtroch.Clinostat(1, 2, gravity_g0=0)
+    assert e.value.field == "gravity"
+
+
 def test_the_report_refuses_as_the_cli_does():
     c = sphtroch.Clinostat(1.33, 2)
     for kwargs, field in (({"window": 0}, "window"), ({"epsilon": -1}, "epsilon"), ({"resolution": 2}, "resolution"),
                           ({"coverage": 600, "nside": 3}, "nside"), ({"running_mean": [0]}, "running-mean"),
-                          ({"running_mean": [10, float("nan")]}, "running-mean")):
+                          ({"running_mean": [10, float("nan")]}, "running-mean"), ({"band": True}, "band"),
+                          ({"window": 60, "target_g": 0.1, "tolerance": 0.1}, "target-g"),
+                          ({"window": 60, "band": True, "target_g": 0.1, "tolerance": -0.1}, "tolerance"),
+                          ({"window": 60, "band": True, "target_g": 0.1, "tolerance": float("nan")}, "tolerance"),
+                          ({"window": 60, "band": True, "target_g": 0.1}, "tolerance")):
         with pytest.raises(sphtroch.InvalidInput) as e:
             c.report(**kwargs)
         assert e.value.field == field

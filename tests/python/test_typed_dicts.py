@@ -79,6 +79,7 @@ def test_clinostat_results_have_the_declared_keys():
         check(c.train_map, "ClinostatTrainMap")
         check(c.report(), "ClinostatReport")
         check(c.report(window=600, epsilon=0.05, resolution=10, coverage=600, nside=4), "ClinostatReport")
+        check(c.report(window=600, band=True, target_g=0.1, tolerance=0.05), "ClinostatReport")
     far = sphtroch.Clinostat(3, 0, tilt=80).time_to(0.01)  # the mean over a period is above: no window
     check(far, "TimeToEpsilon")
     assert far["first_s"] is None and far["reason"]

@@ -43,6 +43,7 @@ struct ClinostatSettings {
   double phase_outer_deg = 0;       ///< phi_o0, |phase| <= 1e6 degrees
   double phase_inner_deg = 0;       ///< phi_i0, |phase| <= 1e6 degrees
   Vector3d offset_m = Vector3d::Zero();  ///< the sample point r (metres, sample frame), |r| <= 10 m
+  double gravity_g0 = 1;            ///< G: the environment's gravity, units of g0, (0, 1000]
 };
 
 /// sin and cos of an angle in degrees, exact (0, +-1) at whole multiples of 90 degrees, so that a
@@ -84,6 +85,7 @@ class Clinostat {
   static constexpr double kMaxTime = 1e12;             ///< |t| accepted, seconds
   static constexpr double kMaxOffset = 10;             ///< |r| accepted, metres
   static constexpr double kMaxPhase = 1e6;             ///< |phase| accepted, degrees
+  static constexpr double kMaxGravity = 1000;          ///< the environment's gravity accepted, g0
 
   /// Throws InvalidInput naming the setting: both speeds 0 ("inner", the machine does not turn),
   /// an angle outside [0, 180] or not finite ("tilt", "frame-angle"), a phase not finite or beyond
@@ -95,6 +97,8 @@ class Clinostat {
     check_angle("frame-angle", s.frame_angle_deg);
     check_phase("phase-outer", s.phase_outer_deg);
     check_phase("phase-inner", s.phase_inner_deg);
+    if (!(s.gravity_g0 > 0 && s.gravity_g0 <= kMaxGravity))
+      throw InvalidInput("gravity", number_text(s.gravity_g0), "not an environment's gravity", "(0, 1000] g0");
     if (!s.offset_m.allFinite() || s.offset_m.norm() > kMaxOffset)
       throw InvalidInput("offset", report_number(s.offset_m.x()) + "," + number_text(s.offset_m.y()) + "," + number_text(s.offset_m.z()),
                          "not a finite point within 10 m of the centre", "X,Y,Z in metres, |r| <= 10");
@@ -147,9 +151,10 @@ class Clinostat {
                        2 * wo * wi * (ri.transpose() * u_.cross(v_.cross(ri_r))) + wi * wi * v_.cross(v_.cross(r));
     return -a / kStandardGravity;
   }
-  /// The effective gravity R^T ((0, 0, -1) - a / g0), at given frame angles and at t.
+  /// The effective gravity R^T (G (0, 0, -1) - a / g0), G the environment's gravity (settings'
+  /// gravity_g0), at given frame angles and at t (units of g0).
   Vector3d effective_gravity_at(double phi_o, double phi_i) const {
-    return gravity_at(phi_o, phi_i) + acceleration_term_at(phi_i);
+    return s_.gravity_g0 * gravity_at(phi_o, phi_i) + acceleration_term_at(phi_i);
   }
   Vector3d effective_gravity(double t) const { return effective_gravity_at(outer_angle(t), inner_angle(t)); }
 

@@ -16,14 +16,17 @@
 //   std::string j = sphtroch::clinostat_report_json(r).dump(2);   // `sphtroch clinostat --json`
 //
 // JSON (docs/clinostat.md): "train" {"n", "a2", "a3", "phase", "theta2_at_0", "theta2_rate",
-// "rotation"} or null (then "train_note"); "averaged"; "period_s" (null: none); "mean_over_period";
+// "rotation"} or null (then "train_note"); "averaged"; "gravity_g0" (only when not 1); "period_s" (null: none); "mean_over_period";
 // with --window "worst_window_mean" {"window_s", "lower", "upper", "start_s", "certified"}; with
 // --epsilon "time_to_epsilon" {"epsilon", "resolution_s", "first_s", "stays_below_from_s",
-// "above_s", "reason", "certified"}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
+// "above_s", "reason", "certified"}; with --band "window_band" {"window_s", "min": {"lower", "upper",
+// "start_s"}, "max": {...}, "certified", "bound": "period" or "torus" (a period too long to search)}; with --target-g "target" {"g",
+// "tolerance", "inside" (null: not decided), "start_s" (null unless outside)}; with --running-mean "running_mean" [{"start_s", "t_s", "mean",
 // "magnitude"}]; with --coverage "coverage" {"start_s", "duration_s", "nside",
 // "order", "fraction", "dwell_cv", "bound_s", "dwell_s"}.
 // Cost: M(W) and the time to epsilon are refused up front when the period is too long to search
-// (worst_window_mean_cost throws CostLimitExceeded); the rest is closed form.
+// (worst_window_mean_cost throws InvalidInput("outer")); the band is then bounded over the motor
+// torus (window_band_torus, fixed cost); the rest is closed form.
 #pragma once
 
 #include "sphtroch/core/number_text.hpp"
@@ -35,6 +38,7 @@
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/running_mean.hpp"
 #include "sphtroch/machine/time_to_epsilon.hpp"
+#include "sphtroch/machine/window_band.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
 #include <nlohmann/json.hpp>
@@ -56,6 +60,9 @@ struct ClinostatRequest {
   double start = 0;                ///< start of the dwell map and of the running means, seconds
   int nside = 8;                   ///< HEALPix nside of the dwell map
   std::vector<double> running_mean_s;  ///< the running means from start over these durations, seconds
+  bool band = false;               ///< the window band of `window` (window_band.hpp)
+  std::optional<double> target_g;  ///< with band: whether every window mean lies in target_g +- tolerance, g0
+  double tolerance = 0;            ///< units of g0
 };
 
 /// A report's numbers, computed once for the text, the JSON and the picture.
@@ -69,16 +76,35 @@ struct ClinostatReport {
   std::optional<TimeToEpsilon> time_to;
   std::optional<DwellMap> dwell;  ///< the caller's, when coverage was asked
   std::vector<RunningMean> running;  ///< of request.running_mean_s (running_mean.hpp)
+  std::optional<WindowBand> band;    ///< with request.band
+  std::optional<WindowTarget> target;  ///< with request.target_g
 };
 
 /// The report of machine m for q; `dwell` is the dwell map of q.coverage when asked (the caller
-/// computes it: HEALPix). Throws CostLimitExceeded before any search when the period is too long.
+/// computes it: HEALPix). Throws InvalidInput("outer") before any search when the period is too
+/// long, InvalidInput("band") for a band without a window, InvalidInput("target-g") for a target
+/// without a band (and window_target's errors for its values).
 inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatRequest& q, std::optional<DwellMap> dwell = std::nullopt) {
+  if (q.band && !q.window) throw InvalidInput("band", "true", "a band needs a window", "--window S --band");
+  if (q.target_g && !q.band) throw InvalidInput("target-g", report_number(*q.target_g), "a target needs the band", "--window S --band --target-g G --tolerance D");
   ClinostatReport r{m.settings(), q, clinostat_train(m),
                     m.has_offset() ? GravitySeries::of_effective_gravity(m) : GravitySeries::of_gravity(m), m.has_offset(),
-                    std::nullopt, std::nullopt, std::move(dwell), {}};
-  if (q.window || q.epsilon) worst_window_mean_cost(r.series);  // refuse a period too long up front
-  if (q.window) r.worst = worst_window_mean(r.series, *q.window);
+                    std::nullopt, std::nullopt, std::move(dwell), {}, std::nullopt, std::nullopt};
+  bool torus = false;  // the band of a period too long to search: bounds over the torus
+  if (q.band) try {
+      worst_window_mean_cost(r.series);
+    } catch (const InvalidInput&) {
+      torus = true;
+    }
+  if (q.epsilon || (q.window && !q.band)) worst_window_mean_cost(r.series);  // refuse a period too long up front
+  if (q.target_g) check_window_target(*q.target_g, q.tolerance);  // before any search
+  if (q.band) {
+    r.band = torus ? window_band_torus(r.series, *q.window) : window_band(r.series, *q.window);
+    r.worst = r.band->max;  // the band's max is M(W), the same search
+    if (q.target_g) r.target = window_target(r.series, *r.band, *q.target_g, q.tolerance);
+  } else if (q.window) {
+    r.worst = worst_window_mean(r.series, *q.window);
+  }
   if (q.epsilon) r.time_to = time_to_epsilon(r.series, *q.epsilon, q.resolution);
   if (!q.running_mean_s.empty()) r.running = running_means(r.series, q.start, q.running_mean_s);
   return r;
@@ -86,13 +112,18 @@ inline ClinostatReport clinostat_report(const Clinostat& m, const ClinostatReque
 
 /// Whether every bracket and comparison of the report is certified (else the CLI exits 3).
 inline bool clinostat_report_certified(const ClinostatReport& r) {
-  return !(r.worst && !r.worst->certified) && !(r.time_to && !r.time_to->certified);
+  return !(r.worst && !r.worst->certified) && !(r.time_to && !r.time_to->certified) && !(r.band && !r.band->certified) &&
+         !(r.target && !r.target->inside);
 }
 
 /// Why the report is not certified ("" when it is).
 inline std::string clinostat_report_uncertified(const ClinostatReport& r) {
+  if (r.band && !r.band->certified)  // before M(W): with the band, M(W) is its max
+    return std::string("the window band's brackets are wider than 1e-9") +
+           (std::string(r.band->bound) == "torus" ? " (the period is too long to search: bounds over the motor torus)" : "");
   if (r.worst && !r.worst->certified) return "the worst window mean's bracket is wider than 1e-9";
   if (r.time_to && !r.time_to->certified) return r.time_to->reason;
+  if (r.target && !r.target->inside) return "the target is not certified: an extreme of the window means is within rounding of its end";
   return "";
 }
 
@@ -109,6 +140,16 @@ inline nlohmann::json train_json(const ClinostatTrain& ct) {
           {"theta2_at_0", ct.theta2_at_0}, {"theta2_rate", ct.theta2_rate}, {"rotation", rows}};
 }
 
+inline nlohmann::json band_json(const WindowBand& b) {
+  const auto end = [](const WorstWindowMean& m) { return nlohmann::json{{"lower", m.lower}, {"upper", m.upper}, {"start_s", m.start_s}}; };
+  return {{"window_s", b.window_s}, {"min", end(b.min)}, {"max", end(b.max)}, {"certified", b.certified}, {"bound", b.bound}};
+}
+
+inline nlohmann::json target_json(const WindowTarget& t) {
+  return {{"g", t.g}, {"tolerance", t.tolerance}, {"inside", t.inside ? nlohmann::json(*t.inside) : nlohmann::json(nullptr)},
+          {"start_s", or_null(t.start_s)}};
+}
+
 inline std::string degrees(double radians) { return report_number(radians * 180 / Constants<double>::pi()); }
 
 }  // namespace clinostat_report_detail
@@ -120,11 +161,14 @@ inline nlohmann::json clinostat_report_json(const ClinostatReport& r) {
   out["train"] = d::train_json(r.train);
   if (!r.train.train) out["train_note"] = r.train.reason;
   out["averaged"] = r.effective ? "effective gravity at the offset" : "gravity";
+  if (r.settings.gravity_g0 != 1) out["gravity_g0"] = r.settings.gravity_g0;
   out["period_s"] = d::or_null(r.series.period_s());
   out["mean_over_period"] = d::vector_json(r.series.period_mean());
   if (r.worst)
     out["worst_window_mean"] = {{"window_s", r.worst->window_s}, {"lower", r.worst->lower}, {"upper", r.worst->upper},
                                 {"start_s", r.worst->start_s}, {"certified", r.worst->certified}};
+  if (r.band) out["window_band"] = d::band_json(*r.band);
+  if (r.target) out["target"] = d::target_json(*r.target);
   if (r.time_to)
     out["time_to_epsilon"] = {{"epsilon", r.time_to->epsilon}, {"resolution_s", r.request.resolution},
                               {"first_s", d::or_null(r.time_to->first_s)}, {"stays_below_from_s", d::or_null(r.time_to->stays_below_from_s)},
@@ -161,13 +205,39 @@ inline void write_clinostat_machine_text(std::ostream& out, const ClinostatRepor
       << (r.train.theta2_rate < 0 ? " - " : " + ") << report_number(std::fabs(r.train.theta2_rate)) << " t rad (t in s; --json gives the rotation)\n";
 }
 
-/// The period, the mean, M(W), the time to epsilon and the coverage (the rest of the text).
+/// The window band and the target, when asked (lines of the text).
+inline void write_clinostat_band_text(std::ostream& out, const ClinostatReport& r) {
+  if (r.band) {
+    const WindowBand& b = *r.band;
+    out << "window band, W = " << report_number(b.window_s) << " s: every window mean's |mean| lies between min in ["
+        << report_number(b.min.lower) << ", " << report_number(b.min.upper) << "] g0 (the window starting at "
+        << report_number(b.min.start_s) << " s) and max in [" << report_number(b.max.lower) << ", " << report_number(b.max.upper)
+        << "] g0 (starting at " << report_number(b.max.start_s) << " s)"
+        << (b.certified ? ""
+            : std::string(b.bound) == "torus"
+                ? " (NOT CERTIFIED to 1e-9: the period is too long to search; each bracket holds its end: the bound over every"
+                  " pair of frame angles and the path's sampled starts)"
+                : " (NOT CERTIFIED: a bracket is wider than 1e-9)")
+        << "\n";
+  }
+  if (r.target) {
+    const WindowTarget& t = *r.target;
+    out << "target " << report_number(t.g) << " +- " << report_number(t.tolerance) << " g0: ";
+    if (!t.inside) out << "not certified: an extreme of the window means is within rounding of an end of the target\n";
+    else if (*t.inside) out << "every window mean lies inside (certified)\n";
+    else out << "the window starting at " << report_number(*t.start_s) << " s leaves it (certified)\n";
+  }
+}
+
+/// The period, the mean, M(W), the band, the time to epsilon and the coverage (the rest of the text).
 inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatReport& r) {
   if (r.series.period_s())
     out << "period: " << report_number(*r.series.period_s()) << " s (" << report_number(*r.series.period_s() / 60)
         << " min): both frames back at their start\n";
   else
     out << "period: none (the gravity does not move in the sample)\n";
+  if (r.settings.gravity_g0 != 1)
+    out << "environment's gravity: " << report_number(r.settings.gravity_g0) << " g0 (every mean and bracket below is of it)\n";
   const Vector3d c = r.series.period_mean();
   out << "mean " << (r.effective ? "effective gravity" : "gravity") << " over a period: (" << report_number(c.x()) << ", "
       << report_number(c.y()) << ", " << report_number(c.z()) << ") g0, |mean| = " << report_number(c.norm()) << " g0\n";
@@ -175,6 +245,7 @@ inline void write_clinostat_numbers_text(std::ostream& out, const ClinostatRepor
     out << "worst window mean, W = " << report_number(r.worst->window_s) << " s: M(W) in [" << report_number(r.worst->lower) << ", "
         << report_number(r.worst->upper) << "] g0, reached by the window starting at " << report_number(r.worst->start_s) << " s"
         << (r.worst->certified ? "" : " (NOT CERTIFIED: the bracket is wider than 1e-9)") << "\n";
+  write_clinostat_band_text(out, r);
   if (r.time_to) {
     out << "time to epsilon = " << report_number(r.time_to->epsilon) << " g0 (windows in steps of " << report_number(r.request.resolution) << " s): ";
     if (r.time_to->first_s)

@@ -85,9 +85,9 @@ inline Vector3d parse_offset(std::string_view text, const std::string& field) {
   return Vector3d(*x, *y, *z);
 }
 
-/// The settings as typed; empty strings take the defaults (90, 90, 0, 0, no offset).
+/// The settings as typed; empty strings take the defaults (90, 90, 0, 0, no offset, gravity 1 g0).
 struct ClinostatText {
-  std::string outer, inner, tilt, frame_angle, phase_outer, phase_inner, offset;
+  std::string outer, inner, tilt, frame_angle, phase_outer, phase_inner, offset, gravity;
 
   ClinostatSettings settings() const {
     ClinostatSettings s;
@@ -98,6 +98,11 @@ struct ClinostatText {
     if (!phase_outer.empty()) s.phase_outer_deg = parse_degrees(phase_outer, "phase-outer", "|phase| <= 1e6 degrees");
     if (!phase_inner.empty()) s.phase_inner_deg = parse_degrees(phase_inner, "phase-inner", "|phase| <= 1e6 degrees");
     if (!offset.empty()) s.offset_m = parse_offset(offset, "offset");
+    if (!gravity.empty()) {
+      const auto g = detail::strict_double(gravity);
+      if (!g) throw InvalidInput("gravity", gravity, "not a number", "(0, 1000] g0");
+      s.gravity_g0 = *g;  // its range: Clinostat's constructor
+    }
     return s;
   }
 };

@@ -79,7 +79,7 @@ struct GravityHarmonic {
 
 class GravitySeries {
  public:
-  /// g_s of the machine.
+  /// G g_s of the machine (G: the environment's gravity, settings' gravity_g0, 1 by default).
   static GravitySeries of_gravity(const Clinostat& m) { return GravitySeries(m, false); }
   /// The effective gravity of its sample point (g_s when the offset is 0).
   static GravitySeries of_effective_gravity(const Clinostat& m) { return GravitySeries(m, true); }
@@ -91,13 +91,13 @@ class GravitySeries {
   const Vector3d& period_mean() const noexcept { return constant_; }
   /// The period in seconds, empty when the gravity does not move at all.
   const std::optional<double>& period_s() const noexcept { return period_s_; }
-  /// A bound on |f(t)| for every t: 1 for g_s (a unit vector; so every window mean too), none
-  /// (infinity) for the effective gravity of an off-centre sample.
-  double norm_bound() const noexcept { return unit_ ? 1.0 : std::numeric_limits<double>::infinity(); }
+  /// A bound on |f(t)| for every t: G for G g_s (g_s a unit vector; so every window mean too),
+  /// none (infinity) for the effective gravity of an off-centre sample.
+  double norm_bound() const noexcept { return unit_ ? m_.settings().gravity_g0 : std::numeric_limits<double>::infinity(); }
   /// The period in minutes as an exact fraction (num / den); {0, 1} without a period.
   std::pair<__int128, __int128> period_minutes() const noexcept { return period_minutes_; }
 
-  /// f(t) from the series (equal to the machine's gravity(t) / effective_gravity(t) within ~1e-15).
+  /// f(t) from the series (equal to G gravity(t) / effective_gravity(t) within ~1e-15 G).
   Vector3d value(double t) const { return centred_mean(t, 0.0, 0.0); }
 
   /// The mean of f over [t0, t0 + W]. REQUIRES W >= 0 (W = 0: f(t0)).
@@ -128,7 +128,7 @@ class GravitySeries {
     double largest = 0;  // max |f| on the grid: the transform's rounding is ~1e-16 of it
     for (int x = 0; x < kGrid; ++x)
       for (int y = 0; y < kGrid; ++y) {
-        const Vector3d f = effective ? m.effective_gravity_at(x * step, y * step) : m.gravity_at(x * step, y * step);
+        const Vector3d f = effective ? m.effective_gravity_at(x * step, y * step) : m.settings().gravity_g0 * m.gravity_at(x * step, y * step);
         largest = std::max(largest, f.norm());
         for (int j = 0; j < kGrid; ++j)
           for (int l = 0; l < kGrid; ++l) {
@@ -171,7 +171,7 @@ class GravitySeries {
       }
     if (std::all_of(terms_.begin(), terms_.end(), [&](const GravityHarmonic& h) { return h.amplitude <= kRoundingZero; })) {
       terms_.clear();  // nothing moves: the mean is the gravity itself, exactly
-      constant_ = (effective ? m.effective_gravity(0.0) : m.gravity(0.0)) + Vector3d::Zero();  // + 0: no -0
+      constant_ = (effective ? m.effective_gravity(0.0) : m.settings().gravity_g0 * m.gravity(0.0)) + Vector3d::Zero();  // + 0: no -0
     }
     set_period();
   }

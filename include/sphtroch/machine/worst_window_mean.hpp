@@ -22,8 +22,8 @@
 // 1e-15 per harmonic, so 1e-15 sum A_k (1 + h |W_k|); both are added to every upper bound and
 // taken from every lower bound. The
 // intervals are split best first (largest upper bound) until upper - lower <= the width asked.
-// For g_s (unit vectors) the upper bound is also at most 1: a very short window, whose mean is
-// within rounding of 1 long everywhere, is then certified at once.
+// For G g_s (G times unit vectors) the upper bound is also at most G: a very short window, whose
+// mean is within rounding of G long everywhere, is then certified at once.
 // Lower: the largest |m| evaluated. Not interval arithmetic: a proven derivative bound.
 // Cost: the period split into pieces of 0.5 / sqrt(L2 / L0) s (L0 = |c| + sum |s_k| A_k: the
 // window damps the fast harmonics, so long windows start from few pieces; at most the refusal's
@@ -46,7 +46,8 @@ namespace sphtroch {
 struct WorstWindowMean {
   double window_s = 0;
   double lower = 0, upper = 0;  ///< M(W) in [lower, upper], units of g0
-  double start_s = 0;           ///< a start time in [0, T) whose window mean has |mean| >= lower
+  double start_s = 0;           ///< a start time in [0, T) whose window mean has |mean| >= lower (the
+                                ///< smallest's search: <= upper)
   bool certified = false;       ///< upper - lower <= the width asked
 };
 
@@ -60,7 +61,8 @@ inline double worst_window_mean_cost(const GravitySeries& g) {
   const double pieces = std::ceil(*g.period_s() * fastest / 0.5);
   if (pieces > kMaxWindowPieces)
     throw InvalidInput("outer", g.machine().settings().outer.str(),
-                       "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean",
+                       "the speeds' period (" + number_text(*g.period_s()) + " s) is too long for the worst window mean and the band: " +
+                           number_text(pieces) + " pieces to search, at most 4e6",
                        "speeds whose period has at most ~318000 turns of |outer| + |inner|");
   return std::max(8.0, pieces);
 }
@@ -106,6 +108,10 @@ class TorusGramBound {
   const GravitySeries& g_;
   std::vector<double> centre_, sigma_;
 };
+
+/// Which extreme of |m| over one period a search brackets: the sup (M(W)) or the inf (the lower
+/// edge of the window band, window_band.hpp).
+enum class WindowExtreme { largest, smallest };
 
 namespace detail {
 
@@ -158,6 +164,17 @@ class WindowMeanFunction {
   double upper(const Value& v, double h) const {
     return std::max((v.m + v.dm * h).norm(), (v.m - v.dm * h).norm()) + l2_ * h * h / 2 + rounding_ + rounding_slope_ * h;
   }
+  /// |m(tc)| rounded up: an upper bound on the smallest |m|.
+  double upper(const Value& v) const { return v.m.norm() + rounding_; }
+  /// A lower bound on |m| over [tc - h, tc + h]: |m(tc + d)| >= |m(tc) + m'(tc) d| - L2 h^2 / 2
+  /// (Taylor), and the smallest |m + m' d| over |d| <= h is the distance from 0 to that segment,
+  /// at d = -m.m' / |m'|^2 clamped to [-h, h]. A d rounded off the minimiser (~1e-16 h) raises
+  /// the distance by at most |m'| 1e-16 h: within rounding_slope_ h, taken off with the rest.
+  double lower(const Value& v, double h) const {
+    const double slope2 = v.dm.squaredNorm();
+    const double d = slope2 > 0 ? std::clamp(-v.m.dot(v.dm) / slope2, -h, h) : 0.0;
+    return std::max(0.0, (v.m + v.dm * d).norm() - l2_ * h * h / 2 - rounding_ - rounding_slope_ * h);
+  }
 
  private:
   const GravitySeries& g_;
@@ -165,49 +182,62 @@ class WindowMeanFunction {
   double l2_ = 0, typical_frequency_ = 0, rounding_ = 0, rounding_slope_ = 0;
 };
 
-/// Best-first search of sup |m| over one period; stop(lower, upper) ends it early.
+/// Best-first branch and bound of one extreme of |m| over one period; stop(lower, upper) ends it
+/// early. Largest: a piece's bound is WindowMeanFunction::upper (the piece of largest bound
+/// first), the bracket [largest |m| evaluated less rounding, largest bound]. Smallest: a piece's
+/// bound is WindowMeanFunction::lower (the piece of smallest bound first), the bracket [smallest
+/// bound, smallest |m| evaluated plus rounding]. start_s: the start of the window evaluated at
+/// the bracket's found end.
 template <typename Stop>
-WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
+WorstWindowMean search_window_extreme(const GravitySeries& g, double w, double width, WindowExtreme side, Stop stop,
+                                      double* work = nullptr) {
   if (!(w > 0) || !std::isfinite(w)) throw InvalidInput("window", report_number(w), "not a positive window", "seconds > 0");
   WorstWindowMean out;
   out.window_s = w;
-  if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: M(W) = |c|
+  if (!g.period_s() || g.oscillating().empty()) {  // the gravity does not move: every window mean is c
     out.lower = out.upper = g.period_mean().norm();
     out.certified = true;
     return out;
   }
+  const bool largest = side == WindowExtreme::largest;
   const double period = *g.period_s();
   const WindowMeanFunction f(g, w);
   struct Piece {
-    double centre, half, upper;
-    bool operator<(const Piece& o) const { return upper < o.upper; }
+    double centre, half, bound, key;  // key: the bound signed so that the most promising piece is on top
+    bool operator<(const Piece& o) const { return key < o.key; }
   };
   std::priority_queue<Piece> pieces;
-  double best_at = 0;
+  double found = largest ? 0.0 : std::numeric_limits<double>::infinity(), found_at = 0;
   const auto add = [&](double centre, double half) {
     if (work) *work += 1;
     const WindowMeanFunction::Value v = f.at(centre);
-    const double low = f.lower(v);
-    if (low > out.lower) {
-      out.lower = low;
-      best_at = centre;
+    const double point = largest ? f.lower(v) : f.upper(v);
+    if (largest ? point > found : point < found) {
+      found = point;
+      found_at = centre;
     }
-    pieces.push({centre, half, f.upper(v, half)});
+    const double bound = largest ? f.upper(v, half) : f.lower(v, half);
+    pieces.push({centre, half, bound, largest ? bound : -bound});
+  };
+  const auto bracket = [&](double bound) {  // the queue's top bound and the extreme found
+    out.lower = largest ? found : bound;
+    out.upper = largest ? std::min(bound, g.norm_bound()) : found;  // a mean of G g_s is at most G long
   };
   const double count = std::clamp(std::ceil(period * f.typical_frequency() / 0.5), 8.0, worst_window_mean_cost(g));
   const double half = period / count / 2;
   for (double k = 0; k < count; ++k) {
     add((2 * k + 1) * half, half);
-    if (stop(out.lower, std::numeric_limits<double>::infinity())) {  // proven above already
-      out.upper = std::numeric_limits<double>::infinity();
-      out.start_s = detail::start_in_period(best_at - w / 2, period);
+    out.lower = largest ? found : 0.0;  // the other side unknown yet
+    out.upper = largest ? std::numeric_limits<double>::infinity() : found;
+    if (stop(out.lower, out.upper)) {  // one side proven already
+      out.start_s = detail::start_in_period(found_at - w / 2, period);
       return out;
     }
   }
   const double finest = std::max(1e-12, period * 1e-15);
   while (true) {
     const Piece top = pieces.top();
-    out.upper = std::min(top.upper, g.norm_bound());  // a mean of unit vectors is at most 1 long
+    bracket(top.bound);
     if (out.upper - out.lower <= width || stop(out.lower, out.upper)) break;
     if (top.half < finest || pieces.size() > kMaxWindowPieces) break;  // cannot refine further (resolution or
                                                                        // memory): left uncertified
@@ -215,25 +245,35 @@ WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, doubl
     add(top.centre - top.half / 2, top.half / 2);
     add(top.centre + top.half / 2, top.half / 2);
   }
-  out.upper = std::max(out.upper, out.lower);
+  if (largest) out.upper = std::max(out.upper, out.lower);
+  else out.lower = std::min(out.lower, out.upper);
   out.certified = out.upper - out.lower <= width;
-  out.start_s = detail::start_in_period(best_at - w / 2, period);
+  out.start_s = detail::start_in_period(found_at - w / 2, period);
   return out;
 }
 
-/// sup |F| over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k cos(j x + l y) +
-/// b_k sin(j x + l y)), bracketed: the window mean at any start lies on it, so M(W) <= upper, at a
-/// cost independent of the period (lower bounds sup |F|, not M(W): the path may miss the torus'
-/// highest point). A box of half-widths (hx, hy) about (x, y) is bounded by the largest |F + F_x
-/// dx + F_y dy| over its corners (convex in d) plus sum_k |s_k| A_k (|j| hx + |l| hy)^2 / 2 (the
-/// second derivative along d) and rounding. Best first; stop(lower, upper) ends it early, else
-/// it ends at kMaxTorusBoxes boxes.
+/// Best-first search of sup |m| over one period (M(W)); stop(lower, upper) ends it early.
+template <typename Stop>
+WorstWindowMean search_worst_window_mean(const GravitySeries& g, double w, double width, Stop stop, double* work = nullptr) {
+  return search_window_extreme(g, w, width, WindowExtreme::largest, stop, work);
+}
+
+/// sup |F| (or inf |F|) over the whole torus of frame angles, F(x, y) = c + sum_k s_k (a_k
+/// cos(j x + l y) + b_k sin(j x + l y)), bracketed: the window mean at any start lies on it, so
+/// M(W) <= the sup's upper and the smallest window mean >= the inf's lower, at a cost independent
+/// of the period (the other end bounds the torus' extreme, not the path's: the path may miss it).
+/// A box of half-widths (hx, hy) about (x, y), second derivative along d bounded by sum_k |s_k|
+/// A_k (|j| hx + |l| hy)^2 / 2, plus rounding: for the sup, bounded above by the largest |F + F_x
+/// dx + F_y dy| over its corners (convex in d); for the inf, below by the larger of |F| - |F_x|
+/// hx - |F_y| hy and |n . F| (n the unit normal of F_x, F_y: F + F_x dx + F_y dy keeps that
+/// component; at the inf F is along n, so the bound closes quadratically). Best first; stop(lower,
+/// upper) ends it early, else it ends at kMaxTorusBoxes boxes.
 constexpr int kMaxTorusBoxes = 4096;
 struct TorusBracket {
   double lower = 0, upper = 0;
 };
 template <typename Stop>
-TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* work = nullptr) {
+TorusBracket torus_extreme(const GravitySeries& g, double w, WindowExtreme side, Stop stop, double* work = nullptr) {
   struct Term {
     int j, l;
     double s;
@@ -248,12 +288,14 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
   double amplitudes = 0;
   for (const GravityHarmonic& h : g.oscillating()) amplitudes += h.amplitude;
   const double rounding = 1e-14 * (size + 1) + 1e-15 * amplitudes;  // and the sincs' absolute error
+  const bool largest = side == WindowExtreme::largest;
   struct Box {
-    double x, y, half, upper;
-    bool operator<(const Box& o) const { return upper < o.upper; }
+    double x, y, half, bound, key;  // key: the bound signed so that the most promising box is on top
+    bool operator<(const Box& o) const { return key < o.key; }
   };
   std::priority_queue<Box> boxes;
   TorusBracket out;
+  double found = largest ? 0.0 : std::numeric_limits<double>::infinity();
   const auto add = [&](double x, double y, double half) {
     if (work) *work += 1;
     Vector3d f = g.period_mean(), fx = Vector3d::Zero(), fy = Vector3d::Zero();
@@ -268,18 +310,27 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
       const double reach = (std::abs(t.j) + std::abs(t.l)) * half;
       curvature += std::fabs(t.s) * t.h->amplitude * reach * reach / 2;
     }
-    double corner = 0;
-    for (const double sx : {-half, half})
-      for (const double sy : {-half, half}) corner = std::max(corner, (f + fx * sx + fy * sy).norm());
-    boxes.push({x, y, half, corner + curvature + rounding});
-    out.lower = std::max(out.lower, f.norm() - rounding);
+    double bound = 0;
+    if (largest) {
+      for (const double sx : {-half, half})
+        for (const double sy : {-half, half}) bound = std::max(bound, (f + fx * sx + fy * sy).norm());
+      bound += curvature + rounding;
+      found = std::max(found, f.norm() - rounding);
+    } else {
+      const Vector3d normal = fx.cross(fy);
+      const double across = normal.norm() > 0 ? std::fabs(normal.dot(f)) / normal.norm() : 0.0;
+      bound = std::max(0.0, std::max(f.norm() - (fx.norm() + fy.norm()) * half, across) - curvature - rounding);
+      found = std::min(found, f.norm() + rounding);
+    }
+    boxes.push({x, y, half, bound, largest ? bound : -bound});
   };
   const double pi = Constants<double>::pi();
   const int n = 4;
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) add((2 * a + 1) * pi / n, (2 * b + 1) * pi / n, pi / n);
   for (int count = n * n;; count += 4) {
-    out.upper = std::max(out.lower, boxes.top().upper);
+    out.lower = largest ? found : std::min(found, boxes.top().bound);
+    out.upper = largest ? std::max(found, boxes.top().bound) : found;
     if (count >= kMaxTorusBoxes || stop(out.lower, out.upper)) return out;
     const Box top = boxes.top();
     boxes.pop();
@@ -287,6 +338,12 @@ TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* 
     for (const double dx : {-q, q})
       for (const double dy : {-q, q}) add(top.x + dx, top.y + dy, q);
   }
+}
+
+/// sup |F| over the whole torus (torus_extreme's largest): `upper` bounds M(W).
+template <typename Stop>
+TorusBracket torus_bracket(const GravitySeries& g, double w, Stop stop, double* work = nullptr) {
+  return torus_extreme(g, w, WindowExtreme::largest, stop, work);
 }
 
 /// True when sup |F| <= epsilon is proven over the whole torus (torus_bracket): M(W) <= epsilon
@@ -303,6 +360,23 @@ inline bool torus_below(const GravitySeries& g, double w, double epsilon, double
 /// its resolution). Throws InvalidInput("window") unless W > 0 and finite.
 inline WorstWindowMean worst_window_mean(const GravitySeries& g, double window_s, double width = 1e-9) {
   return detail::search_worst_window_mean(g, window_s, width, [](double, double) { return false; });
+}
+
+/// One extreme over every start time of |mean over [t0, t0 + W]|: the largest (M(W)) or the
+/// smallest, as a bracket of width <= `width` (certified) unless the search hits its resolution;
+/// stop(lower, upper) ends the search early (then certified says whether the width was reached).
+/// Throws InvalidInput("window") unless W > 0 and finite, InvalidInput("outer") when the period
+/// is too long (worst_window_mean_cost).
+template <typename Stop>
+WorstWindowMean window_mean_extreme(const GravitySeries& g, double window_s, WindowExtreme side, double width, Stop stop) {
+  return detail::search_window_extreme(g, window_s, width, side, stop);
+}
+
+/// One extreme of |F| over the whole torus of frame angles (detail::torus_extreme): {lower, upper}
+/// with upper - lower <= width or after kMaxTorusBoxes boxes. Largest: upper >= M(W); smallest:
+/// lower <= the smallest window mean, whatever the period.
+inline auto torus_window_extreme(const GravitySeries& g, double window_s, WindowExtreme side, double width) {
+  return detail::torus_extreme(g, window_s, side, [width](double lower, double upper) { return upper - lower <= width; });
 }
 
 /// Whether M(W) <= epsilon: below (upper <= epsilon), above (lower > epsilon) or undecided (M(W)
