@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang-14, ASan + UBSan) and runs each for a bounded time.
 #
-#   bash tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default: 17 s, every target)
+#   bash tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     (default: 10 s, every target)
 #
-# Budget: CI (.ci/run) runs every target for the default 17 s: 8 targets x 17 s = 136 s of
+# Budget: CI (.ci/run) runs every target for the default 10 s: 8 targets x 10 s = 80 s of
 # fuzzing, the fuzz stage's share of CI's 40 minutes beside its build. A new target must keep
-# targets x seconds at or below 140 s (lower the default rather than exceed it); longer runs are
+# targets x seconds at or below 80 s (lower the default rather than exceed it); longer runs are
 # for changes to a reader (below). The build comes on top:
 # fuzz_synth_merge compiles the CGAL synth commands (measured: about 6 minutes of one core).
 #
@@ -23,7 +23,7 @@ set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cd "$root"
-seconds=${1:-17}
+seconds=${1:-10}
 shift || true
 [[ $seconds =~ ^[1-9][0-9]*$ ]] || {
   echo "run.sh: SECONDS_PER_TARGET = '$seconds': expected a whole number >= 1" >&2
