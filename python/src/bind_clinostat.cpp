@@ -246,8 +246,8 @@ py::object report(const Machine& self, py::handle window, py::handle epsilon, py
   if (q.band && window.is_none()) throw InvalidInput("band", "True", "only with window", "window=W, band=True");
   if (!target_g.is_none() && !q.band) throw InvalidInput("target-g", repr_of(target_g), "only with band", "window=W, band=True, target_g=G, tolerance=D");
   if (target_g.is_none() != tolerance.is_none())
-    throw InvalidInput(target_g.is_none() ? "tolerance" : "target-g", repr_of(target_g.is_none() ? tolerance : target_g),
-                       "target_g and tolerance go together", "window=W, band=True, target_g=G, tolerance=D");
+    throw InvalidInput(target_g.is_none() ? "target-g" : "tolerance", "None", "missing: target_g and tolerance go together",
+                       "window=W, band=True, target_g=G, tolerance=D");  // names the one to add
   if (!target_g.is_none()) {
     q.target_g = real_arg(target_g, "target-g", "a finite number >= 0, units of g0");
     q.tolerance = real_arg(tolerance, "tolerance", "a finite number >= 0, units of g0");

@@ -600,7 +600,7 @@ TEST_CASE("clinostat --band of a period too long to search: bounds over the moto
   CHECK(contains(text.out, "NOT CERTIFIED to 1e-9: the period is too long to search"));
 }
 
-TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one; refusals", "[cli][clinostat]") {
+TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one, and its refusals", "[cli][clinostat]") {
   TempDir dir;
   const std::string mars = "clinostat --tilt 67.7901 --outer 5 --inner 0.05 --window 600 --band --running-mean 300 --json";
   const Result unit = run(mars, dir), half = run(mars + " --gravity 0.5", dir);
