@@ -280,6 +280,7 @@ class WristAtlasSearch {
     r.periods.assign(periods_.begin(), periods_.end());
     r.boxes = boxes_;
     r.cells_without_point = static_cast<std::size_t>(std::count_if(cells_.begin(), cells_.end(), [](const WristFoldCell& c) { return !c.has_point; }));
+    r.complete = !stopped;
     r.certified = !stopped && r.cells_without_point == 0;
     if (stopped) r.why = "the search stopped at its budget of " + std::to_string(max_boxes_) + " boxes";
     else if (r.cells_without_point > 0)

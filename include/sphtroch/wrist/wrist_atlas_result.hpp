@@ -45,6 +45,7 @@ struct WristAtlasResult {
   double cell_width = 0;                      ///< radians of joint motion: each cell's widest side times sum_i |C_ij|
   double enclosure = 0;                       ///< radians: every fold point is within this of a cell's proved fold point
   std::size_t cells_without_point = 0;        ///< cells where D may vanish but no fold point was proved (none may be there)
+  bool complete = false;                      ///< the search finished: every u with D(u) = 0 lies in a listed cell
   bool certified = false;                     ///< the enclosure is complete and every cell has its point
   std::string why;                            ///< not certified: what is missing
   std::vector<double> periods;                ///< T_j = 2 pi L_j, radians
