@@ -165,6 +165,7 @@
 #include "sphtroch/wrist/wrist_atlas.hpp"
 #include "sphtroch/wrist/wrist_cap.hpp"
 #include "sphtroch/wrist/wrist_critical.hpp"
+#include "sphtroch/wrist/wrist_cusps.hpp"
 #include "sphtroch/wrist/wrist_enclosure.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_search.hpp"

@@ -5,7 +5,10 @@
 // the right band, every cell of it wholly on the right side of both circles, and the workspace's
 // area bracket holds 2 pi (z_hi - z_lo). On random 2-motor wrists a region's count is, at random
 // targets in its cells, the grid and Gauss-Newton count of tests/wrist/wrist_reference.hpp and
-// wrist_ik's count; targets in the fold band are counted, not compared.
+// wrist_ik's count; targets in the fold band are counted, not compared. The estimated cusps
+// (wrist_cusps.hpp): none on the base x gear train's circles; at each one on two other wrists the
+// reference (the fold determinant of wrist_reference.hpp by central differences, the kernel of dP by
+// Eigen's SVD) has the kernel's component along grad D change sign along the critical curve.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -110,7 +113,68 @@ TargetTally check_random_targets(unsigned seed, int wrists, int targets) {
   return tally;
 }
 
+/// The reference cusp function at u: grad D (central differences of fold_det) and the kernel of
+/// dP (the right singular vector of the 3 x 2 Jacobian with the smaller singular value).
+void reference_kernel(const WristModel& m, const std::array<double, 2>& u, Eigen::Vector2d& grad, Eigen::Vector2d& kernel) {
+  const double h = 1e-6;
+  for (int j = 0; j < 2; ++j) {
+    double a[2] = {u[0], u[1]}, b[2] = {u[0], u[1]};
+    a[j] += h, b[j] -= h;
+    grad[j] = (fold_det<double>(m, a) - fold_det<double>(m, b)) / (2 * h);
+  }
+  const double w[2] = {u[0], u[1]};
+  Eigen::Vector3d p;
+  Eigen::Matrix<double, 3, 2> jac;
+  m.point_and_jacobian(w, p, jac);
+  kernel = Eigen::JacobiSVD<Eigen::Matrix<double, 3, 2>>(jac, Eigen::ComputeFullV).matrixV().col(1);
+}
+
+/// u moved onto D = 0 by Newton steps along grad D (the reference determinant).
+std::array<double, 2> onto_fold(const WristModel& m, std::array<double, 2> u) {
+  for (int it = 0; it < 20; ++it) {
+    Eigen::Vector2d g, k;
+    reference_kernel(m, u, g, k);
+    const double d[2] = {u[0], u[1]};
+    const double step = fold_det<double>(m, d) / g.squaredNorm();
+    u[0] -= step * g[0], u[1] -= step * g[1];
+  }
+  return u;
+}
+
+/// Whether k . grad D (each of one sense on both sides) changes sign between the fold points s
+/// motor radians either side of u along the critical curve.
+bool reference_cusp_within(const WristModel& m, const std::array<double, 2>& u, double s) {
+  Eigen::Vector2d g, k, g2, k2;
+  reference_kernel(m, u, g, k);
+  const Eigen::Vector2d t = Eigen::Vector2d(-g[1], g[0]).normalized();
+  const std::array<double, 2> a = onto_fold(m, {u[0] - s * t[0], u[1] - s * t[1]}), b = onto_fold(m, {u[0] + s * t[0], u[1] + s * t[1]});
+  reference_kernel(m, a, g, k);
+  reference_kernel(m, b, g2, k2);
+  if (k.dot(k2) < 0) k2 = -k2;
+  if (g.dot(g2) < 0) g2 = -g2;
+  return k.dot(g.normalized()) * k2.dot(g2.normalized()) < 0;
+}
+
 }  // namespace
+
+TEST_CASE("wrist atlas: the estimated cusps: none on the base x gear train, the reference's sign change at each on two wrists", "[wrist][regions][cusps]") {
+  const Wrist train({{0.0, 0.0}, {1.0, 0.0}, {0.5, 0.0}}, {{ChainRate(1), ChainRate(0)}, {ChainRate(0), ChainRate(1)}, {ChainRate(0), ChainRate(-3, 2)}});
+  CHECK(wrist_fold_atlas(train, 0.05).cusps.empty());
+  const std::vector<WristModel> models{
+      {{kPi / 2, kPi / 2, kPi / 3}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{1, 2}, {1, 2}}, {{-1, 2}, {1, 2}}}},
+      {{kPi / 2, 1.0, kPi / 3, 0.7}, {0.0, 0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 3}}, {{1, 2}, {-1, 1}}}}};
+  for (const WristModel& m : models) {
+    const WristAtlasResult atlas = wrist_fold_atlas(model_wrist(m), 0.05);
+    INFO("coupling " << model_wrist(m).coupling_text());
+    CHECK(!atlas.cusps.empty());
+    for (const WristCusp& c : atlas.cusps) {
+      INFO("cusp at u = (" << c.motors[0] << ", " << c.motors[1] << ")");
+      const bool seen = reference_cusp_within(m, c.motors, 0.03) || reference_cusp_within(m, c.motors, 0.06) ||
+                        reference_cusp_within(m, c.motors, 0.12);
+      CHECK(seen);
+    }
+  }
+}
 
 TEST_CASE("wrist regions: the base x gear train's zone has 2 |p| solutions, its caps none (Eqs. 14/15)", "[wrist][regions]") {
   struct Case {

@@ -9,7 +9,8 @@
 //
 // Colours: count 0 (a void) white; counts above 0 by rank among those present, ColorBrewer's
 // sequential YlGnBu (light to dark as the count grows; the 9th and later ranks share the darkest);
-// a region without a certified count magenta; the fold band grey; folds dark red. Cells of one
+// a region without a certified count magenta; the fold band grey; folds dark red; the estimated
+// cusps (wrist_cusps.hpp) black open circles. Cells of one
 // colour next to each other in a row are one rectangle. Text is 11 px. Fold segments longer than
 // 0.3 rad (polylines joined across the azimuth seam or between distant cells) are not drawn.
 #pragma once
@@ -52,7 +53,7 @@ inline std::map<std::size_t, std::string> palette(const WristRegionsResult& r) {
 }
 
 inline std::string cell_colour(const WristRegionsResult& r, std::size_t cell, const std::map<std::size_t, std::string>& colours) {
-  const long k = r.cell_region[cell];
+  const long k = cell < r.cell_region.size() ? r.cell_region[cell] : -1;  // a result not filled: all band
   if (k < 0) return kBand;
   const WristRegion& g = r.regions[static_cast<std::size_t>(k)];
   return g.counted ? colours.at(g.count) : kUncounted;
@@ -103,6 +104,17 @@ inline void draw_folds(SvgWriter& svg, const WristAtlasResult& atlas) {
   if (!d.empty()) svg.path(d, "fill:none;stroke:#a50f15;stroke-width:1.2;stroke-linejoin:round");
 }
 
+/// The estimated cusps as small open circles.
+inline void draw_cusps(SvgWriter& svg, const WristAtlasResult& atlas) {
+  const double pi = Constants<double>::pi();
+  for (const WristCusp& c : atlas.cusps) {
+    double phi = std::atan2(c.point[1], c.point[0]);
+    if (phi < 0) phi += 2 * pi;
+    const double theta = std::atan2(std::hypot(c.point[0], c.point[1]), c.point[2]);
+    svg.circle(kLeft + kWidth * phi / (2 * pi), kTop + kHeight * theta / pi, 3.5, "fill:none;stroke:#000;stroke-width:1.2");
+  }
+}
+
 inline void draw_frame(SvgWriter& svg) {
   const char* text = "font-family:sans-serif;font-size:11px;fill:#222";
   svg.rect(kLeft, kTop, kWidth, kHeight, "fill:none;stroke:#222;stroke-width:1");
@@ -134,6 +146,9 @@ inline void draw_legend(SvgWriter& svg, const WristRegionsResult& r, const std::
   row(kBand, "fold band (no count)");
   svg.line(x, y + 6, x + 16, y + 6, "stroke:#a50f15;stroke-width:1.6");
   svg.text(x + 22, y + 10, "fold (atlas polylines)", text);
+  y += 18;
+  svg.circle(x + 8, y + 6, 3.5, "fill:none;stroke:#000;stroke-width:1.2");
+  svg.text(x + 22, y + 10, "cusp (estimated)", text);
 }
 
 }  // namespace wrist_regions_svg_detail
@@ -146,6 +161,7 @@ inline std::string wrist_regions_svg(const WristAtlasResult& atlas, const WristR
   const std::map<std::size_t, std::string> colours = d::palette(r);
   d::draw_cells(svg, r, colours);
   d::draw_folds(svg, atlas);
+  d::draw_cusps(svg, atlas);
   d::draw_frame(svg);
   d::draw_legend(svg, r, colours);
   return svg.finish();
