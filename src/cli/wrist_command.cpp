@@ -6,6 +6,7 @@
 // (sphtroch/wrist/wrist_cap.hpp, wrist_cap_output.hpp); the critical curve enclosed in cells and
 // the fold polylines (sphtroch/wrist/wrist_atlas.hpp, wrist_atlas_output.hpp). CGAL's interval headers only (sphtroch::interval).
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/wrist/wrist_atlas.hpp"
@@ -99,16 +100,18 @@ double sphere_cell(const std::string& text) {
   return *w;
 }
 
-/// Whether the output's name ends in .svg (any case): the picture instead of the report.
-bool svg_output(const std::string& path) {
+/// Whether the output's name ends in .svg or .png (any case): the picture instead of the report.
+bool picture_output(const std::string& path) {
   if (path.size() < 4) return false;
   std::string tail = path.substr(path.size() - 4);
   for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".svg";
+  return tail == ".svg" || tail == ".png";
 }
 
 void run_wrist_atlas(const WristIkOptions& o) {
   check_distinct_files({{o.output, "--output"}}, {});
+  const bool picture = picture_output(o.output);
+  if (picture) check_svg_name(o.output, "output");  // a .png needs the PNG plugin (refused up front without it)
   const Wrist wrist = o.wrist.wrist();
   const double step = sphere_cell(o.sphere_cell);
   check_wrist_regions_cost(step);
@@ -116,11 +119,12 @@ void run_wrist_atlas(const WristIkOptions& o) {
   const WristAtlasResult r = wrist_fold_atlas(wrist, width);  // refuses bad input and cost before any output
   const WristRegionsResult regions = wrist_regions(wrist, r, step);
   const bool certified = r.certified && regions.certified;
+  const std::string bytes = picture ? picture_bytes(wrist_regions_svg(r, regions), o.output) : std::string();
   write_output(
       o.output,
       [&](std::ostream& out) {
-        if (svg_output(o.output)) {
-          out << wrist_regions_svg(r, regions);
+        if (picture) {
+          out << bytes;
         } else if (o.json) {
           nlohmann::json j = wrist_atlas_json(wrist, r);
           j.update(wrist_regions_json(regions));
@@ -131,7 +135,7 @@ void run_wrist_atlas(const WristIkOptions& o) {
           out << wrist_atlas_text(wrist, r) << wrist_regions_text(regions);
         }
       },
-      "--output", svg_output(o.output) ? std::vector<std::string>{"svg"} : kTextOutputs);
+      "--output", picture ? kPictureOutputs : kTextOutputs);
   if (!r.certified) throw UncertifiedResult{"wrist atlas: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
   if (!regions.certified) throw UncertifiedResult{"wrist atlas: regions not certified: " + regions.why + " (exit status 3; see docs/wrists.md)"};
 }
@@ -143,7 +147,7 @@ void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Acti
   cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
   cmd->add_option("--sphere-cell", o->sphere_cell, "the sphere grid's cell size for the regions, radians (0.002 to 0.5; default 0.02)");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
-  add_output_option(*cmd, o->output, "the report; a name ending in .svg gets the picture (regions by count, folds, legend)");
+  add_output_option(*cmd, o->output, "the report; a name ending in .svg (or .png) gets the picture (regions by count, folds, legend)");
   cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"
               "point proved in each by the Krawczyk test, and the fold set drawn as polylines through them; the regions of\n"
               "the sphere the folds cut out (grid cells proved fold-free, joined through edges), each with wrist ik's\n"

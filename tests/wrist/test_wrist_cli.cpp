@@ -7,7 +7,7 @@
 // home on a fold (radius 0, said), and its refusals (--home not unit, NaN, missing; 3 motors; cost).
 // `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals;
 // its regions in the JSON (counts 4 in the zone and 0 beyond, areas against 2 pi (z_hi - z_lo)),
-// the picture (well-formed, a legend, text >= 9.5 px), refusals of --sphere-cell and of -o x.png.
+// the picture (well-formed, a legend, text >= 9.5 px), refusals of --sphere-cell and of -o x.pdf.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -215,7 +215,7 @@ TEST_CASE("wrist atlas --json: the base x gear train wrist's fold polylines on i
   }
 }
 
-TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --sphere-cell and -o", "[wrist][cli][regions]") {
+TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --sphere-cell and -o x.pdf", "[wrist][cli][regions]") {
   TempDir dir;
   const std::string wrist = "wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1 --sphere-cell 0.05";
   const Result r = run(wrist + " --json", dir);
@@ -262,7 +262,7 @@ TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --
            {" --sphere-cell 0.001", "--sphere-cell"},
            {" --sphere-cell 0.9", "--sphere-cell"},
            {" --sphere-cell abc", "--sphere-cell"},
-           {" -o " + (dir.path / "atlas.png").string(), "--output"}}) {
+           {" -o " + (dir.path / "atlas.pdf").string(), "--output"}}) {
     const Result bad = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2'" + args, dir);
     INFO(args << "\n" << bad.err);
     CHECK(bad.status == 2);
