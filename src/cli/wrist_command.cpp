@@ -32,7 +32,7 @@ namespace {
 
 struct WristIkOptions {
   WristText wrist;
-  std::string output, width, sphere_cell;
+  std::string output, width, sphere_cell, threads;
   bool json = false;
 };
 
@@ -116,8 +116,9 @@ void run_wrist_atlas(const WristIkOptions& o) {
   const double step = sphere_cell(o.sphere_cell);
   check_wrist_regions_cost(step);
   const double width = atlas_width(o.width);
+  const std::size_t threads = parse_threads(o.threads);
   const WristAtlasResult r = wrist_fold_atlas(wrist, width);  // refuses bad input and cost before any output
-  const WristRegionsResult regions = wrist_regions(wrist, r, step);
+  const WristRegionsResult regions = wrist_regions(wrist, r, step, threads);
   const bool certified = r.certified && regions.certified;
   const std::string bytes = picture ? picture_bytes(wrist_regions_svg(r, regions), o.output) : std::string();
   write_output(
@@ -146,6 +147,7 @@ void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Acti
   add_wrist_options(*cmd, o->wrist);
   cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
   cmd->add_option("--sphere-cell", o->sphere_cell, "the sphere grid's cell size for the regions, radians (0.002 to 0.5; default 0.02)");
+  cmd->add_option("--threads", o->threads, "worker threads for the regions' counts (1 .. 1024; default: all cores)");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
   add_output_option(*cmd, o->output, "the report; a name ending in .svg (or .png) gets the picture (regions by count, folds, legend)");
   cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"

@@ -215,6 +215,12 @@ TEST_CASE("wrist regions: the base x gear train's zone has 2 |p| solutions, its 
     CHECK(r.workspace_area + r.fold_band_area >= area);
     CHECK(r.workspace_area + r.void_area + r.fold_band_area == Approx(4 * kPi).epsilon(1e-12));
     CHECK(r.violations.empty());
+    const WristRegionsResult two = wrist_regions(wrist, atlas, 0.02, 2);  // the same on 2 threads
+    REQUIRE(two.regions.size() == r.regions.size());
+    for (std::size_t k = 0; k < r.regions.size(); ++k) {
+      CHECK(two.regions[k].count == r.regions[k].count);
+      CHECK(two.regions[k].point == r.regions[k].point);
+    }
   }
 }
 

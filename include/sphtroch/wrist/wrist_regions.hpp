@@ -33,8 +33,9 @@
 // corner-adjacent atlas cells, modulo the periods, whose caps meet the run).
 // A crossing with |delta| = 2 is counted in crossings_by_two; the pairs of regions are checked once.
 // Cost: refused (InvalidInput "sphere-cell") when the grid has more than kMaxWristRegionCells
-// cells or the step is outside [kWristRegionsMinStep, 0.5]; a wrist_ik per region (a few ms each);
-// after kMaxWristRegionCounts regions the rest stay uncounted (not certified).
+// cells or the step is outside [kWristRegionsMinStep, 0.5]; a wrist_ik per region (a few ms to
+// tens of ms each, on `threads` workers); after kMaxWristRegionCounts regions the rest stay
+// uncounted (not certified).
 #pragma once
 
 #if !defined(SPHTROCH_HAVE_INTERVAL)
@@ -43,6 +44,7 @@
 
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/core/parallel_for.hpp"
 #include "sphtroch/interval/interval.hpp"
 #include "sphtroch/wrist/wrist.hpp"
 #include "sphtroch/wrist/wrist_atlas_result.hpp"
@@ -187,10 +189,12 @@ inline void count_region(const Wrist& wrist, const WristSphereGrid& grid, const 
 
 }  // namespace wrist_regions_detail
 
-/// The regions of the wrist's fold atlas on a sphere grid of `step` radians (see header).
-/// REQUIRES 2 motors; refuses (check_wrist_regions_cost) a step outside its range or a grid above
-/// the bound. In the caller's rounding mode.
-inline WristRegionsResult wrist_regions(const Wrist& wrist, const WristAtlasResult& atlas, double step = kWristRegionsDefaultStep) {
+/// The regions of the wrist's fold atlas on a sphere grid of `step` radians (see header); the
+/// counts on `threads` worker threads (the result does not depend on it). REQUIRES 2 motors;
+/// refuses (check_wrist_regions_cost) a step outside its range or a grid above the bound. In the
+/// caller's rounding mode.
+inline WristRegionsResult wrist_regions(const Wrist& wrist, const WristAtlasResult& atlas, double step = kWristRegionsDefaultStep,
+                                        std::size_t threads = 1) {
   namespace d = wrist_regions_detail;
   check_wrist_regions_cost(step);
   WristRegionsResult r;
@@ -219,12 +223,11 @@ inline WristRegionsResult wrist_regions(const Wrist& wrist, const WristAtlasResu
   for (std::size_t k = 0; k < n; ++k) rank[order[k]] = static_cast<long>(k);
   r.cell_region.resize(label.size());
   for (std::size_t c = 0; c < label.size(); ++c) r.cell_region[c] = label[c] < 0 ? -1 : rank[static_cast<std::size_t>(label[c])];
-  for (std::size_t k = 0; k < n; ++k) {
-    WristRegion region = regions[order[k]];
-    if (k < kMaxWristRegionCounts) d::count_region(wrist, r.grid, d::count_points(r.grid, label, cells[order[k]]), region);
-    r.ik_boxes += region.ik_boxes;
-    r.regions.push_back(region);
-  }
+  for (std::size_t k = 0; k < n; ++k) r.regions.push_back(regions[order[k]]);
+  parallel_for(std::min(n, kMaxWristRegionCounts), threads, [&](std::size_t k) {
+    d::count_region(wrist, r.grid, d::count_points(r.grid, label, cells[order[k]]), r.regions[k]);
+  });
+  for (const WristRegion& region : r.regions) r.ik_boxes += region.ik_boxes;
   wrist_regions_check(atlas, meets, r);
   return r;
 }
