@@ -111,8 +111,8 @@ inline std::vector<WristFoldCap> wrist_fold_caps(const Wrist& wrist, const Wrist
       radius += half * speed;
     }
     cap.radius = radius + 1e-12;
-    const Vector3d p = wrist.point<double>({mid(box[0]), mid(box[1])});
-    cap.centre = p.normalized();
+    const RoundingGuard nearest(CGAL_FE_TONEAREST);  // P(c) in doubles to ~1e-15, well inside the 1e-12
+    cap.centre = wrist.point<double>({mid(box[0]), mid(box[1])}).normalized();
     caps.push_back(cap);
   }
   return caps;
