@@ -142,6 +142,7 @@ inline void wrist_regions_check(const WristAtlasResult& atlas, const std::vector
   std::string why;
   const auto add = [&why](const std::string& s) { why += (why.empty() ? "" : "; ") + s; };
   if (!atlas.complete) add("the atlas's search stopped: the fold band may miss folds");
+  if (r.regions.empty()) add("no cell of the sphere was proved free of folds (a smaller --sphere-cell or --width may find some)");
   if (uncounted > 0) add(std::to_string(uncounted) + " region(s) without a certified count");
   if (!r.parity_ok) add("the counts are not all of one parity (the degree of P mod 2)");
   for (const WristRegionCrossing& v : r.violations)
