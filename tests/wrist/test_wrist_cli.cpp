@@ -262,6 +262,7 @@ TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --
            {" --sphere-cell 0.001", "--sphere-cell"},
            {" --sphere-cell 0.9", "--sphere-cell"},
            {" --sphere-cell abc", "--sphere-cell"},
+           {" --threads 0", "--threads"},
            {" -o " + (dir.path / "atlas.pdf").string(), "--output"}}) {
     const Result bad = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2'" + args, dir);
     INFO(args << "\n" << bad.err);
