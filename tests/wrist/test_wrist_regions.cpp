@@ -8,7 +8,9 @@
 // wrist_ik's count; targets in the fold band are counted, not compared. The estimated cusps
 // (wrist_cusps.hpp): none on the base x gear train's circles; at each one on two other wrists the
 // reference (the fold determinant of wrist_reference.hpp by central differences, the kernel of dP by
-// Eigen's SVD) has the kernel's component along grad D change sign along the critical curve.
+// Eigen's SVD) has the kernel's component along grad D change sign along the critical curve. The
+// checks on a result made by hand: 2 -> 4 across one strand passes, 0 -> 4 is a violation, counts of
+// two parities fail, a region without a count is not certified.
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -293,4 +295,44 @@ TEST_CASE("wrist regions: refusals name --sphere-cell", "[wrist][regions]") {
     }
   }
   CHECK_NOTHROW(check_wrist_regions_cost(0.02));
+}
+
+TEST_CASE("wrist regions: the checks: a jump of 4 across one strand, counts of two parities, a region without a count", "[wrist][regions]") {
+  WristAtlasResult atlas;
+  atlas.complete = true;
+  atlas.periods = {2 * kPi, 2 * kPi};
+  atlas.cells.resize(1);
+  atlas.cells[0].motors = {{{0.0, 0.1}, {0.0, 0.1}}};
+  const auto make = [&](std::size_t count0, std::size_t count1, bool counted1) {
+    WristRegionsResult r;
+    r.grid = WristSphereGrid(0.5);
+    r.cell_region.assign(r.grid.size(), 0);
+    const std::size_t row = 3;
+    r.cell_region[r.grid.index(row, 1)] = -1;  // one band cell between region 0 (west) and region 1 (east)
+    r.cell_region[r.grid.index(row, 2)] = 1;
+    r.regions.resize(2);
+    r.regions[0].count = count0, r.regions[0].counted = true;
+    r.regions[1].count = count1, r.regions[1].counted = counted1;
+    std::vector<std::vector<std::size_t>> meets(r.grid.size());
+    meets[r.grid.index(row, 1)] = {0};
+    wrist_regions_check(atlas, meets, r);
+    return r;
+  };
+  const WristRegionsResult two = make(2, 4, true);
+  CHECK(two.certified);
+  CHECK(two.crossings >= 1);
+  CHECK(two.crossings_by_two >= 1);
+  const WristRegionsResult four = make(0, 4, true);
+  CHECK(!four.certified);
+  REQUIRE(!four.violations.empty());
+  CHECK(four.violations.front().strands == 1);
+  CHECK(std::labs(four.violations.front().delta) == 4);
+  CHECK(four.why.find("+-2 rule") != std::string::npos);
+  const WristRegionsResult odd = make(2, 3, true);
+  CHECK(!odd.parity_ok);
+  CHECK(!odd.certified);
+  const WristRegionsResult missing = make(2, 0, false);
+  CHECK(!missing.certified);
+  CHECK(missing.why.find("without a certified count") != std::string::npos);
+  CHECK(missing.voids.empty());
 }
