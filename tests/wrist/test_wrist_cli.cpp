@@ -7,7 +7,8 @@
 // home on a fold (radius 0, said), and its refusals (--home not unit, NaN, missing; 3 motors; cost).
 // `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals;
 // its regions in the JSON (counts 4 in the zone and 0 beyond, areas against 2 pi (z_hi - z_lo)),
-// the picture (well-formed, a legend, text >= 9.5 px), refusals of --sphere-cell and of -o x.pdf.
+// the picture (well-formed, a legend, text >= 9.5 px), refusals of --sphere-cell and of -o x.pdf;
+// exit 3 with the report when no region is proved.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -271,4 +272,18 @@ TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --
     CHECK(count_lines(bad.err) == 1);
     CHECK(contains(bad.err, option));
   }
+}
+
+TEST_CASE("wrist atlas: no region proved (a coarse sphere grid) exits 3 after the complete report, one line naming it", "[wrist][cli][regions]") {
+  TempDir dir;
+  const Result r = run("wrist atlas --twists 2.4617,1.8544,1.9130,1.9478 --coupling '0,4/3;0,0;0,-1/4;-4/1,-2/3' --sphere-cell 0.5 --width 0.2 --json", dir);
+  CHECK(r.status == 3);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "regions not certified"));
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == false);
+  CHECK(j["regions_certified"] == false);
+  CHECK(j["atlas_certified"] == true);
+  CHECK(j["regions"].empty());
+  CHECK(!j["regions_why"].get<std::string>().empty());
 }
