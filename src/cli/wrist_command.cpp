@@ -96,7 +96,7 @@ double atlas_width(const std::string& text) {
 double sphere_cell(const std::string& text) {
   if (text.empty()) return kWristRegionsDefaultStep;
   const std::optional<double> w = detail::strict_double(detail::trim(text));
-  if (!w) throw InvalidInput("sphere-cell", text, "not a finite number", "radians per sphere cell, 0.002 to 0.5 (default 0.02)");
+  if (!w) throw InvalidInput("sphere-cell", text, "not a finite number", "radians per sphere cell, 0.003 to 0.5 (default 0.02)");
   return *w;
 }
 
@@ -146,7 +146,7 @@ void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Acti
   CLI::App* cmd = wrist.add_subcommand("atlas", "the critical curve det = 0 on the motor torus (2 motors), certified cells, and the fold polylines");
   add_wrist_options(*cmd, o->wrist);
   cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)");
-  cmd->add_option("--sphere-cell", o->sphere_cell, "the sphere grid's cell size for the regions, radians (0.002 to 0.5; default 0.02)");
+  cmd->add_option("--sphere-cell", o->sphere_cell, "the sphere grid's cell size for the regions, radians (0.003 to 0.5; default 0.02)");
   cmd->add_option("--threads", o->threads, "worker threads for the regions' counts (1 .. 1024; default: all cores)");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
   add_output_option(*cmd, o->output, "the report; a name ending in .svg (or .png) gets the picture (regions by count, folds, legend)");

@@ -59,7 +59,6 @@
 #include <cmath>
 #include <cstddef>
 #include <numeric>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,9 +67,10 @@ namespace sphtroch {
 
 /// The sphere grid's default step and the range accepted (radians).
 constexpr double kWristRegionsDefaultStep = 0.02;
-constexpr double kWristRegionsMinStep = 2e-3;
-/// Grids of more cells are refused up front (about 12 bytes and a cap test or two per cell).
-constexpr double kMaxWristRegionCells = 4e6;
+constexpr double kWristRegionsMinStep = 3e-3;
+/// Grids of more cells are refused up front (about 80 bytes of memory per cell, and a cap test or
+/// two: 2e6 cells about 160 MB).
+constexpr double kMaxWristRegionCells = 2e6;
 /// Regions counted at most (a wrist_ik each); the rest stay uncounted.
 constexpr std::size_t kMaxWristRegionCounts = 2000;
 /// Radians between a clean cell's cap and every fold cap, beyond the rounding of their centres.
@@ -78,8 +78,8 @@ constexpr double kWristCleanMargin = 1e-9;
 
 /// Refuses (InvalidInput "sphere-cell") a step outside [kWristRegionsMinStep, 0.5] or a grid above kMaxWristRegionCells.
 inline void check_wrist_regions_cost(double step) {
-  const std::string valid = "radians per sphere cell, 0.002 to 0.5 (default 0.02): at most 4e+06 cells, about 4 pi / step^2";
-  if (!(step >= kWristRegionsMinStep && step <= 0.5)) throw InvalidInput("sphere-cell", number_text(step), "outside [0.002, 0.5]", valid);
+  const std::string valid = "radians per sphere cell, 0.003 to 0.5 (default 0.02): at most 2e+06 cells, about 4 pi / step^2";
+  if (!(step >= kWristRegionsMinStep && step <= 0.5)) throw InvalidInput("sphere-cell", number_text(step), "outside [0.003, 0.5]", valid);
   const double cells = WristSphereGrid::cells_for(step);
   if (cells > kMaxWristRegionCells)
     throw InvalidInput("sphere-cell", number_text(step), "too costly: the sphere grid needs " + number_text(std::round(cells)) + " cells", valid);
