@@ -41,7 +41,7 @@ LAYERS = {
     "chain": ["core", "interval", "io", "draw", "map", "census"],  # rotation chains: the certified census, events along a family, the picture
     "tolerance": ["core", "interval", "io", "map", "census"],      # how far a train is from a topology change; node enclosures over a box
     "synthesis": ["core", "interval", "io", "map", "census"],      # the inverse question: which train draws this
-    "wrist": ["core", "interval", "io"],          # geared wrists with 2 or 3 motors: the model, the certified inverse kinematics, the folds (cap, atlas)
+    "wrist": ["core", "interval", "io", "draw"],  # geared wrists with 2 or 3 motors: the model, the certified inverse kinematics, the folds (cap, atlas), the regions and their picture
     "exact": ["core", "interval", "io", "draw", "map", "census", "chain", "tolerance", "synthesis"],  # CGAL: crossings, classify, scenes, reports
     "atlas": ["core", "io", "draw", "map", "census"],  # the design map over a grid (no CGAL)
     "cad": ["core", "io"],                        # OpenCASCADE: the path as a STEP B-spline

@@ -4,7 +4,8 @@
 //     criteria, the root function, the boundary events), census/ (the root census), atlas/,
 //     synthesis/ (identify, path distance, path fit), machine/ (clinostats: the gravity path, its
 //     gear train, window means, the worst window mean, the time to epsilon, the report and its JSON),
-//     wrist/'s model, targets, typed options and reports, the cap's and the fold atlas's results and reports (geared
+//     wrist/'s model, targets, typed options and reports, the cap's and the fold atlas's results and reports, the
+//     regions' grid, checks, reports and picture (geared
 //     wrists with 2 or 3 motors).
 //   sphtroch::healpix (HEALPix's C++ library; defines SPHTROCH_HAVE_HEALPIX): adds machine/dwell_map.hpp.
 //   sphtroch::urdf (urdfdom; defines SPHTROCH_HAVE_URDF): adds io/urdf_chain.hpp (rotation chains read
@@ -145,6 +146,11 @@
 #include "sphtroch/wrist/wrist_cap_result.hpp"
 #include "sphtroch/wrist/wrist_ik_output.hpp"
 #include "sphtroch/wrist/wrist_ik_result.hpp"
+#include "sphtroch/wrist/wrist_regions_checks.hpp"
+#include "sphtroch/wrist/wrist_regions_output.hpp"
+#include "sphtroch/wrist/wrist_regions_result.hpp"
+#include "sphtroch/wrist/wrist_regions_svg.hpp"
+#include "sphtroch/wrist/wrist_sphere_grid.hpp"
 #include "sphtroch/wrist/wrist_target.hpp"
 #include "sphtroch/wrist/wrist_text.hpp"
 
@@ -170,10 +176,12 @@
 #include "sphtroch/wrist/wrist_atlas.hpp"
 #include "sphtroch/wrist/wrist_cap.hpp"
 #include "sphtroch/wrist/wrist_critical.hpp"
+#include "sphtroch/wrist/wrist_cusps.hpp"
 #include "sphtroch/wrist/wrist_enclosure.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_search.hpp"
 #include "sphtroch/wrist/wrist_ik_system.hpp"
+#include "sphtroch/wrist/wrist_regions.hpp"
 #endif
 
 #if defined(SPHTROCH_HAVE_EXACT)

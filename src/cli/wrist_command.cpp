@@ -6,6 +6,7 @@
 // (sphtroch/wrist/wrist_cap.hpp, wrist_cap_output.hpp); the critical curve enclosed in cells and
 // the fold polylines (sphtroch/wrist/wrist_atlas.hpp, wrist_atlas_output.hpp). CGAL's interval headers only (sphtroch::interval).
 #include "cli_common.hpp"
+#include "png_output.hpp"
 
 #include "sphtroch/io/parse.hpp"
 #include "sphtroch/wrist/wrist_atlas.hpp"
@@ -14,9 +15,16 @@
 #include "sphtroch/wrist/wrist_cap_output.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_output.hpp"
+#include "sphtroch/wrist/wrist_regions.hpp"
+#include "sphtroch/wrist/wrist_regions_output.hpp"
+#include "sphtroch/wrist/wrist_regions_svg.hpp"
 #include "sphtroch/wrist/wrist_text.hpp"
 
+#include <cctype>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace sphtroch::cli {
 
@@ -24,7 +32,7 @@ namespace {
 
 struct WristIkOptions {
   WristText wrist;
-  std::string output, width;
+  std::string output, width, sphere_cell, threads;
   bool json = false;
 };
 
@@ -86,15 +94,53 @@ double atlas_width(const std::string& text) {
   return *w;
 }
 
+/// --sphere-cell as typed: a finite number ("" = the default); its range is wrist_regions's.
+double sphere_cell(const std::string& text) {
+  if (text.empty()) return kWristRegionsDefaultStep;
+  const std::optional<double> w = detail::strict_double(detail::trim(text));
+  if (!w) throw InvalidInput("sphere-cell", text, "not a finite number", "radians per sphere cell, 0.003 to 0.5 (default 0.02)");
+  return *w;
+}
+
+/// Whether the output's name ends in .svg or .png (any case): the picture instead of the report.
+bool picture_output(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string tail = path.substr(path.size() - 4);
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail == ".svg" || tail == ".png";
+}
+
 void run_wrist_atlas(const WristIkOptions& o) {
   check_distinct_files({{o.output, "--output"}}, {});
+  const bool picture = picture_output(o.output);
+  if (picture) check_svg_name(o.output, "output");  // a .png needs the PNG plugin (refused up front without it)
   const Wrist wrist = o.wrist.wrist();
-  const WristAtlasResult r = wrist_fold_atlas(wrist, atlas_width(o.width));  // refuses bad input and cost before any output
-  write_output(o.output, [&](std::ostream& out) {
-    if (o.json) out << wrist_atlas_json(wrist, r).dump(2) << "\n";
-    else out << wrist_atlas_text(wrist, r);
-  });
+  const double step = sphere_cell(o.sphere_cell);
+  check_wrist_regions_cost(step);
+  const double width = atlas_width(o.width);
+  const std::size_t threads = parse_threads(o.threads);
+  const WristAtlasResult r = wrist_fold_atlas(wrist, width);  // refuses bad input and cost before any output
+  const WristRegionsResult regions = wrist_regions(wrist, r, step, threads);
+  const bool certified = r.certified && regions.certified;
+  const std::string bytes = picture ? picture_bytes(wrist_regions_svg(r, regions), o.output) : std::string();
+  write_output(
+      o.output,
+      [&](std::ostream& out) {
+        if (picture) {
+          out << bytes;
+        } else if (o.json) {
+          nlohmann::json j = wrist_atlas_json(wrist, r);
+          j.update(wrist_regions_json(regions));
+          j["atlas_certified"] = r.certified;
+          j["certified"] = certified;
+          out << j.dump(2) << "\n";
+        } else {
+          out << wrist_atlas_text(wrist, r) << wrist_regions_text(regions);
+        }
+      },
+      "--output", picture ? kPictureOutputs : kTextOutputs);
   if (!r.certified) throw UncertifiedResult{"wrist atlas: not certified: " + r.why + " (exit status 3; see docs/wrists.md)"};
+  if (!regions.certified) throw UncertifiedResult{"wrist atlas: regions not certified: " + regions.why + " (exit status 3; see docs/wrists.md)"};
 }
 
 void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Action>>& actions) {
@@ -102,12 +148,18 @@ void register_wrist_atlas(CLI::App& wrist, std::vector<std::pair<CLI::App*, Acti
   CLI::App* cmd = wrist.add_subcommand("atlas", "the critical curve det = 0 on the motor torus (2 motors), certified cells, and the fold polylines");
   add_wrist_options(*cmd, o->wrist);
   cmd->add_option("--width", o->width, "the cells' size, radians of joint motion (0.001 to 1; default 0.05)")->type_name("RAD");
+  cmd->add_option("--sphere-cell", o->sphere_cell, "the sphere grid's cell size for the regions, radians (0.003 to 0.5; default 0.02)")
+      ->type_name("RAD");
+  cmd->add_option("--threads", o->threads, "worker threads for the regions' counts (1 .. 1024; default: all cores)")->type_name("N");
   cmd->add_flag("--json", o->json, "print one JSON object instead of text");
-  add_output_option(*cmd, o->output, "the report");
+  add_output_option(*cmd, o->output, "the report; a name ending in .svg (or .png) gets the picture (regions by count, folds, legend)");
   cmd->footer("Every cell of the motor torus where det[P, dP/du1, dP/du2] may vanish (all others proved det != 0), a fold\n"
-              "point proved in each by the Krawczyk test, and the fold set drawn as polylines through them; exit 3 when a\n"
-              "cell has no proved point. 2 motors only (docs/wrists.md).\n"
-              "Example: sphtroch wrist atlas --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --json");
+              "point proved in each by the Krawczyk test, and the fold set drawn as polylines through them; the regions of\n"
+              "the sphere the folds cut out (grid cells proved fold-free, joined through edges), each with wrist ik's\n"
+              "certified count at one interior point, the workspace (count > 0) and voids. Exit 3 when a cell has no\n"
+              "proved point or a region stays undecided. 2 motors only; refused up front beyond " +
+              number_text(kMaxWristAtlasCells) + " torus cells or " + number_text(kMaxWristRegionCells) + " sphere cells (docs/wrists.md).\n"
+              "Example: sphtroch wrist atlas --twists 0,1,0.5 --coupling \"1,0;0,1;0,2\" --json; ... -o atlas.svg");
   actions.emplace_back(cmd, [o] { run_wrist_atlas(*o); });
 }
 

@@ -5,7 +5,10 @@
 // coupling, rows != k, a zero denominator, a non-unit target, NaN, a problem beyond the cost bound).
 // `sphtroch wrist cap`: the JSON's fields against the base x gear train's fold circle, the text,
 // home on a fold (radius 0, said), and its refusals (--home not unit, NaN, missing; 3 motors; cost).
-// `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals.
+// `sphtroch wrist atlas`: the base x gear train's polylines on its circles, the fields, refusals;
+// its regions in the JSON (counts 4 in the zone and 0 beyond, areas against 2 pi (z_hi - z_lo)),
+// the picture (well-formed, a legend, text >= 9.5 px), refusals of --sphere-cell and of -o x.pdf;
+// exit 3 with the report when no region is proved.
 #include "catch2/catch.hpp"
 #include "cli_support.hpp"
 #include "wrist/wrist_reference.hpp"
@@ -211,4 +214,76 @@ TEST_CASE("wrist atlas --json: the base x gear train wrist's fold polylines on i
     CHECK(count_lines(bad.err) == 1);
     CHECK(contains(bad.err, option));
   }
+}
+
+TEST_CASE("wrist atlas: the regions in the JSON, the picture, and refusals of --sphere-cell and -o x.pdf", "[wrist][cli][regions]") {
+  TempDir dir;
+  const std::string wrist = "wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2' --width 0.1 --sphere-cell 0.05";
+  const Result r = run(wrist + " --json", dir);
+  REQUIRE(r.status == 0);
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == true);
+  CHECK(j["regions_certified"] == true);
+  REQUIRE(j["regions"].size() >= 3);  // the zone and the two caps
+  const double z_lo = std::cos(1.5), z_hi = std::cos(0.5);
+  double cells = 0;
+  for (const auto& g : j["regions"]) {
+    const double z = g["point"][2].get<double>();
+    CHECK(g["count"].get<int>() == (z > z_lo && z < z_hi ? 4 : 0));
+    CHECK(g["area_sr"]["cells"].get<double>() <= g["area_sr"]["upper"].get<double>());
+    CHECK(g["cells"].get<int>() > 0);
+    cells += g["area_sr"]["cells"].get<double>();
+  }
+  const double band = j["fold_band_area_sr"].get<double>(), zone = 2 * 3.141592653589793 * (z_hi - z_lo);
+  CHECK(cells + band == Approx(4 * 3.141592653589793).epsilon(1e-12));
+  CHECK(j["workspace_area_sr"]["cells"].get<double>() <= zone);
+  CHECK(j["workspace_area_sr"]["upper"].get<double>() >= zone);
+  CHECK(j["voids"].size() == 2);
+  CHECK(j["checks"]["parity"] == true);
+  CHECK(j["checks"]["violations"].empty());
+  CHECK(j["sphere_grid"]["cells"].get<int>() > 0);
+  CHECK(j["fold_radius"].get<double>() > 0);
+  const Result svg = run(wrist + " -o " + (dir.path / "atlas.svg").string(), dir);
+  REQUIRE(svg.status == 0);
+  CHECK(svg.out.empty());
+  const std::string picture = slurp((dir.path / "atlas.svg").string());
+  CHECK(picture.rfind("<?xml", 0) == 0);
+  CHECK(contains(picture, "</svg>"));
+  CHECK(contains(picture, "IK solutions"));
+  CHECK(contains(picture, ">4</text>"));
+  std::size_t at = 0, sizes = 0;  // every text at least 9.5 px
+  while ((at = picture.find("font-size:", at)) != std::string::npos) {
+    at += 10;
+    CHECK(std::stod(picture.substr(at)) >= 9.5);
+    ++sizes;
+  }
+  CHECK(sizes > 3);
+  for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+           {" --sphere-cell 0", "--sphere-cell"},
+           {" --sphere-cell 0.001", "--sphere-cell"},
+           {" --sphere-cell 0.9", "--sphere-cell"},
+           {" --sphere-cell abc", "--sphere-cell"},
+           {" --threads 0", "--threads"},
+           {" -o " + (dir.path / "atlas.pdf").string(), "--output"}}) {
+    const Result bad = run("wrist atlas --twists 0,1,0.5 --coupling '1,0;0,1;0,2'" + args, dir);
+    INFO(args << "\n" << bad.err);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK(count_lines(bad.err) == 1);
+    CHECK(contains(bad.err, option));
+  }
+}
+
+TEST_CASE("wrist atlas: no region proved (a coarse sphere grid) exits 3 after the complete report, one line naming it", "[wrist][cli][regions]") {
+  TempDir dir;
+  const Result r = run("wrist atlas --twists 2.4617,1.8544,1.9130,1.9478 --coupling '0,4/3;0,0;0,-1/4;-4/1,-2/3' --sphere-cell 0.5 --width 0.2 --json", dir);
+  CHECK(r.status == 3);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(contains(r.err, "regions not certified"));
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  CHECK(j["certified"] == false);
+  CHECK(j["regions_certified"] == false);
+  CHECK(j["atlas_certified"] == true);
+  CHECK(j["regions"].empty());
+  CHECK(!j["regions_why"].get<std::string>().empty());
 }

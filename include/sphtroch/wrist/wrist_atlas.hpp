@@ -20,6 +20,7 @@
 // else a fold point within twice the cell's width of its centre (the curve clipping a corner), or
 // the cell is kept without a point. Polylines: from each cell with a point not yet drawn, walk to an
 // unvisited 8-adjacent cell with a point (modulo the periods; edge neighbours first), both ways.
+// Cusps along the polylines are estimated by wrist_cusps.hpp (not a claim).
 // Guarantee: every u with D(u) = 0 lies in a listed cell; each listed point has D = 0 within its
 // 1e-12 box; when `certified` (every cell has its point, no budget stop) every fold point P(u) lies
 // within `enclosure` radians of a listed point (the largest angle from a cell's point to its image
@@ -41,6 +42,7 @@
 #include "sphtroch/wrist/wrist_atlas_result.hpp"
 #include "sphtroch/wrist/wrist_cap.hpp"  // wrist_chord_angle_above
 #include "sphtroch/wrist/wrist_critical.hpp"
+#include "sphtroch/wrist/wrist_cusps.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_search.hpp"  // kWristStartOffset, kWristStartWidth
 
@@ -280,6 +282,7 @@ class WristAtlasSearch {
     r.periods.assign(periods_.begin(), periods_.end());
     r.boxes = boxes_;
     r.cells_without_point = static_cast<std::size_t>(std::count_if(cells_.begin(), cells_.end(), [](const WristFoldCell& c) { return !c.has_point; }));
+    r.complete = !stopped;
     r.certified = !stopped && r.cells_without_point == 0;
     if (stopped) r.why = "the search stopped at its budget of " + std::to_string(max_boxes_) + " boxes";
     else if (r.cells_without_point > 0)
@@ -311,7 +314,9 @@ inline WristAtlasResult wrist_fold_atlas(const Wrist& wrist, double width = kWri
                        "a 2-column coupling (the tool axis driven by 2 motors)");
   check_wrist_ik_cost(wrist);
   check_wrist_atlas_cost(wrist, width);
-  return WristAtlasSearch(wrist, width, max_boxes).run();
+  WristAtlasResult r = WristAtlasSearch(wrist, width, max_boxes).run();
+  r.cusps = wrist_fold_cusps(wrist, r);
+  return r;
 }
 
 }  // namespace sphtroch

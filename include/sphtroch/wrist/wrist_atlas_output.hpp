@@ -14,7 +14,9 @@
 // (radians, motor j's range as searched), "image" [[lo, hi] x 3] (the box holding P over the
 // cell), "point" [x, y, z] (a fold point proved in the cell, unit; null when none),
 // "point_motors" [u_1, u_2] (null with it)}], "polylines" [{"points" [[x, y, z], ...], "motors"
-// [[u_1, u_2], ...], "closed"}], "cells_without_point", "wrist" (as wrist ik's), "certificate"
+// [[u_1, u_2], ...], "closed"}], "cusps" [{"point" [x, y, z], "motors" [u_1, u_2], "polyline"}]
+// (estimated where the kernel of dP turns across the curve, wrist_cusps.hpp; not certified),
+// "cells_without_point", "wrist" (as wrist ik's), "certificate"
 // {"method", "why" ("" when certified), "boxes"}. Numbers are doubles printed to round-trip.
 #pragma once
 
@@ -52,6 +54,9 @@ inline nlohmann::json wrist_atlas_json(const Wrist& wrist, const WristAtlasResul
     lines.push_back({{"points", points}, {"motors", motors}, {"closed", l.closed}});
   }
   j["polylines"] = lines;
+  nlohmann::json cusps = nlohmann::json::array();
+  for (const WristCusp& c : r.cusps) cusps.push_back({{"point", c.point}, {"motors", c.motors}, {"polyline", c.polyline}});
+  j["cusps"] = cusps;
   j["cells_without_point"] = r.cells_without_point;
   j["wrist"] = wrist_json(wrist, r.periods);
   j["certificate"] = {{"method", "interval bisection of the motor torus: cells where det[P, dP/du1, dP/du2] excludes 0 dropped; "
@@ -69,6 +74,7 @@ inline std::string wrist_atlas_text(const Wrist& wrist, const WristAtlasResult& 
       << " (every other cell proved det != 0), " << r.cells_without_point << " without a proved fold point\n";
   out << "fold polylines: " << r.polylines.size() << ", every fold point within " << number_text(r.enclosure) << " rad of a vertex"
       << (r.certified ? " (certified)" : " (NOT certified: " + r.why + ")") << "\n";
+  out << "cusps: " << r.cusps.size() << " (estimated along the polylines, not certified)\n";
   std::size_t id = 0;
   for (const WristFoldPolyline& l : r.polylines) {
     const WristFoldCell& first = r.cells[l.cells.front()];

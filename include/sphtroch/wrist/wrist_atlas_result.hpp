@@ -39,12 +39,22 @@ struct WristFoldPolyline {
   bool closed = false;
 };
 
+/// Where a polyline passes a cusp of the fold set (wrist_cusps.hpp): an estimate, not a proof. point
+/// (unit) on the sphere, the motors of the nearer fold point (radians), the polyline's index.
+struct WristCusp {
+  std::array<double, 3> point{};
+  std::array<double, 2> motors{};
+  std::size_t polyline = 0;
+};
+
 struct WristAtlasResult {
   std::vector<WristFoldCell> cells;           ///< every cell where D may vanish (all others proved D != 0)
   std::vector<WristFoldPolyline> polylines;   ///< through the cells' fold points
+  std::vector<WristCusp> cusps;               ///< estimated along the polylines (not certified)
   double cell_width = 0;                      ///< radians of joint motion: each cell's widest side times sum_i |C_ij|
   double enclosure = 0;                       ///< radians: every fold point is within this of a cell's proved fold point
   std::size_t cells_without_point = 0;        ///< cells where D may vanish but no fold point was proved (none may be there)
+  bool complete = false;                      ///< the search finished: every u with D(u) = 0 lies in a listed cell
   bool certified = false;                     ///< the enclosure is complete and every cell has its point
   std::string why;                            ///< not certified: what is missing
   std::vector<double> periods;                ///< T_j = 2 pi L_j, radians
