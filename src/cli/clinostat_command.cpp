@@ -218,7 +218,7 @@ void register_clinostat(CLI::App& app, std::vector<std::pair<CLI::App*, Action>>
   cmd->add_option("--frame-angle", o->machine.frame_angle, "angle between the axes, degrees in [0, 180] (default 90)")->type_name("DEG");
   cmd->add_option("--phase-outer", o->machine.phase_outer, "outer frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
   cmd->add_option("--phase-inner", o->machine.phase_inner, "inner frame's angle at t = 0, degrees (default 0)")->type_name("DEG");
-  cmd->add_option("--gravity", o->machine.gravity, "the environment's gravity G, units of g0 in (0, 1000] (default 1): scales every gravity figure")
+  cmd->add_option("--gravity", o->machine.gravity, "the environment's gravity G, units of g0 in [0.001, 1000] (default 1): scales every gravity figure")
       ->type_name("G");
   cmd->add_option("--offset", o->machine.offset, "the sample point X,Y,Z in metres (sample frame; default the centre)")->type_name("X,Y,Z");
   cmd->add_option("--window", o->window, "M(W) for this window length, seconds")->type_name("S");

@@ -618,7 +618,7 @@ TEST_CASE("clinostat --gravity G: every mean and bracket is G times the unit one
   CHECK(std::fabs(h["running_mean"][0]["magnitude"].get<double>() - 0.5 * model_window_mean(5, 0.05, 67.7901, 0, 300)) <= 1e-12);
   const Result text = run("clinostat --tilt 67.7901 --outer 5 --inner 0.05 --gravity 0.5", dir);
   CHECK(contains(text.out, "environment's gravity: 0.5 g0"));
-  for (const std::string& bad : {"--gravity 0", "--gravity -1", "--gravity nan", "--gravity 1001", "--gravity 0.5 --trace --duration 10"}) {
+  for (const std::string& bad : {"--gravity 0", "--gravity -1", "--gravity nan", "--gravity 1001", "--gravity 0.0009", "--gravity 1e-160", "--gravity 0.5 --trace --duration 10"}) {
     const Result r = run("clinostat --outer 1 --inner 2 " + bad, dir, true);
     INFO(bad << " -> " << r.err);
     CHECK(r.status == 2);

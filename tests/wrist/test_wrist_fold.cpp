@@ -306,3 +306,36 @@ TEST_CASE("wrist atlas: random 2-motor wrists: every grid sign change of the ref
   }
   CHECK(certified >= wrists - 1);
 }
+
+TEST_CASE("wrist cap and atlas: a degenerate wrist (D = 0 everywhere) is not certified at once, without a search", "[wrist][cap][atlas]") {
+  // Twist A2 = 0 joins joints 2 and 3: P depends on u1 + u2 only, so the reference determinant
+  // (products of rotation matrices) is 0 everywhere; all twists 0 leave P = z. The base x gear
+  // train wrist is not degenerate: its reference determinant is not 0 at a point of its zone.
+  const std::vector<WristModel> degenerate = {
+      {{1.0, 0.0, 0.5}, {0.0, 0.0, 0.0}, {{{1, 1}, {1, 1}}, {{0, 1}, {1, 1}}, {{1, 1}, {0, 1}}}},
+      {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 1}}}}};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(0, 20);
+  for (const WristModel& m : degenerate) {
+    for (int k = 0; k < 50; ++k) {
+      const long double u[2] = {angle(rng), angle(rng)};
+      REQUIRE(std::fabs(static_cast<double>(fold_det<long double>(m, u))) < 1e-15);  // the model's truth
+    }
+    const Wrist w = cap_wrist(m);
+    CHECK(wrist_fold_vanishes_everywhere(w));
+    const WristCapResult cap = wrist_cap(w, Vector3d(0.6, 0, 0.8));
+    CHECK_FALSE(cap.certified);
+    CHECK(cap.lower == 0);
+    CHECK(cap.upper >= 3.14159);
+    CHECK(cap.boxes == 0);
+    CHECK(cap.why.find("degenerate") != std::string::npos);
+    const WristAtlasResult atlas = wrist_fold_atlas(w);
+    CHECK_FALSE(atlas.certified);
+    CHECK_FALSE(atlas.complete);
+    CHECK(atlas.boxes == 0);
+  }
+  const WristModel train{{0.0, 1.0, 0.5}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 1}}}};
+  const long double at[2] = {0.3L, 0.7L};
+  REQUIRE(std::fabs(static_cast<double>(fold_det<long double>(train, at))) > 1e-3);
+  CHECK_FALSE(wrist_fold_vanishes_everywhere(cap_wrist(train)));
+}

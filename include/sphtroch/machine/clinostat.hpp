@@ -43,7 +43,7 @@ struct ClinostatSettings {
   double phase_outer_deg = 0;       ///< phi_o0, |phase| <= 1e6 degrees
   double phase_inner_deg = 0;       ///< phi_i0, |phase| <= 1e6 degrees
   Vector3d offset_m = Vector3d::Zero();  ///< the sample point r (metres, sample frame), |r| <= 10 m
-  double gravity_g0 = 1;            ///< G: the environment's gravity, units of g0, (0, 1000]
+  double gravity_g0 = 1;            ///< G: the environment's gravity, units of g0, [0.001, 1000]
 };
 
 /// sin and cos of an angle in degrees, exact (0, +-1) at whole multiples of 90 degrees, so that a
@@ -86,6 +86,10 @@ class Clinostat {
   static constexpr double kMaxOffset = 10;             ///< |r| accepted, metres
   static constexpr double kMaxPhase = 1e6;             ///< |phase| accepted, degrees
   static constexpr double kMaxGravity = 1000;          ///< the environment's gravity accepted, g0
+  /// The least environment's gravity accepted, g0: the proofs' rounding terms are absolute (in g0),
+  /// so a G far below them would make a bracket's width and slack meaningless; no environment of
+  /// a clinostat lab is below a milli-g.
+  static constexpr double kMinGravity = 0.001;
 
   /// Throws InvalidInput naming the setting: both speeds 0 ("inner", the machine does not turn),
   /// an angle outside [0, 180] or not finite ("tilt", "frame-angle"), a phase not finite or beyond
@@ -97,8 +101,8 @@ class Clinostat {
     check_angle("frame-angle", s.frame_angle_deg);
     check_phase("phase-outer", s.phase_outer_deg);
     check_phase("phase-inner", s.phase_inner_deg);
-    if (!(s.gravity_g0 > 0 && s.gravity_g0 <= kMaxGravity))
-      throw InvalidInput("gravity", number_text(s.gravity_g0), "not an environment's gravity", "(0, 1000] g0");
+    if (!(s.gravity_g0 >= kMinGravity && s.gravity_g0 <= kMaxGravity))
+      throw InvalidInput("gravity", number_text(s.gravity_g0), "not an environment's gravity", "[0.001, 1000] g0");
     if (!s.offset_m.allFinite() || s.offset_m.norm() > kMaxOffset)
       throw InvalidInput("offset", report_number(s.offset_m.x()) + "," + number_text(s.offset_m.y()) + "," + number_text(s.offset_m.z()),
                          "not a finite point within 10 m of the centre", "X,Y,Z in metres, |r| <= 10");

@@ -100,7 +100,7 @@ struct ClinostatText {
     if (!offset.empty()) s.offset_m = parse_offset(offset, "offset");
     if (!gravity.empty()) {
       const auto g = detail::strict_double(gravity);
-      if (!g) throw InvalidInput("gravity", gravity, "not a number", "(0, 1000] g0");
+      if (!g) throw InvalidInput("gravity", gravity, "not a number", "[0.001, 1000] g0");
       s.gravity_g0 = *g;  // its range: Clinostat's constructor
     }
     return s;

@@ -29,6 +29,7 @@
 
 #include "sphtroch/core/errors.hpp"
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/machine/clinostat.hpp"  // Clinostat::kMaxTime
 #include "sphtroch/machine/gravity_series.hpp"
 #include "sphtroch/machine/worst_window_mean.hpp"
 
@@ -77,7 +78,9 @@ inline WindowBand window_band_torus(const GravitySeries& g, double window_s, dou
   b.min.upper = std::numeric_limits<double>::infinity();
   double sizes = 1 + g.period_mean().norm();  // the window mean's rounding is within 1e-14 (1 + |c| + sum A_k)
   for (const GravityHarmonic& h : g.oscillating()) sizes += h.amplitude;
-  const double period = g.period_s().value_or(1.0);
+  // Starts sampled over one period, or over the first kMaxTime - W seconds of a longer one (the
+  // starts a window mean is defined for): they only give max.lower and min.upper, valid from any start.
+  const double period = std::min(g.period_s().value_or(1.0), Clinostat::kMaxTime - window_s);
   for (int k = 0; k < kTorusBandStarts; ++k) {
     const double t0 = period * k / kTorusBandStarts, m = g.window_mean(t0, window_s).norm();
     if (m - 1e-14 * sizes > b.max.lower) b.max.lower = m - 1e-14 * sizes, b.max.start_s = t0;

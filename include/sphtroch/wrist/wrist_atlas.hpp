@@ -314,6 +314,13 @@ inline WristAtlasResult wrist_fold_atlas(const Wrist& wrist, double width = kWri
                        "a 2-column coupling (the tool axis driven by 2 motors)");
   check_wrist_ik_cost(wrist);
   check_wrist_atlas_cost(wrist, width);
+  if (wrist_fold_vanishes_everywhere(wrist)) {  // a degenerate wrist: every point a fold (see there)
+    WristAtlasResult r;
+    for (std::size_t j = 0; j < 2; ++j) r.periods.push_back(wrist.period(j));
+    r.why = "the fold function D vanishes on the whole motor torus (the map u -> P has rank below 2 everywhere: "
+            "a degenerate wrist); its fold set is its whole image, no enclosure is proved";
+    return r;
+  }
   WristAtlasResult r = WristAtlasSearch(wrist, width, max_boxes).run();
   r.cusps = wrist_fold_cusps(wrist, r);
   return r;

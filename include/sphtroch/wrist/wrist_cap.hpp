@@ -317,6 +317,13 @@ inline WristCapResult wrist_cap(const Wrist& wrist, const Vector3d& home, std::s
                        "a 2-column coupling (the tool axis driven by 2 motors)");
   const WristTarget at_home = WristTarget::pointing(home, "home");
   check_wrist_ik_cost(wrist);
+  if (wrist_fold_vanishes_everywhere(wrist)) {  // a degenerate wrist: every point of its image a fold
+    WristCapResult r;
+    for (std::size_t j = 0; j < 2; ++j) r.periods.push_back(wrist.period(j));
+    r.why = "the fold function D vanishes on the whole motor torus (the map u -> P has rank below 2 everywhere: "
+            "a degenerate wrist); the bracket [0, pi] is all that is proved";
+    return r;
+  }
   WristCapResult r = WristCapSearch(wrist, at_home.direction, max_boxes).run();
   const WristIkResult ik = wrist_ik(wrist, at_home);
   r.ik_boxes = ik.boxes;

@@ -35,6 +35,7 @@
 #include "sphtroch/wrist/wrist.hpp"
 #include "sphtroch/wrist/wrist_enclosure.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -139,5 +140,28 @@ class WristCritical {
   Vec3<Interval> axis_i_;
   Vec3<double> axis_d_{};
 };
+
+/// Points at which wrist_fold_vanishes_everywhere samples D.
+constexpr std::size_t kWristDegenerateSamples = 1024;
+
+/// True when D vanishes, to 1e-12 of its scale |omega_1| |omega_2| <= (sum_i |C_i1|)(sum_i |C_i2|),
+/// at kWristDegenerateSamples points of the motor torus spread by the R2 sequence (fractions
+/// k (0.7548776662466927, 0.5698402909980532) of the periods): a wrist whose map u -> P(u) has rank
+/// below 2 everywhere (a twist of 0 joining two joints, all twists 0, a tool axis along a joint's
+/// axis). Its fold set is its whole image: no cap or atlas can be proved, so wrist_cap and
+/// wrist_fold_atlas answer "not certified" at once instead of spending their box budgets. A
+/// sampling test, not a proof: a true result only withholds a certificate (exit 3), never states
+/// a wrong one. REQUIRES wrist.motors() == 2.
+inline bool wrist_fold_vanishes_everywhere(const Wrist& wrist) {
+  RoundingGuard upward;  // WristCritical's contract
+  const WristCritical critical(wrist);
+  const double scale = std::max(1e-300, wrist.joint_speed(0) * wrist.joint_speed(1));
+  for (std::size_t k = 1; k <= kWristDegenerateSamples; ++k) {
+    const double a = std::fmod(0.5 + 0.7548776662466927 * static_cast<double>(k), 1.0);
+    const double b = std::fmod(0.5 + 0.5698402909980532 * static_cast<double>(k), 1.0);
+    if (std::fabs(critical.at({a * wrist.period(0), b * wrist.period(1)}).det) > 1e-12 * scale) return false;
+  }
+  return true;
+}
 
 }  // namespace sphtroch
