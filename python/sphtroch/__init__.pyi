@@ -634,11 +634,13 @@ class Wrist:
         """The largest spherical cap about home with no fold inside (2 motors): the object
         `sphtroch wrist cap --json` prints ({"radius": {"lower", "upper", "width"}, "count",
         "certified", "home_on_fold", ...}; radians). Raises InvalidInput naming "home" or "coupling"."""
-    def atlas(self, width: Optional[float] = None) -> Dict[str, Any]:
-        """The fold curve of a 2-motor wrist: the object `sphtroch wrist atlas --json` prints (the
-        critical cells of the motor torus, every other cell proved fold-free, and the fold polylines
-        on the sphere). width: the cells' size in radians of joint motion (0.001 to 1; default 0.05).
-        Raises InvalidInput naming "width" or "coupling"."""
+    def atlas(self, width: Optional[float] = None, sphere_cell: Optional[float] = None) -> Dict[str, Any]:
+        """The fold curve of a 2-motor wrist and the regions it cuts out: the object `sphtroch wrist
+        atlas --json` prints (the critical cells of the motor torus, every other cell proved
+        fold-free, the fold polylines on the sphere, and the regions with their certified IK counts,
+        areas, workspace and voids). width: the torus cells' size in radians of joint motion (0.001
+        to 1; default 0.05); sphere_cell: the sphere grid's cell for the regions (0.003 to 0.5;
+        default 0.02). Raises InvalidInput naming "width", "sphere-cell" or "coupling"."""
 
 class PointSet:
     """Nodes or cusps of a train as NumPy arrays (GearTrain.node_set(), cusp_set()), row i the i-th

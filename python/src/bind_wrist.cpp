@@ -13,6 +13,8 @@
 #include "sphtroch/wrist/wrist_cap_output.hpp"
 #include "sphtroch/wrist/wrist_ik.hpp"
 #include "sphtroch/wrist/wrist_ik_output.hpp"
+#include "sphtroch/wrist/wrist_regions.hpp"
+#include "sphtroch/wrist/wrist_regions_output.hpp"
 #include "sphtroch/wrist/wrist_text.hpp"
 
 #include <string>
@@ -97,13 +99,18 @@ py::object cap(const PyWrist& self, py::handle home) {
   return from_json(json);
 }
 
-/// atlas(width=None): `sphtroch wrist atlas --json`'s object.
-py::object atlas(const PyWrist& self, py::handle width) {
+/// atlas(width=None, sphere_cell=None): `sphtroch wrist atlas --json`'s object (one worker thread:
+/// the result does not depend on their number).
+py::object atlas(const PyWrist& self, py::handle width, py::handle sphere_cell) {
   const double w = width.is_none() ? kWristAtlasDefaultWidth : real_arg(width, "width", "radians of joint motion per cell, 0.001 to 1");
+  const double step = sphere_cell.is_none() ? kWristRegionsDefaultStep
+                                            : real_arg(sphere_cell, "sphere-cell", "radians per sphere cell, 0.003 to 0.5");
+  check_wrist_regions_cost(step);
   std::string json;
   {
     py::gil_scoped_release release;
-    json = wrist_atlas_json(self.wrist, wrist_fold_atlas(self.wrist, w)).dump();
+    const WristAtlasResult a = wrist_fold_atlas(self.wrist, w);
+    json = wrist_atlas_report_json(self.wrist, a, wrist_regions(self.wrist, a, step)).dump();
   }
   return from_json(json);
 }
@@ -133,7 +140,7 @@ void bind_wrist(py::module_& m) {
                              doc("Wrist.periods"))
       .def("ik", &ik, py::arg("target") = py::none(), py::kw_only(), py::arg("frame") = py::none(), doc("Wrist.ik"))
       .def("cap", &cap, py::arg("home"), doc("Wrist.cap"))
-      .def("atlas", &atlas, py::arg("width") = py::none(), doc("Wrist.atlas"))
+      .def("atlas", &atlas, py::arg("width") = py::none(), py::arg("sphere_cell") = py::none(), doc("Wrist.atlas"))
       .def("__repr__", &repr)
       .def("__eq__", [](const PyWrist& a, const PyWrist& b) { return state(a).equal(state(b)); })
       .def("__hash__", [](const PyWrist& w) { return py::hash(state(w)); })

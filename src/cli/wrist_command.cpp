@@ -121,7 +121,6 @@ void run_wrist_atlas(const WristIkOptions& o) {
   const std::size_t threads = parse_threads(o.threads);
   const WristAtlasResult r = wrist_fold_atlas(wrist, width);  // refuses bad input and cost before any output
   const WristRegionsResult regions = wrist_regions(wrist, r, step, threads);
-  const bool certified = r.certified && regions.certified;
   const std::string bytes = picture ? picture_bytes(wrist_regions_svg(r, regions), o.output) : std::string();
   write_output(
       o.output,
@@ -129,11 +128,7 @@ void run_wrist_atlas(const WristIkOptions& o) {
         if (picture) {
           out << bytes;
         } else if (o.json) {
-          nlohmann::json j = wrist_atlas_json(wrist, r);
-          j.update(wrist_regions_json(regions));
-          j["atlas_certified"] = r.certified;
-          j["certified"] = certified;
-          out << j.dump(2) << "\n";
+          out << wrist_atlas_report_json(wrist, r, regions).dump(2) << "\n";
         } else {
           out << wrist_atlas_text(wrist, r) << wrist_regions_text(regions);
         }

@@ -71,6 +71,7 @@ def test_cap_and_atlas_are_the_cli_objects(twists, coupling, phases, axis, goal)
     common = ["--twists", twists, "--coupling", coupling] + (["--phases", phases] if phases else []) + (["--axis", axis] if axis else [])
     assert w.cap(goal[1]) == cli("cap", *common, "--home", goal[1])
     assert w.atlas(0.1) == cli("atlas", *common, "--width", "0.1")
+    assert w.atlas(0.1, sphere_cell=0.05) == cli("atlas", *common, "--width", "0.1", "--sphere-cell", "0.05")
 
 
 @pytest.mark.parametrize("p,q", [(3, 2), (2, 1), (-5, 3), (1, 1), (4, 3)])

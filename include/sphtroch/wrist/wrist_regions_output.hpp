@@ -18,6 +18,7 @@
 #pragma once
 
 #include "sphtroch/core/number_text.hpp"
+#include "sphtroch/wrist/wrist_atlas_output.hpp"
 #include "sphtroch/wrist/wrist_regions_result.hpp"
 
 #include <nlohmann/json.hpp>
@@ -85,6 +86,17 @@ inline std::string wrist_regions_text(const WristRegionsResult& r, std::size_t s
       << r.crossings_by_two << " differ by 2, " << r.violations.size() << " violation(s)\n";
   out << "regions " << (r.certified ? "certified" : "NOT certified: " + r.why) << "\n";
   return out.str();
+}
+
+/// `sphtroch wrist atlas --json` (and Python's Wrist.atlas): the atlas's object
+/// (wrist_atlas_output.hpp) with the regions' members, "atlas_certified" (the atlas's own
+/// certificate) and "certified" (both).
+inline nlohmann::json wrist_atlas_report_json(const Wrist& wrist, const WristAtlasResult& atlas, const WristRegionsResult& regions) {
+  nlohmann::json j = wrist_atlas_json(wrist, atlas);
+  j.update(wrist_regions_json(regions));
+  j["atlas_certified"] = atlas.certified;
+  j["certified"] = atlas.certified && regions.certified;
+  return j;
 }
 
 }  // namespace sphtroch
