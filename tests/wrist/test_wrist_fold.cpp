@@ -12,6 +12,7 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "wrist/wrist_reference.hpp"
+#include "wrist/wrist_test_models.hpp"
 
 #include "sphtroch/wrist/wrist.hpp"
 #include "sphtroch/wrist/wrist_atlas.hpp"
@@ -31,49 +32,8 @@ using namespace sphtroch::test;
 constexpr double kPi = 3.141592653589793;
 constexpr long double kPiL = 3.141592653589793238462643383279502884L;
 
-Wrist cap_wrist(const WristModel& m) {
-  std::vector<WristJoint> joints;
-  std::vector<std::vector<ChainRate>> coupling;
-  for (std::size_t i = 0; i < m.twist.size(); ++i) {
-    joints.push_back({m.twist[i], m.phase[i]});
-    std::vector<ChainRate> row;
-    for (const auto& [p, q] : m.coupling[i]) row.push_back(ChainRate(p, q));
-    coupling.push_back(row);
-  }
-  return Wrist(joints, coupling, m.axis);
-}
-
 /// The angle between two directions, atan2(|a x b|, a . b), in long double.
 long double angle_between(const Vec3L& a, const Vec3L& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
-
-/// A random 2-motor wrist (k = 3, 4; entries p/q, |p|, q <= 5, a third 0) whose torus needs at
-/// most `max_start` start boxes, of rank 2.
-WristModel random_cap_wrist(std::mt19937& rng, double max_start) {
-  std::uniform_int_distribution<int> joints(3, 4), num(-5, 5), den(1, 5), zero(0, 2);
-  std::uniform_real_distribution<double> twist(0.1, 3.04), phase(-3.14, 3.14);
-  while (true) {
-    WristModel m;
-    const int k = joints(rng);
-    for (int i = 0; i < k; ++i) {
-      m.twist.push_back(twist(rng));
-      m.phase.push_back(phase(rng));
-      std::vector<std::pair<int, int>> row;
-      for (int j = 0; j < 2; ++j) row.push_back(zero(rng) == 0 ? std::pair{0, 1} : std::pair{num(rng), den(rng)});
-      m.coupling.push_back(row);
-    }
-    try {
-      if (wrist_ik_start_boxes(cap_wrist(m)) <= max_start) return m;
-    } catch (const InvalidInput&) {
-    }
-  }
-}
-
-Eigen::Vector3d random_unit(std::mt19937& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Vector3d v(g(rng), g(rng), g(rng));
-  while (v.norm() < 1e-3) v = Eigen::Vector3d(g(rng), g(rng), g(rng));
-  return v.normalized();
-}
 
 /// The angles from home to the fold points of a dense grid (wrist_reference.hpp's fold_sign_changes).
 std::vector<long double> grid_fold_angles(const WristModel& m, double h, const Eigen::Vector3d& home) {
@@ -122,9 +82,9 @@ TEST_CASE("wrist cap: random 2-motor wrists against the grid's sign changes of t
   std::size_t certified = 0, counted = 0;
   const int wrists = 16;
   for (int mechanism = 0; mechanism < wrists; ++mechanism) {
-    const WristModel m = random_cap_wrist(rng, 120);
-    const Wrist wrist = cap_wrist(m);
-    const Eigen::Vector3d home = random_unit(rng);
+    const WristModel m = random_wrist(rng, 120);
+    const Wrist wrist = library_wrist(m);
+    const Eigen::Vector3d home = random_direction(rng);
     const WristCapResult r = wrist_cap(wrist, home, 400000);
     const std::vector<long double> angles = grid_fold_angles(m, h, home);
     REQUIRE(!angles.empty());  // a torus cannot cover the sphere without folds
@@ -140,7 +100,7 @@ TEST_CASE("wrist cap: random 2-motor wrists against the grid's sign changes of t
     }
     if (!r.count || !(r.lower > 0)) continue;
     // A random direction inside the cap: its count is the count at home.
-    const Eigen::Vector3d side = home.cross(random_unit(rng)).normalized();
+    const Eigen::Vector3d side = home.cross(random_direction(rng)).normalized();
     const double rho = std::uniform_real_distribution<double>(0.1, 0.9)(rng) * std::min(r.lower, 1.0);
     const Eigen::Vector3d t = (std::cos(rho) * home + std::sin(rho) * side).normalized();
     const GridCount grid(m, 0.05);
@@ -155,13 +115,13 @@ TEST_CASE("wrist cap: a base motor and home on its axis: the grid's sign changes
   std::mt19937 rng(4242);
   std::uniform_int_distribution<int> num(1, 5), den(1, 5);
   for (int mechanism = 0; mechanism < 8; ++mechanism) {
-    WristModel m = random_cap_wrist(rng, 120);
+    WristModel m = random_wrist(rng, 120);
     m.coupling[0][0] = {mechanism % 2 == 0 ? num(rng) : -num(rng), den(rng)};  // motor 1 turns the first joint only
     for (std::size_t i = 1; i < m.coupling.size(); ++i) m.coupling[i][0] = {0, 1};
     bool rank_two = false;
     for (std::size_t i = 1; i < m.coupling.size(); ++i) rank_two = rank_two || m.coupling[i][1].first != 0;
     if (!rank_two) m.coupling[1][1] = {1, 1};
-    const Wrist wrist = cap_wrist(m);
+    const Wrist wrist = library_wrist(m);
     const Eigen::Vector3d home(0, 0, mechanism % 3 == 0 ? -1.0 : 1.0);
     const WristCapResult r = wrist_cap(wrist, home, 400000);
     const std::vector<long double> angles = grid_fold_angles(m, 0.02, home);
@@ -195,8 +155,8 @@ TEST_CASE("wrist cap: a search stopped at its budget keeps a valid bracket and s
 TEST_CASE("wrist critical: D's enclosure holds the reference determinant's sign, and proved fold points are on it", "[wrist][cap]") {
   std::mt19937 rng(17);
   for (int mechanism = 0; mechanism < 20; ++mechanism) {
-    const WristModel m = random_cap_wrist(rng, 400);
-    const Wrist wrist = cap_wrist(m);
+    const WristModel m = random_wrist(rng, 400);
+    const Wrist wrist = library_wrist(m);
     const RoundingGuard upward;
     const WristCritical critical(wrist);
     std::uniform_real_distribution<double> u0(0, double(m.period(0))), u1(0, double(m.period(1))), w(1e-6, 0.05);
@@ -280,8 +240,8 @@ TEST_CASE("wrist atlas: random 2-motor wrists: every grid sign change of the ref
   std::size_t certified = 0;
   const int wrists = 12;
   for (int mechanism = 0; mechanism < wrists; ++mechanism) {
-    const WristModel m = random_cap_wrist(rng, 120);
-    const Wrist wrist = cap_wrist(m);
+    const WristModel m = random_wrist(rng, 120);
+    const Wrist wrist = library_wrist(m);
     const WristAtlasResult r = wrist_fold_atlas(wrist, 0.05);
     INFO("wrist " << mechanism << " coupling " << wrist.coupling_text() << " twists " << wrist.twists_text() << ": " << r.why);
     if (r.certified) ++certified;
@@ -321,7 +281,7 @@ TEST_CASE("wrist cap and atlas: a degenerate wrist (D = 0 everywhere) is not cer
       const long double u[2] = {angle(rng), angle(rng)};
       REQUIRE(std::fabs(static_cast<double>(fold_det<long double>(m, u))) < 1e-15);  // the model's truth
     }
-    const Wrist w = cap_wrist(m);
+    const Wrist w = library_wrist(m);
     CHECK(wrist_fold_vanishes_everywhere(w));
     const WristCapResult cap = wrist_cap(w, Vector3d(0.6, 0, 0.8));
     CHECK_FALSE(cap.certified);
@@ -337,5 +297,5 @@ TEST_CASE("wrist cap and atlas: a degenerate wrist (D = 0 everywhere) is not cer
   const WristModel train{{0.0, 1.0, 0.5}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 1}}}};
   const long double at[2] = {0.3L, 0.7L};
   REQUIRE(std::fabs(static_cast<double>(fold_det<long double>(train, at))) > 1e-3);
-  CHECK_FALSE(wrist_fold_vanishes_everywhere(cap_wrist(train)));
+  CHECK_FALSE(wrist_fold_vanishes_everywhere(library_wrist(train)));
 }

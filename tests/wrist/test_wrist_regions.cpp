@@ -14,6 +14,7 @@
 #include "catch2/catch.hpp"
 #include "test_support.hpp"
 #include "wrist/wrist_reference.hpp"
+#include "wrist/wrist_test_models.hpp"
 
 #include "sphtroch/wrist/wrist.hpp"
 #include "sphtroch/wrist/wrist_atlas.hpp"
@@ -33,47 +34,6 @@ using namespace sphtroch::test;
 
 constexpr double kPi = 3.141592653589793;
 
-Wrist model_wrist(const WristModel& m) {
-  std::vector<WristJoint> joints;
-  std::vector<std::vector<ChainRate>> coupling;
-  for (std::size_t i = 0; i < m.twist.size(); ++i) {
-    joints.push_back({m.twist[i], m.phase[i]});
-    std::vector<ChainRate> row;
-    for (const auto& [p, q] : m.coupling[i]) row.push_back(ChainRate(p, q));
-    coupling.push_back(row);
-  }
-  return Wrist(joints, coupling, m.axis);
-}
-
-/// A random 2-motor wrist (k = 3, 4; entries p/q, |p|, q <= 5, a third 0) of rank 2 whose torus
-/// needs at most `max_start` start boxes.
-WristModel random_region_wrist(std::mt19937& rng, double max_start) {
-  std::uniform_int_distribution<int> joints(3, 4), num(-5, 5), den(1, 5), zero(0, 2);
-  std::uniform_real_distribution<double> twist(0.1, 3.04), phase(-3.14, 3.14);
-  while (true) {
-    WristModel m;
-    const int k = joints(rng);
-    for (int i = 0; i < k; ++i) {
-      m.twist.push_back(twist(rng));
-      m.phase.push_back(phase(rng));
-      std::vector<std::pair<int, int>> row;
-      for (int j = 0; j < 2; ++j) row.push_back(zero(rng) == 0 ? std::pair{0, 1} : std::pair{num(rng), den(rng)});
-      m.coupling.push_back(row);
-    }
-    try {
-      if (wrist_ik_start_boxes(model_wrist(m)) <= max_start) return m;
-    } catch (const InvalidInput&) {
-    }
-  }
-}
-
-Eigen::Vector3d random_direction(std::mt19937& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Vector3d v(g(rng), g(rng), g(rng));
-  while (v.norm() < 1e-3) v = Eigen::Vector3d(g(rng), g(rng), g(rng));
-  return v.normalized();
-}
-
 struct TargetTally {
   std::size_t compared = 0, in_band = 0, disagreements = 0;
 };
@@ -84,8 +44,8 @@ TargetTally check_random_targets(unsigned seed, int wrists, int targets) {
   std::mt19937 rng(seed);
   TargetTally tally;
   for (int mechanism = 0; mechanism < wrists; ++mechanism) {
-    const WristModel m = random_region_wrist(rng, 200);
-    const Wrist wrist = model_wrist(m);
+    const WristModel m = random_wrist(rng, 200);
+    const Wrist wrist = library_wrist(m);
     const WristAtlasResult atlas = wrist_fold_atlas(wrist, 0.05);
     const WristRegionsResult r = wrist_regions(wrist, atlas, 0.02);
     INFO("wrist " << mechanism << " coupling " << wrist.coupling_text() << " twists " << wrist.twists_text() << ": " << r.why);
@@ -166,8 +126,8 @@ TEST_CASE("wrist atlas: the estimated cusps: none on the base x gear train, the 
       {{kPi / 2, kPi / 2, kPi / 3}, {0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{1, 2}, {1, 2}}, {{-1, 2}, {1, 2}}}},
       {{kPi / 2, 1.0, kPi / 3, 0.7}, {0.0, 0.0, 0.0, 0.0}, {{{1, 1}, {0, 1}}, {{0, 1}, {1, 1}}, {{0, 1}, {2, 3}}, {{1, 2}, {-1, 1}}}}};
   for (const WristModel& m : models) {
-    const WristAtlasResult atlas = wrist_fold_atlas(model_wrist(m), 0.05);
-    INFO("coupling " << model_wrist(m).coupling_text());
+    const WristAtlasResult atlas = wrist_fold_atlas(library_wrist(m), 0.05);
+    INFO("coupling " << library_wrist(m).coupling_text());
     CHECK(!atlas.cusps.empty());
     for (const WristCusp& c : atlas.cusps) {
       INFO("cusp at u = (" << c.motors[0] << ", " << c.motors[1] << ")");
